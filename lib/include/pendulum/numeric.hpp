@@ -1,0 +1,28 @@
+#pragma once
+/// \file numeric.hpp
+/// \brief Small helpers that let the physics run on `double` and on
+/// automatic-differentiation scalars (ceres::Jet) alike.
+
+#include <type_traits>
+
+namespace pendulum {
+
+/// The plain value of a scalar: `x` for arithmetic types, the value part
+/// (`x.a`, recursively) for ceres::Jet and other dual numbers. Used only for
+/// control flow (series cut-offs, convergence tests), never in a result.
+template <class T>
+double value_of(const T& x) {
+  if constexpr (std::is_arithmetic_v<T>) {
+    return static_cast<double>(x);
+  } else {
+    return value_of(x.a);
+  }
+}
+
+/// pi to double precision.
+inline constexpr double kPi = 3.14159265358979323846;
+
+/// Standard gravity (m/s^2), used only to judge plausibility, never in g.
+inline constexpr double kStandardGravity = 9.80665;
+
+}  // namespace pendulum

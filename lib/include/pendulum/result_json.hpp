@@ -1,0 +1,21 @@
+#pragma once
+/// \file result_json.hpp
+/// \brief The output of `pendulum-g reduce`: JSON (an API, docs/output.md)
+/// and a table for people at a terminal.
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "pendulum/analysis.hpp"
+
+namespace pendulum {
+
+/// The result document; `input` names the scene file as the user gave it.
+nlohmann::ordered_json result_to_json(const ParsedScene& scene, const Analysis& analysis,
+                              const AnalysisOptions& options, const std::string& input);
+
+/// The same result as an aligned text table (microseconds, 1e-5 m/s^2).
+std::string result_to_table(const ParsedScene& scene, const Analysis& analysis);
+
+}  // namespace pendulum

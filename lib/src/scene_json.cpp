@@ -1,0 +1,415 @@
+#include "pendulum/scene_json.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "pendulum/air.hpp"
+#include "pendulum/numeric.hpp"
+#include "pendulum/units.hpp"
+
+namespace pendulum {
+
+InputError::InputError(std::string path, const std::string& message)
+    : std::runtime_error((path.empty() ? std::string("(document)") : path) +
+                         ": " + message),
+      path_(std::move(path)) {}
+
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kSceneSchema = "pendulum-g/scene/1";
+
+std::string shown(const json& j) {
+  std::string s = j.dump();
+  if (s.size() > 60) s = s.substr(0, 57) + "...";
+  return s;
+}
+
+std::string format_number(double x) {
+  std::ostringstream os;
+  os.precision(10);
+  os << x;
+  return os.str();
+}
+
+std::string join_path(const std::string& path, const std::string& key) {
+  return path.empty() ? key : path + "." + key;
+}
+
+/// A JSON object being read: remembers which keys were asked for, so that
+/// finish() can refuse the others by name.
+class Object {
+ public:
+  Object(const json& j, std::string path, const char* what = "an object")
+      : j_(j), path_(std::move(path)) {
+    if (!j.is_object()) {
+      throw InputError(path_, "got " + shown(j) + "; expected " + what);
+    }
+  }
+
+  bool has(const std::string& key) {
+    known_.insert(key);
+    return j_.contains(key);
+  }
+
+  const json& at(const std::string& key) {
+    if (!has(key)) throw InputError(path(key), "missing; it is required here");
+    return j_.at(key);
+  }
+
+  std::string path(const std::string& key) const { return join_path(path_, key); }
+  const std::string& path() const { return path_; }
+
+  std::string text(const std::string& key) {
+    const json& v = at(key);
+    if (!v.is_string()) {
+      throw InputError(path(key), "got " + shown(v) + "; expected a string");
+    }
+    return v.get<std::string>();
+  }
+
+  /// Refuses every key that was not asked for.
+  void finish() const {
+    for (const auto& item : j_.items()) {
+      if (known_.count(item.key())) continue;
+      std::string list;
+      for (const auto& k : known_) list += (list.empty() ? "" : ", ") + k;
+      throw InputError(path(item.key()),
+                       "unknown key; this object takes: " + list);
+    }
+  }
+
+ private:
+  const json& j_;
+  std::string path_;
+  std::set<std::string> known_;
+};
+
+double finite_number(const json& j, const std::string& path,
+                     const std::string& expected) {
+  if (!j.is_number()) {
+    throw InputError(path, "got " + shown(j) + "; expected " + expected);
+  }
+  const double x = j.get<double>();
+  if (!std::isfinite(x)) {
+    throw InputError(path, "got " + shown(j) + "; expected a finite number");
+  }
+  return x;
+}
+
+enum class Range { positive, non_negative, any };
+
+struct Measured {
+  double value;  ///< SI
+  double sigma;  ///< SI
+};
+
+/// Reads the scene's quantities into `value` and `uncertainty` and records
+/// the SI unit of each path.
+class SceneReader {
+ public:
+  explicit SceneReader(ParsedScene& out) : out_(out) {}
+
+  /// {"value": x, "unit": "cm", "uncertainty": u, "source": "..."}
+  Measured quantity(Object& parent, const std::string& key, Dimension dim,
+                    Range range) {
+    Object q(parent.at(key), parent.path(key),
+             "an object {\"value\": ..., \"unit\": ...}");
+    const double raw = finite_number(q.at("value"), q.path("value"), "a number");
+    const std::string unit_name = q.text("unit");
+    const auto unit = find_unit(unit_name, dim);
+    if (!unit) {
+      throw InputError(q.path("unit"), "got \"" + unit_name + "\"; expected a unit of " +
+                                           dimension_name(dim) + ": " + unit_names(dim));
+    }
+    double sigma = 0.0;
+    if (q.has("uncertainty")) {
+      const double u = finite_number(q.at("uncertainty"), q.path("uncertainty"),
+                                     "a number");
+      if (u < 0.0) {
+        throw InputError(q.path("uncertainty"), "got " + format_number(u) +
+                                                    "; expected a non-negative uncertainty");
+      }
+      sigma = u * unit->factor;
+    }
+    if (q.has("source")) q.text("source");
+    q.finish();
+    const double si = raw * unit->factor + unit->offset;
+    const bool ok = range == Range::any || (range == Range::positive ? si > 0.0 : si >= 0.0);
+    if (!ok) {
+      const std::string kind = range == Range::positive ? "a positive " : "a non-negative ";
+      std::string what = dimension_name(dim);
+      what = what.substr(what.find(' ') + 1);
+      throw InputError(q.path("value"), "got " + format_number(raw) + " " + unit_name +
+                                            "; expected " + kind + what);
+    }
+    out_.si_unit[q.path()] = si_unit(dim);
+    return {si, sigma};
+  }
+
+  void put(Object& parent, const std::string& key, Dimension dim, Range range,
+           double& value, double& sigma) {
+    const Measured m = quantity(parent, key, dim, range);
+    value = m.value;
+    sigma = m.sigma;
+  }
+
+  /// An optional field: read only when present.
+  void put(Object& parent, const std::string& key, Dimension dim, Range range,
+           std::optional<double>& value, std::optional<double>& sigma) {
+    if (!parent.has(key)) return;
+    const Measured m = quantity(parent, key, dim, range);
+    value = m.value;
+    sigma = m.sigma;
+  }
+
+ private:
+  ParsedScene& out_;
+};
+
+void read_timing(Object& top, ParsedScene& out) {
+  Object t(top.at("timing"), "timing");
+  const json& n_json = t.at("oscillations_per_trial");
+  if (!n_json.is_number_integer() || n_json.get<long long>() < 1 ||
+      n_json.get<long long>() > 1000000000) {
+    throw InputError(t.path("oscillations_per_trial"),
+                     "got " + shown(n_json) + "; expected a positive whole number");
+  }
+  const int n_osc = static_cast<int>(n_json.get<long long>());
+  const std::string unit_name = t.text("unit");
+  const auto unit = find_unit(unit_name, Dimension::time);
+  if (!unit) {
+    throw InputError(t.path("unit"), "got \"" + unit_name + "\"; expected a unit of a time: " +
+                                         unit_names(Dimension::time));
+  }
+  const json& trials = t.at("trials");
+  if (!trials.is_array() || trials.empty()) {
+    throw InputError(t.path("trials"), "got " + shown(trials) +
+                                           "; expected a non-empty array of trial times");
+  }
+  std::vector<double> times;
+  for (std::size_t i = 0; i < trials.size(); ++i) {
+    const std::string p = t.path("trials") + "[" + std::to_string(i) + "]";
+    const double x = finite_number(trials[i], p, "a time (number)");
+    if (x <= 0.0) {
+      throw InputError(p, "got " + format_number(x) + " " + unit_name +
+                              "; expected a positive time");
+    }
+    times.push_back(x * unit->factor);
+  }
+  auto optional_time = [&](const char* key) -> std::optional<double> {
+    if (!t.has(key)) return std::nullopt;
+    const double x = finite_number(t.at(key), t.path(key), "a number");
+    if (x <= 0.0) {
+      throw InputError(t.path(key), "got " + format_number(x) + " " + unit_name +
+                                        "; expected a positive time");
+    }
+    return x * unit->factor;
+  };
+  const std::optional<double> resolution = optional_time("resolution");
+  const std::optional<double> trial_sigma = optional_time("uncertainty");
+  if (t.has("source")) t.text("source");
+  t.finish();
+
+  const double n = static_cast<double>(times.size());
+  double mean = 0.0;
+  for (double x : times) mean += x;
+  mean /= n;
+  double sigma_trial = 0.0;
+  if (times.size() >= 2) {
+    double ss = 0.0;
+    for (double x : times) ss += (x - mean) * (x - mean);
+    sigma_trial = std::sqrt(ss / (n - 1.0));
+    if (resolution) sigma_trial = std::max(sigma_trial, *resolution / std::sqrt(12.0));
+    if (sigma_trial == 0.0) {
+      out.warnings.push_back(
+          "timing.trials: all trials are equal and no resolution is given, so "
+          "the period's uncertainty is 0; state timing.resolution");
+    }
+  } else if (trial_sigma) {
+    sigma_trial = *trial_sigma;
+    out.assumptions.push_back(
+        "timing: a single trial; its uncertainty is timing.uncertainty");
+  } else if (resolution) {
+    sigma_trial = *resolution / std::sqrt(12.0);
+    out.assumptions.push_back(
+        "timing: a single trial; its uncertainty is timing.resolution/sqrt(12)");
+  } else {
+    throw InputError(t.path("trials"),
+                     "got a single trial; expected two or more, or a single one "
+                     "with timing.uncertainty or timing.resolution");
+  }
+  out.trial_count = static_cast<int>(times.size());
+  out.value.oscillations_per_trial = n_osc;
+  out.uncertainty.oscillations_per_trial = n_osc;
+  out.value.period = mean / n_osc;
+  out.uncertainty.period = sigma_trial / std::sqrt(n) / n_osc;
+  out.si_unit["timing.trials"] = "s";
+}
+
+void fail_if(bool bad, const std::string& path, const std::string& message) {
+  if (bad) throw InputError(path, message);
+}
+
+}  // namespace
+
+ParsedScene parse_scene(const std::string& text) {
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::exception& e) {
+    std::string why = e.what();
+    const auto colon = why.find("] ");
+    throw InputError("", "not valid JSON: " + (colon == std::string::npos ? why : why.substr(colon + 2)));
+  }
+  ParsedScene out;
+  SceneReader r(out);
+  Scene<double>& v = out.value;
+  Scene<double>& u = out.uncertainty;
+  Object top(doc, "", "a JSON object (the scene)");
+
+  if (top.has("schema")) {
+    const std::string schema = top.text("schema");
+    fail_if(schema != kSceneSchema, "schema",
+            "got \"" + schema + "\"; expected \"" + kSceneSchema + "\"");
+  }
+  if (top.has("title")) out.title = top.text("title");
+  if (top.has("source")) out.source = top.text("source");
+  if (top.has("notes")) top.text("notes");
+
+  read_timing(top, out);
+  r.put(top, "length", Dimension::length, Range::positive, v.length, u.length);
+  r.put(top, "amplitude", Dimension::angle, Range::positive, v.amplitude, u.amplitude);
+  fail_if(v.amplitude >= kPi, "amplitude.value",
+          "got " + format_number(v.amplitude * 180.0 / kPi) +
+              " deg; expected an amplitude below 180 deg (at 180 deg and beyond "
+              "the pendulum goes over the top)");
+
+  {
+    Object bob(top.at("bob"), "bob");
+    r.put(bob, "diameter", Dimension::length, Range::positive, v.bob.diameter, u.bob.diameter);
+    r.put(bob, "mass", Dimension::mass, Range::positive, v.bob.mass, u.bob.mass);
+    bob.finish();
+    fail_if(v.bob.diameter / 2.0 >= v.length, "length.value",
+            "got " + format_number(v.length) + " m; expected more than the bob radius " +
+                format_number(v.bob.diameter / 2.0) + " m");
+  }
+  // A part's fields are read into `pv` (values) and `pu` (uncertainties); its
+  // consistency is checked once no unknown key is left.
+  auto part = [&](const char* key, auto& value, auto& sigma, auto&& read, auto&& check) {
+    if (!top.has(key)) return;
+    Object o(top.at(key), key);
+    read(o, value.emplace(), sigma.emplace());
+    o.finish();
+    check(*value);
+  };
+  auto lighter_than_bob = [&](double mass, const std::string& path, const char* what) {
+    fail_if(mass >= v.bob.mass, path,
+            "got " + format_number(mass) + " kg; expected " + what + " lighter than the bob (" +
+                format_number(v.bob.mass) + " kg): the corrections are first order in its mass ratio");
+  };
+  part("ring", v.ring, u.ring, [&](Object& o, Ring<double>& pv, Ring<double>& pu) {
+    r.put(o, "mass", Dimension::mass, Range::positive, pv.mass, pu.mass);
+    r.put(o, "inner_radius", Dimension::length, Range::non_negative, pv.inner_radius, pu.inner_radius);
+    r.put(o, "outer_radius", Dimension::length, Range::positive, pv.outer_radius, pu.outer_radius);
+    r.put(o, "pivot_distance", Dimension::length, Range::non_negative, pv.pivot_distance, pu.pivot_distance);
+  }, [&](const Ring<double>& pv) {
+    fail_if(pv.inner_radius >= pv.outer_radius, "ring.inner_radius.value",
+            "got " + format_number(pv.inner_radius) + " m; expected less than ring.outer_radius (" +
+                format_number(pv.outer_radius) + " m)");
+    fail_if(pv.pivot_distance + pv.outer_radius >= v.length - v.bob.diameter / 2.0,
+            "ring.outer_radius.value",
+            "the ring reaches " + format_number(pv.pivot_distance + pv.outer_radius) +
+                " m below the pivot; expected it to end above the bob, which starts at " +
+                format_number(v.length - v.bob.diameter / 2.0) + " m");
+    lighter_than_bob(pv.mass, "ring.mass.value", "a ring");
+  });
+  part("cap", v.cap, u.cap, [&](Object& o, Cap<double>& pv, Cap<double>& pu) {
+    r.put(o, "mass", Dimension::mass, Range::non_negative, pv.mass, pu.mass);
+    r.put(o, "center_distance", Dimension::length, Range::non_negative, pv.center_distance,
+          pu.center_distance);
+    r.put(o, "volume", Dimension::volume, Range::non_negative, pv.volume, pu.volume);
+  }, [&](const Cap<double>& pv) {
+    lighter_than_bob(pv.mass, "cap.mass.value", "a cap");
+  });
+  part("cap_screw", v.cap_screw, u.cap_screw,
+       [&](Object& o, CapScrew<double>& pv, CapScrew<double>& pu) {
+         r.put(o, "mass_deficit", Dimension::mass, Range::any, pv.mass_deficit, pu.mass_deficit);
+         r.put(o, "center_distance", Dimension::length, Range::non_negative, pv.center_distance,
+               pu.center_distance);
+       },
+       [&](const CapScrew<double>& pv) {
+         lighter_than_bob(std::abs(pv.mass_deficit), "cap_screw.mass_deficit.value",
+                          "a mass deficit");
+       });
+  part("wire", v.wire, u.wire, [&](Object& o, Wire<double>& pv, Wire<double>& pu) {
+    r.put(o, "mass", Dimension::mass, Range::positive, pv.mass, pu.mass);
+    r.put(o, "diameter", Dimension::length, Range::positive, pv.diameter, pu.diameter);
+    r.put(o, "youngs_modulus", Dimension::modulus, Range::positive, pv.youngs_modulus,
+          pu.youngs_modulus);
+  }, [&](const Wire<double>& pv) {
+    lighter_than_bob(pv.mass, "wire.mass.value", "a wire");
+  });
+  if (top.has("air")) {
+    const json& air = top.at("air");
+    if (air.is_string()) {
+      fail_if(air.get<std::string>() != "vacuum", "air",
+              "got " + shown(air) + "; expected \"vacuum\" or an object with pressure and temperature");
+    } else {
+      Object o(air, "air", "\"vacuum\" or an object with pressure and temperature");
+      auto& pv = v.air.emplace();
+      auto& pu = u.air.emplace();
+      r.put(o, "pressure", Dimension::pressure, Range::positive, pv.pressure, pu.pressure);
+      r.put(o, "temperature", Dimension::temperature, Range::positive, pv.temperature,
+            pu.temperature);
+      if (o.has("molar_mass")) {
+        r.put(o, "molar_mass", Dimension::molar_mass, Range::positive, pv.molar_mass, pu.molar_mass);
+      } else {
+        pv.molar_mass = kDryAirMolarMass;
+        pu.molar_mass = 0.0;
+        out.si_unit["air.molar_mass"] = "kg/mol";
+        out.assumptions.push_back("air.molar_mass: not given; dry air, 0.02896 kg/mol");
+      }
+      if (o.has("viscosity")) {
+        r.put(o, "viscosity", Dimension::viscosity, Range::positive, pv.viscosity, pu.viscosity);
+      } else {
+        pv.viscosity = air_viscosity(pv.temperature);
+        pu.viscosity = 0.0;
+        out.si_unit["air.viscosity"] = "Pa s";
+        out.assumptions.push_back("air.viscosity: not given; Sutherland's law gives " +
+                                  format_number(pv.viscosity) + " Pa s");
+      }
+      o.finish();
+      const double rho = air_density(pv.pressure, pv.temperature, pv.molar_mass);
+      fail_if(rho > 100.0, "air",
+              "density " + format_number(rho) +
+                  " kg/m^3 from this pressure and temperature; expected a gas (below 100 kg/m^3)");
+      if (v.cap && !v.cap->volume) {
+        out.warnings.push_back(
+            "cap.volume: not given; buoyancy and added mass count the bob's volume only");
+      }
+    }
+  } else {
+    throw InputError("air", "missing; give the air's pressure and temperature, or \"vacuum\"");
+  }
+  part("support", v.support, u.support, [&](Object& o, Support<double>& pv, Support<double>& pu) {
+    r.put(o, "stiffness", Dimension::stiffness, Range::positive, pv.stiffness, pu.stiffness);
+    r.put(o, "mass", Dimension::mass, Range::positive, pv.mass, pu.mass);
+  }, [&](const Support<double>& pv) {
+    fail_if(!pv.stiffness && !pv.mass, "support",
+            "got neither stiffness nor mass; expected at least one");
+  });
+  part("decay", v.decay, u.decay, [&](Object& o, Decay<double>& pv, Decay<double>& pu) {
+    r.put(o, "alpha", Dimension::rate, Range::non_negative, pv.alpha, pu.alpha);
+    r.put(o, "beta", Dimension::rate_per_angle, Range::non_negative, pv.beta, pu.beta);
+  }, [](const Decay<double>&) {});
+  top.finish();
+  return out;
+}
+
+}  // namespace pendulum

@@ -1,0 +1,170 @@
+// The pendulum-g command: Table II of Nelson & Olsson (1986) from the bundled
+// data, and the catalogue of bad scenes (tests/bad_scenes.json), each of which
+// must fail with its message, a non-zero exit and nothing on stdout.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+using nlohmann::json;
+using Catch::Matchers::Contains;
+using Catch::Matchers::WithinAbs;
+
+namespace {
+
+struct Run {
+  int status;
+  std::string out;
+  std::string err;
+};
+
+// A new empty file in the temporary directory.
+std::string temporary_file() {
+  char name[] = "/tmp/pendulum-g-test-XXXXXX";
+  const int fd = mkstemp(name);
+  REQUIRE(fd >= 0);
+  close(fd);
+  return name;
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Runs pendulum-g with `args` (shell words) and captures everything.
+Run run(const std::string& args) {
+  const std::string err_file = temporary_file();
+  const std::string command = std::string(PENDULUM_G_EXE) + " " + args + " 2>" + err_file;
+  FILE* pipe = popen(command.c_str(), "r");
+  REQUIRE(pipe);
+  std::string out;
+  char buffer[4096];
+  while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
+  const int raw = pclose(pipe);
+  Run r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out, slurp(err_file)};
+  std::remove(err_file.c_str());
+  return r;
+}
+
+const std::string kNelsonOlsson = std::string(PENDULUM_DATA_DIR) + "/nelson_olsson_1986.json";
+
+const json& correction(const json& result, const std::string& id) {
+  for (const auto& c : result.at("corrections")) {
+    if (c.at("id") == id) return c;
+  }
+  FAIL("no correction " << id);
+  throw;
+}
+
+}  // namespace
+
+TEST_CASE("Table II of Nelson & Olsson (1986) from the CLI", "[cli][table2]") {
+  const Run r = run("reduce " + kNelsonOlsson);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  const json result = json::parse(r.out);
+
+  // Table II as printed: Delta T (us) and Delta g, whose printed unit
+  // 10^-3 m/s^2 is a slip for 10^-5 m/s^2 (docs/deviations.md).
+  struct Row {
+    const char* id;
+    double delta_t_us;
+    double delta_g_1e5;
+  };
+  const Row table2[] = {
+      {"finite_amplitude", 596, 336},  {"bob_radius", 72, 41},
+      {"ring", -282, -159},            {"cap", -116, -65},
+      {"cap_screw", 95, 54},           {"wire_mass", -463, -261},
+      {"wire_flexibility", 0.10, 0.06}, {"bob_rotation", 0.29, 0.16},
+      {"double_pendulum", 4.6, 2.6},   {"buoyancy", 292, 165},
+      {"linear_damping", 0.033, 0.019}, {"quadratic_damping", 0.027, 0.015},
+      {"amplitude_decay", -77, -43},   {"added_mass", 346, 195},
+      {"wire_stretch", 3.4, 1.9},      {"support_motion", 1, 0.6},
+  };
+  REQUIRE(result.at("corrections").size() == 16);
+  for (const Row& row : table2) {
+    const json& c = correction(result, row.id);
+    INFO(row.id);
+    REQUIRE(c.at("status") != "skipped");
+    // Issue 2's rule: >= 10 us within 1 us, < 1 us within 0.01 us, else
+    // 0.1 us; the support's "+1" is rounded to the unit, so 0.5 us there.
+    // Delta g follows the same rule in units of 1e-5 m/s^2.
+    const bool support = std::string(row.id) == "support_motion";
+    const double dt = c.at("delta_T_s").get<double>() * 1e6;
+    const double dg = c.at("delta_g_m_s2").get<double>() * 1e5;
+    const double tol_t = support ? 0.5 : (std::abs(row.delta_t_us) >= 10 ? 1.0 : std::abs(row.delta_t_us) < 1 ? 0.01 : 0.1);
+    const double tol_g = support ? 0.5 : (std::abs(row.delta_g_1e5) >= 10 ? 1.0 : std::abs(row.delta_g_1e5) < 1 ? 0.01 : 0.1);
+    CHECK_THAT(dt, WithinAbs(row.delta_t_us, tol_t));
+    CHECK_THAT(dg, WithinAbs(row.delta_g_1e5, tol_g));
+    CHECK(c.at("equation").get<std::string>().find("Nelson & Olsson (1986)") == 0);
+    CHECK_FALSE(c.at("method").get<std::string>().empty());
+  }
+  CHECK_THAT(result.at("total_delta_T_s").get<double>() * 1e6, WithinAbs(472.0, 2.0));
+  // Eq. (91): g = 9.8034 +- 0.0014 m/s^2, from the trials' spread and +-0.3 mm.
+  CHECK_THAT(result.at("g").at("value").get<double>(), WithinAbs(9.8034, 0.00005));
+  CHECK_THAT(result.at("g").at("uncertainty").get<double>(), WithinAbs(0.0014, 0.00005));
+  CHECK(result.at("g").at("unit") == "m/s^2");
+  // Eq. (4) and Eq. (90).
+  CHECK_THAT(result.at("period").at("measured").at("value").get<double>(), WithinAbs(3.47880, 0.000005));
+  CHECK_THAT(result.at("period").at("ideal").at("value").get<double>(), WithinAbs(3.47833, 0.000005));
+  CHECK(result.at("schema") == "pendulum-g/result/1");
+}
+
+TEST_CASE("The table format prints every row and g", "[cli]") {
+  const Run r = run("reduce --format table " + kNelsonOlsson);
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.out, Contains("Decay of finite amplitude"));
+  CHECK_THAT(r.out, Contains("g                   = 9.8034"));
+}
+
+TEST_CASE("The scene may come on standard input", "[cli]") {
+  const Run r = run("reduce - < " + kNelsonOlsson);
+  REQUIRE(r.status == 0);
+  CHECK(json::parse(r.out).at("input") == "-");
+}
+
+TEST_CASE("Catalogue of bad scenes", "[cli][errors]") {
+  const json catalogue = json::parse(slurp(std::string(PENDULUM_TESTS_DIR) + "/bad_scenes.json"));
+  const json base = json::parse(slurp(kNelsonOlsson));
+  const std::string file = temporary_file();
+  for (const json& entry : catalogue.at("cases")) {
+    const std::string name = entry.at("name");
+    std::string text;
+    if (entry.contains("text")) {
+      text = entry.at("text");
+    } else {
+      json scene = base;
+      scene.merge_patch(entry.at("patch"));
+      text = scene.dump();
+    }
+    std::ofstream(file) << text;
+    const Run r = run("reduce " + file);
+    INFO(name << "\nstderr: " << r.err);
+    CHECK(r.status == 1);
+    CHECK(r.out.empty());
+    CHECK_THAT(r.err, Contains(entry.at("error").get<std::string>()));
+    CHECK_THAT(r.err, Contains("pendulum-g: error: "));
+  }
+  std::remove(file.c_str());
+}
+
+TEST_CASE("Usage errors exit with status 2, a missing file with 1", "[cli][errors]") {
+  CHECK(run("").status == 2);
+  CHECK(run("reduce").status == 2);
+  CHECK(run("reduce --format yaml " + kNelsonOlsson).status == 2);
+  CHECK(run("reduce --amplitude-method magic " + kNelsonOlsson).status == 2);
+  const Run missing = run("reduce /nonexistent/scene.json");
+  CHECK(missing.status == 1);
+  CHECK(missing.out.empty());
+  CHECK_THAT(missing.err, Contains("cannot open the file"));
+  CHECK(run("--help").status == 0);
+}

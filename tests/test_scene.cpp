@@ -1,0 +1,115 @@
+// Reading scene files: units, derived values, and errors that name the path.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+
+#include "pendulum/scene_json.hpp"
+#include "reference.hpp"
+#include "scene_files.hpp"
+
+using namespace pendulum;
+using Catch::Matchers::Contains;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+TEST_CASE("The Nelson-Olsson file reads as published", "[scene]") {
+  const ParsedScene s = parse_scene(test::nelson_olsson_text());
+  // Eq. (4): T = 3.47880 +- 0.00017 s from Table I.
+  CHECK_THAT(s.value.period, WithinRel(3.4788, 1e-13));
+  CHECK_THAT(s.uncertainty.period, WithinAbs(0.00017, 0.000005));
+  CHECK(s.trial_count == 10);
+  CHECK(s.value.oscillations_per_trial == 100);
+  CHECK_THAT(s.value.length, WithinRel(test::kLength, 1e-15));
+  CHECK_THAT(s.uncertainty.length, WithinRel(0.0003, 1e-12));
+  CHECK_THAT(s.value.amplitude, WithinRel(test::kAmplitude, 1e-15));
+  CHECK_THAT(s.value.bob.diameter, WithinRel(0.061, 1e-15));
+  CHECK_THAT(s.value.bob.mass, WithinRel(test::kBobMass, 1e-15));
+  REQUIRE(s.value.air);
+  CHECK_THAT(s.value.air->temperature, WithinRel(298.65, 1e-15));
+  CHECK_THAT(s.value.air->pressure, WithinRel(100440.0, 1e-15));
+  REQUIRE(s.value.cap_screw);
+  CHECK(s.value.cap_screw->mass_deficit == Approx(0.0061));
+  REQUIRE(s.value.decay);
+  CHECK(s.value.decay->beta == Approx(test::kBeta));
+  CHECK(s.warnings.empty());
+  CHECK(s.assumptions.empty());
+  CHECK(s.si_unit.at("decay.beta") == "1/(s rad)");
+}
+
+namespace {
+// The Nelson-Olsson scene with an RFC 7386 merge patch applied.
+std::string patched(const char* patch) {
+  auto doc = nlohmann::json::parse(test::nelson_olsson_text());
+  doc.merge_patch(nlohmann::json::parse(patch));
+  return doc.dump();
+}
+
+void check_error(const std::string& text, const std::string& path, const std::string& message) {
+  try {
+    parse_scene(text);
+    FAIL("no error; expected one at " << path);
+  } catch (const InputError& e) {
+    CHECK(e.path() == path);
+    CHECK_THAT(std::string(e.what()), Contains(message));
+  }
+}
+}  // namespace
+
+TEST_CASE("Units convert to SI, offsets for temperatures only", "[scene][units]") {
+  const ParsedScene s = parse_scene(patched(R"J({
+    "length": {"value": 300.44, "unit": "cm", "uncertainty": 0.03},
+    "amplitude": {"value": 0.05, "unit": "rad"},
+    "air": {"pressure": {"value": 753.4, "unit": "mmHg"},
+            "temperature": {"value": 77.9, "unit": "degF", "uncertainty": 1.8},
+            "molar_mass": null, "viscosity": null},
+    "decay": {"beta": {"value": 5.5327e-5, "unit": "1/(s deg)"}}})J"));
+  CHECK_THAT(s.value.length, WithinRel(3.0044, 1e-15));
+  CHECK_THAT(s.uncertainty.length, WithinRel(0.0003, 1e-12));
+  CHECK(s.value.amplitude == 0.05);
+  CHECK_THAT(s.value.air->pressure, WithinRel(753.4 * 133.322387415, 1e-15));  // conventional mmHg
+  CHECK_THAT(s.value.air->temperature, WithinAbs(298.65, 1e-9));
+  CHECK_THAT(s.uncertainty.air->temperature, WithinRel(1.0, 1e-12));
+  CHECK_THAT(s.value.decay->beta, WithinRel(5.5327e-5 * 180.0 / M_PI, 1e-15));
+  // Defaults are announced, never silent.
+  CHECK(s.assumptions.size() == 2);
+  CHECK_THAT(s.value.air->molar_mass, WithinRel(0.02896, 1e-15));
+}
+
+TEST_CASE("Bad scenes fail at the right path", "[scene][errors]") {
+  check_error("", "", "not valid JSON");
+  check_error("[1, 2]", "", "expected a JSON object");
+  check_error(patched(R"J({"length": {"value": -3.0}})J"), "length.value", "got -3 m; expected a positive length");
+  check_error(patched(R"J({"length": {"unit": "furlong"}})J"), "length.unit", "expected a unit of a length: m, cm");
+  check_error(patched(R"J({"bob": {"mass": {"unit": "cm"}}})J"), "bob.mass.unit", "got \"cm\"; expected a unit of a mass");
+  check_error(patched(R"J({"bob": {"colour": "red"}})J"), "bob.colour", "unknown key");
+  check_error(patched(R"J({"lenght": 3})J"), "lenght", "unknown key");
+  check_error(patched(R"J({"amplitude": {"value": 180}})J"), "amplitude.value", "expected an amplitude below 180 deg");
+  check_error(patched(R"J({"amplitude": {"value": 0}})J"), "amplitude.value", "expected a positive angle");
+  check_error(patched(R"J({"timing": {"trials": []}})J"), "timing.trials", "expected a non-empty array");
+  check_error(patched(R"J({"timing": {"trials": [347.8, "x"]}})J"), "timing.trials[1]", "expected a time");
+  check_error(patched(R"J({"timing": {"trials": [347.8, -1]}})J"), "timing.trials[1]", "expected a positive time");
+  check_error(patched(R"J({"timing": {"oscillations_per_trial": 2.5}})J"), "timing.oscillations_per_trial",
+              "expected a positive whole number");
+  check_error(patched(R"J({"ring": {"mass": null}})J"), "ring.mass", "missing");
+  check_error(patched(R"J({"air": null})J"), "air", "missing");
+  check_error(patched(R"J({"air": "thin"})J"), "air", "expected \"vacuum\"");
+  check_error(patched(R"J({"length": {"value": "3.0044"}})J"), "length.value", "expected a number");
+  check_error(patched(R"J({"bob": {"mass": {"uncertainty": -0.1}}})J"), "bob.mass.uncertainty",
+              "expected a non-negative uncertainty");
+  check_error(patched(R"J({"length": {"value": 0.02}})J"), "length.value", "expected more than the bob radius");
+  check_error(patched(R"J({"cap": {"mass": {"value": 900}}})J"), "cap.mass.value", "lighter than the bob");
+  check_error(patched(R"J({"air": {"temperature": {"value": -300}}})J"), "air.temperature.value",
+              "expected a positive temperature");
+  check_error(patched(R"J({"support": {"stiffness": null}})J"), "support", "expected at least one");
+  check_error(patched(R"J({"schema": "pendulum-g/scene/9"})J"), "schema", "expected \"pendulum-g/scene/1\"");
+}
+
+TEST_CASE("A single trial needs a stated uncertainty or resolution", "[scene]") {
+  const char* one = R"J({"timing": {"trials": [347.88], "resolution": null}})J";
+  check_error(patched(one), "timing.trials", "got a single trial");
+  const ParsedScene s = parse_scene(patched(R"J({"timing": {"trials": [347.88]}})J"));
+  // Resolution 0.01 s, uniform: 0.01/sqrt(12) per trial, over 100 oscillations.
+  CHECK_THAT(s.uncertainty.period, WithinRel(0.01 / std::sqrt(12.0) / 100.0, 1e-12));
+  CHECK(s.assumptions.size() == 1);
+}

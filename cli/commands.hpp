@@ -1,0 +1,26 @@
+#pragma once
+// The subcommands of pendulum-g. Each registers its options on the app and
+// returns the function that runs it once the arguments are parsed. A run
+// throws pendulum::InputError for bad input; it prints nothing on stdout
+// until its whole result is ready.
+
+#include <functional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace pendulum::cli {
+
+/// A registered subcommand and the function that runs it.
+struct Command {
+  CLI::App* app;
+  std::function<int()> run;
+};
+
+/// The text of a file, or of standard input for "-".
+std::string read_input(const std::string& file);
+
+/// `pendulum-g reduce SCENE`: scene -> corrected g (cli/reduce_command.cpp).
+Command add_reduce_command(CLI::App& app);
+
+}  // namespace pendulum::cli

@@ -1,0 +1,52 @@
+#include <iostream>
+#include <map>
+#include <memory>
+
+#include "commands.hpp"
+#include "pendulum/analysis.hpp"
+#include "pendulum/result_json.hpp"
+#include "pendulum/scene_json.hpp"
+
+namespace pendulum::cli {
+
+Command add_reduce_command(CLI::App& app) {
+  struct Options {
+    std::string file;
+    std::string format = "json";
+    AnalysisOptions analysis;
+  };
+  auto o = std::make_shared<Options>();
+  auto* cmd = app.add_subcommand(
+      "reduce", "Apply every period correction the scene needs and print g as JSON");
+  cmd->add_option("scene", o->file, "Scene file (JSON), or - for standard input")->required();
+  cmd->add_option("--format", o->format, "Output: json (default) or table")
+      ->check(CLI::IsMember({"json", "table"}));
+  cmd->add_option("--negligible-fraction", o->analysis.negligible_fraction,
+                  "Flag a correction negligible below this fraction of the period's "
+                  "uncertainty (default 0.1)")
+      ->check(CLI::Range(0.0, 1e6));
+  const std::map<std::string, AmplitudeMethod> methods{
+      {"agm", AmplitudeMethod::agm},
+      {"series", AmplitudeMethod::series},
+      {"small_angle", AmplitudeMethod::small_angle}};
+  cmd->add_option("--amplitude-method", o->analysis.reduction.amplitude_method,
+                  "Finite-amplitude method: agm (exact, default), series, small_angle")
+      ->transform(CLI::CheckedTransformer(methods, CLI::ignore_case));
+  cmd->add_option("--series-terms", o->analysis.reduction.series_terms,
+                  "Terms of the Eq. (8) series for --amplitude-method series (default 4)")
+      ->check(CLI::Range(1, 1000));
+
+  return {cmd, [o] {
+    const ParsedScene scene = parse_scene(read_input(o->file));
+    const Analysis analysis = analyse(scene, o->analysis);
+    const std::string text =
+        o->format == "table"
+            ? result_to_table(scene, analysis)
+            : result_to_json(scene, analysis, o->analysis, o->file).dump(2) + "\n";
+    for (const auto& w : scene.warnings) std::cerr << "pendulum-g: warning: " << w << "\n";
+    std::cout << text;
+    return 0;
+  }};
+}
+
+}  // namespace pendulum::cli

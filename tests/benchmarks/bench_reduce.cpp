@@ -1,0 +1,46 @@
+// Cost of one reduction of the Nelson-Olsson scene, next to parsing its JSON
+// alone. Run: build/tests/benchmarks/bench_reduce
+#include <benchmark/benchmark.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <sstream>
+
+#include "pendulum/analysis.hpp"
+#include "pendulum/result_json.hpp"
+
+namespace {
+
+std::string nelson_olsson() {
+  std::ifstream in(std::string(PENDULUM_DATA_DIR) + "/nelson_olsson_1986.json");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void BM_ParseJsonOnly(benchmark::State& state) {
+  const std::string text = nelson_olsson();
+  for (auto _ : state) benchmark::DoNotOptimize(nlohmann::json::parse(text));
+}
+BENCHMARK(BM_ParseJsonOnly);
+
+void BM_ReduceDouble(benchmark::State& state) {
+  const pendulum::ParsedScene scene = pendulum::parse_scene(nelson_olsson());
+  for (auto _ : state) benchmark::DoNotOptimize(pendulum::reduce(scene.value));
+}
+BENCHMARK(BM_ReduceDouble);
+
+void BM_WholeReduction(benchmark::State& state) {
+  const std::string text = nelson_olsson();
+  const pendulum::AnalysisOptions options;
+  for (auto _ : state) {
+    const pendulum::ParsedScene scene = pendulum::parse_scene(text);
+    const pendulum::Analysis analysis = pendulum::analyse(scene, options);
+    benchmark::DoNotOptimize(pendulum::result_to_json(scene, analysis, options, "-").dump());
+  }
+}
+BENCHMARK(BM_WholeReduction);
+
+}  // namespace
+
+BENCHMARK_MAIN();

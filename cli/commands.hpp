@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -20,7 +21,13 @@ struct Command {
 /// The text of a file, or of standard input for "-".
 std::string read_input(const std::string& file);
 
+/// Each warning on stderr, prefixed "pendulum-g: warning: ".
+void print_warnings(const std::vector<std::string>& warnings);
+
 /// `pendulum-g reduce SCENE`: scene -> corrected g (cli/reduce_command.cpp).
 Command add_reduce_command(CLI::App& app);
+
+/// `pendulum-g fit-decay SCENE`: the decay record -> alpha, beta (cli/fit_decay_command.cpp).
+Command add_fit_decay_command(CLI::App& app);
 
 }  // namespace pendulum::cli

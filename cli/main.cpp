@@ -23,6 +23,10 @@ std::string read_input(const std::string& file) {
   return text.str();
 }
 
+void print_warnings(const std::vector<std::string>& warnings) {
+  for (const auto& w : warnings) std::cerr << "pendulum-g: warning: " << w << "\n";
+}
+
 }  // namespace pendulum::cli
 
 int main(int argc, char** argv) {
@@ -33,6 +37,7 @@ int main(int argc, char** argv) {
 
   const std::vector<pendulum::cli::Command> commands{
       pendulum::cli::add_reduce_command(app),
+      pendulum::cli::add_fit_decay_command(app),
   };
 
   try {

@@ -43,7 +43,8 @@ Command add_reduce_command(CLI::App& app) {
         o->format == "table"
             ? result_to_table(scene, analysis)
             : result_to_json(scene, analysis, o->analysis, o->file).dump(2) + "\n";
-    for (const auto& w : scene.warnings) std::cerr << "pendulum-g: warning: " << w << "\n";
+    print_warnings(scene.warnings);
+    print_warnings(analysis.warnings);
     std::cout << text;
     return 0;
   }};

@@ -168,3 +168,40 @@ TEST_CASE("Usage errors exit with status 2, a missing file with 1", "[cli][error
   CHECK_THAT(missing.err, Contains("cannot open the file"));
   CHECK(run("--help").status == 0);
 }
+
+TEST_CASE("fit-decay on the bundled record", "[cli][decay_fit]") {
+  const std::string scene = std::string(PENDULUM_DATA_DIR) + "/nelson_olsson_1986_decay.json";
+  const Run r = run("fit-decay " + scene);
+  REQUIRE(r.status == 0);
+  const json fit = json::parse(r.out);
+  CHECK(fit.at("schema") == "pendulum-g/decay-fit/1");
+  CHECK(fit.at("model") == "both");
+  CHECK(fit.at("converged") == true);
+  CHECK(fit.at("points") == 361);
+  CHECK(fit.at("uncertainty_scaling") == "sigma");
+  // Drawn from Eqs. (28)-(29): within 2 sigma of them.
+  const double alpha = fit.at("alpha").at("value"), s_alpha = fit.at("alpha").at("uncertainty");
+  const double beta = fit.at("beta").at("value"), s_beta = fit.at("beta").at("uncertainty");
+  CHECK(std::abs(alpha - 2.49e-4) < 2 * s_alpha);
+  CHECK(std::abs(beta - 3.17e-3) < 2 * s_beta);
+  CHECK(fit.at("alpha").at("unit") == "1/s");
+  CHECK(fit.at("beta").at("unit") == "1/(s rad)");
+  // The air explains a third of the linear damping (text after Eq. 68).
+  CHECK_THAT(fit.at("drag_theory").at("measured_over_predicted").at("alpha").get<double>(), WithinAbs(3.0, 0.3));
+
+  const Run forced = run("fit-decay --model linear_only " + scene);
+  REQUIRE(forced.status == 0);
+  CHECK(json::parse(forced.out).at("beta").at("fitted") == false);
+
+  // The reduction uses the fit and reports it.
+  const Run reduced = run("reduce " + scene);
+  REQUIRE(reduced.status == 0);
+  const json result = json::parse(reduced.out);
+  CHECK(result.at("decay_fit").at("alpha").at("value").get<double>() == alpha);
+  CHECK(correction(result, "amplitude_decay").at("status") == "applied");
+
+  const Run none = run("fit-decay " + kNelsonOlsson);
+  CHECK(none.status == 1);
+  CHECK(none.out.empty());
+  CHECK_THAT(none.err, Contains("decay.data: missing"));
+}

@@ -33,9 +33,50 @@ Reduction<Dual> reduce_seeded(const ParsedScene& scene, const std::string& input
 
 }  // namespace
 
-Analysis analyse(const ParsedScene& scene, const AnalysisOptions& options) {
-  const Reduction<double> r = reduce(scene.value, options.reduction);
+std::vector<std::string> review_decay_fit(const DecayFit& fit) {
+  std::vector<std::string> warnings;
+  if (!fit.converged) warnings.push_back("decay fit: did not converge (" + fit.termination + ")");
+  if (fit.uncertainty_scaling == "sigma" && fit.dof > 0) {
+    const double reduced = fit.chi2 / fit.dof;
+    // chi2/dof has standard deviation sqrt(2/dof) when the sigmas are right.
+    if (std::abs(reduced - 1.0) > 4.0 * std::sqrt(2.0 / fit.dof)) {
+      std::ostringstream w;
+      w << "decay fit: chi2/dof = " << reduced << " with " << fit.dof
+        << " degrees of freedom; the stated sigma or the model (Eq. 25) does not fit the data";
+      warnings.push_back(w.str());
+    }
+  }
+  for (const auto& [name, q] : {std::pair{"alpha", fit.alpha}, std::pair{"beta", fit.beta}}) {
+    if (q.fitted && !q.at_bound && !q.significant) {
+      warnings.push_back(std::string("decay fit: ") + name +
+                         " is not significant (less than two standard uncertainties from 0)");
+    }
+  }
+  return warnings;
+}
+
+ParsedScene with_fitted_decay(const ParsedScene& scene, const DecayFit& fit) {
+  ParsedScene out = scene;
+  out.value.decay = Decay<double>{fit.alpha.value, fit.beta.value};
+  out.uncertainty.decay = Decay<double>{fit.alpha.uncertainty.value_or(0.0),
+                                        fit.beta.uncertainty.value_or(0.0)};
+  out.si_unit["decay.alpha"] = "1/s";
+  out.si_unit["decay.beta"] = "1/(s rad)";
+  return out;
+}
+
+Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
   Analysis out;
+  std::optional<ParsedScene> fitted;
+  if (given.decay_data) {
+    out.decay_fit = fit_decay(*given.decay_data);
+    out.decay_given = given.value.decay;
+    out.warnings = review_decay_fit(*out.decay_fit);
+    fitted = with_fitted_decay(given, *out.decay_fit);
+  }
+  const ParsedScene& scene = fitted ? *fitted : given;
+  if (scene.value.decay) out.drag = predict_drag(scene.value);
+  const Reduction<double> r = reduce(scene.value, options.reduction);
   out.period_measured = {scene.value.period, scene.uncertainty.period};
   out.negligible_below = options.negligible_fraction * scene.uncertainty.period;
 

@@ -17,7 +17,52 @@ nlohmann::ordered_json optional_number(const std::optional<double>& x) {
   return x ? nlohmann::ordered_json(*x) : nlohmann::ordered_json(nullptr);
 }
 
+nlohmann::ordered_json parameter(const FittedParameter& q, const char* unit) {
+  return {{"value", q.value},
+          {"uncertainty", q.uncertainty ? nlohmann::ordered_json(*q.uncertainty) : nlohmann::ordered_json(nullptr)},
+          {"unit", unit},
+          {"fitted", q.fitted},
+          {"at_bound", q.at_bound},
+          {"significant", q.significant}};
+}
+
 }  // namespace
+
+nlohmann::ordered_json decay_fit_to_json(const DecayFit& f, const std::optional<Decay<double>>& given) {
+  using json = nlohmann::ordered_json;
+  json out = {{"equation", "Nelson & Olsson (1986) Eq. (25)"},
+              {"model", decay_model_name(f.model)},
+              {"model_reason", f.model_reason},
+              {"alpha", parameter(f.alpha, "1/s")},
+              {"beta", parameter(f.beta, "1/(s rad)")},
+              {"initial_amplitude", parameter(f.initial_amplitude, "rad")},
+              {"correlation_alpha_beta", f.correlation_alpha_beta},
+              {"chi2", f.chi2},
+              {"dof", f.dof},
+              {"reduced_chi2", f.dof > 0 ? json(f.chi2 / f.dof) : json(nullptr)},
+              {"residual_standard_error_rad", f.residual_standard_error},
+              {"uncertainty_scaling", f.uncertainty_scaling},
+              {"points", f.points},
+              {"converged", f.converged},
+              {"termination", f.termination},
+              {"iterations", f.iterations}};
+  if (given) out["given"] = {{"alpha_1_s", given->alpha}, {"beta_1_s_rad", given->beta}};
+  return out;
+}
+
+nlohmann::ordered_json drag_to_json(const DragPrediction<double>& d, const Decay<double>& decay) {
+  using json = nlohmann::ordered_json;
+  auto optional = [](const std::optional<double>& x) { return x ? json(*x) : json(nullptr); };
+  return {{"equation", "Nelson & Olsson (1986) Eqs. (26), (27), (63)-(67)"},
+          {"reynolds_sphere", d.reynolds_sphere},
+          {"reynolds_wire", optional(d.reynolds_wire)},
+          {"c_d_prime", d.c_d_prime},
+          {"b_kg_s", {{"sphere", d.b_sphere}, {"wire", optional(d.b_wire)}, {"total", d.b}}},
+          {"c_kg_m", {{"sphere", d.c_sphere}, {"wire", optional(d.c_wire)}, {"total", d.c}}},
+          {"alpha_1_s", d.alpha},
+          {"beta_1_s_rad", d.beta},
+          {"measured_over_predicted", {{"alpha", decay.alpha / d.alpha}, {"beta", decay.beta / d.beta}}}};
+}
 
 nlohmann::ordered_json result_to_json(const ParsedScene& scene, const Analysis& a,
                               const AnalysisOptions& options, const std::string& input) {
@@ -53,7 +98,9 @@ nlohmann::ordered_json result_to_json(const ParsedScene& scene, const Analysis& 
                  {"trials", scene.trial_count},
                  {"oscillations_per_trial", scene.value.oscillations_per_trial}};
 
-  return {{"schema", kResultSchema},
+  json warnings = scene.warnings;
+  for (const auto& w : a.warnings) warnings.push_back(w);
+  json out = {{"schema", kResultSchema},
           {"input", input},
           {"title", scene.title},
           {"g", g},
@@ -66,7 +113,14 @@ nlohmann::ordered_json result_to_json(const ParsedScene& scene, const Analysis& 
             {"delta_T_s", a.negligible_below}}},
           {"corrections", corrections},
           {"assumptions", scene.assumptions},
-          {"warnings", scene.warnings}};
+          {"warnings", warnings}};
+  if (a.decay_fit) out["decay_fit"] = decay_fit_to_json(*a.decay_fit, a.decay_given);
+  if (a.drag) {
+    const Decay<double> used = a.decay_fit ? Decay<double>{a.decay_fit->alpha.value, a.decay_fit->beta.value}
+                                           : *scene.value.decay;
+    out["drag_theory"] = drag_to_json(*a.drag, used);
+  }
+  return out;
 }
 
 std::string result_to_table(const ParsedScene& scene, const Analysis& a) {
@@ -103,6 +157,7 @@ std::string result_to_table(const ParsedScene& scene, const Analysis& a) {
                 a.g.uncertainty);
   os << line;
   for (const auto& w : scene.warnings) os << "warning: " << w << "\n";
+  for (const auto& w : a.warnings) os << "warning: " << w << "\n";
   return os.str();
 }
 

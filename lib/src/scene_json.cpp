@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pendulum/air.hpp"
+#include "pendulum/decay_fit.hpp"
 #include "pendulum/numeric.hpp"
 #include "pendulum/units.hpp"
 
@@ -256,6 +257,74 @@ void fail_if(bool bad, const std::string& path, const std::string& message) {
   if (bad) throw InputError(path, message);
 }
 
+/// A unit name under `key`, which must measure `dim`.
+Unit unit_at(Object& o, const std::string& key, Dimension dim) {
+  const std::string name = o.text(key);
+  const auto unit = find_unit(name, dim);
+  if (!unit) {
+    throw InputError(o.path(key), "got \"" + name + "\"; expected a unit of " + dimension_name(dim) +
+                                      ": " + unit_names(dim));
+  }
+  return *unit;
+}
+
+/// An array of finite numbers under `key`, each scaled by `factor`.
+std::vector<double> number_array(Object& o, const std::string& key, double factor) {
+  const json& a = o.at(key);
+  if (!a.is_array()) {
+    throw InputError(o.path(key), "got " + shown(a) + "; expected an array of numbers");
+  }
+  std::vector<double> out;
+  out.reserve(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    out.push_back(factor * finite_number(a[i], o.path(key) + "[" + std::to_string(i) + "]", "a number"));
+  }
+  return out;
+}
+
+/// decay: alpha and beta as measured, and/or a record to fit them from
+/// (docs/scene.md); the record is validated here, fitted by the analysis.
+void read_decay(Object& top, SceneReader& r, ParsedScene& out) {
+  Object o(top.at("decay"), "decay");
+  const bool given = o.has("alpha") || o.has("beta");
+  const bool has_data = o.has("data");
+  fail_if(!given && !has_data, "decay", "got neither alpha and beta nor data; expected one of them");
+  if (given) {
+    auto& pv = out.value.decay.emplace();
+    auto& pu = out.uncertainty.decay.emplace();
+    r.put(o, "alpha", Dimension::rate, Range::non_negative, pv.alpha, pu.alpha);
+    r.put(o, "beta", Dimension::rate_per_angle, Range::non_negative, pv.beta, pu.beta);
+  }
+  if (has_data) {
+    Object d(o.at("data"), "decay.data");
+    const Unit time_unit = unit_at(d, "time_unit", Dimension::time);
+    const Unit angle_unit = unit_at(d, "amplitude_unit", Dimension::angle);
+    DecayData data;
+    data.times = number_array(d, "times", time_unit.factor);
+    data.amplitudes = number_array(d, "amplitudes", angle_unit.factor);
+    fail_if(d.has("sigma") && d.has("sigmas"), d.path("sigmas"),
+            "got both sigma and sigmas; expected one of them");
+    if (d.has("sigma")) {
+      const double sigma = finite_number(d.at("sigma"), d.path("sigma"), "a number");
+      fail_if(!(sigma > 0.0), d.path("sigma"),
+              "got " + format_number(sigma) + "; expected a positive uncertainty");
+      data.sigmas.assign(data.times.size(), sigma * angle_unit.factor);
+    } else if (d.has("sigmas")) {
+      data.sigmas = number_array(d, "sigmas", angle_unit.factor);
+    }
+    if (d.has("initial_amplitude")) {
+      data.initial_amplitude =
+          r.quantity(d, "initial_amplitude", Dimension::angle, Range::positive).value;
+    }
+    if (d.has("source")) d.text("source");
+    if (d.has("generator")) d.at("generator");  // free-form metadata
+    d.finish();
+    validate_decay_data(data, "decay.data");
+    out.decay_data = std::move(data);
+  }
+  o.finish();
+}
+
 }  // namespace
 
 ParsedScene parse_scene(const std::string& text) {
@@ -404,10 +473,7 @@ ParsedScene parse_scene(const std::string& text) {
     fail_if(!pv.stiffness && !pv.mass, "support",
             "got neither stiffness nor mass; expected at least one");
   });
-  part("decay", v.decay, u.decay, [&](Object& o, Decay<double>& pv, Decay<double>& pu) {
-    r.put(o, "alpha", Dimension::rate, Range::non_negative, pv.alpha, pu.alpha);
-    r.put(o, "beta", Dimension::rate_per_angle, Range::non_negative, pv.beta, pu.beta);
-  }, [](const Decay<double>&) {});
+  if (top.has("decay")) read_decay(top, r, out);
   top.finish();
   return out;
 }

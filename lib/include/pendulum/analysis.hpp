@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "pendulum/decay_fit.hpp"
+#include "pendulum/drag.hpp"
 #include "pendulum/reduction.hpp"
 #include "pendulum/scene_json.hpp"
 
@@ -60,7 +62,23 @@ struct Analysis {
   double total_delta_g;                  ///< (m/s^2)
   double negligible_below;               ///< (s)
   std::vector<BudgetEntry> budget;
+  /// The fit of alpha and beta when the scene gives a decay record.
+  std::optional<DecayFit> decay_fit;
+  /// alpha and beta given beside a decay record, for comparison.
+  std::optional<Decay<double>> decay_given;
+  /// The air's predicted damping, when the scene has air and decay.
+  std::optional<DragPrediction<double>> drag;
+  /// Findings of the analysis itself (the scene's own are in ParsedScene).
+  std::vector<std::string> warnings;
 };
+
+/// What a decay fit's user should know: non-convergence, a chi2/dof that
+/// the stated sigmas cannot explain, a term that is not significant.
+std::vector<std::string> review_decay_fit(const DecayFit& fit);
+
+/// The scene with alpha and beta taken from the fit of its decay record,
+/// if it has one (its uncertainties from the fit's covariance).
+ParsedScene with_fitted_decay(const ParsedScene& scene, const DecayFit& fit);
 
 /// Reduces the scene and propagates the chosen inputs' uncertainties by
 /// automatic differentiation through the whole reduction.

@@ -15,6 +15,13 @@ namespace pendulum {
 nlohmann::ordered_json result_to_json(const ParsedScene& scene, const Analysis& analysis,
                               const AnalysisOptions& options, const std::string& input);
 
+/// The decay fit as JSON (the body of `pendulum-g fit-decay`); `given` are
+/// alpha and beta stated beside the record, if any.
+nlohmann::ordered_json decay_fit_to_json(const DecayFit& fit, const std::optional<Decay<double>>& given);
+
+/// The air's predicted damping, compared with the alpha and beta in use.
+nlohmann::ordered_json drag_to_json(const DragPrediction<double>& drag, const Decay<double>& decay);
+
 /// The same result as an aligned text table (microseconds, 1e-5 m/s^2).
 std::string result_to_table(const ParsedScene& scene, const Analysis& analysis);
 

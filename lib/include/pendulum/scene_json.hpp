@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "pendulum/decay_fit.hpp"
 #include "pendulum/scene.hpp"
 
 namespace pendulum {
@@ -33,6 +34,9 @@ struct ParsedScene {
   std::string title;
   std::string source;
   int trial_count = 0;
+  /// A decay record to fit alpha and beta from (decay.data); the fit
+  /// replaces any alpha and beta given beside it.
+  std::optional<DecayData> decay_data;
   std::vector<std::string> assumptions;  ///< defaults the reduction used
   std::vector<std::string> warnings;     ///< legal but suspicious input
 };

@@ -1,0 +1,80 @@
+#!/usr/bin/python3
+"""pendulum-g's decay fit against scipy.optimize.curve_fit, in one run.
+
+Usage (Debian's python3 with python3-scipy):
+    /usr/bin/python3 tests/benchmarks/compare_decay_fit.py build/tests/benchmarks/bench_decay_fit
+
+Runs bench_decay_fit (Google Benchmark, 7 repetitions, medians), exports its
+data sets and fitted values, times curve_fit on the same data (median of
+repeated fits, started at the truth, sigma given with absolute_sigma=True,
+Levenberg-Marquardt without bounds), and prints a markdown table: median time
+per fit, the ratio scipy/pendulum-g, how far each fit is from the truth in
+its own standard uncertainties, and the relative difference of the two
+optima.
+"""
+import json
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+import scipy
+from scipy.optimize import curve_fit
+
+
+def eq25(t, alpha, beta, theta0m):
+    e = np.exp(-alpha * t)
+    return alpha * theta0m * e / (beta * theta0m * (1.0 - e) + alpha)
+
+
+def median_time(fn, budget_s=1.0, min_reps=7):
+    times = []
+    start = time.perf_counter()
+    while len(times) < min_reps or time.perf_counter() - start < budget_s:
+        t0 = time.perf_counter()
+        fn()
+        times.append(time.perf_counter() - t0)
+        if len(times) >= 2000:
+            break
+    return float(np.median(times))
+
+
+def main():
+    bench = sys.argv[1]
+    runs = json.loads(subprocess.run(
+        [bench, "--benchmark_repetitions=7", "--benchmark_report_aggregates_only=true",
+         "--benchmark_format=json"], check=True, capture_output=True, text=True).stdout)
+    ours = {}
+    for b in runs["benchmarks"]:
+        if b.get("aggregate_name") != "median":
+            continue
+        name, n = b["run_name"].split("/")
+        ours[(name, int(n))] = b["real_time"] * {"us": 1e-6, "ms": 1e-3, "ns": 1e-9}[b["time_unit"]]
+    with tempfile.TemporaryDirectory() as tmp:
+        subprocess.run([bench, "--export", tmp], check=True)
+        fits = json.load(open(tmp + "/fits.json"))
+        print(f"scipy {scipy.__version__}, numpy {np.__version__}; medians in ms\n")
+        print("| points | pendulum-g | textbook Ceres | scipy curve_fit | scipy / pendulum-g "
+              "| pendulum-g (α, β) − truth in σ | scipy − pendulum-g, relative (α, β) |")
+        print("|---:|---:|---:|---:|---:|---|---|")
+        for f in fits:
+            n = f["points"]
+            t, y, s = np.loadtxt(f"{tmp}/decay_{n}.csv", delimiter=",", unpack=True)
+            truth = f["truth"]
+            p0 = [truth["alpha"], truth["beta"], truth["theta0m"]]
+            fit = lambda: curve_fit(eq25, t, y, p0=p0, sigma=s, absolute_sigma=True)
+            popt, _ = fit()
+            t_scipy = median_time(fit)
+            t_ours = ours[("BM_PendulumFit", n)]
+            t_text = ours[("BM_TextbookCeres", n)]
+            za = (f["alpha"] - truth["alpha"]) / f["alpha_uncertainty"]
+            zb = (f["beta"] - truth["beta"]) / f["beta_uncertainty"]
+            da = popt[0] / f["alpha"] - 1
+            db = popt[1] / f["beta"] - 1
+            print(f"| {n} | {t_ours*1e3:.4f} | {t_text*1e3:.4f} | {t_scipy*1e3:.4f} | {t_scipy/t_ours:.1f} "
+                  f"| {za:+.2f}, {zb:+.2f} | {da:+.1e}, {db:+.1e} |")
+
+
+if __name__ == "__main__":
+    main()

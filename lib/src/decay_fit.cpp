@@ -133,30 +133,34 @@ class CompressedDecayCost final : public ceres::CostFunction {
   mutable kernel::DecaySums sums_;
 };
 
-/// The integral of theta over an interval of length h between two readings,
-/// for theta decaying exponentially between them (exact for Eq. 33, close
-/// for Eq. 25 even on coarse records); the trapezoid where that is undefined.
-double interval_integral(double h, double a, double b) {
-  if (a > 0.0 && b > 0.0 && std::abs(a - b) > 1e-8 * a) return h * (a - b) / std::log(a / b);
-  return 0.5 * h * (a + b);
-}
-
 /// Starting point from the integral form of Eq. (24):
 /// ln(theta_i/theta_1) = -alpha (t_i - t_1) - beta * integral of theta dt,
-/// a linear least-squares problem in (alpha, beta), with the integral taken
-/// interval by interval over the data. Exact for noiseless data up to the
-/// quadrature error; the fit then needs few iterations.
+/// a linear least-squares problem in (alpha, beta). The integral is taken
+/// between readings as for an exponential (exact for Eq. 33, close for
+/// Eq. 25 even on coarse records), or by the trapezoid where a reading is not
+/// positive (noisy synthetic tails). A start needs no more than about 200
+/// readings: longer records are thinned, which keeps this step's logarithms
+/// from costing more than the fit.
 std::array<double, 3> initial_guess(const DecayData& data, DecayModel model) {
   const std::size_t n = data.times.size();
+  const std::size_t stride = std::max<std::size_t>(1, n / 200);
   double saa = 0, sab = 0, sbb = 0, say = 0, sby = 0, integral = 0;
-  for (std::size_t i = 1; i < n; ++i) {
-    integral += interval_integral(data.times[i] - data.times[i - 1], data.amplitudes[i - 1],
-                                  data.amplitudes[i]);
-    // Noisy synthetic tails may dip below zero: they inform the integral only.
-    if (!(data.amplitudes[i] > 0.0)) continue;
-    const double a = -(data.times[i] - data.times[0]), b = -integral;
-    const double y = std::log(data.amplitudes[i] / data.amplitudes[0]);
-    saa += a * a; sab += a * b; sbb += b * b; say += a * y; sby += b * y;
+  const double t0 = data.times[0], log0 = std::log(data.amplitudes[0]);
+  std::size_t previous = 0;
+  double log_previous = log0;
+  const std::size_t steps = (n - 1 + stride - 1) / stride;  // the last reading always counts
+  for (std::size_t k = 1; k <= steps; ++k) {
+    const std::size_t i = std::min(k * stride, n - 1);
+    const double a = data.amplitudes[previous], b = data.amplitudes[i];
+    const double h = data.times[i] - data.times[previous];
+    const double log_b = b > 0.0 ? std::log(b) : 0.0;
+    const bool exponential = a > 0.0 && b > 0.0 && std::abs(a - b) > 1e-8 * a;
+    integral += exponential ? h * (a - b) / (log_previous - log_b) : 0.5 * h * (a + b);
+    previous = i;
+    log_previous = log_b;
+    if (b <= 0.0) continue;  // informs the integral only
+    const double x_a = -(data.times[i] - t0), x_b = -integral, y = log_b - log0;
+    saa += x_a * x_a; sab += x_a * x_b; sbb += x_b * x_b; say += x_a * y; sby += x_b * y;
   }
   double alpha = say / saa, beta = sby / sbb;  // one-term fits
   const double det = saa * sbb - sab * sab;
@@ -164,13 +168,13 @@ std::array<double, 3> initial_guess(const DecayData& data, DecayModel model) {
     alpha = (say * sbb - sby * sab) / det;
     beta = (sby * saa - say * sab) / det;
   }
-  if (model == DecayModel::quadratic_only) alpha = 0.0;
-  if (model == DecayModel::linear_only) beta = 0.0;
+  if (model == DecayModel::quadratic_only || !std::isfinite(alpha)) alpha = 0.0;
+  if (model == DecayModel::linear_only || !std::isfinite(beta)) beta = 0.0;
   alpha = std::max(alpha, 0.0);
   beta = std::max(beta, 0.0);
   const double theta0 = data.initial_amplitude
                             ? *data.initial_amplitude
-                            : data.amplitudes[0] * std::exp((alpha + beta * data.amplitudes[0]) * data.times[0]);
+                            : data.amplitudes[0] * std::exp((alpha + beta * data.amplitudes[0]) * t0);
   return {alpha, beta, theta0};
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "pendulum/analysis.hpp"
+#include "pendulum/decay_simulation.hpp"
 #include "reference.hpp"
 #include "scene_files.hpp"
 
@@ -24,15 +25,17 @@ const CorrectionRow& row(const Analysis& a, const std::string& id) {
 
 TEST_CASE("Nelson-Olsson: Eqs. (5), (90), (91)", "[reduction][table2]") {
   const Analysis a = analyse(parse_scene(test::nelson_olsson_text()));
-  // Eq. (5): g = 9.8007 +- 0.0014 m/s^2 with T0 = T.
+  // Eq. (5): g = 9.8007 +- 0.0014 m/s^2 with T0 = T (only T and l enter).
   CHECK_THAT(a.g_uncorrected.value, WithinAbs(9.8007, 0.00005));
   CHECK_THAT(a.g_uncorrected.uncertainty, WithinAbs(0.0014, 0.00005));
-  // Eq. (90): T0 = 3.47833 +- 0.00017 s.
+  // Eq. (90): T0 = 3.47833 s.
   CHECK_THAT(a.period_ideal.value, WithinAbs(3.47833, 0.000005));
-  CHECK_THAT(a.period_ideal.uncertainty, WithinAbs(0.00017, 0.000005));
-  // Eq. (91): g = 9.8034 +- 0.0014 m/s^2.
+  // Eq. (91): g = 9.8034 +- 0.0014 m/s^2, the uncertainty from T and l alone.
   CHECK_THAT(a.g.value, WithinAbs(9.8034, 0.00005));
-  CHECK_THAT(a.g.uncertainty, WithinAbs(0.0014, 0.00005));
+  CHECK_THAT(a.g_period_and_length_uncertainty, WithinAbs(0.0014, 0.00005));
+  // Every stated uncertainty counts: the amplitude's +-0.3 deg adds to it.
+  CHECK(a.g.uncertainty > a.g_period_and_length_uncertainty);
+  CHECK(a.budget.at(2).input == "amplitude");
 }
 
 TEST_CASE("Corrections add linearly (Eqs. 6-7)", "[reduction]") {
@@ -82,32 +85,84 @@ TEST_CASE("A bare scene computes only what it has", "[reduction]") {
   CHECK(row(a, "buoyancy").reason == "the scene is in vacuum");
 }
 
-TEST_CASE("The budget's derivatives match finite differences of the reduction", "[reduction][jet]") {
-  ParsedScene s = parse_scene(test::nelson_olsson_text());
+namespace {
+// An independent propagation: central differences of the double-precision
+// reduction in each input, step 1e-3 of its uncertainty.
+struct Propagated {
+  double g, period_ideal;
+};
+Propagated finite_difference_uncertainty(const ParsedScene& s) {
+  double var_g = 0.0, var_t0 = 0.0;
+  zip_fields(s.value, s.uncertainty, [&](const char* path, const double&, const double& u) {
+    if (u == 0.0) return;
+    auto shifted = [&](double h) {
+      ParsedScene t = s;
+      zip_fields(t.value, t.value, [&](const char* p, double& x, double&) {
+        if (std::string(p) == path) x += h;
+      });
+      return reduce(t.value);
+    };
+    const double h = 1e-3 * u;
+    const auto up = shifted(h), down = shifted(-h);
+    const double dg = (up.g - down.g) / (2 * h), dt0 = (up.period_ideal - down.period_ideal) / (2 * h);
+    var_g += dg * dg * u * u;
+    var_t0 += dt0 * dt0 * u * u;
+  });
+  return {std::sqrt(var_g), std::sqrt(var_t0)};
+}
+}  // namespace
+
+TEST_CASE("The propagated uncertainties match finite differences", "[reduction][budget]") {
+  const ParsedScene s = parse_scene(test::nelson_olsson_text());
   const Analysis a = analyse(s);
-  REQUIRE(a.budget.size() == 2);
+  const Propagated fd = finite_difference_uncertainty(s);
+  CHECK_THAT(a.g.uncertainty, WithinRel(fd.g, 1e-6));
+  CHECK_THAT(a.period_ideal.uncertainty, WithinRel(fd.period_ideal, 1e-6));
+  // The budget adds in quadrature to the total.
   double quadrature = 0.0;
   for (const auto& b : a.budget) quadrature += b.contribution * b.contribution;
   CHECK_THAT(std::sqrt(quadrature), WithinRel(a.g.uncertainty, 1e-14));
-
-  auto g_at = [&](double period, double length) {
-    ParsedScene t = s;
-    t.value.period = period;
-    t.value.length = length;
-    return analyse(t).g.value;
-  };
-  const double hp = 1e-6 * s.value.period, hl = 1e-6 * s.value.length;
-  const double dg_dt = (g_at(s.value.period + hp, s.value.length) -
-                        g_at(s.value.period - hp, s.value.length)) / (2 * hp);
-  const double dg_dl = (g_at(s.value.period, s.value.length + hl) -
-                        g_at(s.value.period, s.value.length - hl)) / (2 * hl);
-  CHECK(a.budget[0].input == "timing.trials");
-  CHECK_THAT(a.budget[0].sensitivity, WithinRel(dg_dt, 1e-6));
-  CHECK(a.budget[1].input == "length");
-  CHECK_THAT(a.budget[1].sensitivity, WithinRel(dg_dl, 1e-6));
+  // Every input the file gives an uncertainty for is in the budget, largest first.
+  CHECK(a.budget.size() == 8);
+  for (std::size_t i = 1; i < a.budget.size(); ++i) CHECK(a.budget[i - 1].contribution >= a.budget[i].contribution);
   // Close to the ideal pendulum's -2g/T and g/l.
-  CHECK_THAT(a.budget[0].sensitivity, WithinRel(-2 * a.g.value / a.period_ideal.value, 1e-3));
-  CHECK_THAT(a.budget[1].sensitivity, WithinRel(a.g.value / s.value.length, 1e-3));
+  for (const auto& b : a.budget) {
+    if (b.input == "timing.trials") CHECK_THAT(b.sensitivity, WithinRel(-2 * a.g.value / a.period_ideal.value, 1e-3));
+    if (b.input == "length") CHECK_THAT(b.sensitivity, WithinRel(a.g.value / s.value.length, 1e-3));
+  }
+}
+
+TEST_CASE("Monte Carlo agrees with the linear propagation", "[reduction][budget]") {
+  // 4000 scenes with every input drawn from N(value, uncertainty), seeded.
+  // The sample standard deviation of g has a relative standard error of
+  // 1/sqrt(2 x 4000) = 1.1%; the test allows 4.5%, which also covers the
+  // curvature of the amplitude correction (relative sigma^2/(2 theta^2) = 0.5%).
+  const ParsedScene s = parse_scene(test::nelson_olsson_text());
+  const Analysis a = analyse(s);
+  NormalDeviates noise(20261122);
+  const int n = 4000;
+  double sum = 0.0, sum2 = 0.0;
+  for (int k = 0; k < n; ++k) {
+    ParsedScene t = s;
+    zip_fields(t.value, s.uncertainty, [&](const char*, double& x, const double& u) { x += u * noise.next(); });
+    const double g = reduce(t.value).g;
+    sum += g;
+    sum2 += g * g;
+  }
+  const double mean = sum / n, sd = std::sqrt((sum2 - n * mean * mean) / (n - 1));
+  INFO("Monte Carlo: " << mean << " +- " << sd << "; propagated " << a.g.value << " +- " << a.g.uncertainty);
+  CHECK_THAT(sd, WithinRel(a.g.uncertainty, 0.045));
+  CHECK_THAT(mean, WithinAbs(a.g.value, 4 * a.g.uncertainty / std::sqrt(double(n))));
+}
+
+TEST_CASE("A decay fit's alpha-beta correlation enters the budget", "[reduction][budget]") {
+  const ParsedScene s = parse_scene(test::read_text(std::string(PENDULUM_DATA_DIR) + "/nelson_olsson_1986_decay.json"));
+  const Analysis a = analyse(s);
+  REQUIRE(a.budget_correlation);
+  CHECK(a.budget_correlation->correlation < -0.9);
+  double quadrature = a.budget_correlation->variance;
+  for (const auto& b : a.budget) quadrature += b.contribution * b.contribution;
+  CHECK_THAT(std::sqrt(quadrature), WithinRel(a.g.uncertainty, 1e-12));
 }
 
 TEST_CASE("Amplitude methods differ by their truncation only", "[reduction]") {

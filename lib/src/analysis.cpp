@@ -1,5 +1,6 @@
 #include "pendulum/analysis.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -80,29 +81,61 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
   out.period_measured = {scene.value.period, scene.uncertainty.period};
   out.negligible_below = options.negligible_fraction * scene.uncertainty.period;
 
-  double var_g = 0.0, var_t0 = 0.0, var_g0 = 0.0;
-  for (const auto& input : options.propagated_inputs) {
-    double value = 0.0, sigma = 0.0;
-    bool found = false;
-    zip_fields(scene.value, scene.uncertainty,
-               [&](const char* path, const double& v, const double& u) {
-                 if (input != path) return;
-                 value = v;
-                 sigma = u;
-                 found = true;
-               });
-    if (!found) continue;  // the scene lacks this part
-    const Reduction<Dual> d = reduce_seeded(scene, input, options.reduction);
-    const double dg = d.g.v[0];
-    var_g += dg * dg * sigma * sigma;
-    var_t0 += d.period_ideal.v[0] * d.period_ideal.v[0] * sigma * sigma;
-    var_g0 += d.g_uncorrected.v[0] * d.g_uncorrected.v[0] * sigma * sigma;
-    out.budget.push_back({input, scene.si_unit.at(input), value, sigma, dg,
-                          std::abs(dg) * sigma});
+  // Every input with a stated uncertainty, and the derivatives of g, T0 and
+  // each row with respect to it, by one dual-number reduction per input.
+  struct Input {
+    std::string path;
+    double value, sigma;
+    Reduction<Dual> d;
+  };
+  std::vector<Input> inputs;
+  zip_fields(scene.value, scene.uncertainty, [&](const char* path, const double& v, const double& u) {
+    if (u > 0.0) inputs.push_back({path, v, u, reduce_seeded(scene, path, options.reduction)});
+  });
+  // The only correlated pair: alpha and beta from one fit.
+  const auto covariance = [&](const Input& a, const Input& b) {
+    if (a.path == b.path) return a.sigma * a.sigma;
+    const bool pair = (a.path == "decay.alpha" && b.path == "decay.beta") ||
+                      (a.path == "decay.beta" && b.path == "decay.alpha");
+    return pair && out.decay_fit ? out.decay_fit->covariance[1] : 0.0;
+  };
+  // Var f = sum_ab df/da cov(a, b) df/db over the inputs `keep` accepts.
+  const auto variance = [&](auto&& derivative, auto&& keep) {
+    double v = 0.0;
+    for (const Input& a : inputs) {
+      if (!keep(a)) continue;
+      for (const Input& b : inputs) {
+        if (keep(b)) v += derivative(a.d) * covariance(a, b) * derivative(b.d);
+      }
+    }
+    return std::sqrt(std::max(v, 0.0));
+  };
+  const auto all = [](const Input&) { return true; };
+  const auto g_of = [](const Reduction<Dual>& d) { return d.g.v[0]; };
+  out.g = {r.g, variance(g_of, all)};
+  out.g_period_and_length_uncertainty = variance(g_of, [](const Input& a) {
+    return a.path == "timing.trials" || a.path == "length";
+  });
+  out.period_ideal = {r.period_ideal, variance([](const Reduction<Dual>& d) { return d.period_ideal.v[0]; }, all)};
+  out.g_uncorrected = {r.g_uncorrected, variance([](const Reduction<Dual>& d) { return d.g_uncorrected.v[0]; }, all)};
+  for (const Input& a : inputs) {
+    out.budget.push_back({a.path, scene.si_unit.at(a.path), a.value, a.sigma, g_of(a.d),
+                          std::abs(g_of(a.d)) * a.sigma});
   }
-  out.g = {r.g, std::sqrt(var_g)};
-  out.period_ideal = {r.period_ideal, std::sqrt(var_t0)};
-  out.g_uncorrected = {r.g_uncorrected, std::sqrt(var_g0)};
+  std::stable_sort(out.budget.begin(), out.budget.end(),
+                   [](const BudgetEntry& x, const BudgetEntry& y) { return x.contribution > y.contribution; });
+  if (out.decay_fit && out.decay_fit->alpha.uncertainty && out.decay_fit->beta.uncertainty) {
+    double d_alpha = 0.0, d_beta = 0.0;
+    for (const Input& a : inputs) {
+      if (a.path == "decay.alpha") d_alpha = g_of(a.d);
+      if (a.path == "decay.beta") d_beta = g_of(a.d);
+    }
+    out.budget_correlation = BudgetCorrelation{"decay.alpha", "decay.beta", out.decay_fit->correlation_alpha_beta,
+                                               2.0 * d_alpha * d_beta * out.decay_fit->covariance[1]};
+  }
+  zip_fields(scene.value, scene.uncertainty, [&](const char* path, const double&, const double& u) {
+    if (u == 0.0) out.inputs_without_uncertainty.push_back(path);
+  });
 
   out.total_delta_T = r.total_ratio * r.period_ideal;
   out.total_delta_g = 2.0 * r.g * r.total_ratio;
@@ -118,6 +151,8 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
       row.ratio = *term.ratio;
       row.delta_T = *term.ratio * r.period_ideal;
       row.delta_g = 2.0 * r.g * *term.ratio;
+      row.delta_T_uncertainty = variance(
+          [i](const Reduction<Dual>& d) { return (*d.terms[i].ratio * d.period_ideal).v[0]; }, all);
       row.status = std::abs(*row.delta_T) < out.negligible_below ? Status::negligible
                                                                   : Status::applied;
       if (row.status == Status::negligible) {
@@ -136,6 +171,7 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
   };
   check(out.g.value, "g");
   check(out.g.uncertainty, "uncertainty of g");
+  check(out.period_ideal.uncertainty, "uncertainty of the ideal period");
   check(out.period_ideal.value, "ideal period");
   for (const auto& row : out.corrections) {
     if (row.delta_T) check(*row.delta_T, row.info.id);

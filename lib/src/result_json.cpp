@@ -77,7 +77,14 @@ nlohmann::ordered_json result_to_json(const ParsedScene& scene, const Analysis& 
                       {"contribution_m_s2", b.contribution}});
   }
   json g = measured(a.g, "m/s^2");
+  g["uncertainty_period_and_length"] = a.g_period_and_length_uncertainty;
   g["budget"] = budget;
+  if (a.budget_correlation) {
+    g["budget_correlation"] = {{"inputs", {a.budget_correlation->first, a.budget_correlation->second}},
+                               {"correlation", a.budget_correlation->correlation},
+                               {"variance_m2_s4", a.budget_correlation->variance}};
+  }
+  g["inputs_without_uncertainty"] = a.inputs_without_uncertainty;
 
   json corrections = json::array();
   for (const auto& row : a.corrections) {
@@ -85,6 +92,7 @@ nlohmann::ordered_json result_to_json(const ParsedScene& scene, const Analysis& 
               {"title", row.info.title},
               {"status", status_name(row.status)},
               {"delta_T_s", optional_number(row.delta_T)},
+              {"delta_T_uncertainty_s", optional_number(row.delta_T_uncertainty)},
               {"delta_T_over_T0", optional_number(row.ratio)},
               {"delta_g_m_s2", optional_number(row.delta_g)},
               {"equation", row.info.equation},
@@ -127,22 +135,22 @@ std::string result_to_table(const ParsedScene& scene, const Analysis& a) {
   std::ostringstream os;
   char line[256];
   if (!scene.title.empty()) os << scene.title << "\n\n";
-  std::snprintf(line, sizeof line, "%-26s %12s %16s  %-10s %s\n", "Correction", "dT (us)",
-                "dg (1e-5 m/s^2)", "status", "method");
+  std::snprintf(line, sizeof line, "%-26s %12s %10s %16s  %-10s %s\n", "Correction", "dT (us)",
+                "+- (us)", "dg (1e-5 m/s^2)", "status", "method");
   os << line;
   for (const auto& row : a.corrections) {
     if (row.delta_T) {
-      std::snprintf(line, sizeof line, "%-26s %+12.4f %+16.4f  %-10s %s\n", row.info.title,
-                    *row.delta_T * 1e6, *row.delta_g * 1e5, status_name(row.status),
-                    row.method.c_str());
+      std::snprintf(line, sizeof line, "%-26s %+12.4f %10.4f %+16.4f  %-10s %s\n", row.info.title,
+                    *row.delta_T * 1e6, *row.delta_T_uncertainty * 1e6, *row.delta_g * 1e5,
+                    status_name(row.status), row.method.c_str());
     } else {
-      std::snprintf(line, sizeof line, "%-26s %12s %16s  %-10s %s\n", row.info.title, "-", "-",
-                    status_name(row.status), row.reason.c_str());
+      std::snprintf(line, sizeof line, "%-26s %12s %10s %16s  %-10s %s\n", row.info.title, "-", "",
+                    "-", status_name(row.status), row.reason.c_str());
     }
     os << line;
   }
-  std::snprintf(line, sizeof line, "%-26s %+12.4f %+16.4f\n\n", "Total", a.total_delta_T * 1e6,
-                a.total_delta_g * 1e5);
+  std::snprintf(line, sizeof line, "%-26s %+12.4f %10s %+16.4f\n\n", "Total", a.total_delta_T * 1e6,
+                "", a.total_delta_g * 1e5);
   os << line;
   std::snprintf(line, sizeof line, "Measured period T   = %.6f +- %.6f s (%d trials)\n",
                 a.period_measured.value, a.period_measured.uncertainty, scene.trial_count);
@@ -153,9 +161,17 @@ std::string result_to_table(const ParsedScene& scene, const Analysis& a) {
   std::snprintf(line, sizeof line, "g (uncorrected)     = %.5f +- %.5f m/s^2\n",
                 a.g_uncorrected.value, a.g_uncorrected.uncertainty);
   os << line;
-  std::snprintf(line, sizeof line, "g                   = %.5f +- %.5f m/s^2\n", a.g.value,
-                a.g.uncertainty);
+  std::snprintf(line, sizeof line,
+                "g                   = %.5f +- %.5f m/s^2 (period and length alone: +- %.5f)\n",
+                a.g.value, a.g.uncertainty, a.g_period_and_length_uncertainty);
   os << line;
+  if (!a.budget.empty()) {
+    os << "\nUncertainty budget of g (largest first):\n";
+    for (const auto& b : a.budget) {
+      std::snprintf(line, sizeof line, "  %-28s %.6f m/s^2\n", b.input.c_str(), b.contribution);
+      os << line;
+    }
+  }
   for (const auto& w : scene.warnings) os << "warning: " << w << "\n";
   for (const auto& w : a.warnings) os << "warning: " << w << "\n";
   return os.str();

@@ -19,9 +19,6 @@ struct AnalysisOptions {
   /// A correction smaller than this fraction of the period's uncertainty is
   /// flagged negligible (it is still applied).
   double negligible_fraction = 0.1;
-  /// JSON paths of the inputs whose uncertainties are propagated to g.
-  /// Nelson & Olsson's Eq. (91) uses the period and the length only.
-  std::vector<std::string> propagated_inputs = {"timing.trials", "length"};
 };
 
 enum class Status { applied, negligible, skipped };
@@ -35,6 +32,8 @@ struct CorrectionRow {
   std::optional<double> ratio;        ///< DeltaT/T0
   std::optional<double> delta_T;      ///< (s)
   std::optional<double> delta_g;      ///< (m/s^2), linearised: 2 g DeltaT/T0
+  /// Standard uncertainty of delta_T from every input's (s).
+  std::optional<double> delta_T_uncertainty;
 };
 
 /// One input's share of the uncertainty of g.
@@ -45,6 +44,13 @@ struct BudgetEntry {
   double uncertainty;
   double sensitivity;   ///< dg/d(input) (m/s^2 per unit)
   double contribution;  ///< |sensitivity| x uncertainty (m/s^2)
+};
+
+/// The one correlated pair of inputs: alpha and beta of a decay fit.
+struct BudgetCorrelation {
+  std::string first, second;
+  double correlation;
+  double variance;  ///< 2 dg/dfirst cov dg/dsecond (m^2/s^4), may be negative
 };
 
 struct ValueWithUncertainty {
@@ -61,7 +67,15 @@ struct Analysis {
   double total_delta_T;                  ///< (s)
   double total_delta_g;                  ///< (m/s^2)
   double negligible_below;               ///< (s)
+  /// Every input with a stated uncertainty, largest contribution first.
+  /// Their squares and budget_correlation's variance add to g.uncertainty^2.
   std::vector<BudgetEntry> budget;
+  std::optional<BudgetCorrelation> budget_correlation;
+  /// The uncertainty of g from the period and the length alone, as in
+  /// Nelson & Olsson's Eq. (91) (m/s^2).
+  double g_period_and_length_uncertainty = 0.0;
+  /// JSON paths of the inputs stated without an uncertainty.
+  std::vector<std::string> inputs_without_uncertainty;
   /// The fit of alpha and beta when the scene gives a decay record.
   std::optional<DecayFit> decay_fit;
   /// alpha and beta given beside a decay record, for comparison.
@@ -80,8 +94,9 @@ std::vector<std::string> review_decay_fit(const DecayFit& fit);
 /// if it has one (its uncertainties from the fit's covariance).
 ParsedScene with_fitted_decay(const ParsedScene& scene, const DecayFit& fit);
 
-/// Reduces the scene and propagates the chosen inputs' uncertainties by
-/// automatic differentiation through the whole reduction.
+/// Reduces the scene and propagates every input's uncertainty (and the
+/// decay fit's alpha-beta covariance) by automatic differentiation through
+/// the whole reduction.
 Analysis analyse(const ParsedScene& scene, const AnalysisOptions& options = {});
 
 }  // namespace pendulum

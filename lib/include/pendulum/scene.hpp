@@ -170,6 +170,10 @@ struct FieldZipper {
     if (x) f(path, *x, ensure(y));
   }
   template <class X, class Y>
+  void operator()(const char* path, std::optional<X>& x, const std::optional<Y>& y) {
+    if (x) f(path, *x, *y);
+  }
+  template <class X, class Y>
   void operator()(const char* path, const std::optional<X>& x,
                   const std::optional<Y>& y) {
     if (x) f(path, *x, *y);

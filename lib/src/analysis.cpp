@@ -92,21 +92,25 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
   zip_fields(scene.value, scene.uncertainty, [&](const char* path, const double& v, const double& u) {
     if (u > 0.0) inputs.push_back({path, v, u, reduce_seeded(scene, path, options.reduction)});
   });
-  // The only correlated pair: alpha and beta from one fit.
-  const auto covariance = [&](const Input& a, const Input& b) {
-    if (a.path == b.path) return a.sigma * a.sigma;
-    const bool pair = (a.path == "decay.alpha" && b.path == "decay.beta") ||
-                      (a.path == "decay.beta" && b.path == "decay.alpha");
-    return pair && out.decay_fit ? out.decay_fit->covariance[1] : 0.0;
-  };
-  // Var f = sum_ab df/da cov(a, b) df/db over the inputs `keep` accepts.
-  const auto variance = [&](auto&& derivative, auto&& keep) {
-    double v = 0.0;
-    for (const Input& a : inputs) {
-      if (!keep(a)) continue;
-      for (const Input& b : inputs) {
-        if (keep(b)) v += derivative(a.d) * covariance(a, b) * derivative(b.d);
+  // Their covariance matrix: diagonal but for alpha and beta of one fit.
+  const std::size_t k = inputs.size();
+  std::vector<double> cov(k * k, 0.0);
+  for (std::size_t a = 0; a < k; ++a) {
+    cov[a * k + a] = inputs[a].sigma * inputs[a].sigma;
+    for (std::size_t b = 0; b < k; ++b) {
+      if (out.decay_fit && inputs[a].path == "decay.alpha" && inputs[b].path == "decay.beta") {
+        cov[a * k + b] = cov[b * k + a] = out.decay_fit->covariance[1];
       }
+    }
+  }
+  // Var f = sum_ab df/da cov(a, b) df/db over the inputs `keep` accepts.
+  std::vector<double> d(k);
+  const auto variance = [&](auto&& derivative, auto&& keep) {
+    for (std::size_t a = 0; a < k; ++a) d[a] = keep(inputs[a]) ? derivative(inputs[a].d) : 0.0;
+    double v = 0.0;
+    for (std::size_t a = 0; a < k; ++a) {
+      if (d[a] == 0.0) continue;
+      for (std::size_t b = 0; b < k; ++b) v += d[a] * cov[a * k + b] * d[b];
     }
     return std::sqrt(std::max(v, 0.0));
   };
@@ -163,6 +167,12 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
       }
     }
     out.corrections.push_back(row);
+  }
+
+  if (scene.site) out.expected_g = expected_gravity(*scene.site);
+  if (out.expected_g) {
+    const double combined = std::hypot(out.g.uncertainty, out.expected_g->uncertainty);
+    if (combined > 0.0) out.z_score = (out.g.value - out.expected_g->value) / combined;
   }
 
   // A non-finite number here is a bug, not an input error: never print it.

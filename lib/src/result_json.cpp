@@ -122,6 +122,15 @@ nlohmann::ordered_json result_to_json(const ParsedScene& scene, const Analysis& 
           {"corrections", corrections},
           {"assumptions", scene.assumptions},
           {"warnings", warnings}};
+  if (a.expected_g) {
+    out["expected_g"] = {{"value", a.expected_g->value},
+                         {"uncertainty", a.expected_g->uncertainty},
+                         {"unit", "m/s^2"},
+                         {"source", a.expected_g->source},
+                         {"note", a.expected_g->note}};
+    out["comparison"] = {{"difference_m_s2", a.g.value - a.expected_g->value},
+                         {"z", a.z_score ? json(*a.z_score) : json(nullptr)}};
+  }
   if (a.decay_fit) out["decay_fit"] = decay_fit_to_json(*a.decay_fit, a.decay_given);
   if (a.drag) {
     const Decay<double> used = a.decay_fit ? Decay<double>{a.decay_fit->alpha.value, a.decay_fit->beta.value}
@@ -165,6 +174,16 @@ std::string result_to_table(const ParsedScene& scene, const Analysis& a) {
                 "g                   = %.5f +- %.5f m/s^2 (period and length alone: +- %.5f)\n",
                 a.g.value, a.g.uncertainty, a.g_period_and_length_uncertainty);
   os << line;
+  if (a.expected_g) {
+    std::snprintf(line, sizeof line, "expected g          = %.5f +- %.5f m/s^2 (%s)\n", a.expected_g->value,
+                  a.expected_g->uncertainty, a.expected_g->source.c_str());
+    os << line;
+    if (a.z_score) {
+      std::snprintf(line, sizeof line, "difference          = %+.5f m/s^2 = %+.2f combined sigma\n",
+                    a.g.value - a.expected_g->value, *a.z_score);
+      os << line;
+    }
+  }
   if (!a.budget.empty()) {
     os << "\nUncertainty budget of g (largest first):\n";
     for (const auto& b : a.budget) {

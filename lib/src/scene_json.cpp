@@ -282,6 +282,47 @@ std::vector<double> number_array(Object& o, const std::string& key, double facto
   return out;
 }
 
+/// site: a measured reference g, or latitude and height for normal gravity.
+void read_site(Object& top, SceneReader& r, ParsedScene& out) {
+  Object o(top.at("site"), "site");
+  Site site;
+  if (o.has("latitude")) {
+    const Measured lat = r.quantity(o, "latitude", Dimension::angle, Range::any);
+    const double deg = lat.value * 180.0 / kPi;
+    if (!(std::abs(deg) <= 90.0)) {
+      throw InputError("site.latitude.value", "got " + format_number(deg) +
+                                                  " deg; expected a latitude from -90 to 90 deg");
+    }
+    site.latitude_deg = deg;
+  }
+  if (o.has("height")) {
+    const double h = r.quantity(o, "height", Dimension::length, Range::any).value;
+    if (!(h > -12000.0 && h < 100000.0)) {
+      throw InputError("site.height.value", "got " + format_number(h) +
+                                                " m; expected a height on Earth (-12 km to 100 km)");
+    }
+    site.height = h;
+    const std::string reference = o.text("height_reference");
+    if (reference != "ellipsoid" && reference != "sea_level") {
+      throw InputError(o.path("height_reference"),
+                       "got \"" + reference + "\"; expected \"ellipsoid\" or \"sea_level\"");
+    }
+    site.height_above_ellipsoid = reference == "ellipsoid";
+  }
+  if (o.has("reference_g")) {
+    const Measured g = r.quantity(o, "reference_g", Dimension::acceleration, Range::positive);
+    site.reference_g = g.value;
+    site.reference_g_uncertainty = g.sigma;
+    const json& q = o.at("reference_g");
+    if (q.contains("source") && q.at("source").is_string()) site.reference_source = q.at("source").get<std::string>();
+  }
+  o.finish();
+  if (!site.reference_g && (!site.latitude_deg || !site.height)) {
+    throw InputError("site", "expected reference_g, or latitude and height");
+  }
+  out.site = site;
+}
+
 /// decay: alpha and beta as measured, and/or a record to fit them from
 /// (docs/scene.md); the record is validated here, fitted by the analysis.
 void read_decay(Object& top, SceneReader& r, ParsedScene& out) {
@@ -474,6 +515,7 @@ ParsedScene parse_scene(const std::string& text) {
             "got neither stiffness nor mass; expected at least one");
   });
   if (top.has("decay")) read_decay(top, r, out);
+  if (top.has("site")) read_site(top, r, out);
   top.finish();
   return out;
 }

@@ -9,7 +9,7 @@ constexpr double kPiDouble = 3.14159265358979323846;
 constexpr double kDegree = kPiDouble / 180.0;
 constexpr double kMmHg = 133.322387415;  // Pa, conventional (13.5951 g/cm^3, 9.80665 m/s^2)
 
-constexpr std::array<Unit, 52> kUnits{{
+constexpr std::array<Unit, 56> kUnits{{
     {"m", Dimension::length, 1.0, 0.0},
     {"cm", Dimension::length, 1e-2, 0.0},
     {"mm", Dimension::length, 1e-3, 0.0},
@@ -62,6 +62,10 @@ constexpr std::array<Unit, 52> kUnits{{
     {"1/min", Dimension::rate, 1.0 / 60.0, 0.0},
     {"1/(s rad)", Dimension::rate_per_angle, 1.0, 0.0},
     {"1/(s deg)", Dimension::rate_per_angle, 1.0 / kDegree, 0.0},
+    {"m/s^2", Dimension::acceleration, 1.0, 0.0},
+    {"cm/s^2", Dimension::acceleration, 1e-2, 0.0},
+    {"Gal", Dimension::acceleration, 1e-2, 0.0},
+    {"mGal", Dimension::acceleration, 1e-5, 0.0},
 }};
 
 }  // namespace
@@ -88,6 +92,7 @@ const char* si_unit(Dimension dimension) {
     case Dimension::viscosity: return "Pa s";
     case Dimension::rate: return "1/s";
     case Dimension::rate_per_angle: return "1/(s rad)";
+    case Dimension::acceleration: return "m/s^2";
   }
   return "";
 }
@@ -107,6 +112,7 @@ const char* dimension_name(Dimension dimension) {
     case Dimension::viscosity: return "a dynamic viscosity";
     case Dimension::rate: return "a rate";
     case Dimension::rate_per_angle: return "a rate per angle";
+    case Dimension::acceleration: return "an acceleration";
   }
   return "";
 }

@@ -30,6 +30,28 @@ void BM_ReduceDouble(benchmark::State& state) {
 }
 BENCHMARK(BM_ReduceDouble);
 
+void BM_ParseScene(benchmark::State& state) {
+  const std::string text = nelson_olsson();
+  for (auto _ : state) benchmark::DoNotOptimize(pendulum::parse_scene(text));
+}
+BENCHMARK(BM_ParseScene);
+
+void BM_Analyse(benchmark::State& state) {
+  const pendulum::ParsedScene scene = pendulum::parse_scene(nelson_olsson());
+  for (auto _ : state) benchmark::DoNotOptimize(pendulum::analyse(scene));
+}
+BENCHMARK(BM_Analyse);
+
+void BM_WriteJson(benchmark::State& state) {
+  const pendulum::ParsedScene scene = pendulum::parse_scene(nelson_olsson());
+  const pendulum::AnalysisOptions options;
+  const pendulum::Analysis analysis = pendulum::analyse(scene, options);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(pendulum::result_to_json(scene, analysis, options, "-").dump(2));
+  }
+}
+BENCHMARK(BM_WriteJson);
+
 void BM_WholeReduction(benchmark::State& state) {
   const std::string text = nelson_olsson();
   const pendulum::AnalysisOptions options;

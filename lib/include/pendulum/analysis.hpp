@@ -82,6 +82,10 @@ struct Analysis {
   std::optional<Decay<double>> decay_given;
   /// The air's predicted damping, when the scene has air and decay.
   std::optional<DragPrediction<double>> drag;
+  /// The g expected at the site, when the scene gives one, and how far the
+  /// measurement is from it: (g - expected) / sqrt(sigma_g^2 + sigma_expected^2).
+  std::optional<ExpectedGravity> expected_g;
+  std::optional<double> z_score;
   /// Findings of the analysis itself (the scene's own are in ParsedScene).
   std::vector<std::string> warnings;
 };

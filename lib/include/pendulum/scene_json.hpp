@@ -12,6 +12,7 @@
 
 #include "pendulum/decay_fit.hpp"
 #include "pendulum/scene.hpp"
+#include "pendulum/site.hpp"
 
 namespace pendulum {
 
@@ -37,6 +38,8 @@ struct ParsedScene {
   /// A decay record to fit alpha and beta from (decay.data); the fit
   /// replaces any alpha and beta given beside it.
   std::optional<DecayData> decay_data;
+  /// Where the experiment was done, to compare g with.
+  std::optional<Site> site;
   std::vector<std::string> assumptions;  ///< defaults the reduction used
   std::vector<std::string> warnings;     ///< legal but suspicious input
 };

@@ -24,6 +24,7 @@ enum class Dimension {
   viscosity,
   rate,             ///< alpha: 1/time
   rate_per_angle,   ///< beta: 1/(time angle)
+  acceleration,     ///< g
 };
 
 /// A unit: value_SI = factor * value + offset (offset only for temperatures;

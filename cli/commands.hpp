@@ -27,6 +27,9 @@ void print_warnings(const std::vector<std::string>& warnings);
 /// `pendulum-g reduce SCENE`: scene -> corrected g (cli/reduce_command.cpp).
 Command add_reduce_command(CLI::App& app);
 
+/// `pendulum-g batch SCENES...`: many scenes -> one summary (cli/batch_command.cpp).
+Command add_batch_command(CLI::App& app);
+
 /// `pendulum-g fit-decay SCENE`: the decay record -> alpha, beta (cli/fit_decay_command.cpp).
 Command add_fit_decay_command(CLI::App& app);
 

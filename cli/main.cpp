@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
   const std::vector<pendulum::cli::Command> commands{
       pendulum::cli::add_reduce_command(app),
       pendulum::cli::add_fit_decay_command(app),
+      pendulum::cli::add_batch_command(app),
   };
 
   try {

@@ -8,9 +8,12 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 #include <string>
 
 using nlohmann::json;
@@ -211,4 +214,53 @@ TEST_CASE("fit-decay on the bundled record", "[cli][decay_fit]") {
   CHECK(none.status == 1);
   CHECK(none.out.empty());
   CHECK_THAT(none.err, Contains("decay.data: missing"));
+}
+
+TEST_CASE("batch: a class of scenes, one bad file among them", "[cli][batch]") {
+  char dir_template[] = "/tmp/pendulum-g-batch-XXXXXX";
+  REQUIRE(mkdtemp(dir_template));
+  const std::string dir = dir_template;
+  const std::string good = slurp(kNelsonOlsson);
+  std::ofstream(dir + "/a_student.json") << good;
+  std::ofstream(dir + "/b_student.json") << "{\"length\": ";
+  json vacuum = json::parse(good);
+  vacuum["air"] = "vacuum";
+  vacuum.erase("site");
+  std::ofstream(dir + "/c_student.json") << vacuum.dump();
+
+  const Run r = run("batch --jobs 2 " + dir);
+  CHECK(r.status == 1);  // one scene failed
+  std::istringstream lines(r.out);
+  std::vector<json> summary;
+  for (std::string line; std::getline(lines, line);) summary.push_back(json::parse(line));
+  REQUIRE(summary.size() == 3);
+  CHECK(summary[0].at("input") == dir + "/a_student.json");
+  CHECK(summary[0].at("ok") == true);
+  CHECK_THAT(summary[0].at("g_m_s2").get<double>(), WithinAbs(9.8034, 0.00005));
+  CHECK(summary[0].at("largest_budget_input") == "length");
+  CHECK_THAT(summary[0].at("z").get<double>(), WithinAbs(0.54, 0.005));
+  CHECK(summary[1].at("ok") == false);
+  CHECK_THAT(summary[1].at("error").get<std::string>(), Contains("not valid JSON"));
+  CHECK(summary[2].at("ok") == true);
+  CHECK(summary[2].at("z").is_null());  // no site
+  // In vacuum there is no buoyancy or added mass: g is lower by their 638 us.
+  CHECK(summary[2].at("g_m_s2").get<double>() < summary[0].at("g_m_s2").get<double>());
+
+  const Run csv = run("batch --format csv " + dir + "/a_student.json " + dir + "/b_student.json");
+  CHECK(csv.status == 1);
+  CHECK(csv.out.rfind("input,ok,g_m_s2,g_uncertainty_m_s2,", 0) == 0);
+  CHECK(std::count(csv.out.begin(), csv.out.end(), '\n') == 3);
+
+  std::ofstream(dir + "/list.txt") << "# the good ones\n" << dir << "/a_student.json\n" << dir << "/c_student.json\n";
+  const Run listed = run("batch --list " + dir + "/list.txt");
+  CHECK(listed.status == 0);
+  CHECK(std::count(listed.out.begin(), listed.out.end(), '\n') == 2);
+
+  std::ofstream(dir + "/lines.jsonl") << json::parse(good).dump() << "\n\n" << vacuum.dump() << "\n";
+  const Run piped = run("batch - < " + dir + "/lines.jsonl");
+  CHECK(piped.status == 0);
+  CHECK_THAT(piped.out, Contains("\"input\":\"stdin:3\""));
+
+  CHECK(run("batch").status == 1);
+  std::filesystem::remove_all(dir);
 }

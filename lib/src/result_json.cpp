@@ -140,6 +140,60 @@ nlohmann::ordered_json result_to_json(const ParsedScene& scene, const Analysis& 
   return out;
 }
 
+nlohmann::ordered_json batch_summary(const std::string& input, const ParsedScene& scene,
+                                     const Analysis& a) {
+  using json = nlohmann::ordered_json;
+  json out = {{"input", input},
+              {"ok", true},
+              {"title", scene.title},
+              {"g_m_s2", a.g.value},
+              {"g_uncertainty_m_s2", a.g.uncertainty},
+              {"largest_budget_input", a.budget.empty() ? json(nullptr) : json(a.budget.front().input)},
+              {"largest_budget_m_s2", a.budget.empty() ? json(nullptr) : json(a.budget.front().contribution)},
+              {"expected_g_m_s2", a.expected_g ? json(a.expected_g->value) : json(nullptr)},
+              {"z", a.z_score ? json(*a.z_score) : json(nullptr)},
+              {"warnings", scene.warnings.size() + a.warnings.size()}};
+  return out;
+}
+
+nlohmann::ordered_json batch_failure(const std::string& input, const std::string& error) {
+  return {{"input", input}, {"ok", false}, {"error", error}};
+}
+
+namespace {
+// RFC 4180: quote a field that holds a comma, quote or line break.
+std::string csv_field(const nlohmann::ordered_json& v) {
+  if (v.is_null()) return "";
+  std::string text = v.is_string() ? v.get<std::string>() : v.dump();
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+constexpr const char* kCsvColumns[] = {"input", "ok", "g_m_s2", "g_uncertainty_m_s2", "largest_budget_input",
+                                       "largest_budget_m_s2", "expected_g_m_s2", "z", "warnings", "error"};
+}  // namespace
+
+std::string batch_csv_header() {
+  std::string line;
+  for (const char* c : kCsvColumns) line += (line.empty() ? "" : ",") + std::string(c);
+  return line + "\n";
+}
+
+std::string batch_csv_row(const nlohmann::ordered_json& summary) {
+  std::string line;
+  bool first = true;
+  for (const char* c : kCsvColumns) {
+    if (!first) line += ",";
+    first = false;
+    if (summary.contains(c)) line += csv_field(summary.at(c));
+  }
+  return line + "\n";
+}
+
 std::string result_to_table(const ParsedScene& scene, const Analysis& a) {
   std::ostringstream os;
   char line[256];

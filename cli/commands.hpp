@@ -5,9 +5,12 @@
 // until its whole result is ready.
 
 #include <functional>
+#include <map>
 #include <string>
 
 #include <CLI/CLI.hpp>
+
+#include "pendulum/amplitude.hpp"
 
 namespace pendulum::cli {
 
@@ -20,7 +23,15 @@ struct Command {
 /// The text of a file, or of standard input for "-".
 std::string read_input(const std::string& file);
 
+/// The finite-amplitude methods by their output names, `auto` included
+/// when the command can choose.
+std::map<std::string, AmplitudeMethod> amplitude_methods(bool with_auto);
+
 /// `pendulum-g reduce SCENE`: scene -> corrected g (cli/reduce_command.cpp).
 Command add_reduce_command(CLI::App& app);
+
+/// `pendulum-g amplitude --theta0-deg X`: T/T0 at one amplitude
+/// (cli/amplitude_command.cpp).
+Command add_amplitude_command(CLI::App& app);
 
 }  // namespace pendulum::cli

@@ -23,6 +23,15 @@ std::string read_input(const std::string& file) {
   return text.str();
 }
 
+std::map<std::string, AmplitudeMethod> amplitude_methods(bool with_auto) {
+  std::map<std::string, AmplitudeMethod> names;
+  for (auto m : {AmplitudeMethod::small_angle, AmplitudeMethod::series, AmplitudeMethod::agm,
+                 AmplitudeMethod::automatic}) {
+    if (with_auto || m != AmplitudeMethod::automatic) names[method_name(m)] = m;
+  }
+  return names;
+}
+
 }  // namespace pendulum::cli
 
 int main(int argc, char** argv) {
@@ -33,6 +42,7 @@ int main(int argc, char** argv) {
 
   const std::vector<pendulum::cli::Command> commands{
       pendulum::cli::add_reduce_command(app),
+      pendulum::cli::add_amplitude_command(app),
   };
 
   try {

@@ -34,7 +34,10 @@ Reduction<Dual> reduce_seeded(const ParsedScene& scene, const std::string& input
 }  // namespace
 
 Analysis analyse(const ParsedScene& scene, const AnalysisOptions& options) {
-  const Reduction<double> r = reduce(scene.value, options.reduction);
+  ReductionOptions reduction = options.reduction;
+  reduction.amplitude_tolerance =
+      options.amplitude_fraction * scene.uncertainty.period / scene.value.period;
+  const Reduction<double> r = reduce(scene.value, reduction);
   Analysis out;
   out.period_measured = {scene.value.period, scene.uncertainty.period};
   out.negligible_below = options.negligible_fraction * scene.uncertainty.period;
@@ -51,7 +54,7 @@ Analysis analyse(const ParsedScene& scene, const AnalysisOptions& options) {
                  found = true;
                });
     if (!found) continue;  // the scene lacks this part
-    const Reduction<Dual> d = reduce_seeded(scene, input, options.reduction);
+    const Reduction<Dual> d = reduce_seeded(scene, input, reduction);
     const double dg = d.g.v[0];
     var_g += dg * dg * sigma * sigma;
     var_t0 += d.period_ideal.v[0] * d.period_ideal.v[0] * sigma * sigma;
@@ -70,6 +73,7 @@ Analysis analyse(const ParsedScene& scene, const AnalysisOptions& options) {
     CorrectionRow row;
     row.info = kCorrections[i];
     row.method = term.method;
+    row.series_terms = term.series_terms;
     if (!term.ratio) {
       row.status = Status::skipped;
       row.reason = term.skip_reason;
@@ -77,6 +81,7 @@ Analysis analyse(const ParsedScene& scene, const AnalysisOptions& options) {
       row.ratio = *term.ratio;
       row.delta_T = *term.ratio * r.period_ideal;
       row.delta_g = 2.0 * r.g * *term.ratio;
+      if (term.error_bound) row.error_bound_delta_T = *term.error_bound * r.period_ideal;
       row.status = std::abs(*row.delta_T) < out.negligible_below ? Status::negligible
                                                                   : Status::applied;
       if (row.status == Status::negligible) {

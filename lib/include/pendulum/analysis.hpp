@@ -17,6 +17,9 @@ struct AnalysisOptions {
   /// A correction smaller than this fraction of the period's uncertainty is
   /// flagged negligible (it is still applied).
   double negligible_fraction = 0.1;
+  /// With the automatic amplitude method, the chosen method's error bound
+  /// stays below this fraction of the period's uncertainty.
+  double amplitude_fraction = 0.01;
   /// JSON paths of the inputs whose uncertainties are propagated to g.
   /// Nelson & Olsson's Eq. (91) uses the period and the length only.
   std::vector<std::string> propagated_inputs = {"timing.trials", "length"};
@@ -33,6 +36,8 @@ struct CorrectionRow {
   std::optional<double> ratio;        ///< DeltaT/T0
   std::optional<double> delta_T;      ///< (s)
   std::optional<double> delta_g;      ///< (m/s^2), linearised: 2 g DeltaT/T0
+  std::optional<double> error_bound_delta_T;  ///< (s), bound on the formula's error
+  int series_terms = 0;               ///< terms of a truncated series, 0 otherwise
 };
 
 /// One input's share of the uncertainty of g.

@@ -43,21 +43,28 @@ constexpr double eq8_coefficient(int n) {
   return c * c;
 }
 
-/// c[0] + c[1] x + ... + c[N-1] x^{N-1} by Estrin's scheme: pairs first,
-/// then pairs of pairs. Same operation count as Horner, but the dependency
-/// chain is log2(N) multiply-adds long instead of N, which is what the
-/// exact method's speed is bound by.
+/// c[B] + c[B+1] x + ... + c[B+L-1] x^{L-1}, split as low + x^h high with
+/// h the largest power of two below L; powers[j] = x^(2^j).
+template <std::size_t B, std::size_t L, class T, std::size_t N>
+T estrin_part(const std::array<T, 4>& powers, const std::array<double, N>& c) {
+  if constexpr (L == 1) {
+    return T(c[B]);
+  } else {
+    constexpr std::size_t j = L > 8 ? 3 : L > 4 ? 2 : L > 2 ? 1 : 0;
+    constexpr std::size_t h = std::size_t{1} << j;
+    return estrin_part<B, h>(powers, c) + estrin_part<B + h, L - h>(powers, c) * powers[j];
+  }
+}
+
+/// c[0] + c[1] x + ... + c[N-1] x^{N-1} (N <= 16) by Estrin's scheme: the
+/// same operations as Horner's, but a dependency chain of log2(N)
+/// multiply-adds instead of N, which is what the exact method's speed is
+/// bound by. Unrolled at compile time.
 template <class T, std::size_t N>
 T estrin(const T& x, const std::array<double, N>& c) {
-  std::array<T, N> v;
-  for (std::size_t i = 0; i < N; ++i) v[i] = T(c[i]);
-  T power = x;
-  for (std::size_t n = N; n > 1; n = (n + 1) / 2) {
-    for (std::size_t i = 0; 2 * i + 1 < n; ++i) v[i] = v[2 * i] + v[2 * i + 1] * power;
-    if (n % 2 == 1) v[n / 2] = v[n - 1];
-    power = power * power;
-  }
-  return v[0];
+  static_assert(N >= 1 && N <= 16);
+  const T x2 = x * x, x4 = x2 * x2;
+  return estrin_part<0, N>(std::array<T, 4>{x, x2, x4, x4 * x4}, c);
 }
 
 /// sin x for 0 <= x <= pi/4 (rad): Taylor through x^17. The first omitted

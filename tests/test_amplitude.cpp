@@ -373,7 +373,7 @@ TEST_CASE("The trajectory reaches theta0 after a quarter of the exact period", "
 TEST_CASE("Feinstein (2005) Table 1: period, circular error, its rate", "[amplitude][feinstein]") {
   // l = 99.3961 cm, g = 981 cm/s^2, nominal period 2.0000 s, 43200 cycles a
   // day. Column 3 is the nominal 2.0000 s times T/T0 (with 2 pi sqrt(l/g) =
-  // 2.00000019 s four rows would round up: docs/deviations.md).
+  // 2.00000019 s six rows would round up: docs/deviations.md).
   // Circular error (s/day) = 43200 * 2 s * DeltaT/T0; its rate (s/day per
   // arc second) = 43200 * 2 s * d(DeltaT/T0)/d(theta0 in arc seconds), the
   // derivative by ceres::Jet. Tolerances: half a unit of the last printed

@@ -171,9 +171,10 @@ std::vector<Entry> register_methods() {
 }
 
 struct ErrorResult {
-  double worst = 0.0;  // relative; NaN once any result is not finite
+  double worst = 0.0;  // relative, over the finite results
   double at = 0.0;     // deg
   int not_finite = 0;
+  double first_not_finite = 0.0;  // deg
 };
 
 ErrorResult worst_error(const std::function<double(double)>& f) {
@@ -183,12 +184,12 @@ ErrorResult worst_error(const std::function<double(double)>& f) {
   for (double deg : points) {
     const double v = f(deg);
     if (!std::isfinite(v)) {
-      if (r.not_finite++ == 0) r.at = deg;
+      if (r.not_finite++ == 0) r.first_not_finite = deg;
       continue;
     }
     const pendulum::test::Quad ref = pendulum::test::delta_ratio_quad(deg);
     const double e = static_cast<double>(fabsq((v - ref) / ref));
-    if (r.not_finite == 0 && e > r.worst) {
+    if (e > r.worst) {
       r.worst = e;
       r.at = deg;
     }
@@ -213,12 +214,21 @@ class MedianCollector : public benchmark::ConsoleReporter {
 
 std::string format_error(const ErrorResult& e) {
   char text[96];
-  if (e.not_finite > 0) {
-    std::snprintf(text, sizeof text, "not finite (%d points, first at %.10g deg)", e.not_finite, e.at);
-  } else {
-    std::snprintf(text, sizeof text, "%.1e at %.10g deg", e.worst, e.at);
-  }
+  std::snprintf(text, sizeof text, "%.1e at %.10g deg", e.worst, e.at);
   return text;
+}
+
+std::string format_not_finite(const ErrorResult& e) {
+  if (e.not_finite == 0) return "none";
+  char text[96];
+  std::snprintf(text, sizeof text, "%d (from %.10g deg)", e.not_finite, e.first_not_finite);
+  return text;
+}
+
+std::string xml_escaped(const std::string& text) {
+  std::string out;
+  for (char c : text) out += c == '&' ? std::string("&amp;") : c == '<' ? std::string("&lt;") : std::string(1, c);
+  return out;
 }
 
 void write_docs(const std::string& dir, const std::vector<Entry>& methods, const MedianCollector& times) {
@@ -241,12 +251,14 @@ void write_docs(const std::string& dir, const std::vector<Entry>& methods, const
 
   std::ofstream md(dir + "/amplitude-benchmark.md");
   md << "<!-- written by bench_amplitude --write-docs; do not edit by hand -->\n"
-     << "| method | formula | ns/call, sweep | ns/call, shuffled | worst relative error of ΔT/T0 |\n"
-     << "|---|---|---:|---:|---|\n";
+     << "| method | formula | ns/call, sweep | ns/call, shuffled | worst relative error of ΔT/T0 (finite results) | "
+        "non-finite results |\n"
+     << "|---|---|---:|---:|---|---|\n";
   char line[512];
   for (const Row& r : rows) {
-    std::snprintf(line, sizeof line, "| %s | %s | %.1f | %.1f | %s |\n", r.name.c_str(), r.formula.c_str(),
-                  r.sweep, r.shuffled, format_error(r.error).c_str());
+    std::snprintf(line, sizeof line, "| %s | %s | %.1f | %.1f | %s | %s |\n", r.name.c_str(),
+                  r.formula.c_str(), r.sweep, r.shuffled, format_error(r.error).c_str(),
+                  format_not_finite(r.error).c_str());
     md << line;
   }
   std::snprintf(line, sizeof line,
@@ -258,8 +270,8 @@ void write_docs(const std::string& dir, const std::vector<Entry>& methods, const
 
   // Error (log) against time (log), one labelled point per method, sweep
   // times; a method that returns a non-finite value is drawn at the top.
-  const double w = 860, h = 520, left = 70, right = 250, top = 20, bottom = 50;
-  const double tmin = 0.3, tmax = 300.0, emin = 1e-17, emax = 10.0;
+  const double w = 860, h = 560, left = 70, right = 250, top = 45, bottom = 50;
+  const double tmin = 0.3, tmax = 300.0, emin = 1e-17, emax = 1e6;
   auto x = [&](double t) { return left + (w - left - right) * std::log10(t / tmin) / std::log10(tmax / tmin); };
   auto y = [&](double e) {
     const double c = std::min(std::max(e, emin), emax);
@@ -273,24 +285,30 @@ void write_docs(const std::string& dir, const std::vector<Entry>& methods, const
         << "' stroke='#ddd'/><text x='" << x(t) << "' y='" << h - bottom + 15 << "' text-anchor='middle'>" << t
         << "</text>\n";
   }
-  for (int p = -17; p <= 1; p += 2) {
+  for (int p = -17; p <= 5; p += 2) {
     const double e = std::pow(10.0, p);
     svg << "<line x1='" << left << "' y1='" << y(e) << "' x2='" << w - right << "' y2='" << y(e)
         << "' stroke='#ddd'/><text x='" << left - 5 << "' y='" << y(e) + 4 << "' text-anchor='end'>1e" << p
         << "</text>\n";
   }
+  svg << "<text x='" << left << "' y='" << top - 30 << "'>non-finite results: at the top edge</text>\n";
   svg << "<line x1='" << left << "' y1='" << y(1e-15) << "' x2='" << w - right << "' y2='" << y(1e-15)
       << "' stroke='#c00' stroke-dasharray='4 3'/><text x='" << w - right + 4 << "' y='" << y(1e-15) + 4
       << "' fill='#c00'>goal 1e-15</text>\n";
   svg << "<text x='" << (left + w - right) / 2 << "' y='" << h - 12
       << "' text-anchor='middle'>ns per call (median, sweep of 10^4 amplitudes)</text>\n"
       << "<text x='15' y='" << (top + h - bottom) / 2 << "' transform='rotate(-90 15 " << (top + h - bottom) / 2
-      << ")' text-anchor='middle'>worst relative error of ΔT/T0 (non-finite at the top)</text>\n";
-  for (const Row& r : rows) {
-    const double e = r.error.not_finite > 0 ? emax : r.error.worst;
-    const char* colour = &r == &agm ? "#c00" : "#036";
+      << ")' text-anchor='middle'>worst relative error of ΔT/T0</text>\n";
+  // Points are numbered; the legend on the right names them (labels at the
+  // points would overlap where several methods share a time and an error).
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const Row& r = rows[i];
+    const double e = r.error.not_finite > 0 ? emax : r.error.worst;  // a NaN is worse than any error
+    const char* colour = i == 0 ? "#c00" : "#036";
     svg << "<circle cx='" << x(r.sweep) << "' cy='" << y(e) << "' r='4' fill='" << colour << "'/><text x='"
-        << x(r.sweep) + 6 << "' y='" << y(e) - 4 << "' fill='" << colour << "'>" << r.name << "</text>\n";
+        << x(r.sweep) + 5 << "' y='" << y(e) - 5 - 9.0 * (i % 3) << "' fill='" << colour << "'>" << i + 1
+        << "</text>\n<text x='" << w - right + 10 << "' y='" << top + 40 + 16.0 * i << "' fill='" << colour
+        << "'>" << i + 1 << ". " << xml_escaped(r.name) << "</text>\n";
   }
   svg << "</svg>\n";
 }

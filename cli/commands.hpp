@@ -5,10 +5,13 @@
 // until its whole result is ready.
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
+
+#include "pendulum/amplitude.hpp"
 
 namespace pendulum::cli {
 
@@ -24,8 +27,16 @@ std::string read_input(const std::string& file);
 /// Each warning on stderr, prefixed "pendulum-g: warning: ".
 void print_warnings(const std::vector<std::string>& warnings);
 
+/// The finite-amplitude methods by their output names, `auto` included
+/// when the command can choose.
+std::map<std::string, AmplitudeMethod> amplitude_methods(bool with_auto);
+
 /// `pendulum-g reduce SCENE`: scene -> corrected g (cli/reduce_command.cpp).
 Command add_reduce_command(CLI::App& app);
+
+/// `pendulum-g amplitude --theta0-deg X`: T/T0 at one amplitude
+/// (cli/amplitude_command.cpp).
+Command add_amplitude_command(CLI::App& app);
 
 /// `pendulum-g batch SCENES...`: many scenes -> one summary (cli/batch_command.cpp).
 Command add_batch_command(CLI::App& app);

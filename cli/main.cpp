@@ -27,6 +27,15 @@ void print_warnings(const std::vector<std::string>& warnings) {
   for (const auto& w : warnings) std::cerr << "pendulum-g: warning: " << w << "\n";
 }
 
+std::map<std::string, AmplitudeMethod> amplitude_methods(bool with_auto) {
+  std::map<std::string, AmplitudeMethod> names;
+  for (auto m : {AmplitudeMethod::small_angle, AmplitudeMethod::series, AmplitudeMethod::agm,
+                 AmplitudeMethod::automatic}) {
+    if (with_auto || m != AmplitudeMethod::automatic) names[method_name(m)] = m;
+  }
+  return names;
+}
+
 }  // namespace pendulum::cli
 
 int main(int argc, char** argv) {
@@ -39,6 +48,7 @@ int main(int argc, char** argv) {
       pendulum::cli::add_reduce_command(app),
       pendulum::cli::add_fit_decay_command(app),
       pendulum::cli::add_batch_command(app),
+      pendulum::cli::add_amplitude_command(app),
   };
 
   try {

@@ -25,13 +25,10 @@ Command add_reduce_command(CLI::App& app) {
                   "Flag a correction negligible below this fraction of the period's "
                   "uncertainty (default 0.1)")
       ->check(CLI::Range(0.0, 1e6));
-  const std::map<std::string, AmplitudeMethod> methods{
-      {"agm", AmplitudeMethod::agm},
-      {"series", AmplitudeMethod::series},
-      {"small_angle", AmplitudeMethod::small_angle}};
   cmd->add_option("--amplitude-method", o->analysis.reduction.amplitude_method,
-                  "Finite-amplitude method: agm (exact, default), series, small_angle")
-      ->transform(CLI::CheckedTransformer(methods, CLI::ignore_case));
+                  "Finite-amplitude method: auto (default: the cheapest whose error bound "
+                  "is below 1% of the period's uncertainty), agm (exact), series, small_angle")
+      ->transform(CLI::CheckedTransformer(amplitude_methods(true), CLI::ignore_case));
   cmd->add_option("--series-terms", o->analysis.reduction.series_terms,
                   "Terms of the Eq. (8) series for --amplitude-method series (default 4)")
       ->check(CLI::Range(1, 1000));

@@ -113,8 +113,11 @@ Propagated finite_difference_uncertainty(const ParsedScene& s) {
 }  // namespace
 
 TEST_CASE("The propagated uncertainties match finite differences", "[reduction][budget]") {
+  // The exact amplitude method on both sides (default ReductionOptions).
   const ParsedScene s = parse_scene(test::nelson_olsson_text());
-  const Analysis a = analyse(s);
+  AnalysisOptions exact;
+  exact.reduction.amplitude_method = AmplitudeMethod::agm;
+  const Analysis a = analyse(s, exact);
   const Propagated fd = finite_difference_uncertainty(s);
   CHECK_THAT(a.g.uncertainty, WithinRel(fd.g, 1e-6));
   CHECK_THAT(a.period_ideal.uncertainty, WithinRel(fd.period_ideal, 1e-6));
@@ -167,11 +170,42 @@ TEST_CASE("A decay fit's alpha-beta correlation enters the budget", "[reduction]
 
 TEST_CASE("Amplitude methods differ by their truncation only", "[reduction]") {
   const ParsedScene s = parse_scene(test::nelson_olsson_text());
-  AnalysisOptions small;
+  AnalysisOptions small, exact;
   small.reduction.amplitude_method = AmplitudeMethod::small_angle;
-  const double exact = *row(analyse(s), "finite_amplitude").delta_T;
-  const double approx = *row(analyse(s, small), "finite_amplitude").delta_T;
-  CHECK(row(analyse(s, small), "finite_amplitude").method == "small_angle");
+  exact.reduction.amplitude_method = AmplitudeMethod::agm;
+  const CorrectionRow exact_row = row(analyse(s, exact), "finite_amplitude");
+  const CorrectionRow small_row = row(analyse(s, small), "finite_amplitude");
+  CHECK(small_row.method == "small_angle");
+  CHECK(exact_row.method == "agm");
   // 11 theta^4 / 3072 T0 = 0.094 us at 3 deg (Eq. 8, second term).
-  CHECK_THAT((exact - approx) * 1e6, WithinAbs(0.094, 0.001));
+  const double difference_us = (*exact_row.delta_T - *small_row.delta_T) * 1e6;
+  CHECK_THAT(difference_us, WithinAbs(0.094, 0.001));
+  // Each bound covers the true error: theta^2/16's bound is (9/64) m^2 T0
+  // with m = sin^2(1.5 deg), 0.23 us (amplitude_error_bound).
+  REQUIRE(small_row.error_bound_delta_T);
+  CHECK(*small_row.error_bound_delta_T * 1e6 >= difference_us);
+  CHECK_THAT(*small_row.error_bound_delta_T * 1e6, WithinRel(0.2296, 1e-3));
+  CHECK(*exact_row.error_bound_delta_T <= 1e-15 * *exact_row.delta_T * 1.0000001);
+}
+
+TEST_CASE("The automatic amplitude method is the cheapest within 1% of the period's uncertainty",
+          "[reduction]") {
+  ParsedScene s = parse_scene(test::nelson_olsson_text());
+  // Nelson-Olsson: sigma_T = 169 us, so the budget is 1.69 us; theta0^2/16
+  // is within 0.23 us at 3 deg.
+  const CorrectionRow automatic = row(analyse(s), "finite_amplitude");
+  CHECK(automatic.method == "small_angle");
+  CHECK(*automatic.error_bound_delta_T < 0.01 * s.uncertainty.period);
+  // A timing 100 times better leaves 0.0169 us: theta0^2/16 (0.23 us) and
+  // Eq. (8) with 1 term (omitted A_2 m^2 T0 = 0.23 us) no longer fit; with 2
+  // terms the omitted tail is A_3 m^3 T0 / (1 - m) = 1.1e-4 us.
+  s.uncertainty.period /= 100.0;
+  const CorrectionRow tight = row(analyse(s), "finite_amplitude");
+  CHECK(tight.method == "series");
+  CHECK(tight.series_terms == 2);
+  CHECK(*tight.error_bound_delta_T < 0.01 * s.uncertainty.period);
+  // No stated uncertainty: nothing is known to be small enough but the
+  // exact method.
+  s.uncertainty.period = 0.0;
+  CHECK(row(analyse(s), "finite_amplitude").method == "agm");
 }

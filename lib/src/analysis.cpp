@@ -77,7 +77,10 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
   }
   const ParsedScene& scene = fitted ? *fitted : given;
   if (scene.value.decay) out.drag = predict_drag(scene.value);
-  const Reduction<double> r = reduce(scene.value, options.reduction);
+  ReductionOptions reduction = options.reduction;
+  reduction.amplitude_tolerance =
+      options.amplitude_fraction * scene.uncertainty.period / scene.value.period;
+  const Reduction<double> r = reduce(scene.value, reduction);
   out.period_measured = {scene.value.period, scene.uncertainty.period};
   out.negligible_below = options.negligible_fraction * scene.uncertainty.period;
 
@@ -90,7 +93,7 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
   };
   std::vector<Input> inputs;
   zip_fields(scene.value, scene.uncertainty, [&](const char* path, const double& v, const double& u) {
-    if (u > 0.0) inputs.push_back({path, v, u, reduce_seeded(scene, path, options.reduction)});
+    if (u > 0.0) inputs.push_back({path, v, u, reduce_seeded(scene, path, reduction)});
   });
   // Their covariance matrix: diagonal but for alpha and beta of one fit.
   const std::size_t k = inputs.size();
@@ -148,6 +151,7 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
     CorrectionRow row;
     row.info = kCorrections[i];
     row.method = term.method;
+    row.series_terms = term.series_terms;
     if (!term.ratio) {
       row.status = Status::skipped;
       row.reason = term.skip_reason;
@@ -157,6 +161,7 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
       row.delta_g = 2.0 * r.g * *term.ratio;
       row.delta_T_uncertainty = variance(
           [i](const Reduction<Dual>& d) { return (*d.terms[i].ratio * d.period_ideal).v[0]; }, all);
+      if (term.error_bound) row.error_bound_delta_T = *term.error_bound * r.period_ideal;
       row.status = std::abs(*row.delta_T) < out.negligible_below ? Status::negligible
                                                                   : Status::applied;
       if (row.status == Status::negligible) {

@@ -96,7 +96,9 @@ nlohmann::ordered_json result_to_json(const ParsedScene& scene, const Analysis& 
               {"delta_T_over_T0", optional_number(row.ratio)},
               {"delta_g_m_s2", optional_number(row.delta_g)},
               {"equation", row.info.equation},
-              {"method", row.method.empty() ? json(nullptr) : json(row.method)}};
+              {"method", row.method.empty() ? json(nullptr) : json(row.method)},
+              {"error_bound_delta_T_s", optional_number(row.error_bound_delta_T)}};
+    if (row.series_terms > 0) c["series_terms"] = row.series_terms;
     if (!row.reason.empty()) c["reason"] = row.reason;
     corrections.push_back(std::move(c));
   }

@@ -19,6 +19,9 @@ struct AnalysisOptions {
   /// A correction smaller than this fraction of the period's uncertainty is
   /// flagged negligible (it is still applied).
   double negligible_fraction = 0.1;
+  /// With the automatic amplitude method, the chosen method's error bound
+  /// stays below this fraction of the period's uncertainty.
+  double amplitude_fraction = 0.01;
 };
 
 enum class Status { applied, negligible, skipped };
@@ -34,6 +37,8 @@ struct CorrectionRow {
   std::optional<double> delta_g;      ///< (m/s^2), linearised: 2 g DeltaT/T0
   /// Standard uncertainty of delta_T from every input's (s).
   std::optional<double> delta_T_uncertainty;
+  std::optional<double> error_bound_delta_T;  ///< (s), bound on the formula's error
+  int series_terms = 0;               ///< terms of a truncated series, 0 otherwise
 };
 
 /// One input's share of the uncertainty of g.

@@ -73,13 +73,15 @@ inline constexpr std::array<CorrectionInfo, kCorrectionCount> kCorrections{{
     {"support_motion", "Motion of support", "Nelson & Olsson (1986) Eqs. (83), (87), (88)"},
 }};
 
-/// How the finite-amplitude correction is computed.
-enum class AmplitudeMethod { agm, series, small_angle };
-
 /// Choices the user may make about the reduction.
 struct ReductionOptions {
-  AmplitudeMethod amplitude_method = AmplitudeMethod::agm;
+  /// `automatic` takes the cheapest method whose error bound is below
+  /// amplitude_tolerance; the others are forced.
+  AmplitudeMethod amplitude_method = AmplitudeMethod::automatic;
   int series_terms = 4;  ///< for AmplitudeMethod::series
+  /// Largest error of DeltaT/T0 (dimensionless) the automatic choice may
+  /// make; 0 takes the exact method.
+  double amplitude_tolerance = 0.0;
 };
 
 /// One correction's outcome: its relative size, or why it was skipped.
@@ -88,6 +90,8 @@ struct Term {
   std::optional<T> ratio;      ///< DeltaT/T0; empty when skipped
   const char* method = "";     ///< formula variant used
   const char* skip_reason = "";
+  std::optional<double> error_bound;  ///< bound on |error| of ratio, where proven
+  int series_terms = 0;        ///< terms of a truncated series, 0 otherwise
 };
 
 /// Everything the reduction computes, in SI units.
@@ -121,19 +125,17 @@ Reduction<T> reduce(const Scene<T>& s, const ReductionOptions& options = {}) {
   const T omega0 = 2.0 * kPi / s.period;
   const T g_work = omega0 * omega0 * l;
 
-  switch (options.amplitude_method) {
-    case AmplitudeMethod::agm:
-      set(Id::finite_amplitude, finite_amplitude_agm(theta0), "agm");
-      break;
-    case AmplitudeMethod::series:
-      set(Id::finite_amplitude,
-          finite_amplitude_series(theta0, options.series_terms), "series");
-      break;
-    case AmplitudeMethod::small_angle:
-      set(Id::finite_amplitude, finite_amplitude_small_angle(theta0),
-          "small_angle");
-      break;
-  }
+  const AmplitudeChoice amp =
+      options.amplitude_method == AmplitudeMethod::automatic
+          ? cheapest_amplitude_method(value_of(theta0), options.amplitude_tolerance)
+          : AmplitudeChoice{options.amplitude_method, options.series_terms,
+                            amplitude_error_bound(options.amplitude_method,
+                                                  value_of(theta0), options.series_terms)};
+  set(Id::finite_amplitude, finite_amplitude(amp.method, theta0, amp.terms),
+      method_name(amp.method));
+  auto& amplitude_term = out.terms[static_cast<int>(Id::finite_amplitude)];
+  amplitude_term.error_bound = amp.bound;
+  if (amp.method == AmplitudeMethod::series) amplitude_term.series_terms = amp.terms;
   set(Id::bob_radius, bob_radius(a, l), "eq10");
   set(Id::bob_rotation, bob_rotation(a, l), "eq10_rotation");
 

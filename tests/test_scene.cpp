@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "pendulum/scene_json.hpp"
@@ -112,4 +113,31 @@ TEST_CASE("A single trial needs a stated uncertainty or resolution", "[scene]") 
   // Resolution 0.01 s, uniform: 0.01/sqrt(12) per trial, over 100 oscillations.
   CHECK_THAT(s.uncertainty.period, WithinRel(0.01 / std::sqrt(12.0) / 100.0, 1e-12));
   CHECK(s.assumptions.size() == 1);
+}
+
+TEST_CASE("Nesting deep enough to overflow the stack is refused", "[scene][errors]") {
+  // Found by hand before the nesting limit: 200000 nested arrays crashed
+  // pendulum-g with SIGSEGV (the JSON library's dump recursed once a level).
+  const std::string text = std::string(500000, '[') + std::string(500000, ']');
+  check_error(text, "[0][0][0][0][0][0][0][0][0][0]", "got values nested more than 10 deep");
+}
+
+TEST_CASE("Error messages are one line of printable ASCII", "[scene][errors]") {
+  // The input's raw bytes (an escape, DEL, invalid UTF-8) are shown escaped
+  // and long values cut: the fuzzer found DEL and 1000-character messages.
+  const std::string texts[] = {
+      "{\"ti\\u001bming\": 1}", "{\"length\": \"\xff\"}", "\x7f",
+      "{\"" + std::string(100000, 'k') + "\": 1}", "[\"" + std::string(100000, 'v') + "\"]"};
+  for (const std::string& text : texts) {
+    try {
+      parse_scene(text);
+      FAIL("no error");
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      INFO(message);
+      CHECK(message.size() < 400);
+      CHECK(std::all_of(message.begin(), message.end(),
+                        [](unsigned char c) { return c >= 0x20 && c < 0x7f; }));
+    }
+  }
 }

@@ -1,9 +1,11 @@
 #include "pendulum/scene_json.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <set>
 #include <sstream>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -24,21 +26,115 @@ using nlohmann::json;
 
 constexpr const char* kSceneSchema = "pendulum-g/scene/1";
 
-std::string shown(const json& j) {
-  std::string s = j.dump();
-  if (s.size() > 60) s = s.substr(0, 57) + "...";
-  return s;
+/// `s` fit for a one-line message: ASCII only, control and non-ASCII bytes
+/// as \xNN, cut to `max` characters.
+std::string one_line(const std::string& s, std::size_t max) {
+  std::string out;
+  for (const unsigned char c : s) {
+    if (c >= 0x20 && c < 0x7f) {
+      out += static_cast<char>(c);
+    } else {
+      static const char hex[] = "0123456789abcdef";
+      out += {'\\', 'x', hex[c >> 4], hex[c & 15]};
+    }
+  }
+  return out.size() > max ? out.substr(0, max - 3) + "..." : out;
 }
 
-std::string format_number(double x) {
+std::string shown(const json& j) { return one_line(j.dump(-1, ' ', true), 60); }
+
+std::string format_number(double x, int digits = 10) {
   std::ostringstream os;
-  os.precision(10);
+  os.precision(digits);
   os << x;
   return os.str();
 }
 
+/// A key as a path component: as is if it is a plain name, else quoted.
+std::string path_key(const std::string& key) {
+  const bool plain = !key.empty() && key.size() <= 40 &&
+                     std::all_of(key.begin(), key.end(), [](unsigned char c) {
+                       return std::isalnum(c) || c == '_';
+                     });
+  return plain ? key : one_line(json(key).dump(-1, ' ', true), 40);
+}
+
 std::string join_path(const std::string& path, const std::string& key) {
-  return path.empty() ? key : path + "." + key;
+  return path.empty() ? path_key(key) : path + "." + path_key(key);
+}
+
+/// No scene nests deeper than 3 (air.pressure.value); the limit keeps the
+/// recursive parts of the JSON library (dump, copy) off the end of the stack.
+constexpr std::size_t kMaxNesting = 10;
+
+/// Parses the text as JSON. The parser's callback tracks the path of the
+/// value being read, to name it in syntax errors, refuses values nested too
+/// deep, and refuses a key given twice in one object, which the JSON library
+/// would silently resolve by keeping the last.
+json parse_json(const std::string& text) {
+  if (text.size() > kMaxSceneBytes) {
+    throw InputError("", "got more than " + std::to_string(kMaxSceneBytes) +
+                             " bytes; expected a scene file of at most 1 MiB");
+  }
+  struct Frame {
+    bool array = false;
+    std::size_t index = 0;       // arrays: the element being read
+    std::string key;             // objects: the key being read
+    std::set<std::string> keys;  // objects: the keys read so far
+  };
+  std::vector<Frame> frames;
+  auto path = [&frames] {
+    std::string p;
+    for (const Frame& f : frames) {
+      if (f.array) {
+        p += "[" + std::to_string(f.index) + "]";
+      } else if (!f.keys.empty()) {
+        p = join_path(p, f.key);
+      }
+    }
+    return p;
+  };
+  auto element_read = [&frames] {
+    if (!frames.empty() && frames.back().array) ++frames.back().index;
+  };
+  const json::parser_callback_t callback = [&](int, json::parse_event_t event, json& parsed) {
+    using Event = json::parse_event_t;
+    switch (event) {
+      case Event::object_start:
+      case Event::array_start:
+        if (frames.size() >= kMaxNesting) {
+          throw InputError(path(), "got values nested more than " + std::to_string(kMaxNesting) +
+                                       " deep; expected a scene, whose values nest 3 deep");
+        }
+        frames.emplace_back();
+        frames.back().array = event == Event::array_start;
+        break;
+      case Event::key:
+        frames.back().key = parsed.get<std::string>();
+        if (!frames.back().keys.insert(frames.back().key).second) {
+          throw InputError(path(), "got this key twice in one object; expected each key once "
+                                   "(a JSON reader would silently keep only the last)");
+        }
+        break;
+      case Event::object_end:
+      case Event::array_end:
+        frames.pop_back();
+        element_read();
+        break;
+      case Event::value:
+        element_read();
+        break;
+    }
+    return true;
+  };
+  try {
+    return json::parse(text, callback);
+  } catch (const json::exception& e) {
+    const std::string why = e.what();  // "[json.exception.parse_error.101] parse error at ..."
+    const auto bracket = why.find("] ");
+    throw InputError(path(), "not valid JSON: " +
+                                 one_line(bracket == std::string::npos ? why : why.substr(bracket + 2), 200));
+  }
 }
 
 /// A JSON object being read: remembers which keys were asked for, so that
@@ -99,7 +195,7 @@ double finite_number(const json& j, const std::string& path,
   if (!std::isfinite(x)) {
     throw InputError(path, "got " + shown(j) + "; expected a finite number");
   }
-  return x;
+  return x == 0.0 ? 0.0 : x;  // -0 is 0: no "-0" in a result
 }
 
 enum class Range { positive, non_negative, any };
@@ -124,7 +220,7 @@ class SceneReader {
     const std::string unit_name = q.text("unit");
     const auto unit = find_unit(unit_name, dim);
     if (!unit) {
-      throw InputError(q.path("unit"), "got \"" + unit_name + "\"; expected a unit of " +
+      throw InputError(q.path("unit"), "got " + shown(q.at("unit")) + "; expected a unit of " +
                                            dimension_name(dim) + ": " + unit_names(dim));
     }
     double sigma = 0.0;
@@ -184,7 +280,7 @@ void read_timing(Object& top, ParsedScene& out) {
   const std::string unit_name = t.text("unit");
   const auto unit = find_unit(unit_name, Dimension::time);
   if (!unit) {
-    throw InputError(t.path("unit"), "got \"" + unit_name + "\"; expected a unit of a time: " +
+    throw InputError(t.path("unit"), "got " + shown(t.at("unit")) + "; expected a unit of a time: " +
                                          unit_names(Dimension::time));
   }
   const json& trials = t.at("trials");
@@ -259,14 +355,7 @@ void fail_if(bool bad, const std::string& path, const std::string& message) {
 }  // namespace
 
 ParsedScene parse_scene(const std::string& text) {
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::exception& e) {
-    std::string why = e.what();
-    const auto colon = why.find("] ");
-    throw InputError("", "not valid JSON: " + (colon == std::string::npos ? why : why.substr(colon + 2)));
-  }
+  const json doc = parse_json(text);
   ParsedScene out;
   SceneReader r(out);
   Scene<double>& v = out.value;
@@ -274,9 +363,8 @@ ParsedScene parse_scene(const std::string& text) {
   Object top(doc, "", "a JSON object (the scene)");
 
   if (top.has("schema")) {
-    const std::string schema = top.text("schema");
-    fail_if(schema != kSceneSchema, "schema",
-            "got \"" + schema + "\"; expected \"" + kSceneSchema + "\"");
+    fail_if(top.text("schema") != kSceneSchema, "schema",
+            "got " + shown(top.at("schema")) + "; expected \"" + kSceneSchema + "\"");
   }
   if (top.has("title")) out.title = top.text("title");
   if (top.has("source")) out.source = top.text("source");

@@ -60,7 +60,7 @@ void check_error(const std::string& text, const std::string& path, const std::st
 TEST_CASE("Units convert to SI, offsets for temperatures only", "[scene][units]") {
   const ParsedScene s = parse_scene(patched(R"J({
     "length": {"value": 300.44, "unit": "cm", "uncertainty": 0.03},
-    "amplitude": {"value": 0.05, "unit": "rad"},
+    "amplitude": {"value": 0.05, "unit": "rad", "uncertainty": 0.005},
     "air": {"pressure": {"value": 753.4, "unit": "mmHg"},
             "temperature": {"value": 77.9, "unit": "degF", "uncertainty": 1.8},
             "molar_mass": null, "viscosity": null},
@@ -140,4 +140,11 @@ TEST_CASE("Error messages are one line of printable ASCII", "[scene][errors]") {
                         [](unsigned char c) { return c >= 0x20 && c < 0x7f; }));
     }
   }
+}
+
+TEST_CASE("A stated one-trial uncertainty is a floor, like the resolution", "[scene]") {
+  // Published trials: standard deviation 0.05333 s; stated 0.1 s is larger,
+  // so the period's uncertainty is 0.1 / sqrt(10) / 100.
+  const ParsedScene s = parse_scene(patched(R"J({"timing": {"uncertainty": 0.1}})J"));
+  CHECK_THAT(s.uncertainty.period, WithinRel(0.1 / std::sqrt(10.0) / 100.0, 1e-12));
 }

@@ -26,6 +26,9 @@ using nlohmann::json;
 
 constexpr const char* kSceneSchema = "pendulum-g/scene/1";
 
+constexpr double kMaxDensity = 22590.0;       // osmium (kg/m^3)
+constexpr double kMaxYoungsModulus = 1.2e12;  // diamond (Pa)
+
 /// `s` fit for a one-line message: ASCII only, control and non-ASCII bytes
 /// as \xNN, cut to `max` characters.
 std::string one_line(const std::string& s, std::size_t max) {
@@ -198,6 +201,10 @@ double finite_number(const json& j, const std::string& path,
   return x == 0.0 ? 0.0 : x;  // -0 is 0: no "-0" in a result
 }
 
+void fail_if(bool bad, const std::string& path, const std::string& message) {
+  if (bad) throw InputError(path, message);
+}
+
 enum class Range { positive, non_negative, any };
 
 struct Measured {
@@ -223,16 +230,12 @@ class SceneReader {
       throw InputError(q.path("unit"), "got " + shown(q.at("unit")) + "; expected a unit of " +
                                            dimension_name(dim) + ": " + unit_names(dim));
     }
-    double sigma = 0.0;
-    if (q.has("uncertainty")) {
-      const double u = finite_number(q.at("uncertainty"), q.path("uncertainty"),
-                                     "a number");
-      if (u < 0.0) {
-        throw InputError(q.path("uncertainty"), "got " + format_number(u) +
-                                                    "; expected a non-negative uncertainty");
-      }
-      sigma = u * unit->factor;
-    }
+    const double u = q.has("uncertainty") ? finite_number(q.at("uncertainty"),
+                                                          q.path("uncertainty"), "a number")
+                                          : 0.0;
+    fail_if(u < 0.0, q.path("uncertainty"),
+            "got " + format_number(u) + "; expected a non-negative uncertainty");
+    const double sigma = u * unit->factor;
     if (q.has("source")) q.text("source");
     q.finish();
     const double si = raw * unit->factor + unit->offset;
@@ -244,6 +247,11 @@ class SceneReader {
       throw InputError(q.path("value"), "got " + format_number(raw) + " " + unit_name +
                                             "; expected " + kind + what);
     }
+    // A positive quantity as uncertain as itself might be 0: it is unknown.
+    fail_if(range == Range::positive && sigma >= si, q.path("uncertainty"),
+            "got " + format_number(u) + " " + unit_name +
+                "; expected an uncertainty smaller than the value (" + format_number(raw) + " " +
+                unit_name + ")");
     out_.si_unit[q.path()] = si_unit(dim);
     return {si, sigma};
   }
@@ -288,7 +296,7 @@ void read_timing(Object& top, ParsedScene& out) {
     throw InputError(t.path("trials"), "got " + shown(trials) +
                                            "; expected a non-empty array of trial times");
   }
-  std::vector<double> times;
+  std::vector<double> times;  // in `unit`
   for (std::size_t i = 0; i < trials.size(); ++i) {
     const std::string p = t.path("trials") + "[" + std::to_string(i) + "]";
     const double x = finite_number(trials[i], p, "a time (number)");
@@ -296,7 +304,7 @@ void read_timing(Object& top, ParsedScene& out) {
       throw InputError(p, "got " + format_number(x) + " " + unit_name +
                               "; expected a positive time");
     }
-    times.push_back(x * unit->factor);
+    times.push_back(x);
   }
   auto optional_time = [&](const char* key) -> std::optional<double> {
     if (!t.has(key)) return std::nullopt;
@@ -305,23 +313,42 @@ void read_timing(Object& top, ParsedScene& out) {
       throw InputError(t.path(key), "got " + format_number(x) + " " + unit_name +
                                         "; expected a positive time");
     }
-    return x * unit->factor;
+    return x;
   };
   const std::optional<double> resolution = optional_time("resolution");
   const std::optional<double> trial_sigma = optional_time("uncertainty");
   if (t.has("source")) t.text("source");
   t.finish();
 
+  // In the file's unit, and relative to the mean so that no sum overflows.
+  auto in_unit = [&](double x) { return format_number(x) + " " + unit_name; };
   const double n = static_cast<double>(times.size());
   double mean = 0.0;
-  for (double x : times) mean += x;
-  mean /= n;
+  for (std::size_t i = 0; i < times.size(); ++i) mean += (times[i] - mean) / (i + 1.0);
+  // Beyond a third of the mean, a one-trial uncertainty leaves a mean +-
+  // standard error (N&O Eq. 4) that means nothing: trials of different
+  // oscillation counts or units, or a wrong resolution.
+  fail_if(resolution && *resolution >= mean, t.path("resolution"),
+          "got " + in_unit(resolution.value_or(0.0)) +
+              "; expected a resolution finer than the mean trial (" + in_unit(mean) + ")");
+  fail_if(trial_sigma && *trial_sigma > mean / 3.0, t.path("uncertainty"),
+          "got " + in_unit(trial_sigma.value_or(0.0)) +
+              "; expected a one-trial uncertainty below a third of the mean trial (" +
+              in_unit(mean) + ")");
   double sigma_trial = 0.0;
   if (times.size() >= 2) {
     double ss = 0.0;
-    for (double x : times) ss += (x - mean) * (x - mean);
-    sigma_trial = std::sqrt(ss / (n - 1.0));
-    if (resolution) sigma_trial = std::max(sigma_trial, *resolution / std::sqrt(12.0));
+    for (double x : times) ss += (x / mean - 1.0) * (x / mean - 1.0);
+    const double spread = std::sqrt(ss / (n - 1.0)) * mean;
+    const auto [lo, hi] = std::minmax_element(times.begin(), times.end());
+    fail_if(spread > mean / 3.0, t.path("trials"),
+            "got trials from " + format_number(*lo) + " to " + in_unit(*hi) +
+                ", a standard deviation over a third of their mean " + in_unit(mean) +
+                "; expected repeated timings of the same oscillations (a mean of these means nothing)");
+    // The resolution and a stated uncertainty are floors: a scatter below
+    // them is luck.
+    sigma_trial = std::max({spread, resolution.value_or(0.0) / std::sqrt(12.0),
+                            trial_sigma.value_or(0.0)});
     if (sigma_trial == 0.0) {
       out.warnings.push_back(
           "timing.trials: all trials are equal and no resolution is given, so "
@@ -343,13 +370,9 @@ void read_timing(Object& top, ParsedScene& out) {
   out.trial_count = static_cast<int>(times.size());
   out.value.oscillations_per_trial = n_osc;
   out.uncertainty.oscillations_per_trial = n_osc;
-  out.value.period = mean / n_osc;
-  out.uncertainty.period = sigma_trial / std::sqrt(n) / n_osc;
+  out.value.period = mean * unit->factor / n_osc;
+  out.uncertainty.period = sigma_trial * unit->factor / std::sqrt(n) / n_osc;
   out.si_unit["timing.trials"] = "s";
-}
-
-void fail_if(bool bad, const std::string& path, const std::string& message) {
-  if (bad) throw InputError(path, message);
 }
 
 }  // namespace
@@ -386,6 +409,11 @@ ParsedScene parse_scene(const std::string& text) {
     fail_if(v.bob.diameter / 2.0 >= v.length, "length.value",
             "got " + format_number(v.length) + " m; expected more than the bob radius " +
                 format_number(v.bob.diameter / 2.0) + " m");
+    const double density = v.bob.mass / sphere_volume(v.bob.diameter / 2.0);
+    fail_if(density > kMaxDensity, "bob.mass.value",
+            "got " + format_number(v.bob.mass) + " kg, a density of " + format_number(density) +
+                " kg/m^3 for this diameter; expected at most " + format_number(kMaxDensity) +
+                " kg/m^3 (osmium, the densest element)");
   }
   // A part's fields are read into `pv` (values) and `pu` (uncertainties); its
   // consistency is checked once no unknown key is left.
@@ -424,6 +452,9 @@ ParsedScene parse_scene(const std::string& text) {
     r.put(o, "volume", Dimension::volume, Range::non_negative, pv.volume, pu.volume);
   }, [&](const Cap<double>& pv) {
     lighter_than_bob(pv.mass, "cap.mass.value", "a cap");
+    fail_if(pv.center_distance >= v.length, "cap.center_distance.value",
+            "got " + format_number(pv.center_distance) + " m; expected less than the length (" +
+                format_number(v.length) + " m): the cap hangs between the pivot and the bob");
   });
   part("cap_screw", v.cap_screw, u.cap_screw,
        [&](Object& o, CapScrew<double>& pv, CapScrew<double>& pu) {
@@ -434,6 +465,10 @@ ParsedScene parse_scene(const std::string& text) {
        [&](const CapScrew<double>& pv) {
          lighter_than_bob(std::abs(pv.mass_deficit), "cap_screw.mass_deficit.value",
                           "a mass deficit");
+         fail_if(pv.center_distance >= v.bob.diameter / 2.0, "cap_screw.center_distance.value",
+                 "got " + format_number(pv.center_distance) +
+                     " m; expected less than the bob radius (" +
+                     format_number(v.bob.diameter / 2.0) + " m): the screw is inside the bob");
        });
   part("wire", v.wire, u.wire, [&](Object& o, Wire<double>& pv, Wire<double>& pu) {
     r.put(o, "mass", Dimension::mass, Range::positive, pv.mass, pu.mass);
@@ -442,6 +477,19 @@ ParsedScene parse_scene(const std::string& text) {
           pu.youngs_modulus);
   }, [&](const Wire<double>& pv) {
     lighter_than_bob(pv.mass, "wire.mass.value", "a wire");
+    if (!pv.youngs_modulus) return;
+    fail_if(*pv.youngs_modulus > kMaxYoungsModulus, "wire.youngs_modulus.value",
+            "got " + format_number(*pv.youngs_modulus) + " Pa; expected at most " +
+                format_number(kMaxYoungsModulus) + " Pa (diamond, the stiffest material)");
+    if (!pv.diameter) return;
+    // Eq. (79) is the stretch of a stiff wire; the bob's weight over E S is
+    // the wire's static strain.
+    const double strain = v.bob.mass * kStandardGravity /
+                          (*pv.youngs_modulus * kPi * *pv.diameter * *pv.diameter / 4.0);
+    fail_if(!(strain < 0.1), "wire",
+            "got a wire that the bob stretches by " + format_number(100.0 * strain, 3) +
+                "% (weight / (youngs_modulus x cross-section)); expected a stiff wire, "
+                "stretched by less than 10%");
   });
   if (top.has("air")) {
     const json& air = top.at("air");
@@ -455,8 +503,19 @@ ParsedScene parse_scene(const std::string& text) {
       r.put(o, "pressure", Dimension::pressure, Range::positive, pv.pressure, pu.pressure);
       r.put(o, "temperature", Dimension::temperature, Range::positive, pv.temperature,
             pu.temperature);
+      // A laboratory's gas: outside these ranges, a unit slipped (25 "K"
+      // meant degC, 28.96 "kg/mol" meant g/mol).
+      auto within = [&](const char* key, double x, double lo, double hi, const char* unit,
+                        const char* what) {
+        fail_if(x < lo || x > hi, o.path(key) + ".value",
+                "got " + format_number(x) + " " + unit + "; expected " + what);
+      };
+      within("temperature", pv.temperature, 150.0, 500.0, "K",
+             "the temperature of a laboratory's air, 150 K to 500 K (-123 degC to 227 degC)");
       if (o.has("molar_mass")) {
         r.put(o, "molar_mass", Dimension::molar_mass, Range::positive, pv.molar_mass, pu.molar_mass);
+        within("molar_mass", pv.molar_mass, 1e-3, 1.0, "kg/mol",
+               "the molar mass of a gas, 0.001 to 1 kg/mol (air 0.02896)");
       } else {
         pv.molar_mass = kDryAirMolarMass;
         pu.molar_mass = 0.0;
@@ -465,6 +524,8 @@ ParsedScene parse_scene(const std::string& text) {
       }
       if (o.has("viscosity")) {
         r.put(o, "viscosity", Dimension::viscosity, Range::positive, pv.viscosity, pu.viscosity);
+        within("viscosity", pv.viscosity, 1e-6, 1e-4, "Pa s",
+               "the viscosity of a gas, 1e-6 to 1e-4 Pa s (air 1.8e-5)");
       } else {
         pv.viscosity = air_viscosity(pv.temperature);
         pu.viscosity = 0.0;
@@ -476,7 +537,7 @@ ParsedScene parse_scene(const std::string& text) {
       const double rho = air_density(pv.pressure, pv.temperature, pv.molar_mass);
       fail_if(rho > 100.0, "air",
               "density " + format_number(rho) +
-                  " kg/m^3 from this pressure and temperature; expected a gas (below 100 kg/m^3)");
+                  " kg/m^3 from this pressure, temperature and molar mass; expected a gas (below 100 kg/m^3)");
       if (v.cap && !v.cap->volume) {
         out.warnings.push_back(
             "cap.volume: not given; buoyancy and added mass count the bob's volume only");

@@ -1,12 +1,15 @@
 // The pendulum-g command: Table II of Nelson & Olsson (1986) from the bundled
-// data, and the catalogue of bad scenes (tests/bad_scenes.json), each of which
-// must fail with its message, a non-zero exit and nothing on stdout.
+// data, the catalogue of bad scenes (tests/bad_scenes.json), each of which
+// must fail with its message, a non-zero exit and nothing on stdout, and the
+// catalogue of valid scenes (tests/valid_scenes.json), extreme or suspicious,
+// each of which must work and warn as listed.
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -142,6 +145,65 @@ TEST_CASE("Catalogue of bad scenes", "[cli][errors]") {
     // sanitizer report after it.
     CHECK(r.err.rfind("pendulum-g: error: ", 0) == 0);
     CHECK(r.err.find('\n') == r.err.size() - 1);
+  }
+  std::remove(file.c_str());
+}
+
+namespace {
+
+// Every number of a result is finite and no uncertainty is -0. The JSON
+// library writes NaN and inf as null, so a null may stand only where a
+// skipped correction has no value.
+void check_numbers(const json& result) {
+  const json flat = result.flatten();
+  for (const auto& [pointer, value] : flat.items()) {
+    INFO(pointer);
+    const json& original = result.at(json::json_pointer(pointer));  // flatten() nulls {} and []
+    if (original.is_null()) {
+      const std::string parent = pointer.substr(0, pointer.rfind('/'));
+      CHECK(parent.rfind("/corrections/", 0) == 0);
+      CHECK(result.value(json::json_pointer(parent + "/status"), "") == "skipped");
+    } else if (value.is_number()) {
+      CHECK(std::isfinite(value.get<double>()));
+      if (pointer.size() >= 11 && pointer.substr(pointer.size() - 11) == "uncertainty") {
+        CHECK_FALSE(std::signbit(value.get<double>()));
+      }
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("Catalogue of valid scenes, extreme or suspicious", "[cli]") {
+  const json catalogue =
+      json::parse(pendulum::test::read_text(std::string(PENDULUM_TESTS_DIR) + "/valid_scenes.json"));
+  const json base = json::parse(pendulum::test::read_text(kNelsonOlsson));
+  const std::string file = temporary_file();
+  for (const json& entry : catalogue.at("cases")) {
+    std::ofstream(file, std::ios::binary) << pendulum::test::catalogue_text(entry, base);
+    const Run r = run("reduce " + file);
+    INFO(entry.at("name").get<std::string>() << "\nstderr: " << r.err);
+    REQUIRE(r.status == 0);
+    const json result = json::parse(r.out);
+    check_numbers(result);
+    CHECK(result.at("g").at("value").get<double>() > 0.0);
+    if (entry.contains("g")) {
+      CHECK_THAT(result.at("g").at("value").get<double>(),
+                 WithinAbs(entry.at("g").at("value"), entry.at("g").at("tolerance")));
+    }
+    // Each expected warning, in order, in the JSON and on stderr; no other.
+    const json expected = entry.value("warnings", json::array());
+    const json& warnings = result.at("warnings");
+    REQUIRE(warnings.size() == expected.size());
+    std::string err;
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+      CHECK(warnings[i].get<std::string>().rfind(expected[i].get<std::string>(), 0) == 0);
+      err += "pendulum-g: warning: " + warnings[i].get<std::string>() + "\n";
+    }
+    CHECK(r.err == err);
+    const Run table = run("reduce --format table " + file);
+    CHECK(table.status == 0);
+    for (const char* bad : {"nan", "inf", "NaN", "INF"}) CHECK_THAT(table.out, !Contains(bad));
   }
   std::remove(file.c_str());
 }

@@ -142,6 +142,33 @@ TEST_CASE("Error messages are one line of printable ASCII", "[scene][errors]") {
   }
 }
 
+TEST_CASE("Plausibility warnings start at their thresholds", "[scene][warnings]") {
+  auto warnings = [](const char* patch) { return parse_scene(patched(patch)).warnings; };
+  // The expected period scales as sqrt(length): 3.0044 m / 0.955^2 puts the
+  // measured period 4.5% short of it, 3.0044 m / 0.945^2 5.5%; the warning
+  // starts at 5%.
+  CHECK(warnings(R"J({"length": {"value": 3.29418}})J").empty());
+  REQUIRE(warnings(R"J({"length": {"value": 3.36429}})J").size() == 1);
+  CHECK_THAT(warnings(R"J({"length": {"value": 3.36429}})J")[0], Contains("5.5% shorter"));
+  // The small-angle lab ends at 20 deg.
+  CHECK(warnings(R"J({"amplitude": {"value": 19.9}})J").empty());
+  REQUIRE(warnings(R"J({"amplitude": {"value": 20.1}})J").size() == 1);
+  CHECK_THAT(warnings(R"J({"amplitude": {"value": 20.1}})J")[0],
+             Contains("20.1 deg is over the 20 deg of a small-angle lab"));
+  // A trial is off when it lies over 5 x 1.4826 x MAD from the median: with
+  // the published trials but the last, median 347.865 s and MAD 0.035 s, so
+  // the limit is 0.2595 s.
+  const char* near = R"J({"timing": {"trials": [347.84, 347.87, 347.86, 347.91, 347.91, 347.94, 347.84, 347.81, 347.84, 348.11]}})J";
+  const char* far = R"J({"timing": {"trials": [347.84, 347.87, 347.86, 347.91, 347.91, 347.94, 347.84, 347.81, 347.84, 348.13]}})J";
+  CHECK(warnings(near).empty());
+  REQUIRE(warnings(far).size() == 1);
+  CHECK_THAT(warnings(far)[0], Contains("timing.trials[9]: 348.13 s is 0.265 s from the median trial 347.865 s"));
+  // The published trials scatter by 0.05333 s: a stated one-trial uncertainty
+  // warns below a third of that.
+  CHECK(warnings(R"J({"timing": {"uncertainty": 0.018}})J").empty());
+  REQUIRE(warnings(R"J({"timing": {"uncertainty": 0.0177}})J").size() == 1);
+}
+
 TEST_CASE("A stated one-trial uncertainty is a floor, like the resolution", "[scene]") {
   // Published trials: standard deviation 0.05333 s; stated 0.1 s is larger,
   // so the period's uncertainty is 0.1 / sqrt(10) / 100.

@@ -11,6 +11,7 @@
 
 #include "pendulum/air.hpp"
 #include "pendulum/numeric.hpp"
+#include "pendulum/reduction.hpp"
 #include "pendulum/units.hpp"
 
 namespace pendulum {
@@ -28,6 +29,18 @@ constexpr const char* kSceneSchema = "pendulum-g/scene/1";
 
 constexpr double kMaxDensity = 22590.0;       // osmium (kg/m^3)
 constexpr double kMaxYoungsModulus = 1.2e12;  // diamond (Pa)
+/// Beyond this |DeltaT/T0|, a correction is outside the first-order theory
+/// it comes from: the terms it neglects, of order (DeltaT/T0)^2, would reach
+/// 1% of the period.
+constexpr double kMaxFirstOrder = 0.1;
+/// A measured period this far from the expected one draws a warning...
+constexpr double kPeriodWarning = 0.05;
+/// ...this factor off, an error: no laboratory's g is 100 times off.
+constexpr double kPeriodFactor = 10.0;
+/// The other reading of an amplitude's unit fits when it brings the period
+/// this close to the expected one.
+constexpr double kPeriodFit = 0.01;
+constexpr double kSmallAngleLab = 20.0;  // (deg)
 
 /// `s` fit for a one-line message: ASCII only, control and non-ASCII bytes
 /// as \xNN, cut to `max` characters.
@@ -276,6 +289,53 @@ class SceneReader {
   ParsedScene& out_;
 };
 
+/// Warns about trials (in `unit`) that disagree more than they should: one
+/// far from the others (a miscounted oscillation, a typo), or a scatter far
+/// beyond the stated one-trial uncertainty. A scatter beyond the resolution
+/// alone is normal: a hand on a stopwatch scatters more than its last digit.
+void warn_about_trials(const std::vector<double>& times, double spread, std::optional<double> resolution,
+                       std::optional<double> trial_sigma, const std::string& unit,
+                       std::vector<std::string>& warnings) {
+  auto in_unit = [&](double x) { return format_number(x, 4) + " " + unit; };
+  if (trial_sigma && spread > 3.0 * *trial_sigma) {
+    warnings.push_back("timing.uncertainty: the trials scatter by " + in_unit(spread) +
+                       " (standard deviation), over 3 times the stated one-trial uncertainty " +
+                       in_unit(*trial_sigma) + "; the period's uncertainty uses the scatter");
+  }
+  if (times.size() < 3) return;  // two trials: no telling which one is off
+  // The median and the median absolute deviation (MAD), which one bad trial
+  // cannot drag; 1.4826 MAD estimates the standard deviation of the others.
+  auto median = [](std::vector<double> x) {
+    const auto mid = x.begin() + static_cast<std::ptrdiff_t>(x.size() / 2);
+    std::nth_element(x.begin(), mid, x.end());
+    const double upper = *mid;
+    if (x.size() % 2) return upper;
+    return (*std::max_element(x.begin(), mid) + upper) / 2.0;
+  };
+  const double centre = median(times);
+  std::vector<double> deviation(times.size());
+  for (std::size_t i = 0; i < times.size(); ++i) deviation[i] = std::abs(times[i] - centre);
+  const double scatter = 1.4826 * median(deviation);
+  std::vector<std::string> allowance{"the trials' scatter (" + in_unit(scatter) + ")"};
+  if (resolution) allowance.push_back("the resolution (" + in_unit(*resolution) + ")");
+  if (trial_sigma) allowance.push_back("the stated uncertainty (" + in_unit(*trial_sigma) + ")");
+  std::string largest = allowance.size() > 1 ? "the largest of " : "";
+  for (std::size_t k = 0; k < allowance.size(); ++k) {
+    largest += (k == 0 ? "" : k + 1 == allowance.size() ? " and " : ", ") + allowance[k];
+  }
+  const double allowed =
+      5.0 * std::max({scatter, resolution.value_or(0.0), trial_sigma.value_or(0.0)});
+  const auto worst = std::max_element(deviation.begin(), deviation.end());
+  const auto i = static_cast<std::size_t>(worst - deviation.begin());
+  if (allowed > 0.0 && *worst > allowed) {
+    warnings.push_back("timing.trials[" + std::to_string(i) + "]: " + format_number(times[i]) + " " +
+                       unit + " is " + in_unit(*worst) + " from the median trial " +
+                       format_number(centre) + " " + unit +
+                       ", over 5 times " + largest +
+                       "; a miscounted oscillation or a typo?");
+  }
+}
+
 void read_timing(Object& top, ParsedScene& out) {
   Object t(top.at("timing"), "timing");
   const json& n_json = t.at("oscillations_per_trial");
@@ -354,6 +414,7 @@ void read_timing(Object& top, ParsedScene& out) {
           "timing.trials: all trials are equal and no resolution is given, so "
           "the period's uncertainty is 0; state timing.resolution");
     }
+    warn_about_trials(times, spread, resolution, trial_sigma, unit_name, out.warnings);
   } else if (trial_sigma) {
     sigma_trial = *trial_sigma;
     out.assumptions.push_back(
@@ -373,6 +434,93 @@ void read_timing(Object& top, ParsedScene& out) {
   out.value.period = mean * unit->factor / n_osc;
   out.uncertainty.period = sigma_trial * unit->factor / std::sqrt(n) / n_osc;
   out.si_unit["timing.trials"] = "s";
+}
+
+/// The scene part a correction comes from, named in its errors.
+const char* part_of(CorrectionId id) {
+  using Id = CorrectionId;
+  switch (id) {
+    case Id::finite_amplitude: return "amplitude";
+    case Id::bob_radius: case Id::bob_rotation: return "bob";
+    case Id::ring: case Id::double_pendulum: return "ring";
+    case Id::cap: return "cap";
+    case Id::cap_screw: return "cap_screw";
+    case Id::wire_mass: case Id::wire_flexibility: case Id::wire_stretch: return "wire";
+    case Id::buoyancy: case Id::added_mass: return "air";
+    case Id::linear_damping: case Id::quadratic_damping: case Id::amplitude_decay: return "decay";
+    case Id::support_motion: return "support";
+  }
+  return "";
+}
+
+/// The period this pendulum has at standard gravity, with every correction:
+/// 2 pi sqrt(l/g) T/T0 (Eqs. 3, 6).
+double expected_period(const Scene<double>& s) {
+  return 2.0 * kPi * std::sqrt(s.length / kStandardGravity) * (s.period / reduce(s).period_ideal);
+}
+
+/// "5.3% longer"
+std::string off_by(double ratio) {
+  return format_number(100.0 * std::abs(ratio - 1.0), 2) + "% " + (ratio > 1.0 ? "longer" : "shorter");
+}
+
+/// Checks that need the reduction: every first-order correction small, the
+/// period within reach of the expected one, and warns about what is legal but
+/// suspicious (docs/robustness.md).
+void check_plausibility(const json& doc, ParsedScene& out) {
+  const Scene<double>& s = out.value;
+  const double expected = expected_period(s);
+  const double ratio = s.period / expected;
+  const std::string standard = "standard gravity (" + format_number(kStandardGravity) + " m/s^2)";
+  const std::string at_g = "this pendulum has at " + standard;
+
+  // Degrees and radians mixed up: the period fits the other reading.
+  const json& amplitude = doc.at("amplitude");
+  const std::string unit = amplitude.at("unit").get<std::string>();
+  if (!(std::abs(ratio - 1.0) <= kPeriodWarning) && (unit == "deg" || unit == "rad")) {
+    const std::string other = unit == "deg" ? "rad" : "deg";
+    const double raw = amplitude.at("value").get<double>();
+    Scene<double> alt = s;
+    alt.amplitude = raw * find_unit(other, Dimension::angle)->factor;
+    const double alt_ratio = alt.amplitude < kPi ? s.period / expected_period(alt) : 0.0;
+    fail_if(std::abs(alt_ratio - 1.0) <= kPeriodFit, "amplitude.unit",
+            "got \"" + unit + "\": at " + format_number(raw) + " " + unit + " the measured period is " +
+                off_by(ratio) + " than the one " + at_g + "; expected \"" + other + "\": at " +
+                format_number(raw) + " " + other + " it is " + off_by(alt_ratio));
+  }
+
+  // Against the finite-amplitude correction alone, so that a wrong unit is
+  // named as such before it drives a correction out of its range.
+  const double swing = 2.0 * kPi * std::sqrt(s.length / kStandardGravity) *
+                       (1.0 + finite_amplitude_agm(s.amplitude));
+  fail_if(!(s.period / swing > 1.0 / kPeriodFactor && s.period / swing < kPeriodFactor),
+          "timing.trials",
+          "got a period of " + format_number(s.period, 5) + " s, but this pendulum swings in " +
+              format_number(swing, 5) + " s at " + standard + "; expected them within a factor of " +
+              format_number(kPeriodFactor) + " (is a unit or oscillations_per_trial wrong?)");
+
+  const Reduction<double> r = reduce(s);
+  for (int i = 0; i < kCorrectionCount; ++i) {
+    const auto id = static_cast<CorrectionId>(i);
+    const std::optional<double>& x = r.terms[i].ratio;
+    if (id == CorrectionId::finite_amplitude || !x) continue;  // exact at any amplitude
+    fail_if(!(std::abs(*x) < kMaxFirstOrder), part_of(id),
+            "got DeltaT/T0 = " + format_number(*x) + " for \"" + kCorrections[i].title + "\" (" +
+                kCorrections[i].equation + "); expected |DeltaT/T0| below " +
+                format_number(kMaxFirstOrder) + ", where its first-order formula holds");
+  }
+
+  if (std::abs(ratio - 1.0) > kPeriodWarning) {
+    out.warnings.push_back("timing.trials: the measured period " + format_number(s.period, 5) +
+                           " s is " + off_by(ratio) + " than the " + format_number(expected, 5) +
+                           " s " + at_g + "; check the length's unit and oscillations_per_trial");
+  }
+  const double degrees = s.amplitude * 180.0 / kPi;
+  if (degrees > kSmallAngleLab) {
+    out.warnings.push_back("amplitude.value: " + format_number(degrees, 4) +
+                           " deg is over the 20 deg of a small-angle lab; the finite-amplitude "
+                           "correction is exact at any amplitude, but check the amplitude and its unit");
+  }
 }
 
 }  // namespace
@@ -558,6 +706,7 @@ ParsedScene parse_scene(const std::string& text) {
     r.put(o, "beta", Dimension::rate_per_angle, Range::non_negative, pv.beta, pu.beta);
   }, [](const Decay<double>&) {});
   top.finish();
+  check_plausibility(doc, out);
   return out;
 }
 

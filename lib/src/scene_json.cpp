@@ -316,6 +316,10 @@ void warn_about_trials(const std::vector<double>& times, double spread, std::opt
   std::vector<double> deviation(times.size());
   for (std::size_t i = 0; i < times.size(); ++i) deviation[i] = std::abs(times[i] - centre);
   const double scatter = 1.4826 * median(deviation);
+  const double allowed =
+      5.0 * std::max({scatter, resolution.value_or(0.0), trial_sigma.value_or(0.0)});
+  const auto worst = std::max_element(deviation.begin(), deviation.end());
+  if (allowed == 0.0 || *worst <= allowed) return;
   std::vector<std::string> allowance{"the trials' scatter (" + in_unit(scatter) + ")"};
   if (resolution) allowance.push_back("the resolution (" + in_unit(*resolution) + ")");
   if (trial_sigma) allowance.push_back("the stated uncertainty (" + in_unit(*trial_sigma) + ")");
@@ -323,17 +327,11 @@ void warn_about_trials(const std::vector<double>& times, double spread, std::opt
   for (std::size_t k = 0; k < allowance.size(); ++k) {
     largest += (k == 0 ? "" : k + 1 == allowance.size() ? " and " : ", ") + allowance[k];
   }
-  const double allowed =
-      5.0 * std::max({scatter, resolution.value_or(0.0), trial_sigma.value_or(0.0)});
-  const auto worst = std::max_element(deviation.begin(), deviation.end());
   const auto i = static_cast<std::size_t>(worst - deviation.begin());
-  if (allowed > 0.0 && *worst > allowed) {
-    warnings.push_back("timing.trials[" + std::to_string(i) + "]: " + format_number(times[i]) + " " +
-                       unit + " is " + in_unit(*worst) + " from the median trial " +
-                       format_number(centre) + " " + unit +
-                       ", over 5 times " + largest +
-                       "; a miscounted oscillation or a typo?");
-  }
+  warnings.push_back("timing.trials[" + std::to_string(i) + "]: " + format_number(times[i]) + " " +
+                     unit + " is " + in_unit(*worst) + " from the median trial " +
+                     format_number(centre) + " " + unit + ", over 5 times " + largest +
+                     "; a miscounted oscillation or a typo?");
 }
 
 void read_timing(Object& top, ParsedScene& out) {

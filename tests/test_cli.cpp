@@ -129,6 +129,18 @@ TEST_CASE("The scene may come on standard input", "[cli]") {
   CHECK(json::parse(r.out).at("input") == "-");
 }
 
+TEST_CASE("A file name that is not UTF-8 is echoed, not an internal error", "[cli]") {
+  // Found by hand: the JSON writer threw on the name's byte 0xff (exit 3).
+  const std::string base = temporary_file();
+  const std::string file = base + "-\xff.json";
+  std::ofstream(file, std::ios::binary) << pendulum::test::read_text(kNelsonOlsson);
+  const Run r = run("reduce '" + file + "'");
+  std::remove(file.c_str());
+  std::remove(base.c_str());
+  REQUIRE(r.status == 0);
+  CHECK_THAT(json::parse(r.out).at("input").get<std::string>(), Contains("-\xef\xbf\xbd.json"));
+}
+
 TEST_CASE("Catalogue of bad scenes", "[cli][errors]") {
   const json catalogue = json::parse(pendulum::test::read_text(std::string(PENDULUM_TESTS_DIR) + "/bad_scenes.json"));
   const json base = json::parse(pendulum::test::read_text(kNelsonOlsson));

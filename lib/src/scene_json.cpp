@@ -535,7 +535,13 @@ ParsedScene parse_scene(const std::string& text) {
     fail_if(top.text("schema") != kSceneSchema, "schema",
             "got " + shown(top.at("schema")) + "; expected \"" + kSceneSchema + "\"");
   }
-  if (top.has("title")) out.title = top.text("title");
+  if (top.has("title")) {
+    // The table prints the title as is: no control character may reach the terminal.
+    out.title = top.text("title");
+    fail_if(std::any_of(out.title.begin(), out.title.end(),
+                        [](unsigned char c) { return c < 0x20 || c == 0x7f; }),
+            "title", "got " + shown(top.at("title")) + "; expected one line of printable text");
+  }
   if (top.has("source")) out.source = top.text("source");
   if (top.has("notes")) top.text("notes");
 

@@ -1,8 +1,9 @@
 // libFuzzer target: any bytes through the scene parser and the whole
-// reduction, as `pendulum-g reduce` runs them. Bad input must end in an
-// InputError whose message is one printable line; a scene that passes must
-// give finite numbers everywhere and a positive g. Anything else (another
-// exception, a sanitizer report, a failed check below) is a finding.
+// reduction, with each amplitude method, as `pendulum-g reduce` runs them.
+// Bad input must end in an InputError whose message is one printable line;
+// a scene that passes must give finite numbers everywhere and a positive g.
+// Anything else (another exception, a sanitizer report, a failed check
+// below) is a finding.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -45,10 +46,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     require(message.size() <= 1000, "error message over 1000 characters", message.substr(0, 200));
     return 0;
   }
-  const pendulum::Analysis analysis = pendulum::analyse(scene);
-  const auto result = pendulum::result_to_json(scene, analysis, {}, "fuzz");
-  require_finite(result, "");
-  require(analysis.g.value > 0.0, "g not positive", result.dump());
-  (void)pendulum::result_to_table(scene, analysis);
+  using pendulum::AmplitudeMethod;
+  for (const auto method : {AmplitudeMethod::agm, AmplitudeMethod::series, AmplitudeMethod::small_angle}) {
+    pendulum::AnalysisOptions options;  // --amplitude-method
+    options.reduction.amplitude_method = method;
+    const pendulum::Analysis analysis = pendulum::analyse(scene, options);
+    const auto result = pendulum::result_to_json(scene, analysis, options, "fuzz");
+    require_finite(result, "");
+    require(analysis.g.value > 0.0, "g not positive", result.dump());
+    (void)pendulum::result_to_table(scene, analysis);
+  }
   return 0;
 }

@@ -218,6 +218,12 @@ void fail_if(bool bad, const std::string& path, const std::string& message) {
   if (bad) throw InputError(path, message);
 }
 
+/// A value (SI) outside what a laboratory holds: a unit slip or a typo.
+void within(double x, double lo, double hi, const std::string& path, const char* unit,
+            const std::string& what) {
+  fail_if(!(x >= lo && x <= hi), path, "got " + format_number(x) + " " + unit + "; expected " + what);
+}
+
 enum class Range { positive, non_negative, any };
 
 struct Measured {
@@ -547,6 +553,7 @@ ParsedScene parse_scene(const std::string& text) {
 
   read_timing(top, out);
   r.put(top, "length", Dimension::length, Range::positive, v.length, u.length);
+  within(v.length, 1e-3, 1e3, "length.value", "m", "a laboratory pendulum, 1 mm to 1 km long");
   r.put(top, "amplitude", Dimension::angle, Range::positive, v.amplitude, u.amplitude);
   fail_if(v.amplitude >= kPi, "amplitude.value",
           "got " + format_number(v.amplitude * 180.0 / kPi) +
@@ -629,10 +636,14 @@ ParsedScene parse_scene(const std::string& text) {
           pu.youngs_modulus);
   }, [&](const Wire<double>& pv) {
     lighter_than_bob(pv.mass, "wire.mass.value", "a wire");
+    if (pv.diameter) {
+      fail_if(*pv.diameter >= v.bob.diameter, "wire.diameter.value",
+              "got " + format_number(*pv.diameter) + " m; expected a wire thinner than the bob (" +
+                  format_number(v.bob.diameter) + " m)");
+    }
     if (!pv.youngs_modulus) return;
-    fail_if(*pv.youngs_modulus > kMaxYoungsModulus, "wire.youngs_modulus.value",
-            "got " + format_number(*pv.youngs_modulus) + " Pa; expected at most " +
-                format_number(kMaxYoungsModulus) + " Pa (diamond, the stiffest material)");
+    within(*pv.youngs_modulus, 0.0, kMaxYoungsModulus, "wire.youngs_modulus.value", "Pa",
+           "at most " + format_number(kMaxYoungsModulus) + " Pa (diamond, the stiffest material)");
     if (!pv.diameter) return;
     // Eq. (79) is the stretch of a stiff wire; the bob's weight over E S is
     // the wire's static strain.
@@ -655,18 +666,12 @@ ParsedScene parse_scene(const std::string& text) {
       r.put(o, "pressure", Dimension::pressure, Range::positive, pv.pressure, pu.pressure);
       r.put(o, "temperature", Dimension::temperature, Range::positive, pv.temperature,
             pu.temperature);
-      // A laboratory's gas: outside these ranges, a unit slipped (25 "K"
-      // meant degC, 28.96 "kg/mol" meant g/mol).
-      auto within = [&](const char* key, double x, double lo, double hi, const char* unit,
-                        const char* what) {
-        fail_if(x < lo || x > hi, o.path(key) + ".value",
-                "got " + format_number(x) + " " + unit + "; expected " + what);
-      };
-      within("temperature", pv.temperature, 150.0, 500.0, "K",
+      // A laboratory's gas: 25 "K" meant degC, 28.96 "kg/mol" meant g/mol.
+      within(pv.temperature, 150.0, 500.0, "air.temperature.value", "K",
              "the temperature of a laboratory's air, 150 K to 500 K (-123 degC to 227 degC)");
       if (o.has("molar_mass")) {
         r.put(o, "molar_mass", Dimension::molar_mass, Range::positive, pv.molar_mass, pu.molar_mass);
-        within("molar_mass", pv.molar_mass, 1e-3, 1.0, "kg/mol",
+        within(pv.molar_mass, 1e-3, 1.0, "air.molar_mass.value", "kg/mol",
                "the molar mass of a gas, 0.001 to 1 kg/mol (air 0.02896)");
       } else {
         pv.molar_mass = kDryAirMolarMass;
@@ -676,7 +681,7 @@ ParsedScene parse_scene(const std::string& text) {
       }
       if (o.has("viscosity")) {
         r.put(o, "viscosity", Dimension::viscosity, Range::positive, pv.viscosity, pu.viscosity);
-        within("viscosity", pv.viscosity, 1e-6, 1e-4, "Pa s",
+        within(pv.viscosity, 1e-6, 1e-4, "air.viscosity.value", "Pa s",
                "the viscosity of a gas, 1e-6 to 1e-4 Pa s (air 1.8e-5)");
       } else {
         pv.viscosity = air_viscosity(pv.temperature);
@@ -704,6 +709,12 @@ ParsedScene parse_scene(const std::string& text) {
   }, [&](const Support<double>& pv) {
     fail_if(!pv.stiffness && !pv.mass, "support",
             "got neither stiffness nor mass; expected at least one");
+    // Bounds that keep Eq. (83)'s discriminant, (K/M)^2, a finite number.
+    if (pv.stiffness) {
+      within(*pv.stiffness, 0.0, kMaxYoungsModulus, "support.stiffness.value", "N/m",
+             "at most " + format_number(kMaxYoungsModulus) + " N/m (a cubic metre of diamond)");
+    }
+    if (pv.mass) within(*pv.mass, 1e-6, HUGE_VAL, "support.mass.value", "kg", "at least 1 mg");
   });
   part("decay", v.decay, u.decay, [&](Object& o, Decay<double>& pv, Decay<double>& pu) {
     r.put(o, "alpha", Dimension::rate, Range::non_negative, pv.alpha, pu.alpha);

@@ -211,7 +211,10 @@ double finite_number(const json& j, const std::string& path,
   if (!std::isfinite(x)) {
     throw InputError(path, "got " + shown(j) + "; expected a finite number");
   }
-  return x == 0.0 ? 0.0 : x;  // -0 is 0: no "-0" in a result
+  // -0 and subnormal numbers (below 2.2e-308; 1e-400 the JSON parser already
+  // reads as 0) are 0: they carry no physics, only traps (no "-0" in a
+  // result; 1/5e-324 overflows, so derivatives through them became NaN).
+  return std::isnormal(x) ? x : 0.0;
 }
 
 void fail_if(bool bad, const std::string& path, const std::string& message) {

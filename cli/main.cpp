@@ -2,10 +2,10 @@
 // subcommand, reports errors. Exit status: 0 success, 1 bad input, 2 bad
 // usage, 3 internal error. Nothing reaches stdout unless a whole result does.
 
-#include <fstream>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
-#include <iterator>
-#include <sstream>
 #include <vector>
 
 #include "commands.hpp"
@@ -13,14 +13,19 @@
 
 namespace pendulum::cli {
 
+// stdio, not iostreams: a directory opens as an empty stream there, and
+// errno says what went wrong. Reading stops one byte past the largest scene,
+// so that parse_scene refuses /dev/zero or a huge file instead of slurping it.
 std::string read_input(const std::string& file) {
-  if (file == "-") return std::string(std::istreambuf_iterator<char>(std::cin), {});
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError("", "cannot open the file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError("", "cannot read the file");
-  return text.str();
+  std::FILE* in = file == "-" ? stdin : std::fopen(file.c_str(), "rb");
+  if (!in) throw InputError("", std::string("cannot open the file: ") + std::strerror(errno));
+  std::string text(kMaxSceneBytes + 1, '\0');
+  text.resize(std::fread(text.data(), 1, text.size(), in));
+  const bool failed = std::ferror(in);
+  const int error = errno;
+  if (in != stdin) std::fclose(in);
+  if (failed) throw InputError("", std::string("cannot read the file: ") + std::strerror(error));
+  return text;
 }
 
 void print_warnings(const std::vector<std::string>& warnings) {

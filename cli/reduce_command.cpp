@@ -39,7 +39,9 @@ Command add_reduce_command(CLI::App& app) {
     const std::string text =
         o->format == "table"
             ? result_to_table(scene, analysis)
-            : result_to_json(scene, analysis, o->analysis, o->file).dump(2) + "\n";
+            // The file name is not checked UTF-8: its bad bytes print as U+FFFD.
+            : result_to_json(scene, analysis, o->analysis, o->file)
+                      .dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
     print_warnings(scene.warnings);
     print_warnings(analysis.warnings);
     std::cout << text;

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "pendulum/scene_json.hpp"
@@ -59,7 +60,7 @@ void check_error(const std::string& text, const std::string& path, const std::st
 TEST_CASE("Units convert to SI, offsets for temperatures only", "[scene][units]") {
   const ParsedScene s = parse_scene(patched(R"J({
     "length": {"value": 300.44, "unit": "cm", "uncertainty": 0.03},
-    "amplitude": {"value": 0.05, "unit": "rad"},
+    "amplitude": {"value": 0.05, "unit": "rad", "uncertainty": 0.005},
     "air": {"pressure": {"value": 753.4, "unit": "mmHg"},
             "temperature": {"value": 77.9, "unit": "degF", "uncertainty": 1.8},
             "molar_mass": null, "viscosity": null},
@@ -112,4 +113,65 @@ TEST_CASE("A single trial needs a stated uncertainty or resolution", "[scene]") 
   // Resolution 0.01 s, uniform: 0.01/sqrt(12) per trial, over 100 oscillations.
   CHECK_THAT(s.uncertainty.period, WithinRel(0.01 / std::sqrt(12.0) / 100.0, 1e-12));
   CHECK(s.assumptions.size() == 1);
+}
+
+TEST_CASE("Nesting deep enough to overflow the stack is refused", "[scene][errors]") {
+  // Found by hand before the nesting limit: 200000 nested arrays crashed
+  // pendulum-g with SIGSEGV (the JSON library's dump recursed once a level).
+  const std::string text = std::string(500000, '[') + std::string(500000, ']');
+  check_error(text, "[0][0][0][0][0][0][0][0][0][0]", "got values nested more than 10 deep");
+}
+
+TEST_CASE("Error messages are one line of printable ASCII", "[scene][errors]") {
+  // The input's raw bytes (an escape, DEL, invalid UTF-8) are shown escaped
+  // and long values cut: the fuzzer found DEL and 1000-character messages.
+  const std::string texts[] = {
+      "{\"ti\\u001bming\": 1}", "{\"length\": \"\xff\"}", "\x7f",
+      "{\"" + std::string(100000, 'k') + "\": 1}", "[\"" + std::string(100000, 'v') + "\"]"};
+  for (const std::string& text : texts) {
+    try {
+      parse_scene(text);
+      FAIL("no error");
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      INFO(message);
+      CHECK(message.size() < 400);
+      CHECK(std::all_of(message.begin(), message.end(),
+                        [](unsigned char c) { return c >= 0x20 && c < 0x7f; }));
+    }
+  }
+}
+
+TEST_CASE("Plausibility warnings start at their thresholds", "[scene][warnings]") {
+  auto warnings = [](const char* patch) { return parse_scene(patched(patch)).warnings; };
+  // The expected period scales as sqrt(length): 3.0044 m / 0.955^2 puts the
+  // measured period 4.5% short of it, 3.0044 m / 0.945^2 5.5%; the warning
+  // starts at 5%.
+  CHECK(warnings(R"J({"length": {"value": 3.29418}})J").empty());
+  REQUIRE(warnings(R"J({"length": {"value": 3.36429}})J").size() == 1);
+  CHECK_THAT(warnings(R"J({"length": {"value": 3.36429}})J")[0], Contains("5.5% shorter"));
+  // The small-angle lab ends at 20 deg.
+  CHECK(warnings(R"J({"amplitude": {"value": 19.9}})J").empty());
+  REQUIRE(warnings(R"J({"amplitude": {"value": 20.1}})J").size() == 1);
+  CHECK_THAT(warnings(R"J({"amplitude": {"value": 20.1}})J")[0],
+             Contains("20.1 deg is over the 20 deg of a small-angle lab"));
+  // A trial is off when it lies over 5 x 1.4826 x MAD from the median: with
+  // the published trials but the last, median 347.865 s and MAD 0.035 s, so
+  // the limit is 0.2595 s.
+  const char* near = R"J({"timing": {"trials": [347.84, 347.87, 347.86, 347.91, 347.91, 347.94, 347.84, 347.81, 347.84, 348.11]}})J";
+  const char* far = R"J({"timing": {"trials": [347.84, 347.87, 347.86, 347.91, 347.91, 347.94, 347.84, 347.81, 347.84, 348.13]}})J";
+  CHECK(warnings(near).empty());
+  REQUIRE(warnings(far).size() == 1);
+  CHECK_THAT(warnings(far)[0], Contains("timing.trials[9]: 348.13 s is 0.265 s from the median trial 347.865 s"));
+  // The published trials scatter by 0.05333 s: a stated one-trial uncertainty
+  // warns below a third of that.
+  CHECK(warnings(R"J({"timing": {"uncertainty": 0.018}})J").empty());
+  REQUIRE(warnings(R"J({"timing": {"uncertainty": 0.0177}})J").size() == 1);
+}
+
+TEST_CASE("A stated one-trial uncertainty is a floor, like the resolution", "[scene]") {
+  // Published trials: standard deviation 0.05333 s; stated 0.1 s is larger,
+  // so the period's uncertainty is 0.1 / sqrt(10) / 100.
+  const ParsedScene s = parse_scene(patched(R"J({"timing": {"uncertainty": 0.1}})J"));
+  CHECK_THAT(s.uncertainty.period, WithinRel(0.1 / std::sqrt(10.0) / 100.0, 1e-12));
 }

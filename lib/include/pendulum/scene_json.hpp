@@ -5,6 +5,7 @@
 /// Validation happens here, once, at the edge: every error names the JSON
 /// path, the value found and what was expected.
 
+#include <cstddef>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -43,6 +44,10 @@ struct ParsedScene {
   std::vector<std::string> assumptions;  ///< defaults the reduction used
   std::vector<std::string> warnings;     ///< legal but suspicious input
 };
+
+/// The largest scene text accepted (1 MiB): a scene is a few kB, and a
+/// bound keeps a wrong file (a log, /dev/zero) from eating the memory.
+inline constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 20;
 
 /// Parses and validates scene JSON text. Throws InputError.
 ParsedScene parse_scene(const std::string& text);

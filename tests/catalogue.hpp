@@ -1,0 +1,38 @@
+#pragma once
+// The scene catalogues (tests/bad_scenes.json, tests/valid_scenes.json): each
+// case is a raw `text`, or a whole `scene`, or the Nelson-Olsson scene with
+// an RFC 7386 merge `patch`, then optionally
+// - `fill`: the array at the JSON pointer `fill.pointer` made of `fill.count`
+//   copies of `fill.value` (a file too large to write out);
+// - `splice`: {"PLACEHOLDER": "raw text"}: the string "PLACEHOLDER" in the
+//   scene replaced by raw text that a JSON value cannot hold (1e400, -0, a
+//   key given twice).
+// Read by the CLI tests and by the fuzzer's seed writer.
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "scene_files.hpp"
+
+namespace pendulum::test {
+
+/// The scene text of one catalogue case; `base` is the scene patches apply to.
+inline std::string catalogue_text(const nlohmann::json& entry, const nlohmann::json& base) {
+  if (entry.contains("text")) return entry.at("text").get<std::string>();
+  nlohmann::json scene = entry.value("scene", base);
+  if (entry.contains("patch")) scene.merge_patch(entry.at("patch"));
+  if (entry.contains("fill")) {
+    const nlohmann::json& fill = entry.at("fill");
+    scene[nlohmann::json::json_pointer(fill.at("pointer").get<std::string>())] =
+        nlohmann::json(fill.at("count").get<std::size_t>(), fill.at("value"));
+  }
+  std::string text = scene.dump();
+  const nlohmann::json splice = entry.value("splice", nlohmann::json::object());
+  for (const auto& [placeholder, raw] : splice.items()) {
+    const std::string quoted = nlohmann::json(placeholder).dump();
+    text.replace(text.find(quoted), quoted.size(), raw.get<std::string>());
+  }
+  return text;
+}
+
+}  // namespace pendulum::test

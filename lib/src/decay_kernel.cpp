@@ -54,10 +54,11 @@ std::size_t series_end(std::size_t n, const double* t, double alpha) {
 }
 
 template <bool kSeries>
-__attribute__((target_clones("avx512f", "avx2", "default")))
-void accumulate(std::size_t begin, std::size_t end, const double* t, const double* theta,
-                const double* w, double alpha, double beta, double theta0,
-                bool with_jacobian, DecaySums& s) {
+__attribute__((always_inline)) inline void accumulate(std::size_t begin, std::size_t end,
+                                                      const double* t, const double* theta,
+                                                      const double* w, double alpha, double beta,
+                                                      double theta0, bool with_jacobian,
+                                                      DecaySums& s) {
   double rr = 0, dd = 0, r0 = 0, r1 = 0, r2 = 0, a00 = 0, a01 = 0, a02 = 0, a11 = 0, a12 = 0, a22 = 0;
   if (!with_jacobian) {
 #pragma omp simd reduction(+ : rr, dd)
@@ -94,14 +95,27 @@ void accumulate(std::size_t begin, std::size_t end, const double* t, const doubl
   }
 }
 
+// One copy per instruction set, chosen at run time (target_clones takes no
+// templates, hence one function per variant).
+#define PENDULUM_ACCUMULATE(name, series)                                                    \
+  __attribute__((target_clones("avx512f", "avx2", "default"))) void name(                    \
+      std::size_t begin, std::size_t end, const double* t, const double* theta,              \
+      const double* w, double alpha, double beta, double theta0, bool with_jacobian,         \
+      DecaySums& s) {                                                                         \
+    accumulate<series>(begin, end, t, theta, w, alpha, beta, theta0, with_jacobian, s);       \
+  }
+PENDULUM_ACCUMULATE(accumulate_series, true)
+PENDULUM_ACCUMULATE(accumulate_closed_form, false)
+#undef PENDULUM_ACCUMULATE
+
 }  // namespace
 
 DecaySums decay_sums(std::size_t n, const double* t, const double* theta, const double* w,
                      const double* p, bool with_jacobian) {
   DecaySums s;
   const std::size_t k = series_end(n, t, p[0]);
-  accumulate<true>(0, k, t, theta, w, p[0], p[1], p[2], with_jacobian, s);
-  accumulate<false>(k, n, t, theta, w, p[0], p[1], p[2], with_jacobian, s);
+  accumulate_series(0, k, t, theta, w, p[0], p[1], p[2], with_jacobian, s);
+  accumulate_closed_form(k, n, t, theta, w, p[0], p[1], p[2], with_jacobian, s);
   return s;
 }
 

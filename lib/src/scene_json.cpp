@@ -218,14 +218,17 @@ double finite_number(const json& j, const std::string& path,
   return std::isnormal(x) ? x : 0.0;
 }
 
-void fail_if(bool bad, const std::string& path, const std::string& message) {
-  if (bad) throw InputError(path, message);
-}
+/// Throws InputError(path, message) when `bad`; a macro, so that the message
+/// (often several formatted numbers) is built only for a bad input.
+#define PENDULUM_FAIL_IF(bad, path, message)    \
+  do {                                            \
+    if (bad) throw InputError((path), (message)); \
+  } while (false)
 
 /// A value (SI) outside what a laboratory holds: a unit slip or a typo.
 void within(double x, double lo, double hi, const std::string& path, const char* unit,
             const std::string& what) {
-  fail_if(!(x >= lo && x <= hi), path, "got " + format_number(x) + " " + unit + "; expected " + what);
+  PENDULUM_FAIL_IF(!(x >= lo && x <= hi), path, "got " + format_number(x) + " " + unit + "; expected " + what);
 }
 
 enum class Range { positive, non_negative, any };
@@ -256,7 +259,7 @@ class SceneReader {
     const double u = q.has("uncertainty") ? finite_number(q.at("uncertainty"),
                                                           q.path("uncertainty"), "a number")
                                           : 0.0;
-    fail_if(u < 0.0, q.path("uncertainty"),
+    PENDULUM_FAIL_IF(u < 0.0, q.path("uncertainty"),
             "got " + format_number(u) + "; expected a non-negative uncertainty");
     const double sigma = u * unit->factor;
     if (q.has("source")) q.text("source");
@@ -271,7 +274,7 @@ class SceneReader {
                                             "; expected " + kind + what);
     }
     // A positive quantity as uncertain as itself might be 0: it is unknown.
-    fail_if(range == Range::positive && sigma >= si, q.path("uncertainty"),
+    PENDULUM_FAIL_IF(range == Range::positive && sigma >= si, q.path("uncertainty"),
             "got " + format_number(u) + " " + unit_name +
                 "; expected an uncertainty smaller than the value (" + format_number(raw) + " " +
                 unit_name + ")");
@@ -396,10 +399,10 @@ void read_timing(Object& top, ParsedScene& out) {
   // Beyond a third of the mean, a one-trial uncertainty leaves a mean +-
   // standard error (N&O Eq. 4) that means nothing: trials of different
   // oscillation counts or units, or a wrong resolution.
-  fail_if(resolution && *resolution >= mean, t.path("resolution"),
+  PENDULUM_FAIL_IF(resolution && *resolution >= mean, t.path("resolution"),
           "got " + in_unit(resolution.value_or(0.0)) +
               "; expected a resolution finer than the mean trial (" + in_unit(mean) + ")");
-  fail_if(trial_sigma && *trial_sigma > mean / 3.0, t.path("uncertainty"),
+  PENDULUM_FAIL_IF(trial_sigma && *trial_sigma > mean / 3.0, t.path("uncertainty"),
           "got " + in_unit(trial_sigma.value_or(0.0)) +
               "; expected a one-trial uncertainty below a third of the mean trial (" +
               in_unit(mean) + ")");
@@ -409,7 +412,7 @@ void read_timing(Object& top, ParsedScene& out) {
     for (double x : times) ss += (x / mean - 1.0) * (x / mean - 1.0);
     const double spread = std::sqrt(ss / (n - 1.0)) * mean;
     const auto [lo, hi] = std::minmax_element(times.begin(), times.end());
-    fail_if(spread > mean / 3.0, t.path("trials"),
+    PENDULUM_FAIL_IF(spread > mean / 3.0, t.path("trials"),
             "got trials from " + format_number(*lo) + " to " + in_unit(*hi) +
                 ", a standard deviation over a third of their mean " + in_unit(mean) +
                 "; expected repeated timings of the same oscillations (a mean of these means nothing)");
@@ -491,7 +494,7 @@ void check_plausibility(const json& doc, ParsedScene& out) {
     Scene<double> alt = s;
     alt.amplitude = raw * find_unit(other, Dimension::angle)->factor;
     const double alt_ratio = alt.amplitude < kPi ? s.period / expected_period(alt) : 0.0;
-    fail_if(std::abs(alt_ratio - 1.0) <= kPeriodFit, "amplitude.unit",
+    PENDULUM_FAIL_IF(std::abs(alt_ratio - 1.0) <= kPeriodFit, "amplitude.unit",
             "got \"" + unit + "\": at " + format_number(raw) + " " + unit + " the measured period is " +
                 off_by(ratio) + " than the one " + at_g + "; expected \"" + other + "\": at " +
                 format_number(raw) + " " + other + " it is " + off_by(alt_ratio));
@@ -501,7 +504,7 @@ void check_plausibility(const json& doc, ParsedScene& out) {
   // named as such before it drives a correction out of its range.
   const double swing = 2.0 * kPi * std::sqrt(s.length / kStandardGravity) *
                        (1.0 + finite_amplitude_agm(s.amplitude));
-  fail_if(!(s.period / swing > 1.0 / kPeriodFactor && s.period / swing < kPeriodFactor),
+  PENDULUM_FAIL_IF(!(s.period / swing > 1.0 / kPeriodFactor && s.period / swing < kPeriodFactor),
           "timing.trials",
           "got a period of " + format_number(s.period, 5) + " s, but this pendulum swings in " +
               format_number(swing, 5) + " s at " + standard + "; expected them within a factor of " +
@@ -512,7 +515,7 @@ void check_plausibility(const json& doc, ParsedScene& out) {
     const auto id = static_cast<CorrectionId>(i);
     const std::optional<double>& x = r.terms[i].ratio;
     if (id == CorrectionId::finite_amplitude || !x) continue;  // exact at any amplitude
-    fail_if(!(std::abs(*x) < kMaxFirstOrder), part_of(id),
+    PENDULUM_FAIL_IF(!(std::abs(*x) < kMaxFirstOrder), part_of(id),
             "got DeltaT/T0 = " + format_number(*x) + " for \"" + kCorrections[i].title + "\" (" +
                 kCorrections[i].equation + "); expected |DeltaT/T0| below " +
                 format_number(kMaxFirstOrder) + ", where its first-order formula holds");
@@ -603,7 +606,7 @@ void read_decay(Object& top, SceneReader& r, ParsedScene& out) {
   Object o(top.at("decay"), "decay");
   const bool given = o.has("alpha") || o.has("beta");
   const bool has_data = o.has("data");
-  fail_if(!given && !has_data, "decay", "got neither alpha and beta nor data; expected one of them");
+  PENDULUM_FAIL_IF(!given && !has_data, "decay", "got neither alpha and beta nor data; expected one of them");
   if (given) {
     auto& pv = out.value.decay.emplace();
     auto& pu = out.uncertainty.decay.emplace();
@@ -617,11 +620,11 @@ void read_decay(Object& top, SceneReader& r, ParsedScene& out) {
     DecayData data;
     data.times = number_array(d, "times", time_unit.factor);
     data.amplitudes = number_array(d, "amplitudes", angle_unit.factor);
-    fail_if(d.has("sigma") && d.has("sigmas"), d.path("sigmas"),
+    PENDULUM_FAIL_IF(d.has("sigma") && d.has("sigmas"), d.path("sigmas"),
             "got both sigma and sigmas; expected one of them");
     if (d.has("sigma")) {
       const double sigma = finite_number(d.at("sigma"), d.path("sigma"), "a number");
-      fail_if(!(sigma > 0.0), d.path("sigma"),
+      PENDULUM_FAIL_IF(!(sigma > 0.0), d.path("sigma"),
               "got " + format_number(sigma) + "; expected a positive uncertainty");
       data.sigmas.assign(data.times.size(), sigma * angle_unit.factor);
     } else if (d.has("sigmas")) {
@@ -651,13 +654,13 @@ ParsedScene parse_scene(const std::string& text) {
   Object top(doc, "", "a JSON object (the scene)");
 
   if (top.has("schema")) {
-    fail_if(top.text("schema") != kSceneSchema, "schema",
+    PENDULUM_FAIL_IF(top.text("schema") != kSceneSchema, "schema",
             "got " + shown(top.at("schema")) + "; expected \"" + kSceneSchema + "\"");
   }
   if (top.has("title")) {
     // The table prints the title as is: no control character may reach the terminal.
     out.title = top.text("title");
-    fail_if(std::any_of(out.title.begin(), out.title.end(),
+    PENDULUM_FAIL_IF(std::any_of(out.title.begin(), out.title.end(),
                         [](unsigned char c) { return c < 0x20 || c == 0x7f; }),
             "title", "got " + shown(top.at("title")) + "; expected one line of printable text");
   }
@@ -668,7 +671,7 @@ ParsedScene parse_scene(const std::string& text) {
   r.put(top, "length", Dimension::length, Range::positive, v.length, u.length);
   within(v.length, 1e-3, 1e3, "length.value", "m", "a laboratory pendulum, 1 mm to 1 km long");
   r.put(top, "amplitude", Dimension::angle, Range::positive, v.amplitude, u.amplitude);
-  fail_if(v.amplitude >= kPi, "amplitude.value",
+  PENDULUM_FAIL_IF(v.amplitude >= kPi, "amplitude.value",
           "got " + format_number(v.amplitude * 180.0 / kPi) +
               " deg; expected an amplitude below 180 deg (at 180 deg and beyond "
               "the pendulum goes over the top)");
@@ -678,11 +681,11 @@ ParsedScene parse_scene(const std::string& text) {
     r.put(bob, "diameter", Dimension::length, Range::positive, v.bob.diameter, u.bob.diameter);
     r.put(bob, "mass", Dimension::mass, Range::positive, v.bob.mass, u.bob.mass);
     bob.finish();
-    fail_if(v.bob.diameter / 2.0 >= v.length, "length.value",
+    PENDULUM_FAIL_IF(v.bob.diameter / 2.0 >= v.length, "length.value",
             "got " + format_number(v.length) + " m; expected more than the bob radius " +
                 format_number(v.bob.diameter / 2.0) + " m");
     const double density = v.bob.mass / sphere_volume(v.bob.diameter / 2.0);
-    fail_if(density > kMaxDensity, "bob.mass.value",
+    PENDULUM_FAIL_IF(density > kMaxDensity, "bob.mass.value",
             "got " + format_number(v.bob.mass) + " kg, a density of " + format_number(density) +
                 " kg/m^3 for this diameter; expected at most " + format_number(kMaxDensity) +
                 " kg/m^3 (osmium, the densest element)");
@@ -697,7 +700,7 @@ ParsedScene parse_scene(const std::string& text) {
     check(*value);
   };
   auto lighter_than_bob = [&](double mass, const std::string& path, const char* what) {
-    fail_if(mass >= v.bob.mass, path,
+    PENDULUM_FAIL_IF(mass >= v.bob.mass, path,
             "got " + format_number(mass) + " kg; expected " + what + " lighter than the bob (" +
                 format_number(v.bob.mass) + " kg): the corrections are first order in its mass ratio");
   };
@@ -707,10 +710,10 @@ ParsedScene parse_scene(const std::string& text) {
     r.put(o, "outer_radius", Dimension::length, Range::positive, pv.outer_radius, pu.outer_radius);
     r.put(o, "pivot_distance", Dimension::length, Range::non_negative, pv.pivot_distance, pu.pivot_distance);
   }, [&](const Ring<double>& pv) {
-    fail_if(pv.inner_radius >= pv.outer_radius, "ring.inner_radius.value",
+    PENDULUM_FAIL_IF(pv.inner_radius >= pv.outer_radius, "ring.inner_radius.value",
             "got " + format_number(pv.inner_radius) + " m; expected less than ring.outer_radius (" +
                 format_number(pv.outer_radius) + " m)");
-    fail_if(pv.pivot_distance + pv.outer_radius >= v.length - v.bob.diameter / 2.0,
+    PENDULUM_FAIL_IF(pv.pivot_distance + pv.outer_radius >= v.length - v.bob.diameter / 2.0,
             "ring.outer_radius.value",
             "the ring reaches " + format_number(pv.pivot_distance + pv.outer_radius) +
                 " m below the pivot; expected it to end above the bob, which starts at " +
@@ -724,7 +727,7 @@ ParsedScene parse_scene(const std::string& text) {
     r.put(o, "volume", Dimension::volume, Range::non_negative, pv.volume, pu.volume);
   }, [&](const Cap<double>& pv) {
     lighter_than_bob(pv.mass, "cap.mass.value", "a cap");
-    fail_if(pv.center_distance >= v.length, "cap.center_distance.value",
+    PENDULUM_FAIL_IF(pv.center_distance >= v.length, "cap.center_distance.value",
             "got " + format_number(pv.center_distance) + " m; expected less than the length (" +
                 format_number(v.length) + " m): the cap hangs between the pivot and the bob");
   });
@@ -737,7 +740,7 @@ ParsedScene parse_scene(const std::string& text) {
        [&](const CapScrew<double>& pv) {
          lighter_than_bob(std::abs(pv.mass_deficit), "cap_screw.mass_deficit.value",
                           "a mass deficit");
-         fail_if(pv.center_distance >= v.bob.diameter / 2.0, "cap_screw.center_distance.value",
+         PENDULUM_FAIL_IF(pv.center_distance >= v.bob.diameter / 2.0, "cap_screw.center_distance.value",
                  "got " + format_number(pv.center_distance) +
                      " m; expected less than the bob radius (" +
                      format_number(v.bob.diameter / 2.0) + " m): the screw is inside the bob");
@@ -750,7 +753,7 @@ ParsedScene parse_scene(const std::string& text) {
   }, [&](const Wire<double>& pv) {
     lighter_than_bob(pv.mass, "wire.mass.value", "a wire");
     if (pv.diameter) {
-      fail_if(*pv.diameter >= v.bob.diameter, "wire.diameter.value",
+      PENDULUM_FAIL_IF(*pv.diameter >= v.bob.diameter, "wire.diameter.value",
               "got " + format_number(*pv.diameter) + " m; expected a wire thinner than the bob (" +
                   format_number(v.bob.diameter) + " m)");
     }
@@ -762,7 +765,7 @@ ParsedScene parse_scene(const std::string& text) {
     // the wire's static strain.
     const double strain = v.bob.mass * kStandardGravity /
                           (*pv.youngs_modulus * kPi * *pv.diameter * *pv.diameter / 4.0);
-    fail_if(!(strain < 0.1), "wire",
+    PENDULUM_FAIL_IF(!(strain < 0.1), "wire",
             "got a wire that the bob stretches by " + format_number(100.0 * strain, 3) +
                 "% (weight / (youngs_modulus x cross-section)); expected a stiff wire, "
                 "stretched by less than 10%");
@@ -770,7 +773,7 @@ ParsedScene parse_scene(const std::string& text) {
   if (top.has("air")) {
     const json& air = top.at("air");
     if (air.is_string()) {
-      fail_if(air.get<std::string>() != "vacuum", "air",
+      PENDULUM_FAIL_IF(air.get<std::string>() != "vacuum", "air",
               "got " + shown(air) + "; expected \"vacuum\" or an object with pressure and temperature");
     } else {
       Object o(air, "air", "\"vacuum\" or an object with pressure and temperature");
@@ -805,7 +808,7 @@ ParsedScene parse_scene(const std::string& text) {
       }
       o.finish();
       const double rho = air_density(pv.pressure, pv.temperature, pv.molar_mass);
-      fail_if(rho > 100.0, "air",
+      PENDULUM_FAIL_IF(rho > 100.0, "air",
               "density " + format_number(rho) +
                   " kg/m^3 from this pressure, temperature and molar mass; expected a gas (below 100 kg/m^3)");
       if (v.cap && !v.cap->volume) {
@@ -820,7 +823,7 @@ ParsedScene parse_scene(const std::string& text) {
     r.put(o, "stiffness", Dimension::stiffness, Range::positive, pv.stiffness, pu.stiffness);
     r.put(o, "mass", Dimension::mass, Range::positive, pv.mass, pu.mass);
   }, [&](const Support<double>& pv) {
-    fail_if(!pv.stiffness && !pv.mass, "support",
+    PENDULUM_FAIL_IF(!pv.stiffness && !pv.mass, "support",
             "got neither stiffness nor mass; expected at least one");
     // Bounds that keep Eq. (83)'s discriminant, (K/M)^2, a finite number.
     if (pv.stiffness) {

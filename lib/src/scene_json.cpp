@@ -166,13 +166,15 @@ class Object {
   }
 
   bool has(const std::string& key) {
-    known_.insert(key);
+    remember(key);
     return j_.contains(key);
   }
 
   const json& at(const std::string& key) {
-    if (!has(key)) throw InputError(path(key), "missing; it is required here");
-    return j_.at(key);
+    remember(key);
+    const auto it = j_.find(key);
+    if (it == j_.end()) throw InputError(path(key), "missing; it is required here");
+    return *it;
   }
 
   std::string path(const std::string& key) const { return join_path(path_, key); }
@@ -189,28 +191,36 @@ class Object {
   /// Refuses every key that was not asked for.
   void finish() const {
     for (const auto& item : j_.items()) {
-      if (known_.count(item.key())) continue;
+      if (std::find(known_.begin(), known_.end(), item.key()) != known_.end()) continue;
+      std::vector<std::string> keys = known_;
+      std::sort(keys.begin(), keys.end());
       std::string list;
-      for (const auto& k : known_) list += (list.empty() ? "" : ", ") + k;
+      for (const auto& k : keys) list += (list.empty() ? "" : ", ") + k;
       throw InputError(path(item.key()),
                        "unknown key; this object takes: " + list);
     }
   }
 
  private:
+  // A handful of keys an object: a vector beats a set here.
+  void remember(const std::string& key) {
+    if (std::find(known_.begin(), known_.end(), key) == known_.end()) known_.push_back(key);
+  }
+
   const json& j_;
   std::string path_;
-  std::set<std::string> known_;
+  std::vector<std::string> known_;
 };
 
-double finite_number(const json& j, const std::string& path,
-                     const std::string& expected) {
+/// A finite JSON number; `path()` names it in the error, built only then.
+template <class Path>
+double finite_number(const json& j, Path&& path, const std::string& expected) {
   if (!j.is_number()) {
-    throw InputError(path, "got " + shown(j) + "; expected " + expected);
+    throw InputError(path(), "got " + shown(j) + "; expected " + expected);
   }
   const double x = j.get<double>();
   if (!std::isfinite(x)) {
-    throw InputError(path, "got " + shown(j) + "; expected a finite number");
+    throw InputError(path(), "got " + shown(j) + "; expected a finite number");
   }
   // -0 and subnormal numbers (below 2.2e-308; 1e-400 the JSON parser already
   // reads as 0) are 0: they carry no physics, only traps (no "-0" in a
@@ -249,16 +259,16 @@ class SceneReader {
                     Range range) {
     Object q(parent.at(key), parent.path(key),
              "an object {\"value\": ..., \"unit\": ...}");
-    const double raw = finite_number(q.at("value"), q.path("value"), "a number");
+    const double raw = finite_number(q.at("value"), [&] { return q.path("value"); }, "a number");
     const std::string unit_name = q.text("unit");
     const auto unit = find_unit(unit_name, dim);
     if (!unit) {
       throw InputError(q.path("unit"), "got " + shown(q.at("unit")) + "; expected a unit of " +
                                            dimension_name(dim) + ": " + unit_names(dim));
     }
-    const double u = q.has("uncertainty") ? finite_number(q.at("uncertainty"),
-                                                          q.path("uncertainty"), "a number")
-                                          : 0.0;
+    const double u = q.has("uncertainty")
+                         ? finite_number(q.at("uncertainty"), [&] { return q.path("uncertainty"); }, "a number")
+                         : 0.0;
     PENDULUM_FAIL_IF(u < 0.0, q.path("uncertainty"),
             "got " + format_number(u) + "; expected a non-negative uncertainty");
     const double sigma = u * unit->factor;
@@ -369,17 +379,17 @@ void read_timing(Object& top, ParsedScene& out) {
   }
   std::vector<double> times;  // in `unit`
   for (std::size_t i = 0; i < trials.size(); ++i) {
-    const std::string p = t.path("trials") + "[" + std::to_string(i) + "]";
+    const auto p = [&] { return t.path("trials") + "[" + std::to_string(i) + "]"; };
     const double x = finite_number(trials[i], p, "a time (number)");
     if (x <= 0.0) {
-      throw InputError(p, "got " + format_number(x) + " " + unit_name +
-                              "; expected a positive time");
+      throw InputError(p(), "got " + format_number(x) + " " + unit_name +
+                                "; expected a positive time");
     }
     times.push_back(x);
   }
   auto optional_time = [&](const char* key) -> std::optional<double> {
     if (!t.has(key)) return std::nullopt;
-    const double x = finite_number(t.at(key), t.path(key), "a number");
+    const double x = finite_number(t.at(key), [&] { return t.path(key); }, "a number");
     if (x <= 0.0) {
       throw InputError(t.path(key), "got " + format_number(x) + " " + unit_name +
                                         "; expected a positive time");
@@ -554,7 +564,7 @@ std::vector<double> number_array(Object& o, const std::string& key, double facto
   std::vector<double> out;
   out.reserve(a.size());
   for (std::size_t i = 0; i < a.size(); ++i) {
-    out.push_back(factor * finite_number(a[i], o.path(key) + "[" + std::to_string(i) + "]", "a number"));
+    out.push_back(factor * finite_number(a[i], [&] { return o.path(key) + "[" + std::to_string(i) + "]"; }, "a number"));
   }
   return out;
 }
@@ -623,7 +633,7 @@ void read_decay(Object& top, SceneReader& r, ParsedScene& out) {
     PENDULUM_FAIL_IF(d.has("sigma") && d.has("sigmas"), d.path("sigmas"),
             "got both sigma and sigmas; expected one of them");
     if (d.has("sigma")) {
-      const double sigma = finite_number(d.at("sigma"), d.path("sigma"), "a number");
+      const double sigma = finite_number(d.at("sigma"), [&] { return d.path("sigma"); }, "a number");
       PENDULUM_FAIL_IF(!(sigma > 0.0), d.path("sigma"),
               "got " + format_number(sigma) + "; expected a positive uncertainty");
       data.sigmas.assign(data.times.size(), sigma * angle_unit.factor);

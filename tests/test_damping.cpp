@@ -97,6 +97,25 @@ TEST_CASE("Decay limits: Eq. (51) for beta = 0, Eq. (52) for alpha = 0", "[dampi
   CHECK(amplitude_decay(th, 0.0, 0.0, t) == 0.0);
 }
 
+TEST_CASE("A decay too slow to resolve: first order, continuous, finite at subnormal rates",
+          "[damping][jet]") {
+  const double th = test::kAmplitude, t = test::kTiming;
+  // First order, theta0^2 (alpha + beta theta0) t_f / 16, below s = 1e-8 ...
+  const double slow = 1e-10 / t;
+  CHECK_THAT(amplitude_decay(th, slow, 0.0, t), WithinRel(-th * th * 1e-10 / 16.0, 1e-14));
+  // ... and on both sides of it the same line, to the 1e-8 either form holds.
+  const double below = amplitude_decay(th, 0.999e-8 / t, 0.0, t);
+  const double above = amplitude_decay(th, 1.001e-8 / t, 0.0, t);
+  CHECK_THAT(above / below, WithinRel(1.001 / 0.999, 1e-7));
+  // alpha = 0 and a subnormal beta theta0: the exact form divided by it,
+  // and the derivatives were NaN (found by fuzzing).
+  using J = ceres::Jet<double, 2>;
+  const J r = amplitude_decay(J(1e-5), J(0.0, 0), J(3e-308, 1), J(t));
+  CHECK(std::isfinite(r.a));
+  CHECK(std::isfinite(r.v[0]));
+  CHECK(std::isfinite(r.v[1]));
+}
+
 TEST_CASE("Decay correction agrees with quadrature of Eq. (25) over decades of alpha and beta",
           "[damping]") {
   const double th = test::kAmplitude;

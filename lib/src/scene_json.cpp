@@ -795,6 +795,9 @@ ParsedScene parse_scene(const std::string& text) {
       // A laboratory's gas: 25 "K" meant degC, 28.96 "kg/mol" meant g/mol.
       within(pv.temperature, 150.0, 500.0, "air.temperature.value", "K",
              "the temperature of a laboratory's air, 150 K to 500 K (-123 degC to 227 degC)");
+      // Thinner air is a vacuum; and its density would near a double's underflow.
+      within(pv.pressure, 1e-12, HUGE_VAL, "air.pressure.value", "Pa",
+             "at least 1e-12 Pa, an ultra-high vacuum (for less, \"air\": \"vacuum\")");
       if (o.has("molar_mass")) {
         r.put(o, "molar_mass", Dimension::molar_mass, Range::positive, pv.molar_mass, pu.molar_mass);
         within(pv.molar_mass, 1e-3, 1.0, "air.molar_mass.value", "kg/mol",

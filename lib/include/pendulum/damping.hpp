@@ -107,6 +107,13 @@ T amplitude_decay(const T& theta0m, const T& alpha, const T& beta,
                   const T& t_f) {
   using std::exp;
   if (value_of(alpha) == 0.0 && value_of(beta) == 0.0) return T(0.0);
+  // A decay too slow to resolve, s = (alpha + beta theta0m) t_f < 1e-8: to
+  // first order theta0^2 falls by 2 s theta0m^2 t / t_f, which averages to
+  // the line below, good to a relative s; the exact form loses 1e-16/s to
+  // the subtraction in its last line, and divides by a rate that may
+  // underflow (fuzzing found NaN derivatives at a subnormal beta theta0f).
+  const T s = (alpha + beta * theta0m) * t_f;
+  if (value_of(s) < 1e-8) return -theta0m * theta0m * s / 16.0;
   const T e = detail::one_minus_exp_over(alpha * t_f);
   const T growth = 1.0 + beta * theta0m * t_f * e;
   const T theta0f = theta0m * exp(-alpha * t_f) / growth;          // Eq. (50b)

@@ -180,6 +180,24 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
     if (combined > 0.0) out.z_score = (out.g.value - out.expected_g->value) / combined;
   }
 
+  // An uncertainty so large that the propagated ones overflow (1e300 on a
+  // rate, say) is the input's fault: name the input that contributes most.
+  bool finite_uncertainties = std::isfinite(out.g.uncertainty) &&
+                              std::isfinite(out.period_ideal.uncertainty) &&
+                              std::isfinite(out.g_uncorrected.uncertainty);
+  for (const auto& row : out.corrections) {
+    if (row.delta_T_uncertainty && !std::isfinite(*row.delta_T_uncertainty)) finite_uncertainties = false;
+  }
+  if (!finite_uncertainties && !out.budget.empty()) {
+    const auto worst = std::max_element(out.budget.begin(), out.budget.end(), [](const auto& x, const auto& y) {
+      return !(std::abs(x.sensitivity) * x.uncertainty >= std::abs(y.sensitivity) * y.uncertainty);
+    });
+    std::ostringstream why;
+    why << "got " << worst->uncertainty << " " << worst->unit
+        << "; expected an uncertainty small enough for g's uncertainty to stay finite";
+    throw InputError(worst->input + ".uncertainty", why.str());
+  }
+
   // A non-finite number here is a bug, not an input error: never print it.
   auto check = [](double x, const char* what) {
     if (!std::isfinite(x)) throw std::logic_error(std::string("non-finite ") + what);

@@ -79,9 +79,20 @@ extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t s
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
-  pendulum::ParsedScene scene;
+  // Bad input may be found while reading or, for inputs whose uncertainties
+  // overflow g's, while propagating them: both as the CLI reports them.
   try {
-    scene = pendulum::parse_scene(text);
+    const pendulum::ParsedScene scene = pendulum::parse_scene(text);
+    using pendulum::AmplitudeMethod;
+    for (const auto method : {AmplitudeMethod::agm, AmplitudeMethod::series, AmplitudeMethod::small_angle}) {
+      pendulum::AnalysisOptions options;  // --amplitude-method
+      options.reduction.amplitude_method = method;
+      const pendulum::Analysis analysis = pendulum::analyse(scene, options);
+      const auto result = pendulum::result_to_json(scene, analysis, options, "fuzz");
+      require_finite(result, "");
+      require(analysis.g.value > 0.0, "g not positive", result.dump());
+      (void)pendulum::result_to_table(scene, analysis);
+    }
   } catch (const pendulum::InputError& e) {
     const std::string message = e.what();
     for (const char c : message) {
@@ -89,17 +100,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
               "control character in an error message", message);
     }
     require(message.size() <= 1000, "error message over 1000 characters", message.substr(0, 200));
-    return 0;
-  }
-  using pendulum::AmplitudeMethod;
-  for (const auto method : {AmplitudeMethod::agm, AmplitudeMethod::series, AmplitudeMethod::small_angle}) {
-    pendulum::AnalysisOptions options;  // --amplitude-method
-    options.reduction.amplitude_method = method;
-    const pendulum::Analysis analysis = pendulum::analyse(scene, options);
-    const auto result = pendulum::result_to_json(scene, analysis, options, "fuzz");
-    require_finite(result, "");
-    require(analysis.g.value > 0.0, "g not positive", result.dump());
-    (void)pendulum::result_to_table(scene, analysis);
   }
   return 0;
 }

@@ -8,6 +8,8 @@
 #include <iostream>
 #include <vector>
 
+#include <glog/logging.h>
+
 #include "commands.hpp"
 #include "pendulum/scene_json.hpp"
 
@@ -45,6 +47,8 @@ std::map<std::string, AmplitudeMethod> amplitude_methods(bool with_auto) {
 
 int main(int argc, char** argv) {
   constexpr int kExitInput = 1, kExitUsage = 2, kExitInternal = 3;
+  // Ceres reports through glog; pendulum-g reports through its own messages.
+  FLAGS_minloglevel = google::GLOG_FATAL;
   CLI::App app{"pendulum-g: reduce a pendulum experiment to g (docs/ for the scene schema)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("pendulum-g ") + PENDULUM_G_VERSION);

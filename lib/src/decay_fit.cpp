@@ -270,6 +270,13 @@ Solution solve(const DecayData& data, DecayModel model) {
 
 DecayFit report(const DecayData& data, DecayModel model, const Solution& s,
                 std::string reason) {
+  // Eq. (25) could not be evaluated (an overflow on an extreme record): no
+  // fit to report, and the record is to blame.
+  if (s.summary.termination_type == ceres::FAILURE || !(s.summary.final_cost >= 0.0) ||
+      !std::isfinite(s.summary.final_cost)) {
+    throw InputError("decay.data", "the fit of Eq. (25) failed (" + s.summary.message +
+                                       "); expected a record the decay law can be evaluated on");
+  }
   DecayFit f;
   const int n = static_cast<int>(data.times.size());
   const bool weighted = !data.sigmas.empty();
@@ -343,9 +350,10 @@ void validate_decay_data(const DecayData& data, const std::string& path) {
                                            number(data.times[i - 1]) +
                                            "; expected strictly increasing times (no repeats)");
     }
-    if (!std::isfinite(data.amplitudes[i]) || data.amplitudes[i] <= 0.0) {
+    if (!std::isfinite(data.amplitudes[i]) || data.amplitudes[i] <= 0.0 ||
+        data.amplitudes[i] >= 3.14159265358979323846) {
       throw InputError(at("amplitudes", i), "got " + number(data.amplitudes[i]) +
-                                                "; expected a positive amplitude");
+                                                " rad; expected a positive amplitude below 180 deg");
     }
     if (!data.sigmas.empty() && (!std::isfinite(data.sigmas[i]) || data.sigmas[i] <= 0.0)) {
       throw InputError(at("sigmas", i), "got " + number(data.sigmas[i]) + "; expected a positive uncertainty");

@@ -177,7 +177,8 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
   if (scene.site) out.expected_g = expected_gravity(*scene.site);
   if (out.expected_g) {
     const double combined = std::hypot(out.g.uncertainty, out.expected_g->uncertainty);
-    if (combined > 0.0) out.z_score = (out.g.value - out.expected_g->value) / combined;
+    const double z = (out.g.value - out.expected_g->value) / combined;
+    if (combined > 0.0 && std::isfinite(z)) out.z_score = z;
   }
 
   // An uncertainty so large that the propagated ones overflow (1e300 on a

@@ -598,6 +598,8 @@ void read_site(Object& top, SceneReader& r, ParsedScene& out) {
   }
   if (o.has("reference_g")) {
     const Measured g = r.quantity(o, "reference_g", Dimension::acceleration, Range::positive);
+    // Any planet's surface, with room to spare; beyond, a unit slip or a typo.
+    within(g.value, 0.1, 1000.0, "site.reference_g.value", "m/s^2", "a surface gravity from 0.1 to 1000 m/s^2");
     site.reference_g = g.value;
     site.reference_g_uncertainty = g.sigma;
     const json& q = o.at("reference_g");

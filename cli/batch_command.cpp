@@ -127,7 +127,7 @@ Command add_batch_command(CLI::App& app) {
         line = std::move(*results[i]);
       }
       failed += !line.at("ok").get<bool>();
-      std::cout << (o->format == "csv" ? batch_csv_row(line) : line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+      std::cout << (o->format == "csv" ? batch_csv_row(line) : json_text(line, -1) + "\n");
       const auto now = std::chrono::steady_clock::now();
       if (progress && (now - last_progress > std::chrono::milliseconds(100) || i + 1 == jobs.size())) {
         last_progress = now;

@@ -43,7 +43,7 @@ Command add_fit_decay_command(CLI::App& app) {
     for (auto& w : review_decay_fit(fit)) warnings.push_back(std::move(w));
     out["warnings"] = warnings;
     print_warnings(warnings);
-    std::cout << out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+    std::cout << json_text(out) << "\n";
     return 0;
   }};
 }

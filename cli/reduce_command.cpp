@@ -39,9 +39,7 @@ Command add_reduce_command(CLI::App& app) {
     const std::string text =
         o->format == "table"
             ? result_to_table(scene, analysis)
-            // The file name is not checked UTF-8: its bad bytes print as U+FFFD.
-            : result_to_json(scene, analysis, o->analysis, o->file)
-                      .dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+            : json_text(result_to_json(scene, analysis, o->analysis, o->file)) + "\n";
     print_warnings(scene.warnings);
     print_warnings(analysis.warnings);
     std::cout << text;

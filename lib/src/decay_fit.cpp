@@ -383,14 +383,17 @@ DecayFit fit_decay(const DecayData& data, const DecayFitOptions& options) {
   };
   if (options.model) return fit(*options.model, "chosen by the user");
 
-  const int full_parameters = 2 + !data.initial_amplitude;
-  if (n <= full_parameters) {
+  // Both one-term models, and the one with the lower chi2.
+  auto simpler = [&](const std::string& why) {
     const DecayFit lin = fit(DecayModel::linear_only, "");
     const DecayFit quad = fit(DecayModel::quadratic_only, "");
     DecayFit best = lin.chi2 <= quad.chi2 ? lin : quad;
-    best.model_reason = std::to_string(n) + " points leave no degree of freedom for both alpha and beta; the "
-                        "one-term model with the lower chi2 is used";
+    best.model_reason = why + "; the one-term model with the lower chi2 is used";
     return best;
+  };
+  const int full_parameters = 2 + !data.initial_amplitude;
+  if (n <= full_parameters) {
+    return simpler(std::to_string(n) + " points leave no degree of freedom for both alpha and beta");
   }
   DecayFit full = fit(DecayModel::both, "");
   const bool separable = full.alpha.uncertainty && full.beta.uncertainty &&
@@ -406,13 +409,8 @@ DecayFit fit_decay(const DecayData& data, const DecayFitOptions& options) {
     return f;
   }
   if (separable) return full;
-  const DecayFit lin = fit(DecayModel::linear_only, "");
-  const DecayFit quad = fit(DecayModel::quadratic_only, "");
-  DecayFit best = lin.chi2 <= quad.chi2 ? lin : quad;
-  best.model_reason = "alpha and beta cannot be told apart on this record (correlation " +
-                      number(full.correlation_alpha_beta) +
-                      "); the one-term model with the lower chi2 is used";
-  return best;
+  return simpler("alpha and beta cannot be told apart on this record (correlation " +
+                 number(full.correlation_alpha_beta) + ")");
 }
 
 }  // namespace pendulum

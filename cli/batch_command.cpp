@@ -14,7 +14,7 @@
 
 #include "commands.hpp"
 #include "pendulum/analysis.hpp"
-#include "pendulum/result_json.hpp"
+#include "pendulum/output.hpp"
 #include "pendulum/scene_json.hpp"
 
 namespace pendulum::cli {
@@ -65,10 +65,10 @@ std::vector<Job> gather(const std::vector<std::string>& paths, const std::string
 }
 
 /// The summary line of one scene; never throws.
-nlohmann::ordered_json process(const Job& job, const AnalysisOptions& options) {
+BatchLine process(const Job& job, const AnalysisOptions& options) {
   try {
     const ParsedScene scene = parse_scene(job.text ? *job.text : read_input(job.name));
-    return batch_summary(job.name, scene, analyse(scene, options));
+    return batch_line(job.name, scene, analyse(scene, options));
   } catch (const InputError& e) {
     return batch_failure(job.name, e.what());
   } catch (const std::exception& e) {
@@ -99,7 +99,7 @@ Command add_batch_command(CLI::App& app) {
     const std::vector<Job> jobs = gather(o->paths, o->list);
     if (jobs.empty()) throw InputError("", "no scenes: give files, folders, --list, or - for standard input");
     const AnalysisOptions options;
-    std::vector<std::optional<nlohmann::ordered_json>> results(jobs.size());
+    std::vector<std::optional<BatchLine>> results(jobs.size());
     std::mutex mutex;
     std::condition_variable ready;
     std::atomic<std::size_t> next{0};
@@ -120,14 +120,14 @@ Command add_batch_command(CLI::App& app) {
     std::size_t failed = 0;
     if (o->format == "csv") std::cout << batch_csv_header();
     for (std::size_t i = 0; i < jobs.size(); ++i) {
-      nlohmann::ordered_json line;
+      BatchLine line;
       {
         std::unique_lock<std::mutex> lock(mutex);
         ready.wait(lock, [&] { return results[i].has_value(); });
         line = std::move(*results[i]);
       }
-      failed += !line.at("ok").get<bool>();
-      std::cout << (o->format == "csv" ? batch_csv_row(line) : json_text(line, -1) + "\n");
+      failed += !line.ok;
+      std::cout << (o->format == "csv" ? line.csv : line.json + "\n");
       const auto now = std::chrono::steady_clock::now();
       if (progress && (now - last_progress > std::chrono::milliseconds(100) || i + 1 == jobs.size())) {
         last_progress = now;

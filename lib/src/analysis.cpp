@@ -140,8 +140,7 @@ class Fit {
       ReductionOptions reduction = options_.reduction;
       reduction.amplitude_tolerance = options_.amplitude_fraction * sigma / period;
       amplitude_[k] = choose_amplitude_method(reduction, scene_.observations[k].amplitude);
-      // One observation: the closed form, where the weight cancels.
-      weights_[k] = k_ == 1 || sigma == 0.0 ? 1.0 : 1.0 / sigma;
+      weights_[k] = 1.0;  // the closed form's, where it cancels; a series's: weigh()
     }
   }
 
@@ -154,17 +153,51 @@ class Fit {
       out_.fit.termination = "closed form of one observation";
       return;
     }
-    // From the textbook line: close enough at any amplitude for Levenberg-Marquardt.
-    p_[0] = 4.0 * kPi * kPi / textbook_.slope;
-    if (P > 1 && fitted_[1]) p_[1] = textbook_.intercept / textbook_.slope;
+    // From the textbook line through the origin, the offset at 0: close
+    // enough at any amplitude for Levenberg-Marquardt, and finite however
+    // close the lengths (the line with an intercept is not).
+    std::vector<double> x(k_), y(k_), zero(k_, 0.0);
+    for (std::size_t k = 0; k < k_; ++k) {
+      x[k] = scene_.observations[k].length;
+      y[k] = scene_.observations[k].period * scene_.observations[k].period;
+    }
+    p_[0] = 4.0 * kPi * kPi / fit_straight_line(x, y, zero, zero, false).slope;
+    // Effective variance: weights from each observation's own uncertainties
+    // (period, length, amplitude) carried to its period at the textbook
+    // start, then once more at the optimum.
     const PeriodFitProblem<Model> problem{&scene_.apparatus, &scene_.observations, &amplitude_, &weights_, fitted_};
-    const PeriodFitSolution solution = fit_periods(problem, p_);
+    weigh();
+    PeriodFitSolution solution = fit_periods(problem, p_);
+    std::copy(solution.parameters.begin(), solution.parameters.end(), p_.begin());
+    weigh();
+    solution = fit_periods(problem, p_);
     std::copy(solution.parameters.begin(), solution.parameters.end(), p_.begin());
     out_.fit.method = "ceres_levenberg_marquardt";
     out_.fit.converged = solution.converged;
     out_.fit.termination = solution.termination;
     out_.fit.iterations = solution.iterations;
     if (!solution.converged) out_.warnings.push_back("fit: did not converge (" + solution.termination + ")");
+  }
+
+  /// w_k = 1 / sqrt(sum over the observation's inputs x of
+  /// (d(T_model,k - T_k)/dx sigma_x)^2) at the current parameters.
+  void weigh() {
+    std::array<Dual, P> p;
+    for (int i = 0; i < P; ++i) p[i] = Dual(p_[i]);
+    const Apparatus<Dual> app = convert_apparatus<Dual>(scene_.apparatus, [](const Field&, double x) { return Dual(x); });
+    for (std::size_t k = 0; k < k_; ++k) {
+      double variance = 0.0;
+      int ordinal = 0;
+      zip_observation(scene_.observations[k], scene_.observation_uncertainties[k],
+                      [&](const Field&, const double&, const double& sigma) {
+                        const int seed = ordinal++;
+                        if (sigma == 0.0) return;
+                        const Observation<Dual> o = convert_observation<Dual>(scene_.observations[k], Seeder{seed});
+                        const double d = (Model::predict(p.data(), o, app, amplitude_[k]).period - o.period).v[0];
+                        variance += d * d * sigma * sigma;
+                      });
+      weights_[k] = 1.0 / std::sqrt(variance);
+    }
   }
 
   StraightLine textbook_line() const {
@@ -359,6 +392,7 @@ class Fit {
     for (int i = 0; i < P; ++i) {
       const ParameterInfo& info = Model::kParameterInfo[i];
       std::optional<double> from_periods;
+      // (J^T W J)^-1 of the weighted residuals: what ceres::Covariance gives.
       if (fitted_[i] && k_ > 1 && !singular_) from_periods = std::sqrt(inverse_(i, i));
       fit.parameters.push_back({info.name, info.unit, p_[i], fitted_[i] ? deviation(covariance_(i, i)) : std::nullopt,
                                 from_periods, fitted_[i]});

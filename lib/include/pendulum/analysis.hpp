@@ -98,8 +98,10 @@ struct ParameterResult {
   const char* unit;
   double value;
   std::optional<double> uncertainty;  ///< from every input's; empty when singular or held
-  /// From the periods' uncertainties alone, as ceres::Covariance gives it.
-  std::optional<double> uncertainty_from_periods;
+  /// From the observations' own uncertainties (period, length, amplitude):
+  /// (J^T W J)^-1 of the fit's effective-variance weights, what
+  /// ceres::Covariance or curve_fit with absolute sigma would give.
+  std::optional<double> uncertainty_from_observations;
   bool fitted;
 };
 

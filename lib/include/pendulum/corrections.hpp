@@ -153,7 +153,7 @@ Terms<T> correction_terms(const Apparatus<T>& app, const Swing<T>& s, const Ampl
     set(Id::bob_rotation, bob_rotation(a, l), "eq10_rotation");
   }
   // The other parts' corrections are their mass (or the air's) relative to the bob's.
-  const std::optional<T> m = app.bob ? app.bob->mass : std::nullopt;
+  const T* m = app.bob && app.bob->mass ? &*app.bob->mass : nullptr;
   const char* no_bob_mass = "needs the bob's mass (bob.mass)";
 
   if (!app.ring) {

@@ -3,7 +3,8 @@
 /// \brief One Ceres fit of any period model (period_model.hpp) to any number
 /// of observations: weighted least squares of the periods, with automatic
 /// derivatives. The uncertainties are the analysis's (analysis.hpp), which
-/// propagates every input through the fit's optimum.
+/// propagates every input through the fit's optimum and forms (J^T J)^-1
+/// from the same Jacobian (what ceres::Covariance would compute again).
 
 #include <array>
 #include <string>

@@ -21,7 +21,8 @@ constexpr const char* kSceneSchema = "pendulum-g/scene/1";
 /// "observations") with `prefix` on every path.
 void read_observation(Object& o, const std::string& prefix, ParsedScene& out) {
   Observation<double> v, u;
-  ObservationSource source{prefix};
+  ObservationSource source;
+  source.path = prefix;
   read_timing(o, prefix, v, u, source, out);
   put(o, "length", Dimension::length, Range::positive, v.length, u.length);
   within(v.length, 1e-3, 1e3, prefix + "length.value", "m", "a laboratory pendulum, 1 mm to 1 km long");

@@ -150,7 +150,7 @@ json fit_json(const ParsedScene& scene, const Analysis& a) {
     parameters.push_back({{"name", p.name},
                           {"value", p.value},
                           {"uncertainty", optional_number(p.uncertainty)},
-                          {"uncertainty_from_periods", optional_number(p.uncertainty_from_periods)},
+                          {"uncertainty_from_observations", optional_number(p.uncertainty_from_observations)},
                           {"unit", p.unit},
                           {"fitted", p.fitted}});
     if (p.fitted) names.push_back(p.name);

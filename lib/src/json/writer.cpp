@@ -174,6 +174,7 @@ json fit_json(const ParsedScene& scene, const Analysis& a) {
            {"ideal", measured(o.period_ideal, "s")},
            {"trials", o.trials},
            {"oscillations_per_trial", o.oscillations_per_trial}}},
+         {"effective_uncertainty_s", o.effective_uncertainty},
          {"residual_sigma", optional_number(o.residual)},
          {"total_delta_T_s", o.total_delta_T},
          {"negligible_threshold_delta_T_s", o.negligible_below},
@@ -337,13 +338,13 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
                   plus_minus(a.fit.textbook.g.uncertainty, "%.5f").c_str());
     os << line;
   } else {
-    std::snprintf(line, sizeof line, "%5s %10s %8s %12s %10s %12s %9s %12s\n", "obs", "L (m)", "theta0",
-                  "T meas (s)", "+- (s)", "T model (s)", "resid", "T-T0 (us)");
+    std::snprintf(line, sizeof line, "%5s %9s %12s %12s %10s %12s %9s %12s\n", "obs", "L (m)", "theta0 (deg)",
+                  "T meas (s)", "+- (s)", "T model (s)", "resid (sd)", "T-T0 (us)");
     os << line;
     for (std::size_t k = 0; k < a.observations.size(); ++k) {
       const ObservationResult& o = a.observations[k];
-      std::snprintf(line, sizeof line, "%5zu %10.5f %7.2f%s %12.6f %10.6f %12.6f %8.2fs %+12.2f\n", k, o.length,
-                    o.amplitude * 180.0 / kPi, "d", o.period_measured.value, o.period_measured.uncertainty,
+      std::snprintf(line, sizeof line, "%5zu %9.4f %12.2f %12.6f %10.6f %12.6f %+10.2f %+12.2f\n", k, o.length,
+                    o.amplitude * 180.0 / kPi, o.period_measured.value, o.period_measured.uncertainty,
                     o.period_model, o.residual.value_or(0.0), o.total_delta_T * 1e6);
       os << line;
     }

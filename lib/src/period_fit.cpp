@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 
+#include <Eigen/Dense>
 #include <ceres/ceres.h>
 
 #include "pendulum/models/simple_pendulum.hpp"
@@ -95,6 +96,27 @@ PeriodFitSolution fit_periods(const PeriodFitProblem<Model>& problem,
 
   PeriodFitSolution out;
   out.parameters.assign(p.begin(), p.end());
+  // (J^T J)^-1 over the fitted parameters from the Jacobian at the optimum.
+  const std::size_t k = problem.observations->size();
+  std::vector<double> r(k), jacobian(k * P);
+  const double* blocks[] = {p.data()};
+  double* jacobians[] = {jacobian.data()};
+  Eigen::Matrix<double, P, P> jtj = Eigen::Matrix<double, P, P>::Zero();
+  if (residuals.Evaluate(blocks, r.data(), jacobians)) {
+    const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, P, Eigen::RowMajor>> j(jacobian.data(), k, P);
+    jtj = j.transpose() * j;
+  }
+  for (int i = 0; i < P; ++i) {
+    if (!problem.fitted[i]) jtj.row(i).setZero(), jtj.col(i).setZero(), jtj(i, i) = 1.0;
+  }
+  const Eigen::LDLT<Eigen::Matrix<double, P, P>> ldlt(jtj);
+  if (ldlt.info() == Eigen::Success && ldlt.isPositive() && ldlt.vectorD().minCoeff() > 1e-12 * ldlt.vectorD().maxCoeff()) {
+    Eigen::Matrix<double, P, P, Eigen::RowMajor> c = ldlt.solve(Eigen::Matrix<double, P, P>::Identity());
+    for (int i = 0; i < P; ++i) {
+      if (!problem.fitted[i]) c.row(i).setZero(), c.col(i).setZero();
+    }
+    out.covariance.assign(c.data(), c.data() + P * P);
+  }
   out.chi2 = 2.0 * summary.final_cost;
   out.converged = summary.termination_type == ceres::CONVERGENCE;
   out.termination = summary.message;

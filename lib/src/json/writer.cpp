@@ -394,7 +394,7 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     constexpr std::size_t kShown = 12;
     os << "\nUncertainty budget of g (largest first):\n";
     for (std::size_t i = 0; i < a.budget.size() && i < kShown; ++i) {
-      std::snprintf(line, sizeof line, "  %-28s %.6f m/s^2\n", a.budget[i].input.c_str(), a.budget[i].contribution);
+      std::snprintf(line, sizeof line, "  %-32s %.6f m/s^2\n", a.budget[i].input.c_str(), a.budget[i].contribution);
       os << line;
     }
     if (a.budget.size() > kShown) os << "  ... and " << a.budget.size() - kShown << " more (JSON: g.budget)\n";

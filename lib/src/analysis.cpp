@@ -39,7 +39,12 @@ std::vector<std::string> review_decay_fit(const DecayFit& fit) {
     }
   }
   for (const auto& [name, q] : {std::pair{"alpha", fit.alpha}, std::pair{"beta", fit.beta}}) {
-    if (q.fitted && !q.at_bound && !q.significant) {
+    if (q.fitted && !q.uncertainty) {
+      warnings.push_back(std::string("decay fit: the record cannot fix ") + name +
+                         " (the fit's covariance is singular): its uncertainty is unknown, and it is "
+                         "listed in g.inputs_without_uncertainty, not in the budget");
+    }
+    if (q.fitted && q.uncertainty && !q.at_bound && !q.significant) {
       warnings.push_back(std::string("decay fit: ") + name +
                          " is not significant (less than two standard uncertainties from 0)");
     }

@@ -1,4 +1,6 @@
+#include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -23,9 +25,20 @@ json measured(const Estimate& x, const char* unit) {
   return {{"value", x.value}, {"uncertainty", optional_number(x.uncertainty)}, {"unit", unit}};
 }
 
-/// JSON text as every command prints it. A file name that is not UTF-8
-/// prints its bad bytes as U+FFFD instead of failing.
+/// Throws std::logic_error at a number that is not finite: the JSON library
+/// would print it as null, where the API promises a number.
+void require_finite(const json& j, const std::string& path) {
+  if (j.is_structured()) {
+    for (const auto& item : j.items()) require_finite(item.value(), path + "/" + item.key());
+  } else if (j.is_number_float() && !std::isfinite(j.get<double>())) {
+    throw std::logic_error("non-finite number in the output at " + path);
+  }
+}
+
+/// JSON text as every command prints it, after the check above. A file name
+/// that is not UTF-8 prints its bad bytes as U+FFFD instead of failing.
 std::string text(const json& j, int indent) {
+  require_finite(j, "");
   return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "pendulum/analysis.hpp"
 #include "pendulum/period_fit.hpp"
@@ -246,13 +245,9 @@ TEST_CASE("A period off the model by many sigma, and an implausible chi2, are na
 }
 
 TEST_CASE("The bundled series is what its generator writes, and gives back its truth", "[series][data]") {
-  const std::string command = PENDULUM_MAKE_SERIES_SCENE;
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe);
-  std::string text;
-  char buffer[4096];
-  while (const std::size_t k = std::fread(buffer, 1, sizeof buffer, pipe)) text.append(buffer, k);
-  REQUIRE(pclose(pipe) == 0);
+  int status = 0;
+  const std::string text = test::command_output(PENDULUM_MAKE_SERIES_SCENE, status);
+  REQUIRE(status == 0);
   const std::string bundled = test::read_text(std::string(PENDULUM_DATA_DIR) + "/pendulum_lengths_series.json");
   // Trials are rounded to 0.01 s; another libm may move one by a unit, so
   // the scenes are compared as read.

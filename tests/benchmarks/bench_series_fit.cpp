@@ -12,10 +12,10 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <cstring>
 #include <fstream>
 #include <random>
 
+#include "bench_main.hpp"
 #include "pendulum/period_fit.hpp"
 #include "pendulum/series_simulation.hpp"
 
@@ -89,11 +89,4 @@ int export_data(const std::string& dir) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  if (argc == 3 && std::strcmp(argv[1], "--export") == 0) return export_data(argv[2]);
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}
+int main(int argc, char** argv) { return pendulum::bench::main_with_export(argc, argv, export_data); }

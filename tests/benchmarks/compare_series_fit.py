@@ -23,35 +23,17 @@ import numpy as np
 import scipy
 from scipy.optimize import curve_fit
 
+from peer_timing import benchmark_medians, median_time
+
 
 def model(x, g, offset):
     length, theta0 = x
     return 2.0 * np.pi * np.sqrt((length + offset) / g) * (1.0 + theta0 * theta0 / 16.0)
 
 
-def median_cpu_time(fn, budget_s=1.0, min_reps=7):
-    times = []
-    start = time.process_time()
-    while len(times) < min_reps or time.process_time() - start < budget_s:
-        t0 = time.process_time()
-        fn()
-        times.append(time.process_time() - t0)
-        if len(times) >= 2000:
-            break
-    return float(np.median(times))
-
-
 def main():
     bench = sys.argv[1]
-    runs = json.loads(subprocess.run(
-        [bench, "--benchmark_repetitions=7", "--benchmark_report_aggregates_only=true",
-         "--benchmark_format=json"], check=True, capture_output=True, text=True).stdout)
-    ours = {}
-    for b in runs["benchmarks"]:
-        if b.get("aggregate_name") != "median":
-            continue
-        name, n = b["run_name"].split("/")
-        ours[int(n)] = b["cpu_time"] * {"us": 1e-6, "ms": 1e-3, "ns": 1e-9}[b["time_unit"]]
+    ours = {n: t for (_, n), t in benchmark_medians(bench, "cpu_time").items()}
     with tempfile.TemporaryDirectory() as tmp:
         subprocess.run([bench, "--export", tmp], check=True)
         fits = json.load(open(tmp + "/fits.json"))
@@ -65,7 +47,7 @@ def main():
             x = (length, theta0)
             fit = lambda: curve_fit(model, x, period, p0=f["start"], sigma=sigma, absolute_sigma=True)
             popt, _ = fit()
-            t_scipy = median_cpu_time(fit)
+            t_scipy = median_time(fit, time.process_time)
             tight, _ = curve_fit(model, x, period, p0=f["start"], sigma=sigma, absolute_sigma=True,
                                  ftol=1e-15, xtol=1e-15, gtol=1e-15, maxfev=100000)
             d = (popt[0] / f["g"] - 1, popt[1] / f["length_offset"] - 1)

@@ -547,51 +547,69 @@ struct ClockChoice {
 /// Most RK4 steps a period the automatic choice tries (2^14).
 inline constexpr int kMaxRk4Steps = 1 << 14;
 
-/// The cheapest route (ClockRoute order) whose error bound on the impulse
-/// error is within `tolerance` (s/day): the undamped cycloid, then the
-/// circular closed form, the damped cycloid, then RK4 with the steps a
-/// period doubled from 64 until its bound 2 |v(2N) - v(N)| + floor is
-/// within the tolerance (or the steps reach kMaxRk4Steps; the bound then
-/// says what was reached). The error of the difference of two integrated
-/// swings falls 16- to 100-fold a doubling down to 256 steps, then wanders
-/// at the floor 1e-9 |v| + 1e-8 s/day (measured 3e-9 s/day at 8.9 s/day,
-/// tests/test_clock.cpp). With tolerance <= 0 the exact route of the
-/// scene's model is taken (for a damped circle RK4 at its floor).
+/// The exact route of a scene's model.
+inline ClockRoute exact_clock_route(ClockPath path, bool damped) {
+  if (path == ClockPath::cycloidal) return damped ? ClockRoute::cycloid_damped : ClockRoute::cycloid;
+  return damped ? ClockRoute::circular_rk4 : ClockRoute::circular_elliptic;
+}
+
+/// The impulse error by `route` with its bounds against the scene's model
+/// (route_error_bound). RK4 doubles its steps a period from 64 until its
+/// bound 2 |v(2N) - v(N)| + floor is within `tolerance` (s/day), or the
+/// steps reach kMaxRk4Steps, or 1024 when tolerance <= 0; the bound says
+/// what was reached. The error of the difference of two integrated swings
+/// falls 10- to 100-fold a doubling down to 256 steps, then wanders below
+/// the floor 1e-9 |v| + 1e-8 s/day (measured 3e-9 s/day at 8.9 s/day,
+/// tests/test_clock.cpp).
 /// \param theta0, location (rad); \param q Q.
-inline ClockChoice cheapest_clock_route(ClockPath path, bool damped, double theta0,
-                                        double location, double q, double tolerance) {
-  const ClockRoute exact = path == ClockPath::cycloidal
-                               ? (damped ? ClockRoute::cycloid_damped : ClockRoute::cycloid)
-                               : (damped ? ClockRoute::circular_rk4 : ClockRoute::circular_elliptic);
-  for (ClockRoute r : {ClockRoute::cycloid, ClockRoute::circular_elliptic, ClockRoute::cycloid_damped}) {
-    if (!route_fits(r, path)) continue;
-    if (path == ClockPath::circular && r != ClockRoute::circular_elliptic &&
-        theta0 > kCycloidStandInMaxAmplitude) {
-      continue;
-    }
-    const RouteBound b = route_error_bound(r, path, damped, theta0, q);
-    const bool is_exact = r == exact;
-    const bool exact_only = tolerance <= 0.0;
-    if (exact_only && !is_exact) continue;
-    const ImpulseEffect<double> e = impulse_error(r, path, theta0, location, q, 0);
-    const double bound = b.relative * std::fabs(e.error) + b.absolute;
-    if (is_exact || bound <= tolerance) {
-      return {r, 0, e, bound, b.relative * std::fabs(e.rate) + b.absolute};
-    }
+inline ClockChoice run_clock_route(ClockRoute route, ClockPath path, bool damped, double theta0,
+                                   double location, double q, double tolerance) {
+  if (route != ClockRoute::circular_rk4) {
+    const RouteBound b = route_error_bound(route, path, damped, theta0, q);
+    const ImpulseEffect<double> e = impulse_error(route, path, theta0, location, q, 0);
+    return {route, 0, e, b.relative * std::fabs(e.error) + b.absolute,
+            b.relative * std::fabs(e.rate) + b.absolute};
   }
-  // RK4: the damped circular model itself.
   int steps = 64;
   ImpulseEffect<double> coarse = impulse_error_rk4(theta0, location, q, steps);
   for (;;) {
     const ImpulseEffect<double> fine = impulse_error_rk4(theta0, location, q, 2 * steps);
-    const double bound = 2.0 * std::fabs(fine.error - coarse.error) + 1e-9 * std::fabs(fine.error) + 1e-8;
-    const double rate_bound = 2.0 * std::fabs(fine.rate - coarse.rate) + 1e-9 * std::fabs(fine.rate) + 1e-8;
+    // Without damping in the scene, RK4 still integrates the damped model.
+    const double model = damped ? 0.0 : 1.0 / q;
+    const double bound = 2.0 * std::fabs(fine.error - coarse.error) +
+                         (1e-9 + model) * std::fabs(fine.error) + 1e-8;
+    const double rate_bound = std::isfinite(fine.rate)
+                                  ? 2.0 * std::fabs(fine.rate - coarse.rate) +
+                                        (1e-9 + model) * std::fabs(fine.rate) + 1e-8
+                                  : HUGE_VAL;
     steps *= 2;
     if (bound <= tolerance || steps >= kMaxRk4Steps || (tolerance <= 0.0 && steps >= 1024)) {
       return {ClockRoute::circular_rk4, steps, fine, bound, rate_bound};
     }
     coarse = fine;
   }
+}
+
+/// The cheapest route (ClockRoute order: undamped cycloid, circular closed
+/// form, damped cycloid, RK4) whose error bound on the impulse error is
+/// within `tolerance` (s/day); the exact route of the scene's model when
+/// none is, or when tolerance <= 0. The cycloid routes stand for a circle
+/// only up to kCycloidStandInMaxAmplitude.
+/// \param theta0, location (rad); \param q Q.
+inline ClockChoice cheapest_clock_route(ClockPath path, bool damped, double theta0,
+                                        double location, double q, double tolerance) {
+  const ClockRoute exact = exact_clock_route(path, damped);
+  for (ClockRoute r : {ClockRoute::cycloid, ClockRoute::circular_elliptic, ClockRoute::cycloid_damped,
+                       ClockRoute::circular_rk4}) {
+    if (!route_fits(r, path) || (tolerance <= 0.0 && r != exact)) continue;
+    if (path == ClockPath::circular && (r == ClockRoute::cycloid || r == ClockRoute::cycloid_damped) &&
+        theta0 > kCycloidStandInMaxAmplitude) {
+      continue;
+    }
+    const ClockChoice c = run_clock_route(r, path, damped, theta0, location, q, tolerance);
+    if (r == exact || c.error_bound <= tolerance) return c;
+  }
+  return run_clock_route(exact, path, damped, theta0, location, q, tolerance);
 }
 
 /// The semi-amplitude (rad) at which the rates of change of the circular

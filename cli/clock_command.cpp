@@ -88,6 +88,10 @@ nlohmann::ordered_json to_json(const ClockScene& s, const ClockAnalysis& a, cons
        }()},
       {"impulse_error", [&] {
          auto j = quantity(a.impulse_error, "s/day", a.impulse_error_sigma);
+         if (!a.impulse_error_sigma) {
+           j["uncertainty"] = nullptr;
+           j["note"] = "uncertainty unbounded: the error's derivative is infinite at the end of the swing";
+         }
          j["equation"] = "Feinstein (2005) Eq. (D-1)";
          return j;
        }()},

@@ -336,7 +336,7 @@ std::array<T, 2> damped_oscillator_reach(const T& x1, const T& q) {
     if (value_of(v) <= 0.0) break;
     const T step = (x - x1) / v;
     u += step;
-    if (std::fabs(value_of(step)) <= 1e-17 * std::fabs(value_of(u))) break;
+    if (std::fabs(value_of(step)) <= 1e-15 * std::fabs(value_of(u)) + 1e-300) break;  // quadratic: the next step is far below
   }
   return {u, v};
 }

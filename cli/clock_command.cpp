@@ -96,6 +96,11 @@ nlohmann::ordered_json to_json(const ClockScene& s, const ClockAnalysis& a, cons
          return j;
        }()},
       {"impulse_error_rate", rate},
+      {"impulse_error_amplitude_rate", [&] {
+         auto j = quantity(a.impulse_error_amplitude_rate * per_arcsec, "s/day/arcsec");
+         j["meaning"] = "change with the semi-amplitude at a fixed impulse location and Q (not Feinstein's rate)";
+         return j;
+       }()},
       {"daily_loss", [&] {
          auto j = quantity(a.circular_error.value + a.impulse_error, "s/day");
          j["meaning"] = "circular plus impulse error: seconds a day the clock loses against its small-amplitude free swing";
@@ -134,6 +139,8 @@ std::string to_table(const ClockScene& s, const ClockAnalysis& a) {
   row("  rate of change (E-4)", format("%.5e", a.circular_error_rate * kRadPerArcsecond), "s/day/arcsec");
   row("impulse error (D-1)", format("%.6g", a.impulse_error), "s/day");
   row("  rate of change (D-2)", format("%.5e", a.impulse_error_rate * kRadPerArcsecond), "s/day/arcsec");
+  row("  per arc second of amplitude", format("%.5e", a.impulse_error_amplitude_rate * kRadPerArcsecond),
+      "s/day/arcsec");
   row("  error bound of the route", format("%.2g", a.choice.error_bound), "s/day");
   row("daily loss (circular + impulse)", format("%.6g", a.circular_error.value + a.impulse_error), "s/day");
   row("cancelling semi-amplitude (IX)",

@@ -480,6 +480,15 @@ TEST_CASE("Sec. IX: the semi-amplitude where the rates cancel", "[clock][feinste
     CHECK_THAT(circular_error_rate(*root) - impulse_error_elliptic(*root, theta, q).rate,
                WithinAbs(0.0, 1e-9));
   }
+  // Feinstein's rate is d/d(location) at a fixed amplitude. At a fixed
+  // location the error depends on theta/theta0 (to 0.1%, Table 3B), so
+  // d/d theta0 = -(theta/theta0) d/d theta: for an impulse toward
+  // equilibrium at 216' of 240' it is +0.9 * 0.003619 s/day/asec, the same
+  // sign as the circular error's (docs/clock.md).
+  using Jet = ceres::Jet<double, 1>;
+  const double amplitude_rate =
+      -impulse_error_elliptic(Jet(240.0 * kArcminute, 0), Jet(216.0 * kArcminute), Jet(q)).error.v[0];
+  CHECK_THAT(amplitude_rate * kRadPerArcsecond, WithinRel(0.9 * 0.003619, 2e-3));
   // Away from equilibrium both rates are positive: nothing cancels.
   CHECK_FALSE(cancelling_semi_amplitude(ImpulseDirection::away, 0.9, true, q));
   // At the very end the impulse rate is infinite.

@@ -280,6 +280,12 @@ ClockAnalysis analyse_clock(const ClockScene& s, std::optional<ClockRoute> route
     if (sigmas[i] > 0.0) variance += std::pow(e.v[i] * sigmas[i], 2);
   }
   if (std::isfinite(variance)) a.impulse_error_sigma = std::sqrt(variance);
+  {
+    using Jet1 = ceres::Jet<double, 1>;
+    const Jet1 t(theta0, 0), fixed(a.location), qd(q);
+    a.impulse_error_amplitude_rate =
+        sign * (circular ? impulse_error_elliptic(t, fixed, qd).error : impulse_error_cycloid(t, fixed, qd).error).v[0];
+  }
 
   const double ratio = circular ? finite_amplitude_agm(theta0) : 0.0;
   a.free_period = a.small_amplitude_period * (1.0 + ratio);

@@ -53,6 +53,10 @@ struct ClockAnalysis {
   /// impulse at the end of the swing with an uncertain location or amplitude).
   std::optional<double> impulse_error_sigma;
   double impulse_error_rate;      ///< s/day per rad of the location, signed, Eq. (D-2); inf at the end
+  /// d(impulse error)/d(semi-amplitude) at a fixed impulse location and Q
+  /// (s/day per rad, signed; closed-form route of the path): what a change
+  /// of amplitude does to a fixed escapement, unlike Eq. (D-2) (docs/clock.md).
+  double impulse_error_amplitude_rate;
   ClockChoice choice;             ///< route, its steps and error bounds
   std::optional<double> cancelling_semi_amplitude;  ///< rad, Sec. IX
   std::string cancelling_note;    ///< why there is none, or what was held fixed

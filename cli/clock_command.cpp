@@ -107,6 +107,17 @@ nlohmann::ordered_json to_json(const ClockScene& s, const ClockAnalysis& a, cons
          return j;
        }()},
       {"cancelling_semi_amplitude", cancel},
+      {"amplitude_insensitive_semi_amplitude", [&] {
+         nlohmann::ordered_json j;
+         if (a.insensitive_semi_amplitude) {
+           j = quantity(*a.insensitive_semi_amplitude / kArcminute, "arcmin");
+         } else {
+           j["value"] = nullptr;
+         }
+         j["meaning"] = "circular plus impulse error does not change with the amplitude there, the impulse "
+                        "at a fixed location and Q (not in Feinstein; docs/clock.md)";
+         return j;
+       }()},
   };
 }
 
@@ -147,6 +158,10 @@ std::string to_table(const ClockScene& s, const ClockAnalysis& a) {
       a.cancelling_semi_amplitude ? format("%.4f", *a.cancelling_semi_amplitude / kArcminute) : "none",
       a.cancelling_semi_amplitude ? "arcmin" : "");
   out << "  (" << a.cancelling_note << ")\n";
+  row("amplitude-insensitive semi-amplitude",
+      a.insensitive_semi_amplitude ? format("%.4f", *a.insensitive_semi_amplitude / kArcminute) : "none",
+      a.insensitive_semi_amplitude ? "arcmin" : "");
+  out << "  (impulse at a fixed location: d(circular + impulse error)/d(amplitude) = 0)\n";
   return out.str();
 }
 

@@ -433,6 +433,11 @@ TEST_CASE("clock on Feinstein's 1-second pendulum: Tables 1 and 3B, Sec. IX", "[
   const double cancel = out.at("cancelling_semi_amplitude").at("value").get<double>();
   CHECK(cancel < 240.0);
   CHECK(cancel > 236.0);
+  // At a fixed location an impulse toward equilibrium adds to the circular
+  // error's change with the amplitude (+0.9 * 0.003619 s/day/asec): no
+  // amplitude holds the daily loss still.
+  CHECK_THAT(out.at("impulse_error_amplitude_rate").at("value").get<double>(), WithinAbs(0.9 * 0.003619, 1e-5));
+  CHECK(out.at("amplitude_insensitive_semi_amplitude").at("value").is_null());
 
   const Run table = run("clock --format table " + kFeinsteinClock);
   REQUIRE(table.status == 0);

@@ -489,6 +489,15 @@ TEST_CASE("Sec. IX: the semi-amplitude where the rates cancel", "[clock][feinste
   const double amplitude_rate =
       -impulse_error_elliptic(Jet(240.0 * kArcminute, 0), Jet(216.0 * kArcminute), Jet(q)).error.v[0];
   CHECK_THAT(amplitude_rate * kRadPerArcsecond, WithinRel(0.9 * 0.003619, 2e-3));
+  // At a fixed location, an impulse away from equilibrium is the one that
+  // can hold the daily loss still: d(CE + IE)/d theta0 = 0 at its root.
+  const auto still = amplitude_insensitive_semi_amplitude(ImpulseDirection::away, 216.0 * kArcminute, q);
+  REQUIRE(still);
+  const double total = circular_error_rate(*still) +
+                       impulse_error_elliptic(Jet(*still, 0), Jet(216.0 * kArcminute), Jet(q)).error.v[0];
+  CHECK_THAT(total * kRadPerArcsecond, WithinAbs(0.0, 1e-12));
+  CHECK(*still > 216.0 * kArcminute);
+  CHECK_FALSE(amplitude_insensitive_semi_amplitude(ImpulseDirection::toward, 216.0 * kArcminute, q));
   // Away from equilibrium both rates are positive: nothing cancels.
   CHECK_FALSE(cancelling_semi_amplitude(ImpulseDirection::away, 0.9, true, q));
   // At the very end the impulse rate is infinite.

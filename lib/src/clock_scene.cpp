@@ -294,6 +294,7 @@ ClockAnalysis analyse_clock(const ClockScene& s, std::optional<ClockRoute> route
   a.period_sigma = std::hypot(a.free_period * relative,
                               a.small_amplitude_period * a.circular_error.sigma / kSecondsPerDay);
 
+  if (circular) a.insensitive_semi_amplitude = amplitude_insensitive_semi_amplitude(s.direction, a.location, q);
   if (!circular) {
     a.cancelling_note = "a cycloid has no circular error to cancel";
   } else if (s.direction == ImpulseDirection::away) {

@@ -25,6 +25,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <ceres/jet.h>
+
 #include "pendulum/amplitude.hpp"
 #include "pendulum/numeric.hpp"
 
@@ -638,6 +640,36 @@ inline std::optional<double> cancelling_semi_amplitude(ImpulseDirection directio
     (total_rate(mid) < 0.0 ? lo : hi) = mid;
   }
   return (lo + hi) / 2.0;
+}
+
+/// The semi-amplitude (rad) at which the clock's daily loss, circular plus
+/// impulse error, does not change with the amplitude when the impulse stays
+/// at a fixed location (rad) with a fixed Q:
+/// d/d theta0 [CE(theta0) + IE(theta0, location)] = 0, the impulse error's
+/// derivative by ceres::Jet of Eq. (D-1). Because IE depends on
+/// location/theta0 almost alone, its derivative is about -(location/theta0)
+/// times Feinstein's rate: positive for an impulse toward equilibrium (no
+/// root), negative away from it. Bisection to 1e-15 relative between the
+/// location and the semi-amplitude whose impulsed swing reaches 170 deg.
+/// \return nullopt when none exists. Not in Feinstein (2005); see
+/// docs/clock.md for why Sec. IX's rates do not measure this.
+inline std::optional<double> amplitude_insensitive_semi_amplitude(ImpulseDirection direction,
+                                                                  double location, double q) {
+  using Jet = ceres::Jet<double, 1>;
+  const double sign = direction_sign(direction);
+  auto total_rate = [&](double theta0) {
+    return circular_error_rate(theta0) +
+           sign * impulse_error_elliptic(Jet(theta0, 0), Jet(location), Jet(q)).error.v[0];
+  };
+  const double hi = 2.0 * std::asin(std::sin(kPi * 85.0 / 180.0) / std::sqrt(1.0 + kPi / q));
+  double lo = location * (1.0 + 1e-9) + 1e-300;
+  if (!(lo < hi) || !(total_rate(lo) < 0.0) || !(total_rate(hi) > 0.0)) return std::nullopt;
+  double top = hi;
+  while (top - lo > 1e-15 * top) {
+    const double mid = (lo + top) / 2.0;
+    (total_rate(mid) < 0.0 ? lo : top) = mid;
+  }
+  return (lo + top) / 2.0;
 }
 
 }  // namespace pendulum

@@ -60,6 +60,9 @@ struct ClockAnalysis {
   ClockChoice choice;             ///< route, its steps and error bounds
   std::optional<double> cancelling_semi_amplitude;  ///< rad, Sec. IX
   std::string cancelling_note;    ///< why there is none, or what was held fixed
+  /// rad: where circular plus impulse error stops changing with the amplitude
+  /// at a fixed impulse location and Q (amplitude_insensitive_semi_amplitude).
+  std::optional<double> insensitive_semi_amplitude;
   std::vector<std::string> warnings;
 };
 

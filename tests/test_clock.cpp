@@ -503,3 +503,20 @@ TEST_CASE("Sec. IX: the semi-amplitude where the rates cancel", "[clock][feinste
   // At the very end the impulse rate is infinite.
   CHECK_FALSE(cancelling_semi_amplitude(ImpulseDirection::toward, 1.0, true, q));
 }
+
+TEST_CASE("The clock's period as a pure function of (g, l, amplitude, Q, impulse)", "[clock]") {
+  // Feinstein's pendulum (SI): without impulse (at equilibrium, or Q ->
+  // infinity) the free period T0 2K/pi, Table 1's 2.000609 s (times
+  // 2.00000019/2); the impulse shortens it by IE/86400 of itself; and
+  // dT/dg = -T/(2g) (ceres::Jet), the period model run the other way.
+  const double g = 9.81, l = 0.993961, theta0 = 240.0 * kArcminute, q = 1e4;
+  const double free = 2.0 * kPi * std::sqrt(l / g) * (1.0 + circular_error(theta0) / kSecondsPerDay);
+  CHECK_THAT(free, WithinAbs(2.000609 * 2.00000019 / 2.0, 0.5e-6));
+  CHECK(clock_period(g, l, theta0, q, 0.0, ImpulseDirection::toward) == free);
+  CHECK_THAT(clock_period(g, l, theta0, 1e300, 0.9 * theta0, ImpulseDirection::toward), WithinRel(free, 1e-15));
+  const double t = clock_period(g, l, theta0, q, 0.9 * theta0, ImpulseDirection::toward);
+  CHECK_THAT((t / free - 1.0) * kSecondsPerDay, WithinAbs(-8.916, 0.5e-3));  // Table 3B: 8.916 s/day
+  using Jet = ceres::Jet<double, 1>;
+  const Jet tj = clock_period(Jet(g, 0), Jet(l), Jet(theta0), Jet(q), Jet(0.9 * theta0), ImpulseDirection::toward);
+  CHECK_THAT(tj.v[0], WithinRel(-t / (2.0 * g), 1e-14));
+}

@@ -250,8 +250,9 @@ struct ImpulseEffect {
 /// In F's parts: sin^2 phi_i = s^2/k_i^2, cos^2 phi = (k^2 - s^2)/k^2 with
 /// k^2 - s^2 = sin((theta0 - theta)/2) sin((theta0 + theta)/2) and
 /// k_i^2 - s^2 = (k^2 - s^2) + (pi/Q) k^2, and Delta^2 = 1 - s^2 = cos^2(theta/2)
-/// for both: nothing cancels but the final difference, which loses
-/// log10(F/dt) digits (at most 7 for Q <= 1e6; docs/clock.md).
+/// for both: nothing cancels but the final difference, which loses about
+/// log10(F/dt) digits (4 at Q = 1e4; its absolute error stays near 1e-11
+/// s/day, docs/clock.md).
 /// The rate: d(sqrt(l/g) F)/d theta = 1/theta' = sqrt(l/g) / (2 sqrt(k^2 - s^2)),
 /// Eq. (D-2) in closed form; +inf at theta = theta0.
 /// \param theta0 semi-amplitude before the impulse (rad), 0 < theta0 < pi;
@@ -311,6 +312,21 @@ T cycloid_angle_at_equal_energy(const T& theta) {
   using std::asin;
   using std::sin;
   return asin(2.0 * sin(theta / 2.0));  // Feinstein App. H: sin^2 beta0 = 2 (1 - cos theta0)
+}
+
+/// The period (s) of a clock pendulum on a circular path, impulsed once a
+/// swing, undamped: T = T0 (2K(k)/pi) (1 + IE/86400), T0 = 2 pi sqrt(l/g),
+/// IE the signed impulse error (s/day) of impulse_error_elliptic. A pure
+/// function of (g, l, semi-amplitude, Q, impulse), for the period-model core.
+/// \param g (m/s^2); \param length (m); \param theta0 semi-amplitude (rad);
+/// \param q Q; \param location impulse location (rad), 0 <= location <= theta0.
+/// Feinstein Eqs. (E-3), (D-1).
+template <class T>
+T clock_period(const T& g, const T& length, const T& theta0, const T& q, const T& location,
+               ImpulseDirection direction) {
+  const T free = small_amplitude_period(length, g) * (1.0 + finite_amplitude_agm(theta0));  // Eq. (E-3)
+  const T impulse = direction_sign(direction) * impulse_error_elliptic(theta0, location, q).error;
+  return free * (1.0 + impulse / kSecondsPerDay);  // Eq. (D-1), one impulse a swing
 }
 
 namespace detail {

@@ -206,7 +206,8 @@ TEST_CASE("The rate of the circular error is the derivative of the AGM's", "[clo
 }
 
 TEST_CASE("Feinstein (2005) Table 1: every row and column", "[clock][feinstein]") {
-  // l = 99.3961 cm, g = 981 cm/s^2. Col. 3 is the nominal 2.0000 s times
+  // l = 99.3961 cm, g = 981 cm/s^2. Cols. 1-2 the semi-amplitude in degrees
+  // (1' printed 0.017) and minutes. Col. 3 is the nominal 2.0000 s times
   // T/T0 (docs/deviations.md); col. 4 circular error (s/day), col. 5 its
   // linearity (col. 4 over the 1' value, over the minutes), col. 6 its rate
   // (s/day per arc second, Eq. E-4), col. 7 the rate over the 1' rate over
@@ -214,22 +215,22 @@ TEST_CASE("Feinstein (2005) Table 1: every row and column", "[clock][feinstein]"
   // half a unit of its last printed digit.
   struct Row {
     double minutes;
-    const char *period, *error, *linearity, *rate, *rate_linearity, *velocity;
+    const char *degrees, *period, *error, *linearity, *rate, *rate_linearity, *velocity;
   };
   const Row table[] = {
-      {1, "2.000000", "0.0005", "1.0", "1.5231E-05", "1.00000", "0.09083"},
-      {15, "2.000002", "0.1028", "15.0", "2.2846E-04", "1.00000", "1.362"},
-      {30, "2.000010", "0.4112", "30.0", "4.5693E-04", "1.00001", "2.725"},
-      {60, "2.000038", "1.6450", "60.0", "9.1388E-04", "1.00003", "5.450"},
-      {120, "2.000152", "6.5802", "120.0", "1.8280E-03", "1.00014", "10.90"},
-      {180, "2.000343", "14.807", "180.0", "2.7424E-03", "1.00031", "16.35"},
-      {240, "2.000609", "26.326", "240.1", "3.6575E-03", "1.00056", "21.80"},
-      {300, "2.000952", "41.141", "300.1", "4.5733E-03", "1.00087", "27.24"},
-      {360, "2.001372", "59.255", "360.2", "5.4900E-03", "1.00126", "32.69"},
-      {420, "2.001867", "80.671", "420.4", "6.4079E-03", "1.00171", "38.13"},
-      {480, "2.002440", "105.39", "480.5", "7.3272E-03", "1.00224", "43.56"},
-      {540, "2.003089", "133.43", "540.8", "8.2480E-03", "1.00283", "49.00"},
-      {600, "2.003814", "164.78", "601.0", "9.1705E-03", "1.00350", "54.43"},
+      {1, "0.017", "2.000000", "0.0005", "1.0", "1.5231E-05", "1.00000", "0.09083"},
+      {15, "0.250", "2.000002", "0.1028", "15.0", "2.2846E-04", "1.00000", "1.362"},
+      {30, "0.500", "2.000010", "0.4112", "30.0", "4.5693E-04", "1.00001", "2.725"},
+      {60, "1.000", "2.000038", "1.6450", "60.0", "9.1388E-04", "1.00003", "5.450"},
+      {120, "2.000", "2.000152", "6.5802", "120.0", "1.8280E-03", "1.00014", "10.90"},
+      {180, "3.000", "2.000343", "14.807", "180.0", "2.7424E-03", "1.00031", "16.35"},
+      {240, "4.000", "2.000609", "26.326", "240.1", "3.6575E-03", "1.00056", "21.80"},
+      {300, "5.000", "2.000952", "41.141", "300.1", "4.5733E-03", "1.00087", "27.24"},
+      {360, "6.000", "2.001372", "59.255", "360.2", "5.4900E-03", "1.00126", "32.69"},
+      {420, "7.000", "2.001867", "80.671", "420.4", "6.4079E-03", "1.00171", "38.13"},
+      {480, "8.000", "2.002440", "105.39", "480.5", "7.3272E-03", "1.00224", "43.56"},
+      {540, "9.000", "2.003089", "133.43", "540.8", "8.2480E-03", "1.00283", "49.00"},
+      {600, "10.000", "2.003814", "164.78", "601.0", "9.1705E-03", "1.00350", "54.43"},
   };
   const double l_cm = 99.3961, g_cm = 981.0;
   CHECK_THAT(length_for_period(2.0, g_cm), WithinAbs(l_cm, 0.5e-4));  // Eq. (B-1)
@@ -237,6 +238,7 @@ TEST_CASE("Feinstein (2005) Table 1: every row and column", "[clock][feinstein]"
   for (const Row& r : table) {
     const double theta0 = r.minutes * kArcminute;
     INFO(r.minutes << " arc minutes");
+    CHECK_THAT(r.minutes / 60.0, WithinAbs(value(r.degrees), half_unit(r.degrees)));
     CHECK_THAT(2.0 * (1.0 + circular_error(theta0) / kSecondsPerDay),
                WithinAbs(value(r.period), half_unit(r.period)));
     CHECK_THAT(circular_error(theta0), WithinAbs(value(r.error), half_unit(r.error)));

@@ -65,7 +65,7 @@ for q, colour in zip(QS, ("#c0392b", "#2471a3", "#229954")):
     if cancel[q] is not None and X0 <= cancel[q] <= X1:
         c = 0.5 * (clock(cancel[q], q)["circular_error_rate"]["value"] - clock(cancel[q], q)["impulse_error_rate"]["value"])
         svg.append(f"<circle cx='{x(cancel[q]):.1f}' cy='{y(c):.1f}' r='4' fill='{colour}'/>\n")
-svg.append(f"<text x='{L + 8}' y='{T + 14}'>impulse toward equilibrium at 0.9 of the swing (minus its rate)</text>\n")
+svg.append(f"<text x='{L + 8}' y='{H - B - 8}'>impulse toward equilibrium at 0.9 of the swing (minus its rate)</text>\n")
 svg.append("</svg>\n")
 open("docs/clock-rates.svg", "w").write("".join(svg))
 for q in QS:

@@ -201,7 +201,10 @@ ClockScene parse_clock_scene(const std::string& text) {
                                                  " rad; expected an angle above 0 and below " +
                                                  (cycloid ? "90 deg" : "180 deg"));
   }
-  s.q = quantity(top, "Q", std::nullopt, 0.5 + 1e-9, 1e15, "a quality factor above 1/2 and at most 1e15");
+  // Q >= 1: a clock's pendulum swings many times before it stops (Feinstein:
+  // 100 to 1e6); a damped swing then reaches equilibrium within 0.4 of a
+  // small-amplitude period.
+  s.q = quantity(top, "Q", std::nullopt, 1.0, 1e15, "a quality factor from 1 to 1e15");
   // The impulse adds pi E/Q: the swing after it must stay below the top (Eq. F-1).
   const double k_i = std::sqrt(1.0 + kPi / s.q.value) *
                      (cycloid ? std::sin(s.semi_amplitude.value) : std::sin(s.semi_amplitude.value / 2.0));
@@ -235,7 +238,7 @@ ClockScene parse_clock_scene(const std::string& text) {
   return s;
 }
 
-ClockAnalysis analyse_clock(const ClockScene& s, std::optional<ClockRoute> route) {
+ClockAnalysis analyse_clock(const ClockScene& s, std::optional<ClockRoute> route) try {
   ClockAnalysis a{};
   const bool circular = s.path == ClockPath::circular;
   const double theta0 = s.semi_amplitude.value, q = s.q.value;
@@ -307,6 +310,9 @@ ClockAnalysis analyse_clock(const ClockScene& s, std::optional<ClockRoute> route
                             : "no semi-amplitude below 170 deg cancels";
   }
   return a;
+} catch (const std::domain_error& e) {
+  // A scene the validation let through but a route cannot model.
+  throw InputError("", std::string("the clock cannot be modelled: ") + e.what());
 }
 
 }  // namespace pendulum

@@ -439,7 +439,7 @@ std::array<T, 2> rk4_time_to_equilibrium(const T& theta0, const T& theta, const 
   SwingState<T> x{theta0, T(0.0)};
   T u_theta = T(0.0), speed = T(0.0);
   bool passed = value_of(theta) >= value_of(theta0);  // an impulse at the turning point
-  for (int i = 0; i < 4 * steps; ++i) {
+  for (int i = 0; i < 8 * steps; ++i) {  // 8 small-amplitude periods
     const T u = double(i) * z;  // not summed: a sum of z would drift by i ulp
     const SwingState<T> next = rk4_swing_step(x, z, q);
     if (!passed && value_of(next.theta) <= value_of(theta)) {

@@ -509,6 +509,8 @@ TEST_CASE("clock refuses bad clock scenes with exit 1 and nothing on stdout", "[
       {{{"length", nullptr}}, "", "length: missing; expected length or nominal_period"},
       {{{"semi_amplitude", {{"value", 200}, {"unit", "deg"}}}}, "", "semi_amplitude.value: got 200 deg"},
       {{{"semi_amplitude", {{"value", 0}}}}, "", "semi_amplitude.value: got 0"},
+      {{{"semi_amplitude", {{"value", 1e-200}, {"uncertainty", 0}}}}, "",
+       "semi_amplitude.value: got 1e-200 arcmin; expected an angle from 1e-9 rad"},
       {{{"semi_amplitude", {{"uncertainty", 300}}}}, "", "semi_amplitude.uncertainty: got 300 arcmin"},
       {{{"Q", 0.25}}, "", "Q: got 0.25; expected a quality factor from 1 to 1e15"},
       {{{"Q", 0.5000001}, {"damped", true}}, "", "Q: got 0.5000001; expected a quality factor from 1"},

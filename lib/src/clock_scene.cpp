@@ -193,13 +193,13 @@ ClockScene parse_clock_scene(const std::string& text) {
   }
   const bool cycloid = s.path == ClockPath::cycloidal;
   const double top_angle = cycloid ? kPi / 2.0 : kPi;
-  s.semi_amplitude = quantity(top, "semi_amplitude", Dimension::angle, 0.0, top_angle,
-                              cycloid ? "an angle above 0 and below 90 deg (the cycloid's cusp)"
-                                      : "an angle above 0 and below 180 deg");
-  if (!(s.semi_amplitude.value > 0.0 && s.semi_amplitude.value < top_angle)) {
-    throw InputError("semi_amplitude.value", "got " + number(s.semi_amplitude.value) +
-                                                 " rad; expected an angle above 0 and below " +
-                                                 (cycloid ? "90 deg" : "180 deg"));
+  // From 1e-9 rad (2e-4 arc seconds, far below any clock's swing; k^2 stays
+  // far from underflow) to below the top (the cycloid's cusp at 90 deg).
+  const std::string range = cycloid ? "an angle from 1e-9 rad to below 90 deg (the cycloid's cusp)"
+                                    : "an angle from 1e-9 rad to below 180 deg";
+  s.semi_amplitude = quantity(top, "semi_amplitude", Dimension::angle, 1e-9, top_angle, range);
+  if (!(s.semi_amplitude.value < top_angle)) {
+    throw InputError("semi_amplitude.value", "got " + number(s.semi_amplitude.value) + " rad; expected " + range);
   }
   // Q >= 1: a clock's pendulum swings many times before it stops (Feinstein:
   // 100 to 1e6); a damped swing then reaches equilibrium within 0.4 of a

@@ -515,7 +515,7 @@ TEST_CASE("clock refuses bad clock scenes with exit 1 and nothing on stdout", "[
       {{{"semi_amplitude", {{"uncertainty", 300}}}}, "", "semi_amplitude.uncertainty: got 300 arcmin"},
       {{{"Q", 0.25}}, "", "Q: got 0.25; expected a quality factor from 1 to 1e15"},
       {{{"Q", 0.5000001}, {"damped", true}}, "", "Q: got 0.5000001; expected a quality factor from 1"},
-      {{{"Q", "many"}}, "", "Q: got \"many\"; expected an object"},
+      {{{"Q", "many"}}, "", "Q: got \"many\"; expected a number or an object"},
       {{{"Q", 2}, {"semi_amplitude", {{"value", 170}, {"unit", "deg"}}}}, "", "Q: got 2; expected a Q large enough"},
       {{{"impulse", {{"direction", "sideways"}}}}, "", "impulse.direction: got \"sideways\"; expected one of"},
       {{{"impulse", {{"relative_location", 1.5}}}}, "", "impulse.relative_location: got 1.5"},

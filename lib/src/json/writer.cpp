@@ -6,8 +6,29 @@
 #include <nlohmann/json.hpp>
 
 #include "pendulum/output.hpp"
+#include "writer.hpp"
 
 namespace pendulum {
+
+namespace {
+/// Throws std::logic_error at a number that is not finite: the JSON library
+/// would print it as null, where the API promises a number.
+void require_finite(const nlohmann::ordered_json& j, const std::string& path) {
+  if (j.is_structured()) {
+    for (const auto& item : j.items()) require_finite(item.value(), path + "/" + item.key());
+  } else if (j.is_number_float() && !std::isfinite(j.get<double>())) {
+    throw std::logic_error("non-finite number in the output at " + path);
+  }
+}
+
+}  // namespace
+
+/// JSON text as every command prints it, after the check above. A file name
+/// that is not UTF-8 prints its bad bytes as U+FFFD instead of failing.
+std::string json_text(const nlohmann::ordered_json& j, int indent) {
+  require_finite(j, "");
+  return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+}
 
 namespace {
 
@@ -25,22 +46,6 @@ json measured(const Estimate& x, const char* unit) {
   return {{"value", x.value}, {"uncertainty", optional_number(x.uncertainty)}, {"unit", unit}};
 }
 
-/// Throws std::logic_error at a number that is not finite: the JSON library
-/// would print it as null, where the API promises a number.
-void require_finite(const json& j, const std::string& path) {
-  if (j.is_structured()) {
-    for (const auto& item : j.items()) require_finite(item.value(), path + "/" + item.key());
-  } else if (j.is_number_float() && !std::isfinite(j.get<double>())) {
-    throw std::logic_error("non-finite number in the output at " + path);
-  }
-}
-
-/// JSON text as every command prints it, after the check above. A file name
-/// that is not UTF-8 prints its bad bytes as U+FFFD instead of failing.
-std::string text(const json& j, int indent) {
-  require_finite(j, "");
-  return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
-}
 
 json parameter(const FittedParameter& q, const char* unit) {
   return {{"value", q.value},
@@ -258,7 +263,7 @@ std::string result_json(const ParsedScene& scene, const Analysis& a, const Analy
                                            : *scene.apparatus.decay;
     out["drag_theory"] = drag_to_json(*a.drag, used);
   }
-  return text(out, indent);
+  return json_text(out, indent);
 }
 
 std::string decay_fit_json(const std::string& input, const ParsedScene& scene, const DecayFit& fit,
@@ -271,7 +276,7 @@ std::string decay_fit_json(const std::string& input, const ParsedScene& scene, c
     out["drag_theory"] = drag_to_json(*drag, *fitted.apparatus.decay);
   }
   out["warnings"] = warnings;
-  return text(out, 2);
+  return json_text(out, 2);
 }
 
 BatchLine batch_line(const std::string& input, const ParsedScene& scene, const Analysis& a) {
@@ -285,12 +290,12 @@ BatchLine batch_line(const std::string& input, const ParsedScene& scene, const A
                      {"expected_g_m_s2", a.expected_g ? json(a.expected_g->value) : json(nullptr)},
                      {"z", optional_number(a.z_score)},
                      {"warnings", scene.warnings.size() + a.warnings.size()}};
-  return {true, text(line, -1), csv_row(line)};
+  return {true, json_text(line, -1), csv_row(line)};
 }
 
 BatchLine batch_failure(const std::string& input, const std::string& error) {
   const json line = {{"input", input}, {"ok", false}, {"error", error}};
-  return {false, text(line, -1), csv_row(line)};
+  return {false, json_text(line, -1), csv_row(line)};
 }
 
 std::string batch_csv_header() {

@@ -54,7 +54,8 @@ T log1p_remainder(const T& x) {
 /// theta0m u / (1 + beta theta0m t E), u = e^{-alpha t}, E = (1 - u)/(alpha t)
 /// (1 at alpha t = 0). The one implementation of Eq. (25): decayed_amplitude,
 /// amplitude_decay (Eq. 50b) and the decay fit's vectorised kernel
-/// (lib/src/decay_kernel.cpp), which takes E from its own series, call it.
+/// (lib/src/decay_kernel.cpp, which forms E without expm1, so that it
+/// vectorises) call it.
 /// Always inlined: the kernel's file is compiled with -ffast-math, and an
 /// out-of-line copy from there must not serve the other files.
 /// \param theta0m initial amplitude (rad) > 0; \param beta (1/(s rad)) >= 0;

@@ -10,6 +10,7 @@
 
 #include "newton_decrement.hpp"
 #include "decay_kernel.hpp"
+#include "pendulum/numeric.hpp"
 #include "pendulum/scene_json.hpp"
 
 namespace pendulum {
@@ -335,7 +336,7 @@ void validate_decay_data(const DecayData& data, const std::string& path) {
                                            "; expected strictly increasing times (no repeats)");
     }
     if (!std::isfinite(data.amplitudes[i]) || data.amplitudes[i] <= 0.0 ||
-        data.amplitudes[i] >= 3.14159265358979323846) {
+        data.amplitudes[i] >= kPi) {
       throw InputError(at("amplitudes", i), "got " + number(data.amplitudes[i]) +
                                                 " rad; expected a positive amplitude below 180 deg");
     }

@@ -46,6 +46,15 @@ Command add_amplitude_command(CLI::App& app);
 /// `pendulum-g batch SCENES...`: many scenes -> one summary (cli/batch_command.cpp).
 Command add_batch_command(CLI::App& app);
 
+/// `pendulum-g report SCENE -o report.html`: the reduction as one HTML page
+/// or one SVG plot (cli/report_command.cpp).
+Command add_report_command(CLI::App& app);
+
+/// Writes `text` to `path` ("-": standard output) through a temporary file
+/// renamed over it, so that a failure leaves no partial file; throws
+/// InputError naming the path.
+void write_output(const std::string& path, const std::string& text);
+
 /// `pendulum-g fit-decay SCENE`: the decay record -> alpha, beta (cli/fit_decay_command.cpp).
 Command add_fit_decay_command(CLI::App& app);
 

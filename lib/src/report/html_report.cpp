@@ -22,7 +22,7 @@ h3 { font-size: 1.1rem; margin-top: 1.6rem; }
 p.meta { color: #333333; font-size: 0.92rem; }
 p.g { font-size: 1.35rem; font-weight: bold; margin: 0.6rem 0; }
 table { border-collapse: collapse; font-size: 0.88rem; margin: 0.5rem 0 1rem; }
-th, td { border-bottom: 1px solid #CCCCCC; padding: 0.22rem 0.5rem; text-align: left; vertical-align: top; }
+th, td { border-bottom: 1px solid #CCCCCC; padding: 0.22rem 0.5rem; text-align: left; vertical-align: baseline; }
 th { background: #F0F0F0; }
 td.method { overflow-wrap: anywhere; font-size: 0.8rem; }
 td.num, th.num { text-align: right; white-space: nowrap; font-variant-numeric: tabular-nums; }

@@ -6,6 +6,7 @@
 set -euo pipefail
 mode=$1 exe=$2 data=$3 out=$4
 mkdir -p "$out"
+out=$(realpath "$out") exe=$(realpath "$exe")
 
 # The pages: a scene, a scene with a decay record, a class (student_c fails,
 # so batch exits 1 by design), each with the height of its whole page (px).

@@ -146,12 +146,13 @@ std::optional<Figure> decay_figure(const SceneReport& r, const std::string& id) 
   p.observations.size = d.times.size() > 100 ? 2.2 : 4.0;
   for (double a : d.amplitudes) p.observations.y.push_back(a * kDegree);
   for (double s : d.sigmas) p.observations.y_error.push_back(s * kDegree);
-  // A dense record in grey, so that the fit shows through it.
-  p.observations.colour = d.times.size() > 100 ? Colour::grey : Colour::black;
+  // A dense record light, the fit dark over it: they differ in greyscale too.
+  const bool dense = d.times.size() > 100;
+  p.observations.colour = dense ? Colour::sky_blue : Colour::black;
   for (double a : d.fitted) p.model_at_x.push_back(a * kDegree);
   p.model.name = "fit of Eq. (25)";
   p.model.x = d.grid;
-  p.model.colour = Colour::vermillion;
+  p.model.colour = dense ? Colour::black : Colour::vermillion;
   p.model.width = 2.5;
   Band band;
   band.name = "fit \u00B1 1\u03C3 (from the covariance)";
@@ -161,11 +162,11 @@ std::optional<Figure> decay_figure(const SceneReport& r, const std::string& id) 
     band.lower.push_back((d.grid_fit[i] - d.grid_uncertainty[i]) * kDegree);
     band.upper.push_back((d.grid_fit[i] + d.grid_uncertainty[i]) * kDegree);
   }
-  band.colour = Colour::sky_blue;
+  band.colour = Colour::orange;
   p.model_band = band;
   p.description = std::to_string(d.times.size()) + " measured amplitudes in degrees from t = " +
                   format_significant(d.times.front(), 3) + " s to " + format_significant(d.times.back(), 4) +
-                  " s, with the fitted decay law of Nelson and Olsson Eq. (25), model " + d.model +
+                  " s, with the fit of Nelson and Olsson's decay law, " + d.model +
                   ", chi-squared " + format_significant(d.chi2, 4) + " for " + std::to_string(d.dof) +
                   " degrees of freedom; the lower panel shows measured minus fitted amplitude.";
   return fit_figure(p);

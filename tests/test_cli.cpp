@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <vector>
 #include <string>
@@ -167,6 +168,11 @@ TEST_CASE("Catalogue of bad scenes", "[cli][errors]") {
     // sanitizer report after it.
     CHECK(r.err.rfind("pendulum-g: error: ", 0) == 0);
     CHECK(r.err.find('\n') == r.err.size() - 1);
+    // report fails with the same message and writes nothing (docs/report.md).
+    const Run report = run("report " + file + " -o " + file + ".html");
+    CHECK(report.status == 1);
+    CHECK(report.err == r.err);
+    CHECK_FALSE(std::filesystem::exists(file + ".html"));
   }
   std::remove(file.c_str());
 }
@@ -531,4 +537,24 @@ TEST_CASE("batch --report: the class, sorted, failures, a section per scene", "[
   CHECK(run("batch --jobs 1 --report " + dir + "/again.html " + cls).status == 1);
   CHECK(page == pendulum::test::read_text(dir + "/again.html"));
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("report: a page for every valid scene of the catalogue, extreme or suspicious", "[cli][report]") {
+  const json catalogue =
+      json::parse(pendulum::test::read_text(std::string(PENDULUM_TESTS_DIR) + "/valid_scenes.json"));
+  const json base = json::parse(pendulum::test::read_text(kNelsonOlsson));
+  const std::string file = temporary_file();
+  // A number printed from NaN or infinity, not a word holding those letters.
+  const std::regex non_finite("(^|[^A-Za-z])-?(nan|inf)", std::regex::icase);
+  for (const json& entry : catalogue.at("cases")) {
+    std::ofstream(file, std::ios::binary) << pendulum::test::catalogue_text(entry, base);
+    const Run r = run("report " + file);
+    INFO(entry.at("name").get<std::string>() << "\nstderr: " << r.err);
+    REQUIRE(r.status == 0);
+    CHECK(external_reference(r.out) == "");
+    CHECK_FALSE(std::regex_search(r.out, non_finite));
+    CHECK(occurrences(r.out, "<svg ") >= 1);
+    CHECK(r.out.size() > 10000);
+  }
+  std::remove(file.c_str());
 }

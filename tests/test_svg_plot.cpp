@@ -56,6 +56,8 @@ TEST_CASE("nice_ticks: hand-worked cases of the 1-2-5 rule", "[report][ticks]") 
       {5.0, 5.0, 6, {4.0, 4.5, 5.0, 5.5, 6.0}, 1, "widened to [4, 6]; s=0.2: 30-20=10 > 6; s=0.5: 12-8=4"},
       {1.0, 0.0, 6, {0.0, 0.2, 0.4, 0.6, 0.8, 1.0}, 1, "swapped to [0, 1]"},
       {-0.042, -0.013, 4, {-0.05, -0.04, -0.03, -0.02, -0.01}, 2, "s=0.005: -2+9=7 > 4; s=0.01: -1+5=4"},
+      {0.0, 1e-300, 4, {-1.0, -0.5, 0.0, 0.5, 1.0}, 1,
+       "narrower than 1e-290: one value, widened to 5e-301 -+ 1; s=0.2: 5+5=10 > 4; s=0.5: 2+2=4"},
   };
   for (const auto& c : cases) {
     INFO("[" << c.lo << ", " << c.hi << "] max " << c.max_intervals << ": " << c.worked);
@@ -69,6 +71,7 @@ TEST_CASE("nice_ticks: hand-worked cases of the 1-2-5 rule", "[report][ticks]") 
 
 TEST_CASE("nice_ticks refuses what it cannot place", "[report][ticks]") {
   CHECK_THROWS_AS(nice_ticks(0.0, std::numeric_limits<double>::infinity()), std::invalid_argument);
+  CHECK_THROWS_AS(nice_ticks(-1e308, 1e308), std::invalid_argument);  // hi - lo overflows
   CHECK_THROWS_AS(nice_ticks(std::nan(""), 1.0), std::invalid_argument);
   CHECK_THROWS_AS(nice_ticks(0.0, 1.0, 0), std::invalid_argument);
 }
@@ -80,6 +83,16 @@ TEST_CASE("log_ticks: the decades around the data", "[report][ticks]") {
   // Exact decades are their own ends; a range inside one decade gets that decade.
   CHECK(log_ticks(1.0, 100.0).values == std::vector<double>{1.0, 10.0, 100.0});
   CHECK(log_ticks(2.0, 3.0).values == std::vector<double>{1.0, 10.0});
+  // 301 decades: every 50th labelled (at most 7 labels), the first at 1e-300.
+  const Ticks wide = log_ticks(1e-300, 1.0);
+  CHECK(wide.values.size() == 301);
+  CHECK(wide.label_every == 50);
+  CHECK(wide.values.front() == 1e-300);
+  // Subnormal decades: the lowest is a positive double at or below lo, not 0
+  // (was: 1/10^320 = 0, and log10(0) drew at -nan).
+  const Ticks tiny = log_ticks(1e-320, 1e-319);
+  CHECK(tiny.values.front() > 0.0);
+  CHECK(tiny.values.front() <= 1e-320);
   CHECK_THROWS_AS(log_ticks(0.0, 1.0), std::invalid_argument);
   CHECK_THROWS_AS(log_ticks(2.0, 1.0), std::invalid_argument);
 }
@@ -92,11 +105,17 @@ TEST_CASE("Number formats: fixed, significant, with uncertainty", "[report][form
   CHECK(format_significant(0.0331, 3) == "0.0331");
   CHECK(format_significant(-281.6412, 3) == "\u2212282");
   CHECK(format_significant(0.0, 3) == "0");
+  CHECK(format_significant(123456.7, 3) == "123000");
+  CHECK(format_significant(1.234e-300, 3) == "1.23\u00D710\u207B\u00B3\u2070\u2070");  // 1.23×10⁻³⁰⁰
+  CHECK(format_significant(6.02e23, 3) == "6.02\u00D710\u00B2\u00B3");
+  CHECK(times_ten_to(-5) == "\u00D710\u207B\u2075");
   // The uncertainty to two significant digits, the value to the same place.
   CHECK(value_with_uncertainty(596.0018, 119.1828, true) == "+596 \u00B1 119");
   CHECK(value_with_uncertainty(9.803402845946488, 0.001481899216290776, false) == "9.8034 \u00B1 0.0015");
   CHECK(value_with_uncertainty(0.0331, 0.0029, true) == "+0.0331 \u00B1 0.0029");
   CHECK(value_with_uncertainty(-77.05, 18.19, true) == "\u221277 \u00B1 18");
+  // Beyond 8 decimals: one power of ten for both.
+  CHECK(value_with_uncertainty(1.23e-9, 4.5e-11, false) == "(1.230 \u00B1 0.045)\u00D710\u207B\u2079");
   CHECK(xml_escape("a<b & \"c\" 'd'>") == "a&lt;b &amp; &quot;c&quot; &#39;d&#39;&gt;");
 }
 

@@ -49,16 +49,24 @@ Figure fit_figure(const FitPlotData& d) {
 }
 
 std::string value_with_uncertainty(double value, double uncertainty, bool sign) {
-  std::string v, u;
-  if (uncertainty > 0.0 && std::isfinite(uncertainty)) {
-    const int decimals = std::clamp(1 - static_cast<int>(std::floor(std::log10(uncertainty))), 0, 12);
-    v = format_fixed(value, decimals);
-    u = " \u00B1 " + format_fixed(uncertainty, decimals);
-  } else {
-    v = format_significant(value, 4);
+  const std::string plus = sign && value > 0.0 ? "+" : "";
+  if (!(uncertainty > 0.0) || !std::isfinite(uncertainty)) {
+    const std::string v = format_significant(value, 4);
+    return (v.find_first_not_of("0.") == std::string::npos ? "" : plus) + v;
   }
-  if (sign && value > 0.0 && v.find_first_not_of("0.") != std::string::npos) v = "+" + v;
-  return v + u;
+  const int ku = static_cast<int>(std::floor(std::log10(uncertainty)));
+  const int decimals = 1 - ku;
+  if (decimals <= 8 && std::abs(value) < 1e6) {
+    const std::string v = format_fixed(value, std::max(0, decimals));
+    return (v.find_first_not_of("0.") == std::string::npos ? "" : plus) + v + " \u00B1 " +
+           format_fixed(uncertainty, std::max(0, decimals));
+  }
+  // Very small or large: both over one power of ten, "(1.23 ± 0.45)×10⁻⁹".
+  const int e = static_cast<int>(std::floor(std::log10(std::max(std::abs(value), uncertainty))));
+  const double scale = std::pow(10.0, e);
+  const int d = std::max(0, e - ku + 1);
+  return "(" + plus + format_fixed(value / scale, d) + " \u00B1 " + format_fixed(uncertainty / scale, d) + ")" +
+         times_ten_to(e);
 }
 
 std::optional<CategoryChart> corrections_chart(const SceneReport& r, const std::string& id) {

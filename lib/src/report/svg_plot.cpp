@@ -11,15 +11,19 @@ namespace pendulum::report {
 
 namespace {
 
-// 10^n for 0 <= n <= 22: exact in double, so that i*m/10^n is the double
-// nearest the decimal tick value.
+// 10^n, exact in double for 0 <= n <= 22 (so that i*m/10^n is the double
+// nearest the decimal tick value).
 double power_of_ten(int n) {
+  if (n > 22) return std::pow(10.0, n);
   double p = 1.0;
   for (int i = 0; i < n; ++i) p *= 10.0;
   return p;
 }
 
-double decade(int k) { return k >= 0 ? power_of_ten(k) : 1.0 / power_of_ten(-k); }
+// 10^k: the exact quotient near 1, pow (with subnormals) far below.
+double decade(int k) { return k >= -22 ? (k >= 0 ? power_of_ten(k) : 1.0 / power_of_ten(-k)) : std::pow(10.0, k); }
+
+int exponent_of(double v) { return static_cast<int>(std::floor(std::log10(std::abs(v)))); }
 
 }  // namespace
 
@@ -28,10 +32,13 @@ Ticks nice_ticks(double lo, double hi, int max_intervals) {
     throw std::invalid_argument("nice_ticks: non-finite limits or no interval");
   }
   if (lo > hi) std::swap(lo, hi);
-  if (lo == hi) {
-    const double d = std::max(std::abs(lo) / 10.0, 1.0);
-    lo -= d;
-    hi += d;
+  if (!std::isfinite(hi - lo)) throw std::invalid_argument("nice_ticks: range too wide for a double");
+  // A range that doubles barely resolve at its magnitude, or so narrow that
+  // its steps would underflow, counts as one value.
+  if (hi - lo <= 1e-12 * std::max(std::abs(lo), std::abs(hi)) || hi - lo < 1e-290) {
+    const double mid = lo / 2 + hi / 2, d = std::max(std::abs(mid) / 10.0, 1.0);
+    lo = mid - d;
+    hi = mid + d;
   }
   // lo/s and hi/s within 1e-9 of an integer count as that integer, so that
   // 9.79/0.01 = 978.9999999 still starts at 979.
@@ -60,11 +67,13 @@ Ticks log_ticks(double lo, double hi) {
   if (!(lo > 0.0) || !(hi >= lo) || !std::isfinite(hi)) {
     throw std::invalid_argument("log_ticks: needs 0 < lo <= hi, finite");
   }
-  const int a = static_cast<int>(std::floor(std::log10(lo) + 1e-12));
+  // 1e-323 is the smallest decade a double holds (a subnormal).
+  const int a = std::max(-323, static_cast<int>(std::floor(std::log10(lo) + 1e-12)));
   int b = static_cast<int>(std::ceil(std::log10(hi) - 1e-12));
   if (b == a) ++b;
   Ticks t;
   for (int k = a; k <= b; ++k) t.values.push_back(decade(k));
+  t.label_every = (b - a + 5) / 6;  // at most 7 labels
   t.lo = t.values.front();
   t.hi = t.values.back();
   t.decimals = std::max(0, -a);
@@ -80,13 +89,22 @@ std::string format_fixed(double value, int decimals) {
   return "\u2212" + s.substr(1);
 }
 
+std::string times_ten_to(int exponent) {
+  static const char* const digits[] = {"\u2070", "\u00B9", "\u00B2", "\u00B3", "\u2074",
+                                       "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};
+  std::string s;
+  for (char c : std::to_string(std::abs(exponent))) s += digits[c - '0'];
+  return "\u00D710" + std::string(exponent < 0 ? "\u207B" : "") + s;
+}
+
 std::string format_significant(double value, int significant) {
   if (value == 0.0 || !std::isfinite(value)) return format_fixed(value, 0);
   // Round first, so that 9.996 to 3 digits is 10.0, not 10.00.
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.*e", significant - 1, value);
   const double rounded = std::strtod(buffer, nullptr);
-  const int k = static_cast<int>(std::floor(std::log10(std::abs(rounded))));
+  const int k = exponent_of(rounded);
+  if (k < -4 || k >= 6) return format_fixed(rounded / decade(k), significant - 1) + times_ten_to(k);
   return format_fixed(rounded, std::max(0, significant - 1 - k));
 }
 
@@ -246,24 +264,63 @@ Ticks axis_ticks(const Axis& axis, Range r, int max_intervals) {
 
 std::string tick_label(const Ticks& t, const Axis& axis, double v) {
   if (axis.scale == Scale::log) {
-    return format_fixed(v, std::max(0, -static_cast<int>(std::floor(std::log10(v) + 1e-12))));
+    const int k = static_cast<int>(std::lround(std::log10(v)));
+    return std::abs(k) <= 4 ? format_fixed(v, std::max(0, -k)) : "10" + times_ten_to(k).substr(3);
   }
-  return format_fixed(v, t.decimals);
+  const double largest = std::max(std::abs(t.lo), std::abs(t.hi));
+  if (t.decimals <= 6 && largest < 1e6) return format_fixed(v, t.decimals);
+  // Very small or large: a mantissa with the digits the step needs, times a
+  // power of ten common to the axis.
+  if (v == 0.0) return "0";
+  const int e = exponent_of(largest), k = static_cast<int>(std::floor(std::log10(t.step) + 1e-9));
+  return format_fixed(v / decade(e), std::max(0, e - k)) + times_ten_to(e);
 }
+
+bool labelled(const Ticks& t, std::size_t i) { return i % static_cast<std::size_t>(t.label_every) == 0; }
 
 double max_tick_label_width(const Ticks& t, const Axis& axis) {
   double w = 0.0;
-  for (double v : t.values) w = std::max(w, text_width(tick_label(t, axis, v), kTickFont));
+  for (std::size_t i = 0; i < t.values.size(); ++i) {
+    if (labelled(t, i)) w = std::max(w, text_width(tick_label(t, axis, t.values[i]), kTickFont));
+  }
   return w;
 }
 
-/// Minor ticks of a log axis: 2..9 times each decade inside it.
+/// Minor ticks of a log axis: 2..9 times each decade inside it, when every
+/// decade is labelled.
 std::vector<double> log_minor_ticks(const Ticks& t) {
   std::vector<double> minor;
+  if (t.label_every > 1) return minor;
   for (std::size_t i = 0; i + 1 < t.values.size(); ++i) {
     for (int m = 2; m <= 9; ++m) minor.push_back(m * t.values[i]);
   }
   return minor;
+}
+
+/// Grid lines and ticks of an x axis under a plot from y_top to y_bottom;
+/// labels only on the bottom panel, and only every label_every-th.
+void draw_x_ticks(Canvas& c, const Ticks& t, const Axis& axis, const Mapping& m, double y_top, double y_bottom,
+                  bool labels) {
+  for (std::size_t i = 0; i < t.values.size(); ++i) {
+    const double x = m(t.values[i]);
+    c.line(x, y_bottom, x, y_bottom + (labelled(t, i) ? 6 : 3), "#000000", 1.0);
+    if (!labelled(t, i)) continue;
+    c.line(x, y_top, x, y_bottom, kGrid, 1.0);
+    if (labels) c.text(x, y_bottom + 20, tick_label(t, axis, t.values[i]), kTickFont, "middle");
+  }
+  for (double v : log_minor_ticks(t)) c.line(m(v), y_bottom, m(v), y_bottom + 3, "#000000", 1.0);
+}
+
+/// The same for a y axis left of a plot from x_left to x_right.
+void draw_y_ticks(Canvas& c, const Ticks& t, const Axis& axis, const Mapping& m, double x_left, double x_right) {
+  for (std::size_t i = 0; i < t.values.size(); ++i) {
+    const double y = m(t.values[i]);
+    c.line(x_left - (labelled(t, i) ? 6 : 3), y, x_left, y, "#000000", 1.0);
+    if (!labelled(t, i)) continue;
+    c.line(x_left, y, x_right, y, kGrid, 1.0);
+    c.text(x_left - 9, y + 4.5, tick_label(t, axis, t.values[i]), kTickFont, "end");
+  }
+  for (double v : log_minor_ticks(t)) c.line(x_left - 3, m(v), x_left, m(v), "#000000", 1.0);
 }
 
 /// A legend entry's sample drawing and text.
@@ -420,22 +477,8 @@ std::string to_svg(const Figure& f, bool standalone) {
     const Mapping my{p.y.scale, ty.lo, ty.hi, y0 + p.height, y0};
     const bool bottom = i + 1 == f.panels.size();
     // Grid and ticks.
-    for (double v : ty.values) {
-      c.line(left, my(v), left + plot_width, my(v), kGrid, 1.0);
-      c.line(left - 6, my(v), left, my(v), "#000000", 1.0);
-      c.text(left - 9, my(v) + 4.5, tick_label(ty, p.y, v), kTickFont, "end");
-    }
-    if (p.y.scale == Scale::log) {
-      for (double v : log_minor_ticks(ty)) c.line(left - 3, my(v), left, my(v), "#000000", 1.0);
-    }
-    for (double v : xt.values) {
-      c.line(mx(v), y0, mx(v), y0 + p.height, kGrid, 1.0);
-      c.line(mx(v), y0 + p.height, mx(v), y0 + p.height + 6, "#000000", 1.0);
-      if (bottom) c.text(mx(v), y0 + p.height + 20, tick_label(xt, f.x, v), kTickFont, "middle");
-    }
-    if (f.x.scale == Scale::log) {
-      for (double v : log_minor_ticks(xt)) c.line(mx(v), y0 + p.height, mx(v), y0 + p.height + 3, "#000000", 1.0);
-    }
+    draw_y_ticks(c, ty, p.y, my, left, left + plot_width);
+    draw_x_ticks(c, xt, f.x, mx, y0, y0 + p.height, bottom);
     const double cy = y0 + p.height / 2.0;
     c.text(16.0, cy, p.y.label, kLabelFont, "middle",
            " transform=\"rotate(-90 16.00 " + num(cy) + ")\" dominant-baseline=\"middle\"");
@@ -527,6 +570,9 @@ std::string to_svg(const CategoryChart& ch, bool standalone) {
   const bool bars = std::any_of(ch.series.begin(), ch.series.end(),
                                 [](const CategorySeries& s) { return s.mark == CategorySeries::Mark::bar; });
   if (bars) value_axis.include_zero = true;
+  // A log axis shows the nine decades below the largest value; anything
+  // smaller is not drawn (its note still gives it).
+  if (log && !vr.empty()) vr.lo = std::max(vr.lo, vr.hi * 1e-9);
   const Ticks t = axis_ticks(value_axis, vr, 6);
 
   double label_w = 0.0, note_w = 0.0;
@@ -535,8 +581,8 @@ std::string to_svg(const CategoryChart& ch, bool standalone) {
   const double left = 12.0 + label_w + 10.0;
   const double right = std::max(note_w > 0.0 ? note_w + 14.0 : 0.0,
                                  10.0 + text_width(tick_label(t, value_axis, t.hi), kTickFont) / 2.0);
-  const double plot_width = ch.width - left - right;
-  if (plot_width < 120.0) throw std::invalid_argument("chart \"" + ch.id + "\": labels leave no room to plot");
+  // Long labels widen the chart rather than squeeze the plot; a page scales it down.
+  const double width = std::max(ch.width, left + right + 360.0), plot_width = width - left - right;
 
   std::vector<LegendEntry> legend;
   for (const auto& r : ch.references) if (!r.name.empty()) legend.push_back(reference_legend(r, true));
@@ -564,24 +610,17 @@ std::string to_svg(const CategoryChart& ch, bool standalone) {
       legend.push_back(e);
     }
   }
-  const double title_h = 30.0, legend_h = legend_height(legend, ch.width - 24.0), row_h = 28.0;
+  const double title_h = 30.0, legend_h = legend_height(legend, width - 24.0), row_h = 28.0;
   const double top = title_h + legend_h + 8.0, plot_h = row_h * static_cast<double>(rows);
   const double height = top + plot_h + 22.0 + 26.0 + 8.0;
 
   Canvas c;
-  c.raw(svg_open(ch.id, ch.title, ch.description, ch.width, height, standalone));
+  c.raw(svg_open(ch.id, ch.title, ch.description, width, height, standalone));
   c.text(12.0, 21.0, ch.title, kTitleFont, "start", " font-weight=\"bold\"");
-  draw_legend(c, legend, 12.0, title_h, ch.width - 24.0);
+  draw_legend(c, legend, 12.0, title_h, width - 24.0);
 
   const Mapping mv{value_axis.scale, t.lo, t.hi, left, left + plot_width};
-  for (double v : t.values) {
-    c.line(mv(v), top, mv(v), top + plot_h, kGrid, 1.0);
-    c.line(mv(v), top + plot_h, mv(v), top + plot_h + 6, "#000000", 1.0);
-    c.text(mv(v), top + plot_h + 20, tick_label(t, value_axis, v), kTickFont, "middle");
-  }
-  if (log) {
-    for (double v : log_minor_ticks(t)) c.line(mv(v), top + plot_h, mv(v), top + plot_h + 3, "#000000", 1.0);
-  }
+  draw_x_ticks(c, t, value_axis, mv, top, top + plot_h, true);
   c.text(left + plot_width / 2.0, top + plot_h + 44.0, value_axis.label, kLabelFont, "middle");
 
   for (const auto& r : ch.references) {
@@ -609,6 +648,7 @@ std::string to_svg(const CategoryChart& ch, bool standalone) {
       const auto& se = ch.series[in_row[r][k]];
       const char* colour = colour_hex(se.colour);
       const double v = *se.values[r];
+      if (log && v < t.lo) continue;
       const double e = se.errors.empty() || !se.errors[r] ? 0.0 : *se.errors[r];
       const double y = row_top + 4.0 + slot * (static_cast<double>(k) + 0.5);
       if (se.mark == CategorySeries::Mark::bar) {

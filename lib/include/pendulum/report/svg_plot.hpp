@@ -23,6 +23,7 @@ struct Ticks {
   double step = 0.0;   ///< between ticks (0 on a log axis)
   std::vector<double> values;
   int decimals = 0;    ///< digits after the point that print every tick exactly
+  int label_every = 1;  ///< label every n-th tick (log axes over many decades)
 };
 
 /// Linear ticks ("nice numbers"). Rule: the step is the smallest m 10^k,
@@ -34,16 +35,21 @@ struct Ticks {
 Ticks nice_ticks(double lo, double hi, int max_intervals = 6);
 
 /// Log ticks: the decades 10^k from the one at or below lo to the one at or
-/// above hi (0 < lo <= hi). Throws std::invalid_argument otherwise.
+/// above hi (0 < lo <= hi), at most 7 of them labelled. Throws
+/// std::invalid_argument otherwise.
 Ticks log_ticks(double lo, double hi);
 
 /// A number with `decimals` fixed digits after the point, "-0" printed as
 /// "0", the minus sign as U+2212.
 std::string format_fixed(double value, int decimals);
 
-/// A number with `significant` significant digits in fixed notation (no
-/// exponent), for labels: 596.0, 0.0331, 12.
+/// A number with `significant` significant digits, for labels: 596.0,
+/// 0.0331, 12; below 1e-4 and from 1e6 on as a mantissa times a power of
+/// ten: 1.23×10⁻³⁰⁰.
 std::string format_significant(double value, int significant);
+
+/// "×10" and the exponent in superscript digits: times_ten_to(-5) is "×10⁻⁵".
+std::string times_ten_to(int exponent);
 
 /// Escapes & < > " ' for XML text and attributes.
 std::string xml_escape(const std::string& text);
@@ -138,7 +144,8 @@ struct CategorySeries {
 /// Horizontal rows, one per category, with bars or points along one value
 /// axis: long labels stay readable, and a log axis shows sizes that span
 /// decades. On a log axis a bar starts at the axis and an error bar that
-/// reaches below it is cut there, without its cap.
+/// reaches below it is cut there, without its cap; the axis spans at most
+/// nine decades below the largest value, and smaller values are not drawn.
 struct CategoryChart {
   std::string id, title, description;
   std::vector<std::string> categories;  ///< row labels, top to bottom

@@ -239,3 +239,30 @@ TEST_CASE("CategoryChart on a log axis: bars, cut error bars, links", "[report][
   // Two bars (frame and background are the other rects).
   CHECK(count(svg, "<rect") == 2 + 2);
 }
+
+TEST_CASE("class_chart: sorted by g; one expected line, a marker per row, or none", "[report][class]") {
+  const Measured site{9.8026, 0.0};
+  std::vector<ClassPoint> points{{"b", "#scene-1", 9.8324, 0.0058, site, 5.18},
+                                 {"a", "#scene-2", 9.8034, 0.0015, site, 0.54},
+                                 {"c", "#scene-3", 9.7000, 0.0100, site, -10.26}};
+  const CategoryChart shared = class_chart(points, "class");
+  CHECK(shared.categories == std::vector<std::string>{"c", "a", "b"});
+  CHECK(shared.links == std::vector<std::string>{"#scene-3", "#scene-2", "#scene-1"});
+  CHECK(shared.notes == std::vector<std::string>{"z = \u221210.26", "z = +0.54", "z = +5.18"});
+  CHECK(shared.series.size() == 1);
+  REQUIRE(shared.references.size() == 1);
+  CHECK(shared.references[0].value == 9.8026);
+
+  points[2].expected = Measured{9.7803, 0.0005};  // another site
+  const CategoryChart sites = class_chart(points, "class");
+  CHECK(sites.references.empty());
+  REQUIRE(sites.series.size() == 2);
+  CHECK(sites.series[1].values[0] == std::optional<double>(9.7803));
+
+  for (auto& p : points) p.expected.reset(), p.z.reset();
+  const CategoryChart none = class_chart(points, "class");
+  CHECK(none.references.empty());
+  CHECK(none.series.size() == 1);
+  CHECK(none.notes[0] == "no expected g");
+  CHECK_FALSE(has_non_finite(to_svg(none, false)));
+}

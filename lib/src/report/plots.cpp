@@ -212,7 +212,7 @@ CategoryChart class_chart(std::vector<ClassPoint> points, const std::string& id)
     line.value = e.value;
     line.half_width = e.uncertainty;
     ch.references.push_back(line);
-  } else {
+  } else if (std::any_of(expected.values.begin(), expected.values.end(), [](const auto& v) { return v.has_value(); })) {
     ch.series.push_back(expected);
   }
   ch.description = std::to_string(points.size()) +

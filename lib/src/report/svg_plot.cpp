@@ -142,6 +142,7 @@ namespace {
 
 constexpr double kTickFont = 13.0, kLabelFont = 14.0, kTitleFont = 16.0;
 constexpr const char* kGrid = "#DDDDDD";
+constexpr double kChartMarker = 4.5;  // marker radius in a CategoryChart (px)
 
 // Width of a text in DejaVu Sans, generously (digits are 0.64 em).
 double text_width(const std::string& s, double font) {
@@ -594,20 +595,11 @@ std::string to_svg(const CategoryChart& ch, bool standalone) {
                                  colour_hex(se.colour));
                         }});
     } else {
-      Points p;
-      p.name = se.name;
-      p.colour = se.colour;
-      p.marker = se.marker;
-      p.filled = se.filled;
-      if (!se.errors.empty()) p.y_error = {1.0};
-      LegendEntry e = points_legend(p);
-      if (!se.errors.empty()) {  // a horizontal error bar in this chart
-        e.sample = [p](Canvas& c, double x, double y) {
-          c.line(x + 3, y, x + 25, y, colour_hex(p.colour), 1.2);
-          c.marker(p.marker, x + 14, y, p.size, colour_hex(p.colour), p.filled);
-        };
-      }
-      legend.push_back(e);
+      const bool error_bars = !se.errors.empty();
+      legend.push_back({se.name, [se, error_bars](Canvas& c, double x, double y) {
+                          if (error_bars) c.line(x + 3, y, x + 25, y, "#000000", 1.2);  // as in the rows
+                          c.marker(se.marker, x + 14, y, kChartMarker, colour_hex(se.colour), se.filled);
+                        }});
     }
   }
   const double title_h = 30.0, legend_h = legend_height(legend, width - 24.0), row_h = 28.0;
@@ -663,7 +655,7 @@ std::string to_svg(const CategoryChart& ch, bool standalone) {
         if (!cut) c.line(a, y - 4, a, y + 4, "#000000", 1.2);
         c.line(b, y - 4, b, y + 4, "#000000", 1.2);
       }
-      if (se.mark == CategorySeries::Mark::point) c.marker(se.marker, mv(v), y, 4.5, colour, se.filled);
+      if (se.mark == CategorySeries::Mark::point) c.marker(se.marker, mv(v), y, kChartMarker, colour, se.filled);
     }
   }
   c.rect(left, top, plot_width, plot_h, "none", "#000000");

@@ -34,7 +34,8 @@ svg { max-width: 100%; height: auto; display: block; }
 figcaption { font-size: 0.85rem; color: #333333; margin-top: 0.3rem; }
 ul.warnings li { color: #8B2500; }
 code { font-size: 0.9em; }
-@media print { body { max-width: none; } section.scene { break-before: page; } figure, table { break-inside: avoid; } }
+@media print { body { max-width: none; } section.scene { break-before: page; } h1 + section.scene { break-before: auto; }
+  h2, h3 { break-after: avoid; } figure, table { break-inside: avoid; } }
 )";
 
 std::string signed_fixed(double v, int decimals) { return (v > 0.0 ? "+" : "") + format_fixed(v, decimals); }

@@ -558,3 +558,17 @@ TEST_CASE("report: a page for every valid scene of the catalogue, extreme or sus
   }
   std::remove(file.c_str());
 }
+
+TEST_CASE("report: text from the scene is escaped, never markup", "[cli][report]") {
+  const std::string dir = temporary_directory();
+  json scene = json::parse(pendulum::test::read_text(kNelsonOlsson));
+  scene["title"] = "<script>alert(\"g\")</script> & <b>co</b>";
+  scene["source"] = "notebook p. 3 <img onerror=x>";
+  std::ofstream(dir + "/odd.json") << scene.dump();
+  const Run r = run("report " + dir + "/odd.json");
+  REQUIRE(r.status == 0);
+  CHECK(external_reference(r.out) == "");
+  CHECK_THAT(r.out, Contains("<h2>&lt;script&gt;alert(&quot;g&quot;)&lt;/script&gt; &amp; &lt;b&gt;co&lt;/b&gt;</h2>"));
+  CHECK_THAT(r.out, Contains("notebook p. 3 &lt;img onerror=x&gt;"));
+  std::filesystem::remove_all(dir);
+}

@@ -101,6 +101,7 @@ TEST_CASE("Number formats: fixed, significant, with uncertainty", "[report][form
   CHECK(format_fixed(-0.0001, 2) == "0.00");  // no "-0.00"
   CHECK(format_fixed(-1.5, 1) == "\u22121.5");  // a true minus sign
   CHECK(format_fixed(9.80340, 5) == "9.80340");
+  CHECK(format_fixed(1e300, 0).size() == 301);  // however long: no fixed buffer
   CHECK(format_significant(9.996, 3) == "10.0");  // rounded before counting digits
   CHECK(format_significant(0.0331, 3) == "0.0331");
   CHECK(format_significant(-281.6412, 3) == "\u2212282");

@@ -81,9 +81,8 @@ Ticks log_ticks(double lo, double hi) {
 }
 
 std::string format_fixed(double value, int decimals) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
-  std::string s = buffer;
+  std::string s(static_cast<std::size_t>(std::snprintf(nullptr, 0, "%.*f", decimals, value)), '\0');
+  std::snprintf(s.data(), s.size() + 1, "%.*f", decimals, value);
   if (s[0] != '-') return s;
   if (s.find_first_not_of("-0.") == std::string::npos) return s.substr(1);  // "-0.00"
   return "\u2212" + s.substr(1);

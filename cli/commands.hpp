@@ -14,6 +14,10 @@
 
 #include "pendulum/amplitude.hpp"
 
+namespace pendulum {
+struct AnalysisOptions;
+}
+
 namespace pendulum::cli {
 
 /// A registered subcommand and the function that runs it.
@@ -35,6 +39,10 @@ void print_warnings(const std::vector<std::string>& warnings);
 /// The finite-amplitude methods by their output names, `auto` included
 /// when the command can choose.
 std::map<std::string, AmplitudeMethod> amplitude_methods(bool with_auto);
+
+/// The options of an analysis (--negligible-fraction, --amplitude-method,
+/// --series-terms), shared by the commands that reduce one scene.
+void add_analysis_options(CLI::App& cmd, AnalysisOptions& options);
 
 /// `pendulum-g reduce SCENE`: scene -> corrected g (cli/reduce_command.cpp).
 Command add_reduce_command(CLI::App& app);

@@ -62,9 +62,7 @@ Command add_report_command(CLI::App& app) {
       ->check(CLI::IsMember({"html", "svg"}));
   cmd->add_option("--plot", o->plot, "The plot for --format svg: corrections, budget, decay (implies svg)")
       ->check(CLI::IsMember({"corrections", "budget", "decay"}));
-  cmd->add_option("--negligible-fraction", o->analysis.negligible_fraction,
-                  "Flag a correction negligible below this fraction of the period's uncertainty (default 0.1)")
-      ->check(CLI::Range(0.0, 1e6));
+  add_analysis_options(*cmd, o->analysis);
 
   return {cmd, [o, cmd] {
     const bool svg = !o->plot.empty() || o->format == "svg";

@@ -14,8 +14,8 @@
 
 #include "commands.hpp"
 #include "pendulum/analysis.hpp"
+#include "pendulum/output.hpp"
 #include "pendulum/report/html_report.hpp"
-#include "pendulum/result_json.hpp"
 #include "pendulum/scene_json.hpp"
 
 namespace pendulum::cli {
@@ -67,14 +67,14 @@ std::vector<Job> gather(const std::vector<std::string>& paths, const std::string
 
 /// The summary line of one scene and, for --report, its report; never throws.
 struct Outcome {
-  nlohmann::ordered_json line;
+  BatchLine line;
   report::ClassEntry entry;
 };
 Outcome process(const Job& job, const AnalysisOptions& options, bool with_report) {
   try {
     const ParsedScene scene = parse_scene(job.text ? *job.text : read_input(job.name));
     const Analysis analysis = analyse(scene, options);
-    Outcome out{batch_summary(job.name, scene, analysis), {job.name, std::nullopt, ""}};
+    Outcome out{batch_line(job.name, scene, analysis), {job.name, std::nullopt, ""}};
     if (with_report) out.entry.report = report::make_scene_report(job.name, scene, analysis);
     return out;
   } catch (const InputError& e) {
@@ -134,15 +134,15 @@ Command add_batch_command(CLI::App& app) {
     std::size_t failed = 0;
     if (o->format == "csv") std::cout << batch_csv_header();
     for (std::size_t i = 0; i < jobs.size(); ++i) {
-      nlohmann::ordered_json line;
+      BatchLine line;
       {
         std::unique_lock<std::mutex> lock(mutex);
         ready.wait(lock, [&] { return results[i].has_value(); });
         line = std::move(results[i]->line);
         if (!o->report.empty()) entries.push_back(std::move(results[i]->entry));
       }
-      failed += !line.at("ok").get<bool>();
-      std::cout << (o->format == "csv" ? batch_csv_row(line) : json_text(line, -1) + "\n");
+      failed += !line.ok;
+      std::cout << (o->format == "csv" ? line.csv : line.json + "\n");
       const auto now = std::chrono::steady_clock::now();
       if (progress && (now - last_progress > std::chrono::milliseconds(100) || i + 1 == jobs.size())) {
         last_progress = now;

@@ -10,7 +10,6 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include "pendulum/amplitude.hpp"
 
@@ -28,10 +27,6 @@ struct Command {
 
 /// The text of a file, or of standard input for "-".
 std::string read_input(const std::string& file);
-
-/// JSON as printed by every command (indent -1: one line). A file name that
-/// is not UTF-8 prints its bad bytes as U+FFFD instead of failing.
-std::string json_text(const nlohmann::ordered_json& j, int indent = 2);
 
 /// Each warning on stderr, prefixed "pendulum-g: warning: ".
 void print_warnings(const std::vector<std::string>& warnings);

@@ -31,10 +31,6 @@ std::string read_input(const std::string& file) {
   return text;
 }
 
-std::string json_text(const nlohmann::ordered_json& j, int indent) {
-  return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
-}
-
 void print_warnings(const std::vector<std::string>& warnings) {
   for (const auto& w : warnings) std::cerr << "pendulum-g: warning: " << w << "\n";
 }

@@ -4,7 +4,7 @@
 
 #include "commands.hpp"
 #include "pendulum/analysis.hpp"
-#include "pendulum/result_json.hpp"
+#include "pendulum/output.hpp"
 #include "pendulum/scene_json.hpp"
 
 namespace pendulum::cli {
@@ -28,8 +28,8 @@ Command add_reduce_command(CLI::App& app) {
     const Analysis analysis = analyse(scene, o->analysis);
     const std::string text =
         o->format == "table"
-            ? result_to_table(scene, analysis)
-            : json_text(result_to_json(scene, analysis, o->analysis, o->file)) + "\n";
+            ? result_table(scene, analysis)
+            : result_json(scene, analysis, o->analysis, o->file) + "\n";
     print_warnings(scene.warnings);
     print_warnings(analysis.warnings);
     std::cout << text;

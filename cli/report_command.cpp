@@ -12,6 +12,7 @@
 #include "pendulum/analysis.hpp"
 #include "pendulum/report/html_report.hpp"
 #include "pendulum/report/plots.hpp"
+#include "pendulum/input_error.hpp"
 #include "pendulum/scene_json.hpp"
 
 namespace pendulum::cli {
@@ -60,8 +61,8 @@ Command add_report_command(CLI::App& app) {
   cmd->add_option("-o,--output", o->output, "Output file (default: standard output); written whole or not at all");
   cmd->add_option("--format", o->format, "html (default: the whole report) or svg (one plot, see --plot)")
       ->check(CLI::IsMember({"html", "svg"}));
-  cmd->add_option("--plot", o->plot, "The plot for --format svg: corrections, budget, decay (implies svg)")
-      ->check(CLI::IsMember({"corrections", "budget", "decay"}));
+  cmd->add_option("--plot", o->plot, "The plot for --format svg: corrections, budget, decay, series (implies svg)")
+      ->check(CLI::IsMember({"corrections", "budget", "decay", "series"}));
   add_analysis_options(*cmd, o->analysis);
 
   return {cmd, [o, cmd] {

@@ -241,12 +241,15 @@ TEST_CASE("The bundled record gives back the paper's alpha and beta, and Table I
   // issue 2 tolerance plus twice the row's own uncertainty, propagated from
   // the fit's covariance through the reduction by automatic differentiation.
   using J = ceres::Jet<double, 2>;
-  const ParsedScene fitted = with_fitted_decay(scene, f);
-  const Scene<J> dual = convert_scene<J>(fitted.value, [](const char* path, double x) {
-    const std::string p = path;
+  ParsedScene fitted = scene;
+  use_fitted_decay(fitted, f);
+  const Apparatus<J> dual = convert_apparatus<J>(fitted.apparatus, [](const Field& field, double x) {
+    const std::string p = field.path;
     return p == "decay.alpha" ? J(x, 0) : p == "decay.beta" ? J(x, 1) : J(x);
   });
-  const Reduction<J> r = reduce(dual);
+  const Observation<J> observation =
+      convert_observation<J>(fitted.observations[0], [](const Field&, double x) { return J(x); });
+  const Reduction<J> r = reduce(dual, observation);
   const double s_aa = f.covariance[0], s_ab = f.covariance[1], s_bb = f.covariance[4];
   struct Row {
     CorrectionId id;

@@ -10,7 +10,9 @@
 #include <optional>
 
 #include "pendulum/air.hpp"
-#include "pendulum/scene.hpp"
+#include "pendulum/apparatus.hpp"
+#include "pendulum/numeric.hpp"
+#include "pendulum/observation.hpp"
 
 namespace pendulum {
 
@@ -88,38 +90,40 @@ struct DragPrediction {
   T alpha, beta;                     ///< Eqs. (26), (27)
 };
 
-/// Predicted drag constants; empty in vacuum. The wire's quadratic drag
-/// needs its diameter; its linear drag does not (Eq. 67).
-/// The velocity scale is the scene's amplitude, as in the paper (R = 1100).
+/// Predicted drag constants of `app` swinging as observed in `o`; empty in
+/// vacuum or without the bob's mass. The wire's quadratic drag needs its
+/// diameter; its linear drag does not (Eq. 67).
+/// The velocity scale is the observation's amplitude, as in the paper (R = 1100).
 template <class T>
-std::optional<DragPrediction<T>> predict_drag(const Scene<T>& s) {
+std::optional<DragPrediction<T>> predict_drag(const Apparatus<T>& app, const Observation<T>& o) {
   using std::sqrt;
-  if (!s.air) return std::nullopt;
-  const auto& air = *s.air;
-  const T omega0 = 2.0 * 3.14159265358979323846 / s.period;
+  if (!app.air || !app.bob || !app.bob->mass) return std::nullopt;
+  const auto& air = *app.air;
+  const auto& bob = *app.bob;
+  const T omega0 = 2.0 * kPi / o.period;
   const T rho = air_density(air.pressure, air.temperature, air.molar_mass);
-  const T a = s.bob.diameter / 2.0;
-  const T speed = omega0 * s.length * s.amplitude;
+  const T a = bob.diameter / 2.0;
+  const T speed = omega0 * o.length * o.amplitude;
   DragPrediction<T> p;
-  p.reynolds_sphere = rho * speed * s.bob.diameter / air.viscosity;
+  p.reynolds_sphere = rho * speed * bob.diameter / air.viscosity;
   p.c_d_prime = sphere_drag_coefficient_beyond_stokes(T(p.reynolds_sphere / sqrt(2.0)));
-  const T x = inverse_acceleration_modulus(s.bob.diameter, s.length, s.amplitude);
+  const T x = inverse_acceleration_modulus(bob.diameter, o.length, o.amplitude);
   const T delta = penetration_depth(air.viscosity, omega0, rho);
   p.b_sphere = sphere_linear_drag(air.viscosity, a, history_coefficient(x), delta);
   p.c_sphere = sphere_quadratic_drag(p.c_d_prime, a, rho);
   p.b = p.b_sphere;
   p.c = p.c_sphere;
-  if (s.wire) {
-    p.b_wire = wire_linear_drag(air.viscosity, s.length);
+  if (app.wire) {
+    p.b_wire = wire_linear_drag(air.viscosity, o.length);
     p.b += *p.b_wire;
-    if (s.wire->diameter) {
-      p.c_wire = wire_quadratic_drag(rho, *s.wire->diameter, s.length);
+    if (app.wire->diameter) {
+      p.c_wire = wire_quadratic_drag(rho, *app.wire->diameter, o.length);
       p.c += *p.c_wire;
-      p.reynolds_wire = rho * speed * *s.wire->diameter / air.viscosity;
+      p.reynolds_wire = rho * speed * *app.wire->diameter / air.viscosity;
     }
   }
-  p.alpha = alpha_from_linear_drag(p.b, s.bob.mass);
-  p.beta = beta_from_quadratic_drag(p.c, omega0, s.length, s.bob.mass);
+  p.alpha = alpha_from_linear_drag(p.b, *bob.mass);
+  p.beta = beta_from_quadratic_drag(p.c, omega0, o.length, *bob.mass);
   return p;
 }
 

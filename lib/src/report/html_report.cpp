@@ -75,8 +75,9 @@ std::string g_comparison(const SceneReport& r) {
   } else {
     row("expected g", "the scene gives no site to compare with");
   }
-  row("g uncorrected (Eq. 5)",
+  row(r.series ? "g of the textbook line (no corrections)" : "g uncorrected (Eq. 5)",
       format_fixed(r.g_uncorrected.value, 5) + " \u00B1 " + format_fixed(r.g_uncorrected.uncertainty, 5) + " m/s\u00B2");
+  if (r.series) return s + "</table>\n";  // the periods are in the series' table
   row("measured period T", format_fixed(r.period_measured.value, 6) + " \u00B1 " +
                                format_fixed(r.period_measured.uncertainty, 6) + " s (" + std::to_string(r.trials) +
                                " trials of " + std::to_string(r.oscillations_per_trial) + " oscillations)");
@@ -149,6 +150,32 @@ std::string decay_table(const DecayRecord& d) {
   return s;
 }
 
+std::string series_table(const SeriesRecord& d) {
+  std::string s =
+      "<table class=\"series\">\n<thead><tr><th scope=\"col\">parameter</th><th scope=\"col\" class=\"num\">value</th>"
+      "<th scope=\"col\">unit</th></tr></thead>\n<tbody>\n";
+  for (const auto& p : d.parameters) {
+    s += "<tr><td>" + esc(p.name) + "</td><td class=\"num\">" +
+         (p.uncertainty ? value_with_uncertainty(p.value, *p.uncertainty, false) : format_significant(p.value, 6)) +
+         "</td><td>" + esc(p.unit) + "</td></tr>\n";
+  }
+  s += "</tbody>\n</table>\n<table class=\"observations\">\n<thead><tr><th scope=\"col\" class=\"num\">L (m)</th>"
+       "<th scope=\"col\" class=\"num\">T measured (s)</th><th scope=\"col\" class=\"num\">\u03C3 (s)</th>"
+       "<th scope=\"col\" class=\"num\">T model (s)</th><th scope=\"col\" class=\"num\">residual (\u03C3)</th></tr></thead>\n<tbody>\n";
+  for (std::size_t k = 0; k < d.lengths.size(); ++k) {
+    const double sigma = d.period_uncertainties[k];
+    s += "<tr><td class=\"num\">" + format_fixed(d.lengths[k], 4) + "</td><td class=\"num\">" +
+         format_fixed(d.periods[k], 5) + "</td><td class=\"num\">" + format_fixed(sigma, 5) +
+         "</td><td class=\"num\">" + format_fixed(d.periods_model[k], 5) + "</td><td class=\"num\">" +
+         (sigma > 0.0 ? signed_fixed((d.periods_model[k] - d.periods[k]) / sigma, 2) : "\u2014") + "</td></tr>\n";
+  }
+  s += "</tbody>\n</table>\n<p class=\"meta\">\u03C7\u00B2 = " + format_significant(d.chi2, 4) + " for " +
+       std::to_string(d.dof) + " degrees of freedom" +
+       (d.probability ? ", P(\u03C7\u00B2 \u2265 this) = " + format_significant(*d.probability, 3) : "") +
+       ". The corrections above are those of the first observation.</p>\n";
+  return s;
+}
+
 /// One scene's section; `anchor` is its id in the page, and prefixes the ids
 /// of its plots.
 std::string scene_section(const SceneReport& r, const std::string& anchor) {
@@ -164,13 +191,16 @@ std::string scene_section(const SceneReport& r, const std::string& anchor) {
     for (const auto& w : r.warnings) s += "<li>" + esc(w) + "</li>\n";
     s += "</ul>\n";
   }
-  s += "<h3>Corrections</h3>\n";
+  s += r.series ? "<h3>Corrections of the first observation</h3>\n" : "<h3>Corrections</h3>\n";
   if (auto c = corrections_chart(r, anchor + "-corrections")) {
     s += figure_html(to_svg(*c, false), c->description);
   }
   s += corrections_table(r);
   if (auto b = budget_chart(r, anchor + "-budget")) {
     s += "<h3>Uncertainty budget of g</h3>\n" + figure_html(to_svg(*b, false), b->description) + budget_table(r);
+  }
+  if (auto f = series_figure(r, anchor + "-series")) {
+    s += "<h3>Series fit</h3>\n" + figure_html(to_svg(*f, false), f->description) + series_table(*r.series);
   }
   if (auto d = decay_figure(r, anchor + "-decay")) {
     s += "<h3>Decay record</h3>\n" + figure_html(to_svg(*d, false), d->description) + decay_table(*r.decay);

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "pendulum/numeric.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/input_error.hpp"
 
 namespace pendulum::report {
 
@@ -180,6 +180,50 @@ std::optional<Figure> decay_figure(const SceneReport& r, const std::string& id) 
   return fit_figure(p);
 }
 
+std::optional<Figure> series_figure(const SceneReport& r, const std::string& id) {
+  if (!r.series) return std::nullopt;
+  const SeriesRecord& s = *r.series;
+  FitPlotData p;
+  p.id = id;
+  p.title = "Series: T\u00B2 against length, the fit and the textbook line";
+  p.x = {"length L (m)", Scale::linear, true};
+  p.y = {"T\u00B2 (s\u00B2)", Scale::linear, true};
+  p.residual_label = "T\u00B2 \u2212 model (s\u00B2)";
+  p.observations.name = "measured T\u00B2 \u00B1 2T u(T)";
+  std::vector<std::pair<double, double>> model;
+  double longest = 0.0;
+  for (std::size_t k = 0; k < s.lengths.size(); ++k) {
+    p.observations.x.push_back(s.lengths[k]);
+    p.observations.y.push_back(s.periods[k] * s.periods[k]);
+    p.observations.y_error.push_back(2.0 * s.periods[k] * s.period_uncertainties[k]);
+    p.model_at_x.push_back(s.periods_model[k] * s.periods_model[k]);
+    model.emplace_back(s.lengths[k], s.periods_model[k] * s.periods_model[k]);
+    longest = std::max(longest, s.lengths[k]);
+  }
+  std::sort(model.begin(), model.end());
+  p.model.name = "fitted model with every correction";
+  for (const auto& [x, y] : model) {
+    p.model.x.push_back(x);
+    p.model.y.push_back(y);
+  }
+  p.model.colour = Colour::vermillion;
+  Curve textbook;
+  textbook.name = "textbook T\u00B2 = 4\u03C0\u00B2(L + L\u2080)/g, g = " + format_fixed(s.textbook_g, 4) + " m/s\u00B2";
+  textbook.x = {0.0, longest};
+  for (double x : textbook.x) textbook.y.push_back(4.0 * kPi * kPi * (x + s.textbook_length_offset) / s.textbook_g);
+  textbook.colour = Colour::black;
+  textbook.dash = Dash::dashed;
+  textbook.width = 1.5;
+  p.textbook = textbook;
+  p.description = std::to_string(s.lengths.size()) +
+                  " measured periods, squared, against their lengths, with the period model fitted with every "
+                  "correction (g = " + format_fixed(r.g.value, 5) + " m/s^2) and the textbook straight line "
+                  "without corrections (g = " + format_fixed(s.textbook_g, 5) + " m/s^2); chi-squared " +
+                  format_significant(s.chi2, 4) + " for " + std::to_string(s.dof) +
+                  " degrees of freedom; the lower panel shows measured minus model.";
+  return fit_figure(p);
+}
+
 CategoryChart class_chart(std::vector<ClassPoint> points, const std::string& id) {
   std::stable_sort(points.begin(), points.end(), [](const ClassPoint& a, const ClassPoint& b) { return a.g < b.g; });
   CategoryChart ch;
@@ -226,6 +270,7 @@ std::vector<std::string> plot_names(const SceneReport& r) {
   if (corrections_chart(r, "x")) names.push_back("corrections");
   if (budget_chart(r, "x")) names.push_back("budget");
   if (r.decay) names.push_back("decay");
+  if (r.series) names.push_back("series");
   return names;
 }
 
@@ -241,6 +286,10 @@ std::string plot_svg(const SceneReport& r, const std::string& name) {
   if (name == "decay") {
     if (auto f = decay_figure(r, "decay")) return to_svg(*f, true);
     throw InputError("decay.data", "the scene has no decay record to plot");
+  }
+  if (name == "series") {
+    if (auto f = series_figure(r, "series")) return to_svg(*f, true);
+    throw InputError("observations", "the scene is not a series of observations");
   }
   std::string known;
   for (const auto& n : plot_names(r)) known += (known.empty() ? "" : ", ") + n;

@@ -60,24 +60,28 @@ DecayRecord decay_record(const DecayData& data, const DecayFit& fit) {
 }  // namespace
 
 SceneReport make_scene_report(const std::string& input, const ParsedScene& scene, const Analysis& a) {
+  // An unknown uncertainty (a singular fit) is shown as 0 with a warning of
+  // the analysis beside it.
+  auto measured = [](const auto& x) { return Measured{x.value, x.uncertainty ? *x.uncertainty : 0.0}; };
+  const ObservationResult& first = a.observations.front();
   SceneReport r;
   r.input = input;
   r.title = scene.title;
   r.source = scene.source;
-  r.g = {a.g.value, a.g.uncertainty};
-  r.g_uncorrected = {a.g_uncorrected.value, a.g_uncorrected.uncertainty};
-  r.period_measured = {a.period_measured.value, a.period_measured.uncertainty};
-  r.period_ideal = {a.period_ideal.value, a.period_ideal.uncertainty};
-  r.trials = scene.trial_count;
-  r.oscillations_per_trial = scene.value.oscillations_per_trial;
+  r.g = measured(a.g);
+  r.g_uncorrected = measured(a.fit.textbook.g);
+  r.period_measured = {first.period_measured.value, first.period_measured.uncertainty};
+  r.period_ideal = measured(first.period_ideal);
+  r.trials = first.trials;
+  r.oscillations_per_trial = first.oscillations_per_trial;
   if (a.expected_g) {
     r.expected_g = Measured{a.expected_g->value, a.expected_g->uncertainty};
     r.expected_source = a.expected_g->source;
     r.expected_note = a.expected_g->note;
   }
   r.z = a.z_score;
-  r.negligible_below = a.negligible_below;
-  for (const auto& row : a.corrections) {
+  r.negligible_below = first.negligible_below;
+  for (const auto& row : first.corrections) {
     r.corrections.push_back({row.info.id, row.info.title, status_name(row.status), row.method, row.reason,
                              row.info.equation, row.delta_T, row.delta_T_uncertainty, row.delta_g});
   }
@@ -85,6 +89,24 @@ SceneReport make_scene_report(const std::string& input, const ParsedScene& scene
   if (a.budget_correlation) r.budget_correlation_variance = a.budget_correlation->variance;
   r.inputs_without_uncertainty = a.inputs_without_uncertainty;
   if (scene.decay_data && a.decay_fit) r.decay = decay_record(*scene.decay_data, *a.decay_fit);
+  if (scene.series) {
+    SeriesRecord s;
+    for (std::size_t k = 0; k < a.observations.size(); ++k) {
+      const ObservationResult& o = a.observations[k];
+      s.lengths.push_back(o.length);
+      s.length_uncertainties.push_back(scene.observation_uncertainties[k].length);
+      s.periods.push_back(o.period_measured.value);
+      s.period_uncertainties.push_back(o.period_measured.uncertainty);
+      s.periods_model.push_back(o.period_model);
+    }
+    for (const auto& p : a.fit.parameters) s.parameters.push_back({p.name, p.unit, p.value, p.uncertainty});
+    s.chi2 = a.fit.chi2;
+    s.dof = a.fit.dof;
+    s.probability = a.fit.probability;
+    s.textbook_g = a.fit.textbook.g.value;
+    if (a.fit.textbook.length_offset) s.textbook_length_offset = a.fit.textbook.length_offset->value;
+    r.series = s;
+  }
   r.warnings = scene.warnings;
   r.warnings.insert(r.warnings.end(), a.warnings.begin(), a.warnings.end());
   return r;

@@ -52,6 +52,11 @@ std::optional<CategoryChart> budget_chart(const SceneReport& r, const std::strin
 /// and the residuals; empty without a record.
 std::optional<Figure> decay_figure(const SceneReport& r, const std::string& id);
 
+/// A series: T^2 against L with 2 T sigma_eff error bars, the fitted model at
+/// each length, the textbook line T^2 = (4 pi^2/g)(L + L0) and the
+/// residuals; empty for a scene of one observation.
+std::optional<Figure> series_figure(const SceneReport& r, const std::string& id);
+
 /// One student's result in a class chart.
 struct ClassPoint {
   std::string label, link;
@@ -64,7 +69,7 @@ struct ClassPoint {
 /// band (one line when the class shares it, a marker per row otherwise).
 CategoryChart class_chart(std::vector<ClassPoint> points, const std::string& id);
 
-/// The plots the scene's data allow, by name: corrections, budget, decay.
+/// The plots the scene's data allow, by name: corrections, budget, decay, series.
 std::vector<std::string> plot_names(const SceneReport& r);
 
 /// One plot as a standalone SVG file. Throws InputError naming what the

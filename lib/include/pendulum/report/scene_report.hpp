@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "pendulum/analysis.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/parsed_scene.hpp"
 
 namespace pendulum::report {
 
@@ -55,6 +55,21 @@ struct DecayRecord {
   std::string uncertainty_scaling;
 };
 
+/// A series of observations (lengths or pivot positions) and the fit of
+/// the period model to them, with the textbook line T^2 = (4 pi^2/g)(L + L0).
+struct SeriesRecord {
+  std::vector<double> lengths, length_uncertainties;  ///< (m)
+  std::vector<double> periods;              ///< measured (s)
+  std::vector<double> period_uncertainties; ///< of the measured periods (s)
+  std::vector<double> periods_model;        ///< the fitted model's T at each (s)
+  std::vector<FitParameterText> parameters;
+  double chi2 = 0.0;
+  int dof = 0;
+  std::optional<double> probability;
+  double textbook_g = 0.0;            ///< (m/s^2)
+  double textbook_length_offset = 0.0;  ///< (m), 0 unless fitted
+};
+
 struct SceneReport {
   std::string input;  ///< the file as the user named it
   std::string title, source;
@@ -62,6 +77,8 @@ struct SceneReport {
   Measured period_measured, period_ideal;  ///< (s)
   int trials = 0;
   int oscillations_per_trial = 1;
+  /// A series: the corrections above are its first observation's.
+  std::optional<SeriesRecord> series;
   std::optional<Measured> expected_g;  ///< (m/s^2)
   std::string expected_source, expected_note;
   std::optional<double> z;

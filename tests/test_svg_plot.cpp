@@ -34,6 +34,26 @@ bool has_non_finite(const std::string& svg) {
   return std::regex_search(svg, std::regex("(^|[^a-z])-?(nan|inf)", std::regex::icase));
 }
 
+// Every coordinate attribute and polyline point lies inside the viewBox
+// "0 0 W H": nothing is drawn off the picture. Returns the first outside.
+std::string outside_view(const std::string& svg) {
+  std::smatch box;
+  REQUIRE(std::regex_search(svg, box, std::regex("viewBox=\"0 0 ([0-9.]+) ([0-9.]+)\"")));
+  const double width = std::stod(box[1]), height = std::stod(box[2]);
+  const std::regex attribute("\\b(x|x1|x2|cx|y|y1|y2|cy)=\"(-?[0-9.]+)\"");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), attribute); it != std::sregex_iterator(); ++it) {
+    const double v = std::stod((*it)[2]);
+    const double limit = (*it)[1].str()[0] == 'x' || (*it)[1].str() == "cx" ? width : height;
+    if (v < 0.0 || v > limit) return (*it).str();
+  }
+  const std::regex point("(-?[0-9.]+),(-?[0-9.]+)");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), point); it != std::sregex_iterator(); ++it) {
+    const double x = std::stod((*it)[1]), y = std::stod((*it)[2]);
+    if (x < 0.0 || x > width || y < 0.0 || y > height) return (*it).str();
+  }
+  return "";
+}
+
 }  // namespace
 
 TEST_CASE("nice_ticks: hand-worked cases of the 1-2-5 rule", "[report][ticks]") {
@@ -213,6 +233,7 @@ TEST_CASE("to_svg: accessible, escaped, deterministic, self-contained", "[report
   }
   // Five observations in each panel, plus one legend sample.
   CHECK(count(inline_svg, "<circle") == 11);
+  CHECK(outside_view(inline_svg) == "");
 }
 
 TEST_CASE("CategoryChart on a log axis: bars, cut error bars, links", "[report][svg]") {
@@ -239,6 +260,15 @@ TEST_CASE("CategoryChart on a log axis: bars, cut error bars, links", "[report][
   }
   // Two bars (frame and background are the other rects).
   CHECK(count(svg, "<rect") == 2 + 2);
+  CHECK(outside_view(svg) == "");
+
+  // The same rows on a linear axis: no minor ticks of a log axis beyond it
+  // (was: 2..9 times each linear tick, drawn past the frame).
+  ch.value = {"x (us)", Scale::linear, false};
+  const std::string linear = to_svg(ch, false);
+  CHECK(outside_view(linear) == "");
+  // A grid line and a tick per tick value, and two error bars of three lines.
+  CHECK(count(linear, "<line") == count(linear, "stroke=\"#DDDDDD\"") * 2 + 6);
 }
 
 TEST_CASE("class_chart: sorted by g; one expected line, a marker per row, or none", "[report][class]") {

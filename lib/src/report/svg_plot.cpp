@@ -308,6 +308,7 @@ void draw_x_ticks(Canvas& c, const Ticks& t, const Axis& axis, const Mapping& m,
     c.line(x, y_top, x, y_bottom, kGrid, 1.0);
     if (labels) c.text(x, y_bottom + 20, tick_label(t, axis, t.values[i]), kTickFont, "middle");
   }
+  if (axis.scale != Scale::log) return;
   for (double v : log_minor_ticks(t)) c.line(m(v), y_bottom, m(v), y_bottom + 3, "#000000", 1.0);
 }
 
@@ -320,6 +321,7 @@ void draw_y_ticks(Canvas& c, const Ticks& t, const Axis& axis, const Mapping& m,
     c.line(x_left, y, x_right, y, kGrid, 1.0);
     c.text(x_left - 9, y + 4.5, tick_label(t, axis, t.values[i]), kTickFont, "end");
   }
+  if (axis.scale != Scale::log) return;
   for (double v : log_minor_ticks(t)) c.line(x_left - 3, m(v), x_left, m(v), "#000000", 1.0);
 }
 

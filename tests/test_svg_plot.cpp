@@ -200,9 +200,26 @@ TEST_CASE("fit_figure: observations, model, textbook line and residuals", "[repo
   }
   CHECK(residuals.references.size() == 1);
   CHECK(residuals.references[0].value == 0.0);
+  CHECK(residuals.curves.empty());
+
+  // With the textbook at each x, textbook - model = 2x - (2x + 1) = -1 beneath,
+  // in the textbook's dashes, ordered by x.
+  FitPlotData with_textbook = d;
+  with_textbook.observations.x = {2.5, 0.5, 1.5, 1.0, 2.0};
+  for (double x : with_textbook.observations.x) with_textbook.textbook_at_x.push_back(2 * x);
+  with_textbook.model_at_x.clear();
+  for (double x : with_textbook.observations.x) with_textbook.model_at_x.push_back(2 * x + 1);
+  const Figure g = fit_figure(with_textbook);
+  REQUIRE(g.panels[1].curves.size() == 1);
+  CHECK(g.panels[1].curves[0].x == std::vector<double>{0.5, 1.0, 1.5, 2.0, 2.5});
+  CHECK(g.panels[1].curves[0].y == std::vector<double>(5, -1.0));
+  CHECK(g.panels[1].curves[0].dash == Dash::dashed);
 
   FitPlotData bad = d;
   bad.model_at_x.pop_back();
+  CHECK_THROWS_AS(fit_figure(bad), std::invalid_argument);
+  bad = d;
+  bad.textbook_at_x = {1.0};
   CHECK_THROWS_AS(fit_figure(bad), std::invalid_argument);
 }
 

@@ -16,7 +16,9 @@ constexpr double kDegree = 180.0 / kPi;
 }  // namespace
 
 Figure fit_figure(const FitPlotData& d) {
-  if (d.model_at_x.size() != d.observations.x.size() || d.observations.y.size() != d.observations.x.size()) {
+  const std::size_t n = d.observations.x.size();
+  if (d.model_at_x.size() != n || d.observations.y.size() != n ||
+      (!d.textbook_at_x.empty() && (d.textbook_at_x.size() != n || !d.textbook))) {
     throw std::invalid_argument("fit_figure: one model value per observation is needed");
   }
   Figure f;
@@ -43,6 +45,20 @@ Figure fit_figure(const FitPlotData& d) {
   r.name.clear();
   for (std::size_t i = 0; i < r.y.size(); ++i) r.y[i] = d.observations.y[i] - d.model_at_x[i];
   residuals.points.push_back(r);
+  if (!d.textbook_at_x.empty()) {
+    Curve difference = *d.textbook;
+    difference.name.clear();
+    difference.x.clear();
+    difference.y.clear();
+    std::vector<std::size_t> order(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return d.observations.x[a] < d.observations.x[b]; });
+    for (std::size_t i : order) {
+      difference.x.push_back(d.observations.x[i]);
+      difference.y.push_back(d.textbook_at_x[i] - d.model_at_x[i]);
+    }
+    residuals.curves.push_back(difference);
+  }
 
   f.panels = {top, residuals};
   return f;

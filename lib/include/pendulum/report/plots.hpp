@@ -26,12 +26,17 @@ struct FitPlotData {
   Curve model;                ///< the model on a fine grid
   std::optional<Band> model_band;  ///< e.g. the fit's +-1 sigma
   std::optional<Curve> textbook;   ///< e.g. T^2 = 4 pi^2 l / g
+  /// The textbook curve at each observation's x, if any: the residual panel
+  /// then shows textbook - model, where the two curves differ too little
+  /// to tell apart above.
+  std::vector<double> textbook_at_x;
 };
 
 /// Two panels over one x axis: the observations with error bars, the model,
 /// its band and the textbook curve; beneath, the residuals with the same
-/// error bars about a line at zero. Throws std::invalid_argument when
-/// model_at_x and the observations differ in length.
+/// error bars about a line at zero, and textbook - model when given. Throws
+/// std::invalid_argument when model_at_x (or a non-empty textbook_at_x) and
+/// the observations differ in length.
 Figure fit_figure(const FitPlotData& data);
 
 /// A value and its uncertainty with the uncertainty to two significant

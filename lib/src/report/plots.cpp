@@ -231,12 +231,13 @@ std::optional<Figure> series_figure(const SceneReport& r, const std::string& id)
   textbook.dash = Dash::dashed;
   textbook.width = 1.5;
   p.textbook = textbook;
+  for (double x : s.lengths) p.textbook_at_x.push_back(4.0 * kPi * kPi * (x + s.textbook_length_offset) / s.textbook_g);
   p.description = std::to_string(s.lengths.size()) +
                   " measured periods, squared, against their lengths, with the period model fitted with every "
                   "correction (g = " + format_fixed(r.g.value, 5) + " m/s^2) and the textbook straight line "
                   "without corrections (g = " + format_fixed(s.textbook_g, 5) + " m/s^2); chi-squared " +
                   format_significant(s.chi2, 4) + " for " + std::to_string(s.dof) +
-                  " degrees of freedom; the lower panel shows measured minus model.";
+                  " degrees of freedom; the lower panel shows measured minus model, and the textbook line minus the model.";
   return fit_figure(p);
 }
 

@@ -43,7 +43,7 @@ case $mode in
       name=${entry%%:*} height=${entry##*:}
       rm -f "$out/$name.png"
       # No name resolves, so that the page could load nothing even if it tried.
-      "$browser" --headless --no-sandbox --disable-gpu --hide-scrollbars --user-data-dir="$profile" \
+      "$browser" --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --hide-scrollbars --user-data-dir="$profile" \
         --no-first-run --disable-background-networking --disable-component-update \
         --host-resolver-rules="MAP * ~NOTFOUND" --window-size=900,"$height" \
         --screenshot="$out/$name.png" "file://$out/$name.html" >/dev/null 2>&1

@@ -53,9 +53,10 @@ Command add_batch_command(CLI::App& app);
 /// or one SVG plot (cli/report_command.cpp).
 Command add_report_command(CLI::App& app);
 
-/// Writes `text` to `path` ("-": standard output) through a temporary file
-/// renamed over it, so that a failure leaves no partial file; throws
-/// InputError naming the path.
+/// Writes `text` to `path` ("-": standard output): a regular file through a
+/// temporary file renamed over it, so that a failure leaves no partial file;
+/// a device or pipe (/dev/stdout) in place. Throws InputError ("output: cannot
+/// write PATH: reason").
 void write_output(const std::string& path, const std::string& text);
 
 /// `pendulum-g fit-decay SCENE`: the decay record -> alpha, beta (cli/fit_decay_command.cpp).

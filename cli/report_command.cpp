@@ -22,27 +22,53 @@ void write_output(const std::string& path, const std::string& text) {
     std::cout << text;
     return;
   }
-  // A temporary file beside the target, renamed over it once whole: a
-  // failure leaves no partial file, and an old report stays as it was.
-  std::string temporary = path + ".XXXXXX";
+  auto fail = [&](int error) { return InputError("output", "cannot write " + path + ": " + std::strerror(error)); };
+  struct stat existing;
+  const bool exists = ::stat(path.c_str(), &existing) == 0;
+  if (exists && S_ISDIR(existing.st_mode)) throw fail(EISDIR);
+  if (exists && !S_ISREG(existing.st_mode)) {
+    // A device or a pipe (/dev/stdout): written in place, never replaced.
+    std::FILE* out = std::fopen(path.c_str(), "wb");
+    if (!out) throw fail(errno);
+    const bool ok = std::fwrite(text.data(), 1, text.size(), out) == text.size();
+    const int error = errno;
+    if (std::fclose(out) != 0 || !ok) throw fail(ok ? errno : error);
+    return;
+  }
+  // A regular file: a temporary file beside it (beside the link's target for
+  // a symbolic link), renamed over it once whole, so that a failure leaves no
+  // partial file and an old report stays as it was.
+  std::string target = path;
+  if (exists) {
+    if (char* resolved = ::realpath(path.c_str(), nullptr)) {
+      target = resolved;
+      std::free(resolved);
+    }
+  }
+  std::string temporary = target + ".XXXXXX";
   const int fd = mkstemp(temporary.data());
-  if (fd < 0) throw InputError("", "cannot write " + path + ": " + std::strerror(errno));
-  std::size_t written = 0;
-  while (written < text.size()) {
+  if (fd < 0) throw fail(errno);
+  int error = 0;  // the first failure's errno
+  for (std::size_t written = 0; written < text.size();) {
     const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
+    if (n <= 0) {
+      error = n < 0 ? errno : EIO;
+      break;
+    }
     written += static_cast<std::size_t>(n);
   }
-  const int error = errno;
-  // mkstemp makes the file 0600; a report is for others to read.
+  // mkstemp makes the file 0600; a report is for others to read. umask is
+  // read by setting it, and no other thread runs here.
   const mode_t mask = umask(0);
   umask(mask);
-  const bool ok = written == text.size() && fchmod(fd, 0666 & ~mask) == 0 && fsync(fd) == 0;
-  if (::close(fd) != 0 || !ok || std::rename(temporary.c_str(), path.c_str()) != 0) {
-    const int e = ok ? errno : error;
+  if (!error && fchmod(fd, 0666 & ~mask) != 0) error = errno;
+  if (!error && fsync(fd) != 0) error = errno;
+  if (::close(fd) != 0 && !error) error = errno;
+  if (!error && std::rename(temporary.c_str(), target.c_str()) != 0) error = errno;
+  if (error) {
     std::remove(temporary.c_str());
-    throw InputError("", "cannot write " + path + ": " + std::strerror(e));
+    throw fail(error);
   }
 }
 

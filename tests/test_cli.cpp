@@ -490,7 +490,14 @@ TEST_CASE("report: bad input fails as reduce does and leaves no file", "[cli][re
 
   const Run unwritable = run("report " + kNelsonOlsson + " -o " + dir + "/missing/report.html");
   CHECK(unwritable.status == 1);
-  CHECK_THAT(unwritable.err, Contains("cannot write " + dir + "/missing/report.html: No such file or directory"));
+  CHECK_THAT(unwritable.err, Contains("output: cannot write " + dir + "/missing/report.html: No such file or directory"));
+  const Run directory = run("report " + kNelsonOlsson + " -o " + dir);
+  CHECK(directory.status == 1);
+  CHECK_THAT(directory.err, Contains("output: cannot write " + dir + ": Is a directory"));
+  // A device is written in place, never replaced by a file (/dev/stdout here).
+  const Run device = run("report " + kNelsonOlsson + " -o /dev/stdout");
+  CHECK(device.status == 0);
+  CHECK(device.out == run("report " + kNelsonOlsson).out);
   std::filesystem::remove_all(dir);
 }
 

@@ -62,4 +62,8 @@ void write_output(const std::string& path, const std::string& text);
 /// `pendulum-g fit-decay SCENE`: the decay record -> alpha, beta (cli/fit_decay_command.cpp).
 Command add_fit_decay_command(CLI::App& app);
 
+/// `pendulum-g clock SCENE`: circular and impulse error of a clock
+/// pendulum (cli/clock_command.cpp).
+Command add_clock_command(CLI::App& app);
+
 }  // namespace pendulum::cli

@@ -206,12 +206,9 @@ TEST_CASE("Bad decay records are refused by path", "[decay_fit][errors]") {
 TEST_CASE("The bundled decay record is what its generator writes", "[decay_fit][data]") {
   const std::string command = std::string(PENDULUM_MAKE_DECAY_SCENE) + " " + PENDULUM_DATA_DIR +
                               "/nelson_olsson_1986.json";
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe);
-  std::string text;
-  char buffer[4096];
-  while (const std::size_t k = std::fread(buffer, 1, sizeof buffer, pipe)) text.append(buffer, k);
-  REQUIRE(pclose(pipe) == 0);
+  int status = 0;
+  const std::string text = test::command_output(command, status);
+  REQUIRE(status == 0);
   const auto generated = nlohmann::json::parse(text);
   const auto bundled = nlohmann::json::parse(test::read_text(std::string(PENDULUM_DATA_DIR) +
                                                              "/nelson_olsson_1986_decay.json"));

@@ -243,3 +243,25 @@ TEST_CASE("A period off the model by many sigma, and an implausible chi2, are na
   REQUIRE(a.fit.probability);
   CHECK(*a.fit.probability < 1e-3);
 }
+
+TEST_CASE("The bundled series is what its generator writes, and gives back its truth", "[series][data]") {
+  int status = 0;
+  const std::string text = test::command_output(PENDULUM_MAKE_SERIES_SCENE, status);
+  REQUIRE(status == 0);
+  const std::string bundled = test::read_text(std::string(PENDULUM_DATA_DIR) + "/pendulum_lengths_series.json");
+  // Trials are rounded to 0.01 s; another libm may move one by a unit, so
+  // the scenes are compared as read.
+  const ParsedScene generated = parse_scene(text), file = parse_scene(bundled);
+  REQUIRE(generated.observations.size() == file.observations.size());
+  for (std::size_t k = 0; k < file.observations.size(); ++k) {
+    CHECK_THAT(file.observations[k].period, WithinAbs(generated.observations[k].period, 0.01 / 10 / 5 + 1e-12));
+    CHECK(file.observations[k].length == generated.observations[k].length);
+  }
+  // The truth (tests/tools/make_series_scene.cpp): the site's normal gravity
+  // and the ball's radius, each within 3 of the fit's standard uncertainties.
+  const Analysis a = analyse(file);
+  REQUIRE(a.expected_g);
+  CHECK(std::abs(a.g.value - a.expected_g->value) < 3 * *a.g.uncertainty);
+  const ParameterResult& offset = parameter(a, "length_offset");
+  CHECK(std::abs(offset.value - 0.0127) < 3 * *offset.uncertainty);
+}

@@ -39,7 +39,12 @@ std::vector<std::string> review_decay_fit(const DecayFit& fit) {
     }
   }
   for (const auto& [name, q] : {std::pair{"alpha", fit.alpha}, std::pair{"beta", fit.beta}}) {
-    if (q.fitted && !q.at_bound && !q.significant) {
+    if (q.fitted && !q.uncertainty) {
+      warnings.push_back(std::string("decay fit: the record cannot fix ") + name +
+                         " (the fit's covariance is singular): its uncertainty is unknown, and it is "
+                         "listed in g.inputs_without_uncertainty, not in the budget");
+    }
+    if (q.fitted && q.uncertainty && !q.at_bound && !q.significant) {
       warnings.push_back(std::string("decay fit: ") + name +
                          " is not significant (less than two standard uncertainties from 0)");
     }
@@ -423,7 +428,10 @@ class Fit {
       r.period_measured = {o.period, sigma};
       r.period_model = b.value[kModelPeriod];
       r.period_ideal = {b.value[kIdealPeriod], deviation(variance_[k][kIdealPeriod])};
-      if (k_ > 1 && sigma > 0.0) r.residual = (r.period_model - o.period) / sigma;
+      if (k_ > 1) {
+        r.residual = b.residual;  // in effective standard uncertainties
+        r.effective_uncertainty = 1.0 / weights_[k];
+      }
       r.negligible_below = options_.negligible_fraction * sigma;
       for (int i = 0; i < kCorrectionCount; ++i) {
         const Term<double>& term = b.terms[i];
@@ -584,6 +592,7 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
     out.drag = predict_drag(scene.apparatus, scene.observations[0]);
   }
   Fit<SimplePendulum>(scene, options, out).run();
+  for (auto& w : warn_about_skipped_parts(scene, options.negligible_fraction)) out.warnings.push_back(std::move(w));
 
   if (scene.site) out.expected_g = expected_gravity(*scene.site);
   if (out.expected_g && out.g.uncertainty) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 
+#include <Eigen/Dense>
 #include <ceres/ceres.h>
 
 #include "pendulum/models/simple_pendulum.hpp"
@@ -25,6 +26,10 @@ class PeriodResiduals : public ceres::CostFunction {
         apparatus_jet_(convert_apparatus<Jet>(*problem.apparatus, [](const Field&, double x) { return Jet(x); })) {
     set_num_residuals(static_cast<int>(problem.observations->size()));
     mutable_parameter_block_sizes()->push_back(P);
+    observations_jet_.reserve(problem.observations->size());
+    for (const auto& o : *problem.observations) {
+      observations_jet_.push_back(convert_observation<Jet>(o, [](const Field&, double x) { return Jet(x); }));
+    }
   }
 
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
@@ -34,7 +39,7 @@ class PeriodResiduals : public ceres::CostFunction {
     const auto& amplitude = *problem_.amplitude;
     if (jacobians == nullptr || jacobians[0] == nullptr) {
       for (std::size_t k = 0; k < obs.size(); ++k) {
-        const double t = Model::predict(p, obs[k], *problem_.apparatus, amplitude[k]).period;
+        const double t = Model::period(p, obs[k], *problem_.apparatus, amplitude[k]);
         residuals[k] = (t - obs[k].period) * w[k];
       }
       return std::isfinite(residuals[0]);
@@ -42,9 +47,7 @@ class PeriodResiduals : public ceres::CostFunction {
     std::array<Jet, P> pj;
     for (int i = 0; i < P; ++i) pj[i] = Jet(p[i], i);
     for (std::size_t k = 0; k < obs.size(); ++k) {
-      const Observation<Jet> o =
-          convert_observation<Jet>(obs[k], [](const Field&, double x) { return Jet(x); });
-      const Jet t = Model::predict(pj.data(), o, apparatus_jet_, amplitude[k]).period;
+      const Jet t = Model::period(pj.data(), observations_jet_[k], apparatus_jet_, amplitude[k]);
       residuals[k] = (t.a - obs[k].period) * w[k];
       for (int i = 0; i < P; ++i) jacobians[0][k * P + i] = t.v[i] * w[k];
       if (!std::isfinite(residuals[k])) return false;
@@ -55,6 +58,7 @@ class PeriodResiduals : public ceres::CostFunction {
  private:
   const PeriodFitProblem<Model>& problem_;
   const Apparatus<Jet> apparatus_jet_;
+  std::vector<Observation<Jet>> observations_jet_;  ///< constants, converted once
 };
 
 }  // namespace
@@ -95,6 +99,27 @@ PeriodFitSolution fit_periods(const PeriodFitProblem<Model>& problem,
 
   PeriodFitSolution out;
   out.parameters.assign(p.begin(), p.end());
+  // (J^T J)^-1 over the fitted parameters from the Jacobian at the optimum.
+  const std::size_t k = problem.observations->size();
+  std::vector<double> r(k), jacobian(k * P);
+  const double* blocks[] = {p.data()};
+  double* jacobians[] = {jacobian.data()};
+  Eigen::Matrix<double, P, P> jtj = Eigen::Matrix<double, P, P>::Zero();
+  if (residuals.Evaluate(blocks, r.data(), jacobians)) {
+    const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, P, Eigen::RowMajor>> j(jacobian.data(), k, P);
+    jtj = j.transpose() * j;
+  }
+  for (int i = 0; i < P; ++i) {
+    if (!problem.fitted[i]) jtj.row(i).setZero(), jtj.col(i).setZero(), jtj(i, i) = 1.0;
+  }
+  const Eigen::LDLT<Eigen::Matrix<double, P, P>> ldlt(jtj);
+  if (ldlt.info() == Eigen::Success && ldlt.isPositive() && ldlt.vectorD().minCoeff() > 1e-12 * ldlt.vectorD().maxCoeff()) {
+    Eigen::Matrix<double, P, P, Eigen::RowMajor> c = ldlt.solve(Eigen::Matrix<double, P, P>::Identity());
+    for (int i = 0; i < P; ++i) {
+      if (!problem.fitted[i]) c.row(i).setZero(), c.col(i).setZero();
+    }
+    out.covariance.assign(c.data(), c.data() + P * P);
+  }
   out.chi2 = 2.0 * summary.final_cost;
   out.converged = summary.termination_type == ceres::CONVERGENCE;
   out.termination = summary.message;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "pendulum/air.hpp"
 #include "pendulum/input_error.hpp"
 #include "pendulum/reduction.hpp"
 #include "pendulum/units.hpp"
@@ -101,6 +102,45 @@ void check_observation(ParsedScene& scene, std::size_t k) {
 
 void check_first_order(const ParsedScene& scene) {
   for (const auto& o : scene.observations) check_first_order(scene.apparatus, o);
+}
+
+std::vector<std::string> warn_about_skipped_parts(const ParsedScene& scene, double negligible_fraction) {
+  const Apparatus<double>& app = scene.apparatus;
+  std::vector<std::string> warnings;
+  if (!app.bob) return warnings;  // nothing to estimate the air's share with
+  const bool no_air = !app.air && !app.vacuum;
+  const bool no_mass = app.air && !app.bob->mass;
+  if (!no_air && !no_mass) return warnings;
+  // Room air: ISO 554's 20 degC and the standard atmosphere's 101.325 kPa,
+  // dry; steel at 7850 kg/m^3 (a typical carbon steel's density).
+  Apparatus<double> typical = app;
+  if (no_air) {
+    const double temperature = 293.15;
+    typical.air = Air<double>{101325.0, temperature, kDryAirMolarMass, air_viscosity(temperature)};
+  }
+  if (!typical.bob->mass) typical.bob->mass = 7850.0 * sphere_volume(typical.bob->diameter / 2.0);
+  double worst = 0.0, worst_delta = 0.0, worst_threshold = 0.0;
+  for (std::size_t k = 0; k < scene.observations.size(); ++k) {
+    const Observation<double>& o = scene.observations[k];
+    const Reduction<double> r = reduce(typical, o);
+    const double delta = (*r.terms[static_cast<int>(CorrectionId::buoyancy)].ratio +
+                          *r.terms[static_cast<int>(CorrectionId::added_mass)].ratio) * r.period_ideal;
+    const double threshold = negligible_fraction * scene.observation_uncertainties[k].period;
+    const double size = threshold > 0.0 ? std::abs(delta) / threshold : HUGE_VAL;
+    if (size > worst) worst = size, worst_delta = delta, worst_threshold = threshold;
+  }
+  if (worst < 1.0) return warnings;
+  const std::string change = format_number(worst_delta * 1e6, 3) + " us, over the " +
+                             format_number(worst_threshold * 1e6, 3) + " us below which a correction is negligible";
+  if (no_air) {
+    warnings.push_back("air: not given, so buoyancy and added mass are skipped; room air (20 degC, 101.325 kPa) "
+                       "would change the period by " + change + "; give the air's pressure and temperature, or "
+                       "\"vacuum\"");
+  } else {
+    warnings.push_back("bob.mass: not given, so buoyancy and added mass are skipped; a steel bob (7850 kg/m^3) of "
+                       "this diameter would change the period by " + change + "; give the bob's mass");
+  }
+  return warnings;
 }
 
 void check_plausibility(ParsedScene& scene) {

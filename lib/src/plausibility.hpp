@@ -3,6 +3,9 @@
 // theory's range, each period within reach of the pendulum's, and warnings
 // about what is legal but suspicious (docs/robustness.md).
 
+#include <string>
+#include <vector>
+
 #include "pendulum/parsed_scene.hpp"
 
 namespace pendulum {
@@ -16,5 +19,12 @@ void check_first_order(const ParsedScene& scene);
 /// angular unit; warns about what is legal but suspicious. Runs
 /// check_first_order.
 void check_plausibility(ParsedScene& scene);
+
+/// Warnings about corrections skipped for a part the scene does not describe
+/// that would not be negligible for typical values: room air (20 degC,
+/// 101.325 kPa) where the scene gives no air, a steel bob (7850 kg/m^3) of
+/// the given diameter where it gives no bob mass. Negligible as in the
+/// analysis: below `negligible_fraction` of the period's uncertainty.
+std::vector<std::string> warn_about_skipped_parts(const ParsedScene& scene, double negligible_fraction);
 
 }  // namespace pendulum

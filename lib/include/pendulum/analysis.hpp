@@ -82,8 +82,11 @@ struct ObservationResult {
   ValueWithUncertainty period_measured;  ///< (s)
   double period_model;                   ///< the fitted model's T (s)
   Estimate period_ideal;                 ///< T0 at the fitted parameters (s)
-  /// (model - measured) / the period's uncertainty; empty when that is 0.
+  /// (model - measured) / the effective uncertainty (the observation's
+  /// period, length and amplitude uncertainties carried to its period, the
+  /// fit's weight); empty for one observation.
   std::optional<double> residual;
+  double effective_uncertainty = 0.0;  ///< (s), 1 / the fit's weight; 0 for one observation
   /// The 16 corrections, and the amplitude cross term where it is not negligible.
   std::vector<CorrectionRow> corrections;
   double cross_term_delta_T;  ///< (s), shown as a row only when not negligible
@@ -152,7 +155,9 @@ struct Analysis {
   /// measurement is from it: (g - expected) / sqrt(sigma_g^2 + sigma_expected^2).
   std::optional<ExpectedGravity> expected_g;
   std::optional<double> z_score;
-  /// Findings of the analysis itself (the scene's own are in ParsedScene).
+  /// Findings of the analysis itself (the scene's own are in ParsedScene),
+  /// among them the corrections skipped for a part not described that
+  /// typical values would not leave negligible.
   std::vector<std::string> warnings;
 };
 

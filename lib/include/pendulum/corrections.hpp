@@ -119,21 +119,15 @@ struct Term {
 template <class T>
 using Terms = std::array<Term<T>, kCorrectionCount>;
 
-/// Every correction for `app` swinging as `s`; the finite-amplitude factor
-/// by `amplitude`. Pure: no I/O, no state. A correction whose part the
-/// apparatus lacks is skipped with the reason.
-template <class T>
-Terms<T> correction_terms(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
-  Terms<T> out;
+/// Every correction for `app` swinging as `s`, handed to `sink` as
+/// sink.set(id, ratio, method) or sink.skip({ids...}, reason): a correction
+/// whose part the apparatus lacks is skipped with the reason. The
+/// finite-amplitude factor by `amplitude`. Pure: no I/O, no state.
+template <class T, class Sink>
+void visit_corrections(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude, Sink& sink) {
   using Id = CorrectionId;
-  auto set = [&](Id id, const T& ratio, const char* method) {
-    auto& term = out[static_cast<int>(id)];
-    term.ratio = ratio;
-    term.method = method;
-  };
-  auto skip = [&](std::initializer_list<Id> ids, const char* reason) {
-    for (Id id : ids) out[static_cast<int>(id)].skip_reason = reason;
-  };
+  auto set = [&](Id id, const T& ratio, const char* method) { sink.set(id, ratio, method); };
+  auto skip = [&](std::initializer_list<Id> ids, const char* reason) { sink.skip(ids, reason); };
 
   const T& l = s.length;
   const T& theta0 = s.amplitude;
@@ -141,9 +135,6 @@ Terms<T> correction_terms(const Apparatus<T>& app, const Swing<T>& s, const Ampl
 
   set(Id::finite_amplitude, finite_amplitude(amplitude.method, theta0, amplitude.terms),
       method_name(amplitude.method));
-  auto& amplitude_term = out[static_cast<int>(Id::finite_amplitude)];
-  amplitude_term.error_bound = amplitude.bound;
-  if (amplitude.method == AmplitudeMethod::series) amplitude_term.series_terms = amplitude.terms;
 
   if (!app.bob) {
     skip({Id::bob_radius, Id::bob_rotation}, "the scene has no bob");
@@ -243,7 +234,27 @@ Terms<T> correction_terms(const Apparatus<T>& app, const Swing<T>& s, const Ampl
       set(Id::support_motion, support_inertial(*m, *sup.mass), "eq88");
     }
   }
-  return out;
+}
+
+/// Every correction as a row: its ratio and method, or why it was skipped.
+template <class T>
+Terms<T> correction_terms(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
+  struct Rows {
+    Terms<T> out;
+    void set(CorrectionId id, const T& ratio, const char* method) {
+      auto& term = out[static_cast<int>(id)];
+      term.ratio = ratio;
+      term.method = method;
+    }
+    void skip(std::initializer_list<CorrectionId> ids, const char* reason) {
+      for (CorrectionId id : ids) out[static_cast<int>(id)].skip_reason = reason;
+    }
+  } rows;
+  visit_corrections(app, s, amplitude, rows);
+  auto& amplitude_term = rows.out[static_cast<int>(CorrectionId::finite_amplitude)];
+  amplitude_term.error_bound = amplitude.bound;
+  if (amplitude.method == AmplitudeMethod::series) amplitude_term.series_terms = amplitude.terms;
+  return rows.out;
 }
 
 /// T/T0 from the corrections' ratios r_i = DeltaT_i/T0.
@@ -262,6 +273,24 @@ struct Composition {
   T cross;      ///< r_amplitude x others
   T total;      ///< T/T0 - 1 = amplitude + others + cross
 };
+
+/// The composition straight from the corrections, without their rows: what
+/// a fit needs at every step.
+template <class T>
+Composition<T> compose(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
+  struct Sums {
+    Composition<T> c{T(0.0), T(0.0), T(0.0), T(0.0)};
+    void set(CorrectionId id, const T& ratio, const char*) {
+      (id == CorrectionId::finite_amplitude ? c.amplitude : c.others) += ratio;
+    }
+    void skip(std::initializer_list<CorrectionId>, const char*) {}
+  } sums;
+  visit_corrections(app, s, amplitude, sums);
+  Composition<T>& c = sums.c;
+  c.cross = c.amplitude * c.others;
+  c.total = c.amplitude + c.others + c.cross;
+  return c;
+}
 
 template <class T>
 Composition<T> compose(const Terms<T>& terms) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "pendulum/analysis.hpp"
+#include "pendulum/clock_scene.hpp"
 
 namespace pendulum {
 
@@ -36,5 +37,10 @@ BatchLine batch_line(const std::string& input, const ParsedScene& scene, const A
 /// The line of a scene that failed: its input and the error.
 BatchLine batch_failure(const std::string& input, const std::string& error);
 std::string batch_csv_header();
+
+/// The result of `pendulum-g clock` (docs/clock.md) as JSON and as a table;
+/// `input` names the scene file as the user gave it.
+std::string clock_json(const ClockScene& scene, const ClockAnalysis& analysis, const std::string& input);
+std::string clock_table(const ClockScene& scene, const ClockAnalysis& analysis);
 
 }  // namespace pendulum

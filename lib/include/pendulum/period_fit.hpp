@@ -31,6 +31,9 @@ struct PeriodFitProblem {
 struct PeriodFitSolution {
   std::vector<double> parameters;  ///< SI, in the model's order
   double chi2 = 0.0;               ///< sum of squared weighted residuals
+  /// (J^T W J)^-1 at the optimum: the parameters' covariance from the
+  /// weights alone (row-major, zero rows for held ones; empty when singular).
+  std::vector<double> covariance;
   bool converged = false;
   std::string termination;  ///< Ceres's message
   int iterations = 0;

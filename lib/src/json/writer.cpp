@@ -1,11 +1,34 @@
+#include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "pendulum/output.hpp"
+#include "writer.hpp"
 
 namespace pendulum {
+
+namespace {
+/// Throws std::logic_error at a number that is not finite: the JSON library
+/// would print it as null, where the API promises a number.
+void require_finite(const nlohmann::ordered_json& j, const std::string& path) {
+  if (j.is_structured()) {
+    for (const auto& item : j.items()) require_finite(item.value(), path + "/" + item.key());
+  } else if (j.is_number_float() && !std::isfinite(j.get<double>())) {
+    throw std::logic_error("non-finite number in the output at " + path);
+  }
+}
+
+}  // namespace
+
+/// JSON text as every command prints it, after the check above. A file name
+/// that is not UTF-8 prints its bad bytes as U+FFFD instead of failing.
+std::string json_text(const nlohmann::ordered_json& j, int indent) {
+  require_finite(j, "");
+  return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+}
 
 namespace {
 
@@ -23,11 +46,6 @@ json measured(const Estimate& x, const char* unit) {
   return {{"value", x.value}, {"uncertainty", optional_number(x.uncertainty)}, {"unit", unit}};
 }
 
-/// JSON text as every command prints it. A file name that is not UTF-8
-/// prints its bad bytes as U+FFFD instead of failing.
-std::string text(const json& j, int indent) {
-  return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
-}
 
 json parameter(const FittedParameter& q, const char* unit) {
   return {{"value", q.value},
@@ -174,6 +192,7 @@ json fit_json(const ParsedScene& scene, const Analysis& a) {
            {"ideal", measured(o.period_ideal, "s")},
            {"trials", o.trials},
            {"oscillations_per_trial", o.oscillations_per_trial}}},
+         {"effective_uncertainty_s", o.effective_uncertainty},
          {"residual_sigma", optional_number(o.residual)},
          {"total_delta_T_s", o.total_delta_T},
          {"negligible_threshold_delta_T_s", o.negligible_below},
@@ -244,7 +263,7 @@ std::string result_json(const ParsedScene& scene, const Analysis& a, const Analy
                                            : *scene.apparatus.decay;
     out["drag_theory"] = drag_to_json(*a.drag, used);
   }
-  return text(out, indent);
+  return json_text(out, indent);
 }
 
 std::string decay_fit_json(const std::string& input, const ParsedScene& scene, const DecayFit& fit,
@@ -257,7 +276,7 @@ std::string decay_fit_json(const std::string& input, const ParsedScene& scene, c
     out["drag_theory"] = drag_to_json(*drag, *fitted.apparatus.decay);
   }
   out["warnings"] = warnings;
-  return text(out, 2);
+  return json_text(out, 2);
 }
 
 BatchLine batch_line(const std::string& input, const ParsedScene& scene, const Analysis& a) {
@@ -271,12 +290,12 @@ BatchLine batch_line(const std::string& input, const ParsedScene& scene, const A
                      {"expected_g_m_s2", a.expected_g ? json(a.expected_g->value) : json(nullptr)},
                      {"z", optional_number(a.z_score)},
                      {"warnings", scene.warnings.size() + a.warnings.size()}};
-  return {true, text(line, -1), csv_row(line)};
+  return {true, json_text(line, -1), csv_row(line)};
 }
 
 BatchLine batch_failure(const std::string& input, const std::string& error) {
   const json line = {{"input", input}, {"ok", false}, {"error", error}};
-  return {false, text(line, -1), csv_row(line)};
+  return {false, json_text(line, -1), csv_row(line)};
 }
 
 std::string batch_csv_header() {
@@ -337,13 +356,13 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
                   plus_minus(a.fit.textbook.g.uncertainty, "%.5f").c_str());
     os << line;
   } else {
-    std::snprintf(line, sizeof line, "%5s %10s %8s %12s %10s %12s %9s %12s\n", "obs", "L (m)", "theta0",
-                  "T meas (s)", "+- (s)", "T model (s)", "resid", "T-T0 (us)");
+    std::snprintf(line, sizeof line, "%5s %9s %12s %12s %10s %12s %9s %12s\n", "obs", "L (m)", "theta0 (deg)",
+                  "T meas (s)", "+- (s)", "T model (s)", "resid (sd)", "T-T0 (us)");
     os << line;
     for (std::size_t k = 0; k < a.observations.size(); ++k) {
       const ObservationResult& o = a.observations[k];
-      std::snprintf(line, sizeof line, "%5zu %10.5f %7.2f%s %12.6f %10.6f %12.6f %8.2fs %+12.2f\n", k, o.length,
-                    o.amplitude * 180.0 / kPi, "d", o.period_measured.value, o.period_measured.uncertainty,
+      std::snprintf(line, sizeof line, "%5zu %9.4f %12.2f %12.6f %10.6f %12.6f %+10.2f %+12.2f\n", k, o.length,
+                    o.amplitude * 180.0 / kPi, o.period_measured.value, o.period_measured.uncertainty,
                     o.period_model, o.residual.value_or(0.0), o.total_delta_T * 1e6);
       os << line;
     }
@@ -393,7 +412,7 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     constexpr std::size_t kShown = 12;
     os << "\nUncertainty budget of g (largest first):\n";
     for (std::size_t i = 0; i < a.budget.size() && i < kShown; ++i) {
-      std::snprintf(line, sizeof line, "  %-28s %.6f m/s^2\n", a.budget[i].input.c_str(), a.budget[i].contribution);
+      std::snprintf(line, sizeof line, "  %-32s %.6f m/s^2\n", a.budget[i].input.c_str(), a.budget[i].contribution);
       os << line;
     }
     if (a.budget.size() > kShown) os << "  ... and " << a.budget.size() - kShown << " more (JSON: g.budget)\n";

@@ -29,14 +29,27 @@ struct SimplePendulum {
   template <class T>
   static PeriodPrediction<T> predict(const T* p, const Observation<T>& o, const Apparatus<T>& app,
                                      const AmplitudeChoice& amplitude) {
-    using std::sqrt;
     const Swing<T> swing = Swing<T>::of(o, p[length_offset]);
     PeriodPrediction<T> out;
     out.terms = correction_terms(app, swing, amplitude);
     out.composition = compose(out.terms);
-    out.ideal = 2.0 * kPi * sqrt(swing.length / p[g]);  // Eq. (3)
+    out.ideal = ideal_period(p, swing);
     out.period = out.ideal * (1.0 + out.composition.total);
     return out;
+  }
+
+  /// predict()'s period alone, without the rows: the fit's residuals.
+  template <class T>
+  static T period(const T* p, const Observation<T>& o, const Apparatus<T>& app, const AmplitudeChoice& amplitude) {
+    const Swing<T> swing = Swing<T>::of(o, p[length_offset]);
+    return ideal_period(p, swing) * (1.0 + compose(app, swing, amplitude).total);
+  }
+
+  /// T0 = 2 pi sqrt(l/g) (Eq. 3).
+  template <class T>
+  static T ideal_period(const T* p, const Swing<T>& swing) {
+    using std::sqrt;
+    return 2.0 * kPi * sqrt(swing.length / p[g]);  // Eq. (3)
   }
 
   /// The closed form for one observation with g the only unknown (the

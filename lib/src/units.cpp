@@ -2,11 +2,12 @@
 
 #include <array>
 
+#include "pendulum/numeric.hpp"
+
 namespace pendulum {
 namespace {
 
-constexpr double kPiDouble = 3.14159265358979323846;
-constexpr double kDegree = kPiDouble / 180.0;
+constexpr double kDegree = kPi / 180.0;
 constexpr double kMmHg = 133.322387415;  // Pa, conventional (13.5951 g/cm^3, 9.80665 m/s^2)
 
 constexpr std::array<Unit, 60> kUnits{{

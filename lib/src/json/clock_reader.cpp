@@ -69,9 +69,12 @@ ClockScene parse_clock_scene(const std::string& text) {
   const json doc = parse_json(text, kMaxSceneBytes);
   Object top(doc, "", "a JSON object (the clock scene)");
   ClockScene s;
+  PENDULUM_FAIL_IF(!top.has("schema"), "schema",
+                   std::string("missing; a clock scene names itself: \"schema\": \"") + kClockSceneSchema + "\"");
   const std::string schema = top.text("schema");
   if (schema != kClockSceneSchema) {
-    throw InputError("schema", "got " + shown(top.at("schema")) + "; expected \"" + kClockSceneSchema + "\"");
+    throw InputError("schema", "got " + shown(top.at("schema")) + "; expected \"" + kClockSceneSchema + "\"" +
+                                   (schema == "pendulum-g/scene/1" ? " (a pendulum-g/scene/1 file is for pendulum-g reduce)" : ""));
   }
   if (top.has("title")) s.title = top.text("title");
   if (top.has("source")) s.source = top.text("source");

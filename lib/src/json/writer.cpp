@@ -198,7 +198,8 @@ json fit_json(const ParsedScene& scene, const Analysis& a) {
          {"negligible_threshold_delta_T_s", o.negligible_below},
          {"corrections", corrections_json(o)}});
   }
-  json textbook = {{"equation", "T^2 = (4 pi^2 / g) (L + length_offset), no corrections"},
+  json textbook = {{"equation", f.textbook.length_offset ? "T^2 = (4 pi^2 / g) (L + length_offset), no corrections"
+                                                          : "T^2 = (4 pi^2 / g) L, no corrections"},
                    {"g", measured(f.textbook.g, "m/s^2")}};
   if (f.textbook.length_offset) textbook["length_offset"] = measured(*f.textbook.length_offset, "m");
   return {{"model", "simple_pendulum"},
@@ -379,8 +380,8 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
       os << line;
     }
     const TextbookFit& t = a.fit.textbook;
-    std::snprintf(line, sizeof line, "Textbook line T^2 = (4 pi^2/g)(L + offset), no corrections: g = %.5f %s m/s^2",
-                  t.g.value, plus_minus(t.g.uncertainty, "%.5f").c_str());
+    std::snprintf(line, sizeof line, "Textbook line T^2 = (4 pi^2/g)%s, no corrections: g = %.5f %s m/s^2",
+                  t.length_offset ? "(L + offset)" : " L", t.g.value, plus_minus(t.g.uncertainty, "%.5f").c_str());
     os << line;
     if (t.length_offset) {
       std::snprintf(line, sizeof line, ", offset = %.5f %s m", t.length_offset->value,

@@ -736,3 +736,19 @@ TEST_CASE("clock refuses bad clock scenes with exit 1 and nothing on stdout", "[
   CHECK(run("clock").status == 2);
   CHECK(run("clock --route magic " + kFeinsteinClock).status == 2);
 }
+
+TEST_CASE("report: a series, its fit and the textbook line", "[cli][report]") {
+  const std::string series = std::string(PENDULUM_DATA_DIR) + "/pendulum_lengths_series.json";
+  const Run r = run("report " + series);
+  REQUIRE(r.status == 0);
+  CHECK(external_reference(r.out) == "");
+  CHECK(occurrences(r.out, "<svg ") == 3);  // corrections of the first observation, budget, series
+  CHECK_THAT(r.out, Contains("<h3>Series fit</h3>"));
+  CHECK_THAT(r.out, Contains("g of the textbook line (no corrections)"));
+  const Run plot = run("report " + series + " --plot series");
+  REQUIRE(plot.status == 0);
+  CHECK_THAT(plot.out, Contains("<title id=\"series-title\">Series: T\u00B2 against length"));
+  const Run single = run("report " + kNelsonOlsson + " --plot series");
+  CHECK(single.status == 1);
+  CHECK_THAT(single.err, Contains("observations: the scene is not a series of observations"));
+}

@@ -13,6 +13,10 @@
 
 #include "pendulum/amplitude.hpp"
 
+namespace pendulum {
+struct AnalysisOptions;
+}
+
 namespace pendulum::cli {
 
 /// A registered subcommand and the function that runs it.
@@ -31,6 +35,10 @@ void print_warnings(const std::vector<std::string>& warnings);
 /// when the command can choose.
 std::map<std::string, AmplitudeMethod> amplitude_methods(bool with_auto);
 
+/// The options of an analysis (--negligible-fraction, --amplitude-method,
+/// --series-terms), shared by the commands that reduce one scene.
+void add_analysis_options(CLI::App& cmd, AnalysisOptions& options);
+
 /// `pendulum-g reduce SCENE`: scene -> corrected g (cli/reduce_command.cpp).
 Command add_reduce_command(CLI::App& app);
 
@@ -40,6 +48,16 @@ Command add_amplitude_command(CLI::App& app);
 
 /// `pendulum-g batch SCENES...`: many scenes -> one summary (cli/batch_command.cpp).
 Command add_batch_command(CLI::App& app);
+
+/// `pendulum-g report SCENE -o report.html`: the reduction as one HTML page
+/// or one SVG plot (cli/report_command.cpp).
+Command add_report_command(CLI::App& app);
+
+/// Writes `text` to `path` ("-": standard output): a regular file through a
+/// temporary file renamed over it, so that a failure leaves no partial file;
+/// a device or pipe (/dev/stdout) in place. Throws InputError ("output: cannot
+/// write PATH: reason").
+void write_output(const std::string& path, const std::string& text);
 
 /// `pendulum-g fit-decay SCENE`: the decay record -> alpha, beta (cli/fit_decay_command.cpp).
 Command add_fit_decay_command(CLI::App& app);

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 #include <vector>
 #include <string>
@@ -167,6 +168,11 @@ TEST_CASE("Catalogue of bad scenes", "[cli][errors]") {
     // sanitizer report after it.
     CHECK(r.err.rfind("pendulum-g: error: ", 0) == 0);
     CHECK(r.err.find('\n') == r.err.size() - 1);
+    // report fails with the same message and writes nothing (docs/report.md).
+    const Run report = run("report " + file + " -o " + file + ".html");
+    CHECK(report.status == 1);
+    CHECK(report.err == r.err);
+    CHECK_FALSE(std::filesystem::exists(file + ".html"));
   }
   std::remove(file.c_str());
 }
@@ -396,6 +402,35 @@ TEST_CASE("reduce names the amplitude method and its error bound", "[cli][amplit
 
 namespace {
 
+const std::string kDecayScene = std::string(PENDULUM_DATA_DIR) + "/nelson_olsson_1986_decay.json";
+
+// What in a page would load something from elsewhere: a scheme, a
+// protocol-relative "//", a src, a CSS url() or @import, an element that
+// fetches, or a link that leaves the page. Returns the first found, or "".
+std::string external_reference(const std::string& page) {
+  for (const char* bad : {"http:", "https:", "ftp:", "file://", "//", "src=", "srcset", "url(", "@import", "<link",
+                          "<script", "<iframe", "<object", "<embed", "<img", "<base"}) {
+    if (page.find(bad) != std::string::npos) return bad;
+  }
+  for (std::size_t at = page.find("href="); at != std::string::npos; at = page.find("href=", at + 1)) {
+    if (page.compare(at, 7, "href=\"#") != 0) return page.substr(at, 20);
+  }
+  return "";
+}
+
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// A new empty directory for a test's output.
+std::string temporary_directory() {
+  char name[] = "/tmp/pendulum-g-report-XXXXXX";
+  REQUIRE(mkdtemp(name));
+  return name;
+}
+
 const std::string kFeinsteinClock = std::string(PENDULUM_DATA_DIR) + "/feinstein_2005_clock.json";
 
 // The bundled clock scene with `patch` merged in (RFC 7386), run by `clock`.
@@ -410,6 +445,154 @@ Run run_clock(const json& patch, const std::string& options = "") {
 }
 
 }  // namespace
+
+TEST_CASE("report: one self-contained HTML page, the same bytes twice", "[cli][report]") {
+  const std::string dir = temporary_directory();
+  struct Case {
+    std::string scene;
+    std::size_t plots;  // corrections, budget, and the decay record when there is one
+  };
+  for (const Case& c : {Case{kNelsonOlsson, 2}, Case{kDecayScene, 3}}) {
+    INFO(c.scene);
+    const Run first = run("report " + c.scene + " -o " + dir + "/first.html");
+    REQUIRE(first.status == 0);
+    CHECK(first.out.empty());
+    CHECK(first.err.empty());
+    const Run second = run("report " + c.scene + " --output " + dir + "/second.html");
+    REQUIRE(second.status == 0);
+    const std::string page = pendulum::test::read_text(dir + "/first.html");
+    CHECK(page == pendulum::test::read_text(dir + "/second.html"));
+    CHECK(page == run("report " + c.scene).out);  // standard output by default
+
+    CHECK(page.rfind("<!DOCTYPE html>\n<html lang=\"en\">", 0) == 0);
+    CHECK(external_reference(page) == "");
+    CHECK(occurrences(page, "<svg ") == c.plots);
+    CHECK(occurrences(page, "<title id=") == c.plots);
+    CHECK(occurrences(page, "<desc id=") == c.plots);
+    // The numbers of `reduce --format table` (README): g and the comparison.
+    CHECK_THAT(page, Contains("g = 9.80340 \u00B1 0.00148 m/s\u00B2"));
+    CHECK_THAT(page, Contains("+0.00080 m/s\u00B2 = +0.54 combined standard uncertainties"));
+    CHECK_THAT(page, Contains("Nelson &amp; Olsson (1986)"));
+    CHECK_THAT(page, Contains("<td>Finite amplitude</td><td class=\"num\">+596.00"));
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("report: bad input fails as reduce does and leaves no file", "[cli][report][errors]") {
+  const std::string dir = temporary_directory();
+  json scene = json::parse(pendulum::test::read_text(kNelsonOlsson));
+  scene["bob"]["diameter"]["unit"] = "inch";
+  const std::string bad = dir + "/bad.json";
+  std::ofstream(bad) << scene.dump();
+
+  const Run reduce = run("reduce " + bad);
+  const Run report = run("report " + bad + " -o " + dir + "/report.html");
+  CHECK(reduce.status == 1);
+  CHECK(report.status == 1);
+  CHECK(report.out.empty());
+  CHECK(report.err == reduce.err);  // the same message, naming the file and the JSON path
+  CHECK_THAT(report.err, Contains("bad.json: bob.diameter.unit: got \"inch\""));
+  // Nothing written: no report, no temporary file beside it.
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) files.push_back(entry.path().filename());
+  CHECK(files == std::vector<std::string>{"bad.json"});
+
+  // An earlier report stays as it was.
+  std::ofstream(dir + "/report.html") << "earlier";
+  CHECK(run("report " + bad + " -o " + dir + "/report.html").status == 1);
+  CHECK(pendulum::test::read_text(dir + "/report.html") == "earlier");
+
+  const Run unwritable = run("report " + kNelsonOlsson + " -o " + dir + "/missing/report.html");
+  CHECK(unwritable.status == 1);
+  CHECK_THAT(unwritable.err, Contains("output: cannot write " + dir + "/missing/report.html: No such file or directory"));
+  const Run directory = run("report " + kNelsonOlsson + " -o " + dir);
+  CHECK(directory.status == 1);
+  CHECK_THAT(directory.err, Contains("output: cannot write " + dir + ": Is a directory"));
+  // A device is written in place, never replaced by a file (/dev/stdout here).
+  const Run device = run("report " + kNelsonOlsson + " -o /dev/stdout");
+  CHECK(device.status == 0);
+  CHECK(device.out == run("report " + kNelsonOlsson).out);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("report --plot: one plot as an SVG file", "[cli][report]") {
+  const Run corrections = run("report " + kNelsonOlsson + " --plot corrections");
+  REQUIRE(corrections.status == 0);
+  CHECK(corrections.out.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"", 0) ==
+        0);
+  CHECK_THAT(corrections.out, Contains("<title id=\"corrections-title\">Corrections to the period</title>"));
+  CHECK(corrections.out == run("report --format svg --plot corrections " + kNelsonOlsson).out);
+  CHECK(run("report " + kDecayScene + " --plot decay").status == 0);
+
+  const Run no_record = run("report " + kNelsonOlsson + " --plot decay");
+  CHECK(no_record.status == 1);
+  CHECK(no_record.out.empty());
+  CHECK_THAT(no_record.err, Contains("decay.data: the scene has no decay record to plot"));
+  CHECK(run("report " + kNelsonOlsson + " --format svg").status == 2);  // which plot?
+  CHECK(run("report " + kNelsonOlsson + " --format html --plot budget").status == 2);
+  CHECK(run("report " + kNelsonOlsson + " --plot residuals").status == 2);
+}
+
+TEST_CASE("batch --report: the class, sorted, failures, a section per scene", "[cli][batch][report]") {
+  const std::string dir = temporary_directory();
+  const std::string cls = std::string(PENDULUM_DATA_DIR) + "/class";
+  const Run r = run("batch --jobs 2 --report " + dir + "/class.html " + cls);
+  CHECK(r.status == 1);  // student_c fails
+  CHECK(occurrences(r.out, "\n") == 3);  // the summary as without --report
+  const std::string page = pendulum::test::read_text(dir + "/class.html");
+  CHECK(external_reference(page) == "");
+  CHECK_THAT(page, Contains("3 scenes: 2 reduced, 1 failed."));
+  // The rows link to the sections; student_c has a row among the failures only.
+  for (const char* s : {"href=\"#scene-1\"", "href=\"#scene-2\"", "id=\"scene-1\"", "id=\"scene-2\""}) {
+    INFO(s);
+    CHECK(occurrences(page, s) >= 1);
+  }
+  CHECK(page.find("scene-3") == std::string::npos);
+  CHECK_THAT(page, Contains("<td><code>" + cls + "/student_c.json</code></td><td>bob.diameter.unit: got &quot;inch&quot;"));
+  // docs/instructors.md: A at +0.54, B at +5.18 combined standard uncertainties, in that order (by g).
+  const std::size_t a = page.find("<td class=\"num\">+0.54</td>"), b = page.find("<td class=\"num\">+5.18</td>");
+  CHECK(a != std::string::npos);
+  CHECK(b != std::string::npos);
+  CHECK(a < b);
+  // One worker or two, the same page.
+  CHECK(run("batch --jobs 1 --report " + dir + "/again.html " + cls).status == 1);
+  CHECK(page == pendulum::test::read_text(dir + "/again.html"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("report: a page for every valid scene of the catalogue, extreme or suspicious", "[cli][report]") {
+  const json catalogue =
+      json::parse(pendulum::test::read_text(std::string(PENDULUM_TESTS_DIR) + "/valid_scenes.json"));
+  const json base = json::parse(pendulum::test::read_text(kNelsonOlsson));
+  const std::string file = temporary_file();
+  // A number printed from NaN or infinity, not a word holding those letters.
+  const std::regex non_finite("(^|[^A-Za-z])-?(nan|inf)", std::regex::icase);
+  for (const json& entry : catalogue.at("cases")) {
+    std::ofstream(file, std::ios::binary) << pendulum::test::catalogue_text(entry, base);
+    const Run r = run("report " + file);
+    INFO(entry.at("name").get<std::string>() << "\nstderr: " << r.err);
+    REQUIRE(r.status == 0);
+    CHECK(external_reference(r.out) == "");
+    CHECK_FALSE(std::regex_search(r.out, non_finite));
+    CHECK(occurrences(r.out, "<svg ") >= 1);
+    CHECK(r.out.size() > 10000);
+  }
+  std::remove(file.c_str());
+}
+
+TEST_CASE("report: text from the scene is escaped, never markup", "[cli][report]") {
+  const std::string dir = temporary_directory();
+  json scene = json::parse(pendulum::test::read_text(kNelsonOlsson));
+  scene["title"] = "<script>alert(\"g\")</script> & <b>co</b>";
+  scene["source"] = "notebook p. 3 <img onerror=x>";
+  std::ofstream(dir + "/odd.json") << scene.dump();
+  const Run r = run("report " + dir + "/odd.json");
+  REQUIRE(r.status == 0);
+  CHECK(external_reference(r.out) == "");
+  CHECK_THAT(r.out, Contains("<h2>&lt;script&gt;alert(&quot;g&quot;)&lt;/script&gt; &amp; &lt;b&gt;co&lt;/b&gt;</h2>"));
+  CHECK_THAT(r.out, Contains("notebook p. 3 &lt;img onerror=x&gt;"));
+  std::filesystem::remove_all(dir);
+}
 
 TEST_CASE("clock on Feinstein's 1-second pendulum: Tables 1 and 3B, Sec. IX", "[cli][clock]") {
   const Run r = run("clock " + kFeinsteinClock);
@@ -552,4 +735,20 @@ TEST_CASE("clock refuses bad clock scenes with exit 1 and nothing on stdout", "[
   std::remove(file.c_str());
   CHECK(run("clock").status == 2);
   CHECK(run("clock --route magic " + kFeinsteinClock).status == 2);
+}
+
+TEST_CASE("report: a series, its fit and the textbook line", "[cli][report]") {
+  const std::string series = std::string(PENDULUM_DATA_DIR) + "/pendulum_lengths_series.json";
+  const Run r = run("report " + series);
+  REQUIRE(r.status == 0);
+  CHECK(external_reference(r.out) == "");
+  CHECK(occurrences(r.out, "<svg ") == 3);  // corrections of the first observation, budget, series
+  CHECK_THAT(r.out, Contains("<h3>Series fit</h3>"));
+  CHECK_THAT(r.out, Contains("g of the textbook line (no corrections)"));
+  const Run plot = run("report " + series + " --plot series");
+  REQUIRE(plot.status == 0);
+  CHECK_THAT(plot.out, Contains("<title id=\"series-title\">Series: T\u00B2 against length"));
+  const Run single = run("report " + kNelsonOlsson + " --plot series");
+  CHECK(single.status == 1);
+  CHECK_THAT(single.err, Contains("observations: the scene is not a series of observations"));
 }

@@ -23,19 +23,20 @@ struct NormalSums {
   double rr = 0.0;
 };
 
-/// The observations as dual numbers of N components (constants, converted once).
+/// The apparatus and each observation's parameter-free swing (Model::swing)
+/// as dual numbers of N components: constants, converted once.
 template <class Model, int N>
 struct DualData {
   using Jet = ceres::Jet<double, N>;
   explicit DualData(const PeriodFitProblem<Model>& problem)
       : apparatus(convert_apparatus<Jet>(*problem.apparatus, [](const Field&, double x) { return Jet(x); })) {
-    observations.reserve(problem.observations->size());
+    swings.reserve(problem.observations->size());
     for (const auto& o : *problem.observations) {
-      observations.push_back(convert_observation<Jet>(o, [](const Field&, double x) { return Jet(x); }));
+      swings.push_back(Model::swing(convert_observation<Jet>(o, [](const Field&, double x) { return Jet(x); })));
     }
   }
   Apparatus<Jet> apparatus;
-  std::vector<Observation<Jet>> observations;
+  std::vector<Swing<Jet>> swings;
 };
 
 /// g projected out (variable projection, Golub & Pereyra 1973). Every period
@@ -77,7 +78,7 @@ class ProjectedPeriods {
     const auto& weights = *problem_.weights;
     h_.resize(obs.size());
     for (std::size_t k = 0; k < obs.size(); ++k) {
-      h_[k] = Model::period(p.data(), data_.observations[k], data_.apparatus, (*problem_.amplitude)[k]);
+      h_[k] = Model::period(p.data(), data_.swings[k], data_.apparatus, (*problem_.amplitude)[k]);
       const double w2 = weights[k] * weights[k];
       big_a += w2 * obs[k].period * h_[k].a;
       big_b += w2 * h_[k].a * h_[k].a;

@@ -49,4 +49,8 @@ Command add_batch_command(CLI::App& app);
 /// `pendulum-g fit-decay SCENE`: the decay record -> alpha, beta (cli/fit_decay_command.cpp).
 Command add_fit_decay_command(CLI::App& app);
 
+/// `pendulum-g import RECORDING`: a phone, photogate or video-tracker
+/// recording -> period, amplitudes, timing and decay (cli/import_command.cpp).
+Command add_import_command(CLI::App& app);
+
 }  // namespace pendulum::cli

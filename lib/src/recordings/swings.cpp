@@ -1,0 +1,431 @@
+#include "pendulum/recordings/swings.hpp"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "pendulum/amplitude.hpp"
+#include "pendulum/numeric.hpp"
+#include "pendulum/scene_json.hpp"
+
+namespace pendulum {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// The swing signal: one value per sample, zero on average.
+struct Signal {
+  std::vector<double> s;
+  int crossings_per_period = 2;
+  std::array<double, 3> axis{};
+  double offset = 0.0;  ///< the mean removed (|a| for acceleration)
+  bool has_amplitude = true;
+};
+
+/// Projection on the principal axis of the mean-removed vectors.
+Signal principal_axis(const Recording& r) {
+  const std::size_t m = r.channels.size(), n = r.time.size();
+  Eigen::VectorXd mean = Eigen::VectorXd::Zero(m);
+  for (std::size_t j = 0; j < m; ++j) {
+    double sum = 0.0;
+    for (double x : r.channels[j]) sum += x;
+    mean[j] = sum / n;
+  }
+  Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(m, m);
+  for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t a = 0; a < m; ++a) {
+      const double da = r.channels[a][k] - mean[a];
+      for (std::size_t b = a; b < m; ++b) cov(a, b) += da * (r.channels[b][k] - mean[b]);
+    }
+  }
+  cov = cov.selfadjointView<Eigen::Upper>();
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(cov);
+  Eigen::VectorXd v = eig.eigenvectors().col(m - 1);  // largest eigenvalue last
+  Eigen::Index largest = 0;
+  v.cwiseAbs().maxCoeff(&largest);
+  if (v[largest] < 0.0) v = -v;  // the sign is arbitrary: make it reproducible
+  Signal sig;
+  for (std::size_t j = 0; j < m && j < 3; ++j) sig.axis[j] = v[j];
+  sig.s.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    double x = 0.0;
+    for (std::size_t j = 0; j < m; ++j) x += v[j] * (r.channels[j][k] - mean[j]);
+    sig.s[k] = x;
+  }
+  return sig;
+}
+
+Signal remove_mean(std::vector<double> s) {
+  double sum = 0.0;
+  for (double x : s) sum += x;
+  const double mean = s.empty() ? 0.0 : sum / s.size();
+  for (double& x : s) x -= mean;
+  Signal sig;
+  sig.s = std::move(s);
+  sig.offset = mean;
+  return sig;
+}
+
+/// The angle about the centre of the circle through a video track (Kasa's
+/// algebraic fit: x^2 + y^2 + D x + E y + F = 0 by least squares); the
+/// projection on the principal axis, without amplitudes, when the track is
+/// too straight for a centre.
+Signal track_angle(const Recording& r) {
+  const auto& x = r.channels[0];
+  const auto& y = r.channels[1];
+  const std::size_t n = x.size();
+  double mx = 0.0, my = 0.0;
+  for (std::size_t k = 0; k < n; ++k) mx += x[k], my += y[k];
+  mx /= n, my /= n;
+  Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d atb = Eigen::Vector3d::Zero();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Eigen::Vector3d a(x[k] - mx, y[k] - my, 1.0);
+    const double b = -((x[k] - mx) * (x[k] - mx) + (y[k] - my) * (y[k] - my));
+    ata += a * a.transpose();
+    atb += a * b;
+  }
+  const Eigen::Vector3d c = ata.ldlt().solve(atb);
+  const double cx = -c[0] / 2.0, cy = -c[1] / 2.0;
+  const double radius2 = cx * cx + cy * cy - c[2];
+  double spread = 0.0;
+  for (std::size_t k = 0; k < n; ++k) spread = std::max(spread, std::hypot(x[k] - mx, y[k] - my));
+  if (!(radius2 > 0.0) || !std::isfinite(radius2) || std::sqrt(radius2) > 1e3 * spread) {
+    Signal sig = principal_axis(r);
+    sig.has_amplitude = false;
+    return sig;
+  }
+  // Angles of the points seen from the centre, relative to the mean point's.
+  const double phi0 = std::atan2(-cy, -cx);
+  std::vector<double> angle(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    angle[k] = std::remainder(std::atan2(y[k] - my - cy, x[k] - mx - cx) - phi0, 2.0 * kPi);
+  }
+  return remove_mean(std::move(angle));
+}
+
+Signal make_signal(const Recording& r) {
+  switch (r.kind) {
+    case SignalKind::angular_rate:
+    case SignalKind::linear_acceleration: return principal_axis(r);
+    case SignalKind::acceleration: {
+      std::vector<double> magnitude(r.time.size());
+      for (std::size_t k = 0; k < magnitude.size(); ++k) {
+        double sum = 0.0;
+        for (const auto& c : r.channels) sum += c[k] * c[k];
+        magnitude[k] = std::sqrt(sum);
+      }
+      Signal sig = remove_mean(std::move(magnitude));
+      sig.crossings_per_period = 4;
+      return sig;
+    }
+    case SignalKind::angle: return remove_mean(r.channels[0]);
+    case SignalKind::position: return track_angle(r);
+    case SignalKind::gate_states:
+    case SignalKind::blocking_times: break;
+  }
+  return {};
+}
+
+/// Noise sigma from second differences: their median absolute value over
+/// 0.6745 sqrt(6) for white noise; a smooth swing adds little to them.
+double noise_sigma(const std::vector<double>& s) {
+  if (s.size() < 3) return 0.0;
+  std::vector<double> d(s.size() - 2);
+  for (std::size_t k = 1; k + 1 < s.size(); ++k) d[k - 1] = std::fabs(s[k + 1] - 2.0 * s[k] + s[k - 1]);
+  auto mid = d.begin() + d.size() / 2;
+  std::nth_element(d.begin(), mid, d.end());
+  return *mid / (0.6745 * std::sqrt(6.0));
+}
+
+/// Least-squares line s = a + b (t - tm) through samples [i, j]; its zero.
+Crossing line_zero(const std::vector<double>& t, const std::vector<double>& s, std::size_t i, std::size_t j) {
+  const double n = static_cast<double>(j - i + 1);
+  double tm = 0.0, sm = 0.0;
+  for (std::size_t k = i; k <= j; ++k) tm += t[k], sm += s[k];
+  tm /= n, sm /= n;
+  double stt = 0.0, sts = 0.0;
+  for (std::size_t k = i; k <= j; ++k) {
+    stt += (t[k] - tm) * (t[k] - tm);
+    sts += (t[k] - tm) * (s[k] - sm);
+  }
+  const double slope = sts / stt;
+  return {tm - sm / slope, slope, static_cast<int>(j - i + 1)};
+}
+
+/// Parabola through the samples around the largest |s| in [i, j] that lie
+/// above 0.8 of it: the peak's time and |value|.
+std::pair<double, double> peak(const std::vector<double>& t, const std::vector<double>& s, std::size_t i,
+                               std::size_t j) {
+  std::size_t top = i;
+  for (std::size_t k = i; k <= j; ++k) {
+    if (std::fabs(s[k]) > std::fabs(s[top])) top = k;
+  }
+  const double level = 0.8 * std::fabs(s[top]);
+  std::size_t a = top, b = top;
+  while (a > i && std::fabs(s[a - 1]) >= level) --a;
+  while (b < j && std::fabs(s[b + 1]) >= level) ++b;
+  if (b - a < 2) return {t[top], std::fabs(s[top])};
+  Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d atb = Eigen::Vector3d::Zero();
+  for (std::size_t k = a; k <= b; ++k) {
+    const double u = t[k] - t[top];
+    const Eigen::Vector3d row(1.0, u, u * u);
+    ata += row * row.transpose();
+    atb += row * std::fabs(s[k]);
+  }
+  const Eigen::Vector3d c = ata.ldlt().solve(atb);
+  if (!(c[2] < 0.0)) return {t[top], std::fabs(s[top])};
+  const double u = std::clamp(-c[1] / (2.0 * c[2]), t[a] - t[top], t[b] - t[top]);
+  return {t[top] + u, c[0] + u * (c[1] + u * c[2])};
+}
+
+/// Crossings of a sampled signal with adaptive hysteresis.
+std::vector<Crossing> find_crossings(const std::vector<double>& t, const Signal& sig, double noise,
+                                     double fraction, std::vector<std::size_t>& at) {
+  const auto& s = sig.s;
+  double rms = 0.0;
+  for (double x : s) rms += x * x;
+  rms = std::sqrt(rms / s.size());
+  const double floor = 5.0 * noise;
+  double h = std::max(fraction * std::sqrt(2.0) * rms, floor);
+  std::vector<Crossing> out;
+  int state = 0;              // -1: beyond -h, +1: beyond +h
+  std::size_t last_beyond = 0;  // last sample beyond the threshold of `state`
+  double half_peak = 0.0;
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const double x = s[k];
+    half_peak = std::max(half_peak, std::fabs(x));
+    if (x < -h || x > h) {
+      const int side = x > 0 ? 1 : -1;
+      if (state == -side) {
+        out.push_back(line_zero(t, s, last_beyond, k));
+        at.push_back(last_beyond);
+        h = std::max(fraction * half_peak, floor);
+        half_peak = 0.0;
+      }
+      state = side;
+      last_beyond = k;
+    }
+  }
+  return out;
+}
+
+/// Gate passages: the middle of each blocking, and its duration (NaN for
+/// bare blocking times).
+std::vector<Crossing> gate_passages(const Recording& r, std::vector<double>& durations) {
+  std::vector<Crossing> out;
+  if (r.kind == SignalKind::blocking_times) {
+    for (double t : r.time) out.push_back({t, 0.0, 0});
+    durations.assign(out.size(), kNaN);
+    return out;
+  }
+  const auto& state = r.channels[0];
+  std::optional<double> blocked_at;
+  for (std::size_t k = 0; k < r.time.size(); ++k) {
+    const bool blocked = state[k] > 0.5;
+    if (blocked && !blocked_at) blocked_at = r.time[k];
+    if (!blocked && blocked_at) {
+      out.push_back({(*blocked_at + r.time[k]) / 2.0, 0.0, 0});
+      durations.push_back(r.time[k] - *blocked_at);
+      blocked_at.reset();
+    }
+  }
+  return out;
+}
+
+/// The weighted fit of step 3 (see the header).
+PeriodEstimate fit_period(const std::vector<Crossing>& c, int per_period) {
+  const std::size_t n = c.size();
+  const double centre = (n - 1) / 2.0;
+  Eigen::Matrix4d xtwx = Eigen::Matrix4d::Zero();
+  Eigen::Vector4d xtwt = Eigen::Vector4d::Zero();
+  std::vector<double> w(n, 1.0);
+  if (c[0].samples > 0) {
+    double mean = 0.0;
+    for (std::size_t i = 0; i < n; ++i) mean += (w[i] = c[i].slope * c[i].slope * c[i].samples);
+    for (double& x : w) x /= mean / n;
+  }
+  const double t0 = c[0].time;
+  auto row = [&](std::size_t i) {
+    const double x = i - centre;
+    return Eigen::Vector4d(1.0, x, x * x, i % 2 ? -1.0 : 1.0);
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector4d r = row(i);
+    xtwx += w[i] * r * r.transpose();
+    xtwt += w[i] * r * (c[i].time - t0);
+  }
+  const Eigen::Matrix4d inv = xtwx.inverse();
+  const Eigen::Vector4d beta = inv * xtwt;
+  std::vector<double> z(n);
+  double ssr = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    z[i] = (c[i].time - t0 - row(i).dot(beta)) * std::sqrt(w[i]);
+    ssr += z[i] * z[i];
+  }
+  double lag = 0.0;
+  for (std::size_t i = 0; i + 1 < n; ++i) lag += z[i] * z[i + 1];
+  PeriodEstimate p;
+  p.lag1_correlation = ssr > 0.0 ? lag / ssr : 0.0;
+  const double rho = std::min(p.lag1_correlation, 0.95);
+  p.inflation = rho > 0.0 ? (1.0 + rho) / (1.0 - rho) : 1.0;
+  const double s2 = ssr / (n - 4.0);
+  p.value = per_period * beta[1];
+  p.uncertainty = per_period * std::sqrt(s2 * inv(1, 1) * p.inflation);
+  p.residual_rms = std::sqrt(s2);
+  p.periods = static_cast<int>((n - 1) / per_period);
+  return p;
+}
+
+/// theta0 from a peak speed ratio x = omega_max T0 / (4 pi) = sin(theta0/2).
+double amplitude_from_sine(double x, const std::string& file) {
+  if (!(x < 1.0)) {
+    throw InputError(file, "a swing's peak rate means an amplitude of 180 deg or more "
+                           "(the pendulum went over the top); expected a swinging pendulum");
+  }
+  return 2.0 * std::asin(x);
+}
+
+}  // namespace
+
+SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const SwingOptions& options) {
+  SwingAnalysis out;
+  std::vector<std::size_t> at;  // first sample of each crossing's window
+  std::vector<double> durations;
+  Signal sig;
+  const bool events = r.kind == SignalKind::gate_states || r.kind == SignalKind::blocking_times;
+  if (events) {
+    out.crossings = gate_passages(r, durations);
+  } else {
+    if (r.time.size() < 16) {
+      throw InputError(file, std::to_string(r.time.size()) + " samples; expected a recording of several swings");
+    }
+    sig = make_signal(r);
+    out.axis = sig.axis;
+    out.crossings_per_period = sig.crossings_per_period;
+    out.noise = noise_sigma(sig.s);
+    double peak_abs = 0.0;
+    for (double x : sig.s) peak_abs = std::max(peak_abs, std::fabs(x));
+    if (!(peak_abs > 10.0 * out.noise) || peak_abs == 0.0) {
+      throw InputError(file, "no oscillation: the signal's largest excursion is " + std::to_string(peak_abs) +
+                                 ", within 10 times its noise (" + std::to_string(out.noise) + ")");
+    }
+    out.crossings = find_crossings(r.time, sig, out.noise, options.hysteresis_fraction, at);
+  }
+  const int cpp = out.crossings_per_period;
+  const int periods = out.crossings.empty() ? 0 : static_cast<int>((out.crossings.size() - 1) / cpp);
+  if (periods < 3 || out.crossings.size() < 7) {
+    throw InputError(file, "found " + std::to_string(out.crossings.size()) + " crossings (" +
+                               std::to_string(periods) + " full periods); expected at least three swings");
+  }
+  out.period = fit_period(out.crossings, cpp);
+  if (!(out.period.value > 0.0) || !std::isfinite(out.period.uncertainty)) {
+    throw InputError(file, "no regular oscillation: the crossing times give no period");
+  }
+
+  // Swings and their raw peaks (rate, angle, |a| - mean, or speed).
+  const std::size_t nc = out.crossings.size();
+  std::vector<double> raw(nc - 1, kNaN);
+  out.swings.resize(nc - 1);
+  for (std::size_t i = 0; i + 1 < nc; ++i) {
+    Swing& w = out.swings[i];
+    w.start = out.crossings[i].time;
+    w.end = out.crossings[i + 1].time;
+    w.peak_time = (w.start + w.end) / 2.0;
+    if (!events) {
+      const auto [tp, value] = peak(r.time, sig.s, at[i], at[i + 1]);
+      w.peak_time = tp;
+      raw[i] = value;
+    }
+  }
+  // Amplitudes (rad), by kind.
+  std::vector<double> theta(nc - 1, kNaN);
+  const double T = out.period.value;
+  out.small_amplitude_period = kNaN;
+  auto solve_with_t0 = [&](auto sine_of) {  // sin(theta0/2) = sine_of(i, T0)
+    double t0 = T;
+    for (int iter = 0; iter < 5; ++iter) {
+      double mean_correction = 0.0;
+      for (std::size_t i = 0; i < theta.size(); ++i) {
+        theta[i] = amplitude_from_sine(sine_of(i, t0), file);
+        mean_correction += finite_amplitude_agm(theta[i]);
+      }
+      t0 = T / (1.0 + mean_correction / theta.size());
+    }
+    out.small_amplitude_period = t0;
+  };
+  switch (r.kind) {
+    case SignalKind::angular_rate:
+      solve_with_t0([&](std::size_t i, double t0) { return raw[i] * t0 / (4.0 * kPi); });  // omega_max = (4 pi/T0) sin(theta0/2)
+      break;
+    case SignalKind::angle:
+    case SignalKind::position:
+      if (sig.has_amplitude) theta = raw;
+      break;
+    case SignalKind::acceleration:
+      // Quarter swings alternate: |a| peaks at the bottom, g(3 - 2 cos theta0),
+      // and dips at the turning points, g cos theta0; a bottom is a quarter
+      // whose excursion is positive.
+      for (std::size_t i = 1; i + 1 < raw.size(); ++i) {
+        if (sig.s[(at[i] + at[i + 1]) / 2] < 0.0) continue;
+        const double ratio = (sig.offset + raw[i]) / (sig.offset - (raw[i - 1] + raw[i + 1]) / 2.0);
+        theta[i] = std::acos(std::clamp(3.0 / (ratio + 2.0), -1.0, 1.0));
+      }
+      break;
+    case SignalKind::gate_states:
+      if (options.bob_width && !durations.empty()) {
+        solve_with_t0([&](std::size_t i, double t0) {
+          const double v = *options.bob_width / durations[i];
+          const double sqrt_gl = options.length ? 2.0 * kPi * *options.length / t0
+                                                : kStandardGravity * t0 / (2.0 * kPi);
+          return v / (2.0 * sqrt_gl);  // v = 2 sqrt(g l) sin(theta0/2)
+        });
+      }
+      break;
+    case SignalKind::linear_acceleration:  // tangential peak g sin theta0 needs g
+    case SignalKind::blocking_times: break;
+  }
+  if (r.kind == SignalKind::gate_states) {
+    // Swings of a photogate are the passages; theta[i] belongs to passage i.
+    for (std::size_t i = 0; i < out.swings.size(); ++i) out.swings[i].peak_time = out.crossings[i].time;
+  }
+  const double origin = out.crossings[0].time;
+  for (std::size_t i = 0; i < out.swings.size(); ++i) {
+    out.swings[i].amplitude = theta[i];
+    if (std::isfinite(theta[i]) && theta[i] > 0.0) {
+      out.decay.times.push_back(out.swings[i].peak_time - origin);
+      out.decay.amplitudes.push_back(theta[i]);
+    }
+  }
+  for (std::size_t i = 0; i + cpp < nc; i += cpp) {
+    PeriodPoint p;
+    p.time = (out.crossings[i].time + out.crossings[i + cpp].time) / 2.0 - origin;
+    p.period = out.crossings[i + cpp].time - out.crossings[i].time;
+    double sum = 0.0;
+    int count = 0;
+    for (int k = 0; k < cpp; ++k) {
+      if (std::isfinite(theta[i + k])) sum += theta[i + k], ++count;
+    }
+    p.amplitude = count ? sum / count : kNaN;
+    out.period_curve.push_back(p);
+  }
+  return out;
+}
+
+RecordingSummary analyse_recording(const std::string& path, RecordingFormat format, const SwingOptions& options,
+                                   const RecordingLimits& limits) {
+  const Recording r = read_recording(path, format, limits);
+  RecordingSummary s;
+  s.file = path;
+  s.format = r.format;
+  s.kind = r.kind;
+  s.rows = r.rows;
+  s.dropped = r.dropped;
+  s.swings = analyse_swings(r, path, options);
+  return s;
+}
+
+}  // namespace pendulum

@@ -47,6 +47,7 @@ struct SimulatedRecording {
   std::vector<double> t;                    // s
   std::array<std::vector<double>, 3> rate;  // gyroscope (rad/s)
   std::vector<double> theta;                // noise-free angle at t (rad)
+  std::vector<double> omega;                // noise-free theta' at t (rad/s)
   std::vector<double> turning_times;        // exact theta' = 0 (s), the release excluded
   std::vector<double> turning_amplitudes;   // |theta| there (rad)
   double omega0 = 0.0;                      // sqrt(g/l)
@@ -89,6 +90,7 @@ inline SimulatedRecording simulate_recording(const RecordingSimulation& s) {
     if ((uniform() >> 11) * 0x1.0p-53 < s.drop) continue;
     out.t.push_back(now);
     out.theta.push_back(th);
+    out.omega.push_back(om);
     for (int j = 0; j < 3; ++j) {
       out.rate[j].push_back(om * s.axis[j] / norm + s.bias[j] + s.noise * noise[j]);
     }

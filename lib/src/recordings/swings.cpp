@@ -88,11 +88,27 @@ Signal track_angle(const Recording& r) {
     atb += a * b;
   }
   const Eigen::Vector3d c = ata.ldlt().solve(atb);
-  const double cx = -c[0] / 2.0, cy = -c[1] / 2.0;
+  double cx = -c[0] / 2.0, cy = -c[1] / 2.0;
   const double radius2 = cx * cx + cy * cy - c[2];
   double spread = 0.0;
   for (std::size_t k = 0; k < n; ++k) spread = std::max(spread, std::hypot(x[k] - mx, y[k] - my));
-  if (!(radius2 > 0.0) || !std::isfinite(radius2) || std::sqrt(radius2) > 1e3 * spread) {
+  // Kasa's fit underestimates the radius of a short noisy arc; Gauss-Newton
+  // on the geometric distances |p - c| - R removes that bias.
+  double radius = std::sqrt(radius2);
+  for (int iter = 0; iter < 20 && std::isfinite(radius); ++iter) {
+    Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d jtr = Eigen::Vector3d::Zero();
+    for (std::size_t k = 0; k < n; ++k) {
+      const double dx = x[k] - mx - cx, dy = y[k] - my - cy, d = std::hypot(dx, dy);
+      const Eigen::Vector3d j(-dx / d, -dy / d, -1.0);
+      jtj += j * j.transpose();
+      jtr += j * (d - radius);
+    }
+    const Eigen::Vector3d step = jtj.ldlt().solve(-jtr);
+    cx += step[0], cy += step[1], radius += step[2];
+    if (step.norm() < 1e-12 * radius) break;
+  }
+  if (!(radius > 0.0) || !std::isfinite(radius) || radius > 1e3 * spread) {
     Signal sig = principal_axis(r);
     sig.has_amplitude = false;
     return sig;
@@ -236,8 +252,9 @@ std::vector<Crossing> gate_passages(const Recording& r, std::vector<double>& dur
   return out;
 }
 
-/// The weighted fit of step 3 (see the header).
-PeriodEstimate fit_period(const std::vector<Crossing>& c, int per_period) {
+}  // namespace
+
+PeriodEstimate fit_crossing_times(const std::vector<Crossing>& c, int per_period) {
   const std::size_t n = c.size();
   const double centre = (n - 1) / 2.0;
   Eigen::Matrix4d xtwx = Eigen::Matrix4d::Zero();
@@ -280,6 +297,8 @@ PeriodEstimate fit_period(const std::vector<Crossing>& c, int per_period) {
   return p;
 }
 
+namespace {
+
 /// theta0 from a peak speed ratio x = omega_max T0 / (4 pi) = sin(theta0/2).
 double amplitude_from_sine(double x, const std::string& file) {
   if (!(x < 1.0)) {
@@ -321,7 +340,7 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
     throw InputError(file, "found " + std::to_string(out.crossings.size()) + " crossings (" +
                                std::to_string(periods) + " full periods); expected at least three swings");
   }
-  out.period = fit_period(out.crossings, cpp);
+  out.period = fit_crossing_times(out.crossings, cpp);
   if (!(out.period.value > 0.0) || !std::isfinite(out.period.uncertainty)) {
     throw InputError(file, "no regular oscillation: the crossing times give no period");
   }
@@ -349,17 +368,35 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
     double t0 = T;
     for (int iter = 0; iter < 5; ++iter) {
       double mean_correction = 0.0;
+      int count = 0;
       for (std::size_t i = 0; i < theta.size(); ++i) {
-        theta[i] = amplitude_from_sine(sine_of(i, t0), file);
-        mean_correction += finite_amplitude_agm(theta[i]);
+        const double x = sine_of(i, t0);
+        theta[i] = std::isfinite(x) ? amplitude_from_sine(x, file) : kNaN;
+        if (std::isfinite(x)) mean_correction += finite_amplitude_agm(theta[i]), ++count;
       }
-      t0 = T / (1.0 + mean_correction / theta.size());
+      t0 = T / (1.0 + (count ? mean_correction / count : 0.0));
     }
     out.small_amplitude_period = t0;
   };
+  // A mean removed from a record of no whole number of swings leaves an
+  // offset delta that alternates in sign between swings: |p_i| = A_i +- delta.
+  // The weights 1/4, 1/2, 1/4 over three swings cancel it (and keep a linear
+  // decay centred); the first and last swing get no amplitude.
+  if (!events && r.kind != SignalKind::acceleration) {
+    std::vector<double> smooth(raw.size(), kNaN);
+    for (std::size_t i = 1; i + 1 < raw.size(); ++i) smooth[i] = (raw[i - 1] + 2.0 * raw[i] + raw[i + 1]) / 4.0;
+    raw = smooth;
+  }
   switch (r.kind) {
     case SignalKind::angular_rate:
       solve_with_t0([&](std::size_t i, double t0) { return raw[i] * t0 / (4.0 * kPi); });  // omega_max = (4 pi/T0) sin(theta0/2)
+      break;
+    case SignalKind::linear_acceleration:
+      // The tangential acceleration at a turning point is g sin theta0
+      // (standard g: a local g 0.3 % off moves theta0 by 0.3 %).
+      for (std::size_t i = 0; i < raw.size(); ++i) {
+        if (std::isfinite(raw[i])) theta[i] = std::asin(std::min(raw[i] / kStandardGravity, 1.0));
+      }
       break;
     case SignalKind::angle:
     case SignalKind::position:
@@ -385,7 +422,6 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
         });
       }
       break;
-    case SignalKind::linear_acceleration:  // tangential peak g sin theta0 needs g
     case SignalKind::blocking_times: break;
   }
   if (r.kind == SignalKind::gate_states) {

@@ -103,6 +103,10 @@ struct SwingAnalysis {
   DecayData decay;
 };
 
+/// Step 3 of the method on given crossings (at least 5): the weighted fit
+/// of their times, weights from slope and samples when `samples` > 0.
+PeriodEstimate fit_crossing_times(const std::vector<Crossing>& crossings, int crossings_per_period);
+
 /// Analyses a parsed recording. `file` names it in errors (InputError): no
 /// oscillation, fewer than three swings, an amplitude beyond 180 deg.
 SwingAnalysis analyse_swings(const Recording& recording, const std::string& file,

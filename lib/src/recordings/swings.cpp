@@ -403,14 +403,9 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
       if (sig.has_amplitude) theta = raw;
       break;
     case SignalKind::acceleration:
-      // Quarter swings alternate: |a| peaks at the bottom, g(3 - 2 cos theta0),
-      // and dips at the turning points, g cos theta0; a bottom is a quarter
-      // whose excursion is positive.
-      for (std::size_t i = 1; i + 1 < raw.size(); ++i) {
-        if (sig.s[(at[i] + at[i + 1]) / 2] < 0.0) continue;
-        const double ratio = (sig.offset + raw[i]) / (sig.offset - (raw[i - 1] + raw[i + 1]) / 2.0);
-        theta[i] = std::acos(std::clamp(3.0 / (ratio + 2.0), -1.0, 1.0));
-      }
+      // |a| swings between g cos theta0 and g(3 - 2 cos theta0), but its peaks
+      // picked from a phone's noise read theta0 5-7 % high (docs/recordings.md):
+      // no amplitudes rather than wrong ones.
       break;
     case SignalKind::gate_states:
       if (options.bob_width && !durations.empty()) {

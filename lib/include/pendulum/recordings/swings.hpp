@@ -27,8 +27,9 @@
 ///  4. Amplitudes: from the peak angular rate by the exact energy relation
 ///     omega_max = 2 sqrt(g/l) sin(theta0/2) = (4 pi / T0) sin(theta0/2)
 ///     with T0 = T / (1 + DeltaT/T0(theta0)) (amplitude.hpp, exact), solved
-///     together for all swings; from the peak angle; from the acceleration
-///     ratio |a|max/|a|min = (3 - 2 cos theta0)/cos theta0; from a photogate's
+///     together for all swings; from the peak angle; from the tangential
+///     linear acceleration at a turning point, g sin theta0 (standard g);
+///     none from acceleration with gravity (docs/recordings.md); from a photogate's
 ///     blocking time dt and the bob's width w: v = w/dt = 2 sqrt(g l)
 ///     sin(theta0/2).
 

@@ -1,0 +1,243 @@
+// Recordings (lib/include/pendulum/recordings/): the readers on each family's
+// file in data/recordings/ and on the traps of real exports; the period's
+// uncertainty on 400 synthetic gyroscope recordings (coverage, and the
+// Cramer-Rao bound of the crossing-time method, docs/recordings.md); the
+// decay fit on a long synthetic recording against the true alpha and beta.
+// The synthetic recordings come from tests/recording_simulation.hpp, whose
+// header states the equation of motion, the seeds and the noise.
+#include <catch2/catch.hpp>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "pendulum/decay_fit.hpp"
+#include "pendulum/recordings/swings.hpp"
+#include "pendulum/scene_json.hpp"
+#include "recording_simulation.hpp"
+
+using namespace pendulum;
+using Catch::Matchers::Contains;
+using pendulum::test::RecordingSimulation;
+using pendulum::test::simulate_recording;
+
+namespace {
+
+const std::string kDir = std::string(PENDULUM_DATA_DIR) + "/recordings/";
+
+Recording gyroscope_recording(const test::SimulatedRecording& s) {
+  Recording r;
+  r.format = RecordingFormat::phyphox;
+  r.kind = SignalKind::angular_rate;
+  r.time = s.t;
+  r.channels = {s.rate[0], s.rate[1], s.rate[2]};
+  return r;
+}
+
+/// The exact turning time nearest to each detected crossing, with the
+/// detected crossing's weight: the same fit on exact times is the truth.
+std::vector<Crossing> exact_crossings(const std::vector<Crossing>& found, const std::vector<double>& exact) {
+  std::vector<Crossing> out = found;
+  for (auto& c : out) {
+    const auto it = std::lower_bound(exact.begin(), exact.end(), c.time);
+    double best = it == exact.end() ? exact.back() : *it;
+    if (it != exact.begin() && std::fabs(*(it - 1) - c.time) < std::fabs(best - c.time)) best = *(it - 1);
+    REQUIRE(std::fabs(best - c.time) < 0.05);  // s: a crossing is a turning point
+    c.time = best;
+  }
+  return out;
+}
+
+/// Cramer-Rao variance (s^2) of the period from crossing times each found
+/// by a line through n_i samples of white noise sigma on a signal of slope
+/// s_i: var(t_i) >= sigma^2/(s_i^2 n_i), then the fit's linear model.
+double crossing_method_bound(const std::vector<Crossing>& c, const std::vector<double>& true_slopes, double sigma,
+                             int per_period) {
+  const std::size_t n = c.size();
+  Eigen::Matrix4d info = Eigen::Matrix4d::Zero();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = i - (n - 1) / 2.0;
+    const Eigen::Vector4d row(1.0, x, x * x, i % 2 ? -1.0 : 1.0);
+    const double var = sigma * sigma / (true_slopes[i] * true_slopes[i] * c[i].samples);
+    info += row * row.transpose() / var;
+  }
+  return per_period * per_period * info.inverse()(1, 1);
+}
+
+}  // namespace
+
+TEST_CASE("Each family's recording in data/recordings/ is read and reduced", "[recordings]") {
+  // The files are tests/tools/make_recordings output: l = 0.80 m, theta0 =
+  // 0.25 rad, alpha = 2e-3 1/s, beta = 4e-3 1/(s rad), 20 s. The truth is the
+  // fit of the exact turning times of the same simulation (seed 11).
+  RecordingSimulation s;
+  s.duration = 20.0, s.rate_hz = 50.0, s.seed = 11;
+  const auto truth_run = simulate_recording(s);
+  std::vector<Crossing> exact;
+  for (double t : truth_run.turning_times) exact.push_back({t, 0.0, 0});
+  const double true_period = fit_crossing_times(exact, 2).value;
+
+  struct Family {
+    const char* file;
+    RecordingFormat format;
+    SignalKind kind;
+    bool amplitudes;
+  };
+  const Family families[] = {
+      {"phyphox_gyroscope.csv", RecordingFormat::phyphox, SignalKind::angular_rate, true},
+      {"phyphox_pendulum_raw.tsv", RecordingFormat::phyphox, SignalKind::angular_rate, true},
+      {"phyphox_linear_acceleration.csv", RecordingFormat::phyphox, SignalKind::linear_acceleration, true},
+      {"phyphox_acceleration.csv", RecordingFormat::phyphox, SignalKind::acceleration, false},
+      {"vernier_photogate.csv", RecordingFormat::vernier, SignalKind::gate_states, false},
+      {"pasco_rotary.csv", RecordingFormat::pasco, SignalKind::angle, true},
+      {"tracker_xy.txt", RecordingFormat::tracker, SignalKind::position, true},
+      {"tracker_theta.csv", RecordingFormat::tracker, SignalKind::angle, true},
+  };
+  for (const auto& f : families) {
+    INFO(f.file);
+    const RecordingSummary r = analyse_recording(kDir + f.file);
+    CHECK(r.format == f.format);
+    CHECK(r.kind == f.kind);
+    const auto& p = r.swings.period;
+    CHECK(p.periods == 10);
+    // Four standard uncertainties, and 2e-5 s for the crossings' phase: the
+    // families time different points of the swing (turning points, the
+    // bottom), and the period drifts by 3e-5 s per second with the amplitude.
+    CHECK(std::fabs(p.value - true_period) < 4.0 * p.uncertainty + 2e-5);
+    CHECK(r.swings.decay.amplitudes.empty() == !f.amplitudes);
+    for (double a : r.swings.decay.amplitudes) {
+      // theta0 decays from 0.25 rad to 0.236 rad over the record (Eq. 25);
+      // 0.002 rad for the noise of one swing's amplitude.
+      CHECK(a > 0.234);
+      CHECK(a < 0.252);
+    }
+  }
+}
+
+TEST_CASE("A photogate with the bob's width gives amplitudes", "[recordings]") {
+  SwingOptions o;
+  o.bob_width = 0.025;  // m, as made by tests/tools/make_recordings.cpp
+  o.length = 0.80;
+  const RecordingSummary r = analyse_recording(kDir + "vernier_photogate.csv", RecordingFormat::automatic, o);
+  REQUIRE(r.swings.decay.amplitudes.size() >= 20);
+  // 0.25 rad decays to 0.236 rad over 20 s (Eq. 25); the blocking starts
+  // 12.5 mm before the bottom, where the speed is lower by 1 - cos of
+  // 0.9 deg: 1e-4 relative, far inside these bounds.
+  CHECK_THAT(r.swings.decay.amplitudes.front(), Catch::Matchers::WithinAbs(0.2495, 0.0015));
+  CHECK_THAT(r.swings.decay.amplitudes.back(), Catch::Matchers::WithinAbs(0.2365, 0.0015));
+  // The Vernier file's own period column (every other blocking) agrees.
+  const Recording raw = read_recording(kDir + "vernier_photogate.csv");
+  REQUIRE(raw.periods.size() == 10);
+  for (double t : raw.periods) CHECK(std::fabs(t - r.swings.period.value) < 1e-3);
+}
+
+TEST_CASE("Readers: delimiters, decimal commas, NaN cells, the header decides", "[recordings]") {
+  const std::string body = "1.0,0.1\n2.0,NaN\n3.0,0.3\n4,\n5.0E0,5.0E-1\n";
+  const Recording r = parse_recording("\"Time (s)\",\"Gyroscope x (rad/s)\"\n" + body, "a.csv");
+  CHECK(r.format == RecordingFormat::phyphox);
+  CHECK(r.rows == 5);
+  CHECK(r.dropped == 2);
+  CHECK(r.time == std::vector<double>{1.0, 3.0, 5.0});
+  CHECK(r.channels[0] == std::vector<double>{0.1, 0.3, 0.5});
+
+  const Recording c = parse_recording("Time (s);Rotation x (rad/s)\n0,5;1,25E-1\n1,5;-2,5E-1\n", "b.csv");
+  CHECK(c.time == std::vector<double>{0.5, 1.5});
+  CHECK(c.channels[0] == std::vector<double>{0.125, -0.25});
+
+  const Recording t = parse_recording("mass A\nt\tx\ty\n0,1\t1,5\t-2\n0,2\t1,6\t-2\n", "c.txt");
+  CHECK(t.format == RecordingFormat::tracker);
+  CHECK(t.kind == SignalKind::position);
+  CHECK(t.channels[1] == std::vector<double>{-2.0, -2.0});
+
+  const Recording p = parse_recording("t (ms)\n100\n250.5\n", "d.txt");
+  CHECK(p.format == RecordingFormat::plain);
+  CHECK(p.time == std::vector<double>{0.1, 0.2505});
+
+  // A forced format that the header does not fit.
+  CHECK_THROWS_WITH(parse_recording("Time (s),Gyroscope x (rad/s)\n1,2\n", "e.csv", RecordingFormat::vernier),
+                    Contains("e.csv:1:1") && Contains("does not fit a vernier export"));
+}
+
+TEST_CASE("Readers name the file, line and column of a bad row", "[recordings]") {
+  const std::string h = "\"Time (s)\",\"Gyroscope x (rad/s)\"\n";
+  CHECK_THROWS_WITH(parse_recording(h + "1,2\n0.5,3\n", "f"), Contains("f:3:1") && Contains("time going backwards"));
+  CHECK_THROWS_WITH(parse_recording(h + "1,2\n2\n", "f"), Contains("f:3:2") && Contains("truncated row"));
+  CHECK_THROWS_WITH(parse_recording(h + "1,2\n2,x\n", "f"), Contains("f:3:3") && Contains("expected a number"));
+  CHECK_THROWS_WITH(parse_recording("Time (s);Gyroscope x (rad/s)\n1;2\n2\t3\n", "f"),
+                    Contains("f:3:2") && Contains("mixed delimiters"));
+  CHECK_THROWS_WITH(parse_recording(h + "1,2\n" + std::string("\x00\x01", 2), "f"), Contains("binary"));
+  CHECK_THROWS_WITH(parse_recording("a,b\n1,2\n", "f"), Contains("unrecognised header"));
+  RecordingLimits small;
+  small.max_bytes = 10;
+  CHECK_THROWS_WITH(read_recording(kDir + "pasco_rotary.csv", RecordingFormat::automatic, small),
+                    Contains("expected at most 10"));
+}
+
+TEST_CASE("The period's uncertainty is honest and near the crossing method's Cramer-Rao bound",
+          "[recordings][coverage]") {
+  // 400 gyroscope recordings, seeds 1..400: 40 s at 100 Hz, l = 0.80 m,
+  // theta0 = 0.25 rad, alpha = 2e-3 1/s, beta = 4e-3 1/(s rad), noise
+  // 0.02 rad/s per axis, biases (3, -2, 1) mrad/s, jitter 0.2 ms, 1 % of the
+  // samples dropped, the swing axis tilted (0.28, 0.15, 0.948). Every 20th
+  // goes through phyphox's text format (decimal commas for odd seeds).
+  constexpr int kRuns = 400;
+  int covered = 0;
+  double sum_sq_error = 0.0, sum_bound = 0.0;
+  for (int seed = 1; seed <= kRuns; ++seed) {
+    RecordingSimulation s;
+    s.duration = 40.0;
+    s.noise = 0.02;
+    s.seed = static_cast<std::uint64_t>(seed);
+    const auto sim = simulate_recording(s);
+    const Recording rec = seed % 20 == 0
+                              ? parse_recording(test::phyphox_gyroscope_csv(sim, seed % 2 == 1), "sim.csv")
+                              : gyroscope_recording(sim);
+    const SwingAnalysis a = analyse_swings(rec, "sim");
+    const auto exact = exact_crossings(a.crossings, sim.turning_times);
+    const double truth = fit_crossing_times(exact, 2).value;
+    const double error = a.period.value - truth;
+    covered += std::fabs(error) <= a.period.uncertainty;
+    sum_sq_error += error * error;
+    // The slope of theta' at a turning point is theta'' = -omega0^2 sin theta0.
+    std::vector<double> slopes;
+    for (const auto& c : exact) {
+      const auto it = std::lower_bound(sim.turning_times.begin(), sim.turning_times.end(), c.time);
+      slopes.push_back(sim.omega0 * sim.omega0 *
+                       std::sin(sim.turning_amplitudes[it - sim.turning_times.begin()]));
+    }
+    sum_bound += crossing_method_bound(a.crossings, slopes, s.noise, 2);
+  }
+  const double coverage = static_cast<double>(covered) / kRuns;
+  const double p = 0.6826894921370859;  // P(|z| <= 1) for a normal z
+  const double tolerance = 3.0 * std::sqrt(p * (1.0 - p) / kRuns);  // 3 binomial sigmas: 0.070
+  WARN("coverage " << coverage << ", rms error " << std::sqrt(sum_sq_error / kRuns) << " s, bound "
+                   << std::sqrt(sum_bound / kRuns) << " s");
+  CHECK(std::fabs(coverage - p) < tolerance);
+  const double ratio = std::sqrt(sum_sq_error / sum_bound);
+  CHECK(ratio < 1.5);
+  // The rms of 400 errors is within 3.6 % (one sigma) of its expectation: an
+  // error far below the bound would mean the truth leaked into the estimate.
+  CHECK(ratio > 0.85);
+}
+
+TEST_CASE("The decay record of a recording gives the true alpha and beta", "[recordings][decay]") {
+  // 300 s of gyroscope at 100 Hz, theta0 = 0.3 rad, alpha = 2e-3 1/s,
+  // beta = 1e-2 1/(s rad), noise 0.02 rad/s, seed 2024.
+  RecordingSimulation s;
+  s.duration = 300.0, s.theta0 = 0.3, s.alpha = 2e-3, s.beta = 1e-2, s.noise = 0.02, s.seed = 2024;
+  const auto sim = simulate_recording(s);
+  const SwingAnalysis a = analyse_swings(gyroscope_recording(sim), "sim");
+  const DecayFit fit = fit_decay(a.decay);
+  REQUIRE(fit.converged);
+  REQUIRE(fit.alpha.uncertainty);
+  REQUIRE(fit.beta.uncertainty);
+  WARN("alpha " << fit.alpha.value << " +- " << *fit.alpha.uncertainty << ", beta " << fit.beta.value << " +- "
+                << *fit.beta.uncertainty);
+  // Three standard uncertainties: Eq. (25) itself is the small-amplitude
+  // average of the motion (its error is of order theta0^2/16 = 0.6 %).
+  CHECK(std::fabs(fit.alpha.value - s.alpha) < 3.0 * *fit.alpha.uncertainty);
+  CHECK(std::fabs(fit.beta.value - s.beta) < 3.0 * *fit.beta.uncertainty);
+}

@@ -171,31 +171,38 @@ Crossing line_zero(const std::vector<double>& t, const std::vector<double>& s, s
   return {tm - sm / slope, slope, static_cast<int>(j - i + 1)};
 }
 
-/// Parabola through the samples around the largest |s| in [i, j] that lie
-/// above 0.8 of it: the peak's time and |value|.
+/// The extremum of a half swing between crossings at ta and tb: a quartic
+/// least-squares polynomial through the samples within the middle third of
+/// [ta, tb] (+-60 deg of phase about its centre, where the swing is
+/// symmetric), maximised by Newton's method from the centre. The window is
+/// fixed by the crossings, not by the noisy samples, so noise does not bias
+/// the peak upward as picking the largest sample would; a quartic follows a
+/// cosine over +-60 deg to 2e-4 of its peak. Returns the time and |value|.
 std::pair<double, double> peak(const std::vector<double>& t, const std::vector<double>& s, std::size_t i,
-                               std::size_t j) {
-  std::size_t top = i;
+                               std::size_t j, double ta, double tb) {
+  const double mid = (ta + tb) / 2.0, half = (tb - ta) / 6.0;
+  Eigen::Matrix<double, 5, 5> ata = Eigen::Matrix<double, 5, 5>::Zero();
+  Eigen::Matrix<double, 5, 1> atb = Eigen::Matrix<double, 5, 1>::Zero();
+  int used = 0;
   for (std::size_t k = i; k <= j; ++k) {
-    if (std::fabs(s[k]) > std::fabs(s[top])) top = k;
-  }
-  const double level = 0.8 * std::fabs(s[top]);
-  std::size_t a = top, b = top;
-  while (a > i && std::fabs(s[a - 1]) >= level) --a;
-  while (b < j && std::fabs(s[b + 1]) >= level) ++b;
-  if (b - a < 2) return {t[top], std::fabs(s[top])};
-  Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d atb = Eigen::Vector3d::Zero();
-  for (std::size_t k = a; k <= b; ++k) {
-    const double u = t[k] - t[top];
-    const Eigen::Vector3d row(1.0, u, u * u);
+    const double u = (t[k] - mid) / half;  // -1 .. 1 inside the window
+    if (std::fabs(u) > 1.0) continue;
+    const Eigen::Matrix<double, 5, 1> row(1.0, u, u * u, u * u * u, u * u * u * u);
     ata += row * row.transpose();
-    atb += row * std::fabs(s[k]);
+    atb += row * s[k];
+    ++used;
   }
-  const Eigen::Vector3d c = ata.ldlt().solve(atb);
-  if (!(c[2] < 0.0)) return {t[top], std::fabs(s[top])};
-  const double u = std::clamp(-c[1] / (2.0 * c[2]), t[a] - t[top], t[b] - t[top]);
-  return {t[top] + u, c[0] + u * (c[1] + u * c[2])};
+  if (used < 7) return {mid, kNaN};  // too few samples for a peak
+  const Eigen::Matrix<double, 5, 1> c = ata.ldlt().solve(atb);
+  double u = 0.0;
+  for (int iter = 0; iter < 8; ++iter) {
+    const double d1 = c[1] + u * (2.0 * c[2] + u * (3.0 * c[3] + u * 4.0 * c[4]));
+    const double d2 = 2.0 * c[2] + u * (6.0 * c[3] + u * 12.0 * c[4]);
+    if (d2 == 0.0) break;
+    u = std::clamp(u - d1 / d2, -1.0, 1.0);
+  }
+  const double value = c[0] + u * (c[1] + u * (c[2] + u * (c[3] + u * c[4])));
+  return {mid + u * half, std::fabs(value)};
 }
 
 /// Crossings of a sampled signal with adaptive hysteresis.
@@ -254,9 +261,17 @@ std::vector<Crossing> gate_passages(const Recording& r, std::vector<double>& dur
 
 }  // namespace
 
-PeriodEstimate fit_crossing_times(const std::vector<Crossing>& c, int per_period) {
+PeriodEstimate fit_crossing_times(const std::vector<Crossing>& c, int per_period,
+                                  const std::vector<double>& amplitudes) {
   const std::size_t n = c.size();
-  const double centre = (n - 1) / 2.0;
+  // The index: i, or the amplitude-weighted u_{i+1} = u_i + 1 + DeltaT/T0(theta_i)
+  // (Eq. 8, exact), in which the crossing times of a decaying swing lie on a line.
+  std::vector<double> u(n);
+  const bool weighted_index = amplitudes.size() + 1 == n;
+  for (std::size_t i = 1; i < n; ++i) {
+    u[i] = u[i - 1] + 1.0 + (weighted_index ? finite_amplitude_agm(amplitudes[i - 1]) : 0.0);
+  }
+  const double centre = (u[0] + u[n - 1]) / 2.0;  // mid-range: the quadratic term then drops out of the mean
   Eigen::Matrix4d xtwx = Eigen::Matrix4d::Zero();
   Eigen::Vector4d xtwt = Eigen::Vector4d::Zero();
   std::vector<double> w(n, 1.0);
@@ -267,7 +282,7 @@ PeriodEstimate fit_crossing_times(const std::vector<Crossing>& c, int per_period
   }
   const double t0 = c[0].time;
   auto row = [&](std::size_t i) {
-    const double x = i - centre;
+    const double x = u[i] - centre;
     return Eigen::Vector4d(1.0, x, x * x, i % 2 ? -1.0 : 1.0);
   };
   for (std::size_t i = 0; i < n; ++i) {
@@ -290,8 +305,11 @@ PeriodEstimate fit_crossing_times(const std::vector<Crossing>& c, int per_period
   const double rho = std::min(p.lag1_correlation, 0.95);
   p.inflation = rho > 0.0 ? (1.0 + rho) / (1.0 - rho) : 1.0;
   const double s2 = ssr / (n - 4.0);
-  p.value = per_period * beta[1];
-  p.uncertainty = per_period * std::sqrt(s2 * inv(1, 1) * p.inflation);
+  // The mean period over the crossings: the fitted line's rise from the first
+  // to the last, per period; the quadratic term, even about the centre, adds nothing.
+  const double scale = per_period * (u[n - 1] - u[0]) / (n - 1.0);
+  p.value = scale * beta[1];
+  p.uncertainty = scale * std::sqrt(s2 * inv(1, 1) * p.inflation);
   p.residual_rms = std::sqrt(s2);
   p.periods = static_cast<int>((n - 1) / per_period);
   return p;
@@ -355,16 +373,16 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
     w.end = out.crossings[i + 1].time;
     w.peak_time = (w.start + w.end) / 2.0;
     if (!events) {
-      const auto [tp, value] = peak(r.time, sig.s, at[i], at[i + 1]);
+      const auto [tp, value] = peak(r.time, sig.s, at[i], at[i + 1], w.start, w.end);
       w.peak_time = tp;
       raw[i] = value;
     }
   }
   // Amplitudes (rad), by kind.
   std::vector<double> theta(nc - 1, kNaN);
-  const double T = out.period.value;
   out.small_amplitude_period = kNaN;
   auto solve_with_t0 = [&](auto sine_of) {  // sin(theta0/2) = sine_of(i, T0)
+    const double T = out.period.value;
     double t0 = T;
     for (int iter = 0; iter < 5; ++iter) {
       double mean_correction = 0.0;
@@ -387,41 +405,76 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
     for (std::size_t i = 1; i + 1 < raw.size(); ++i) smooth[i] = (raw[i - 1] + 2.0 * raw[i] + raw[i + 1]) / 4.0;
     raw = smooth;
   }
-  switch (r.kind) {
-    case SignalKind::angular_rate:
-      solve_with_t0([&](std::size_t i, double t0) { return raw[i] * t0 / (4.0 * kPi); });  // omega_max = (4 pi/T0) sin(theta0/2)
-      break;
-    case SignalKind::linear_acceleration:
-      // The tangential acceleration at a turning point is g sin theta0
-      // (standard g: a local g 0.3 % off moves theta0 by 0.3 %).
-      for (std::size_t i = 0; i < raw.size(); ++i) {
-        if (std::isfinite(raw[i])) theta[i] = std::asin(std::min(raw[i] / kStandardGravity, 1.0));
-      }
-      break;
-    case SignalKind::angle:
-    case SignalKind::position:
-      if (sig.has_amplitude) theta = raw;
-      break;
-    case SignalKind::acceleration:
-      // |a| swings between g cos theta0 and g(3 - 2 cos theta0), but its peaks
-      // picked from a phone's noise read theta0 5-7 % high (docs/recordings.md):
-      // no amplitudes rather than wrong ones.
-      break;
-    case SignalKind::gate_states:
-      if (options.bob_width && !durations.empty()) {
-        solve_with_t0([&](std::size_t i, double t0) {
-          const double v = *options.bob_width / durations[i];
-          const double sqrt_gl = options.length ? 2.0 * kPi * *options.length / t0
-                                                : kStandardGravity * t0 / (2.0 * kPi);
-          return v / (2.0 * sqrt_gl);  // v = 2 sqrt(g l) sin(theta0/2)
-        });
-      }
-      break;
-    case SignalKind::blocking_times: break;
-  }
+  // Amplitudes (rad), by kind; those from a rate or a speed need T0, hence the period.
+  auto amplitudes = [&] {
+    switch (r.kind) {
+      case SignalKind::angular_rate:
+        solve_with_t0([&](std::size_t i, double t0) { return raw[i] * t0 / (4.0 * kPi); });  // omega_max = (4 pi/T0) sin(theta0/2)
+        break;
+      case SignalKind::linear_acceleration:
+        // The tangential acceleration at a turning point is g sin theta0
+        // (standard g: a local g 0.3 % off moves theta0 by 0.3 %).
+        for (std::size_t i = 0; i < raw.size(); ++i) {
+          if (std::isfinite(raw[i])) theta[i] = std::asin(std::min(raw[i] / kStandardGravity, 1.0));
+        }
+        break;
+      case SignalKind::angle:
+      case SignalKind::position:
+        if (sig.has_amplitude) theta = raw;
+        break;
+      case SignalKind::acceleration:
+        // Quarter swings alternate: |a| peaks at the bottom, g(3 - 2 cos theta0),
+        // and dips at the turning points, g cos theta0; the ratio needs no g.
+        for (std::size_t i = 1; i + 1 < raw.size(); ++i) {
+          if (sig.s[(at[i] + at[i + 1]) / 2] < 0.0) continue;  // a dip, not a bottom
+          const double ratio = (sig.offset + raw[i]) / (sig.offset - (raw[i - 1] + raw[i + 1]) / 2.0);
+          theta[i] = std::acos(std::clamp(3.0 / (ratio + 2.0), -1.0, 1.0));
+        }
+        break;
+      case SignalKind::gate_states:
+        if (options.bob_width && !durations.empty()) {
+          solve_with_t0([&](std::size_t i, double t0) {
+            const double v = *options.bob_width / durations[i];
+            const double sqrt_gl = options.length ? 2.0 * kPi * *options.length / t0
+                                                  : kStandardGravity * t0 / (2.0 * kPi);
+            return v / (2.0 * sqrt_gl);  // v = 2 sqrt(g l) sin(theta0/2)
+          });
+        }
+        break;
+      case SignalKind::blocking_times: break;
+    }
+  };
+  amplitudes();
   if (r.kind == SignalKind::gate_states) {
     // Swings of a photogate are the passages; theta[i] belongs to passage i.
     for (std::size_t i = 0; i < out.swings.size(); ++i) out.swings[i].peak_time = out.crossings[i].time;
+  }
+  // Refit with the amplitude-weighted index once the swings have amplitudes:
+  // a long decaying record's crossing times then lie on a line instead of a
+  // curve no quadratic fits. The index takes a smooth amplitude, a cubic in
+  // time fitted to log theta: each swing's own amplitude would carry its noise
+  // into the index as a random walk, which the period then inherits.
+  std::vector<double> tk, lk;
+  for (std::size_t i = 0; i < theta.size(); ++i) {
+    if (std::isfinite(theta[i]) && theta[i] > 0.0) tk.push_back(out.swings[i].peak_time), lk.push_back(std::log(theta[i]));
+  }
+  if (cpp == 2 && tk.size() >= 8 && tk.size() * 2 >= theta.size()) {
+    const double mid = (tk.front() + tk.back()) / 2.0, half = (tk.back() - tk.front()) / 2.0;
+    const int order = tk.size() >= 16 ? 3 : 2;
+    Eigen::MatrixXd a(tk.size(), order + 1);
+    for (std::size_t k = 0; k < tk.size(); ++k) {
+      for (int j = 0; j <= order; ++j) a(k, j) = std::pow((tk[k] - mid) / half, j);
+    }
+    const Eigen::VectorXd c = a.colPivHouseholderQr().solve(Eigen::Map<const Eigen::VectorXd>(lk.data(), lk.size()));
+    std::vector<double> smooth(theta.size());
+    for (std::size_t i = 0; i < theta.size(); ++i) {
+      const double x = std::clamp((out.swings[i].peak_time - mid) / half, -1.0, 1.0);
+      double v = 0.0;
+      for (int j = order; j >= 0; --j) v = v * x + c[j];
+      smooth[i] = std::exp(v);
+    }
+    out.period = fit_crossing_times(out.crossings, cpp, smooth);
+    amplitudes();  // again, with the final period
   }
   const double origin = out.crossings[0].time;
   for (std::size_t i = 0; i < out.swings.size(); ++i) {

@@ -15,10 +15,13 @@
 ///     beyond one threshold and the first one beyond the other. A photogate's
 ///     crossing is the middle of its blocking.
 ///  3. The period: weighted least squares of the crossing times against their
-///     index, t_i = a + b x_i + c x_i^2 + d (-1)^i (x_i = i - (n-1)/2):
-///     b is the mean half (or quarter) period over the record, the quadratic
-///     term takes up the drift of the period as the amplitude decays (on a
-///     centred index it does not change b), the alternating term an offset
+///     index, t_i = a + b x_i + c x_i^2 + d (-1)^i (x_i = u_i - (u_0 + u_n)/2),
+///     u_i = i, or, once every swing has an amplitude, the amplitude-weighted
+///     index u_{i+1} = u_i + 1 + DeltaT/T0(theta_i) (Eq. 8), on which the
+///     crossings of a decaying swing lie on a line. The period is the mean
+///     over the record, b (u_n - u_0)/n per half (or quarter) swing; the
+///     quadratic term takes up what drift is left (a length warming up) and,
+///     even about the mid-range centre, does not change it; the alternating term an offset
 ///     between the two directions (a gyroscope's bias, a photogate off the
 ///     lowest point). Weights 1/sigma_i^2 with sigma_i proportional to
 ///     1/(|slope_i| sqrt(samples_i)); the covariance is scaled by the
@@ -106,7 +109,11 @@ struct SwingAnalysis {
 
 /// Step 3 of the method on given crossings (at least 5): the weighted fit
 /// of their times, weights from slope and samples when `samples` > 0.
-PeriodEstimate fit_crossing_times(const std::vector<Crossing>& crossings, int crossings_per_period);
+/// With `amplitudes` (rad, one per swing: crossings.size() - 1) the index is
+/// u_{i+1} = u_i + 1 + DeltaT/T0(theta_i) instead of i, and the period is the
+/// line's rise from the first crossing to the last per period.
+PeriodEstimate fit_crossing_times(const std::vector<Crossing>& crossings, int crossings_per_period,
+                                  const std::vector<double>& amplitudes = {});
 
 /// Analyses a parsed recording. `file` names it in errors (InputError): no
 /// oscillation, fewer than three swings, an amplitude beyond 180 deg.

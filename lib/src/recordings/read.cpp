@@ -1,16 +1,22 @@
 #include "pendulum/recordings/read.hpp"
 
+#include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <exception>
 #include <cstdio>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <optional>
+#include <thread>
 
 #include "pendulum/scene_json.hpp"
 
@@ -247,6 +253,61 @@ Layout detect(RecordingFormat forced, const std::vector<Column>& cols, bool prea
            "times (docs/recordings.md), or name the format with --format");
 }
 
+/// Reads a decimal number at [s, e) with `mark` as its decimal mark; returns
+/// the end of the number, or nullptr when the fast path does not apply.
+/// Clinger's fast path: a mantissa m < 2^53 of at most 19 digits and a power
+/// p with |p| <= 22 give m * 10^p or m / 10^-p, one correctly rounded
+/// operation on exact doubles, hence the same double as std::from_chars
+/// (phyphox's 1.234567890E-1 always qualifies). Anything else (more digits,
+/// larger powers, "NaN", "inf") is left to std::from_chars.
+/// Eight ASCII digits at p as a number, if they are all digits (SWAR: the
+/// bytes of one 64-bit word combined pairwise, then by fours; little-endian).
+inline bool eight_digits(const char* p, std::uint64_t& out) {
+  std::uint64_t v;
+  std::memcpy(&v, p, 8);
+  if ((((v + 0x4646464646464646ULL) | (v - 0x3030303030303030ULL)) & 0x8080808080808080ULL) != 0) return false;
+  v -= 0x3030303030303030ULL;
+  v = v * 10 + (v >> 8);  // pairs: 2-digit values in bytes 0, 2, 4, 6
+  v = ((v & 0x000000FF000000FFULL) * (100 + (1000000ULL << 32)) +
+       ((v >> 16) & 0x000000FF000000FFULL) * (1 + (10000ULL << 32))) >> 32;
+  out = v;
+  return true;
+}
+
+inline const char* fast_number(const char* s, const char* e, char mark, double& v) {
+  static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                      1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+  const char* p = s;
+  const bool negative = p < e && *p == '-';
+  p += negative;
+  std::uint64_t m = 0;
+  int digits = 0, power = 0;
+  auto digit = [&](const char* at) { return at < e && static_cast<unsigned>(*at - '0') < 10u; };
+  for (; digit(p); ++p, ++digits) m = m * 10 + static_cast<unsigned>(*p - '0');
+  if (p < e && *p == mark) {
+    const char* fraction = ++p;
+    for (std::uint64_t chunk; e - p >= 8 && digits <= 11 && eight_digits(p, chunk); p += 8, digits += 8) {
+      m = m * 100000000 + chunk;
+    }
+    for (; digit(p); ++p, ++digits) m = m * 10 + static_cast<unsigned>(*p - '0');
+    power -= static_cast<int>(p - fraction);
+  }
+  if (digits == 0 || digits > 19) return nullptr;
+  if (p < e && (*p == 'e' || *p == 'E')) {
+    ++p;
+    const bool minus = p < e && *p == '-';
+    p += p < e && (*p == '-' || *p == '+');
+    if (!digit(p)) return nullptr;
+    int x = 0;
+    for (; digit(p); ++p) x = std::min(x * 10 + (*p - '0'), 100000);
+    power += minus ? -x : x;
+  }
+  if (m > (std::uint64_t{1} << 53) || power < -22 || power > 22) return nullptr;
+  const double magnitude = power < 0 ? static_cast<double>(m) / kPow10[-power] : static_cast<double>(m) * kPow10[power];
+  v = negative ? -magnitude : magnitude;
+  return p;
+}
+
 }  // namespace
 
 Recording parse_recording(std::string_view text, const std::string& file, RecordingFormat format) {
@@ -335,113 +396,205 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
   rec.kind = layout.kind;
   for (std::size_t j : layout.channels) rec.channel_names.push_back(cols[j].name);
   rec.channels.resize(layout.channels.size());
-  // Reserve from the first row's length: one allocation per column.
-  const std::size_t rows_guess = text.size() / std::max<std::size_t>(first_data.size() + 1, 8) + 16;
-  rec.time.reserve(rows_guess);
-  for (auto& c : rec.channels) c.reserve(rows_guess);
-
   // Where each column goes: -2 ignored, -1 time, k channel k.
   std::vector<int> target(cols.size(), -2);
   target[layout.time] = -1;
   for (std::size_t k = 0; k < layout.channels.size(); ++k) target[layout.channels[k]] = static_cast<int>(k);
   const int period_target = static_cast<int>(layout.channels.size());
   if (layout.period) target[*layout.period] = period_target;
-  std::vector<double> row(layout.channels.size() + 1);
   const char other_delimiters[] = {'\t', ';', delimiter == ',' ? '\0' : ','};
-
-  double last_time = -std::numeric_limits<double>::infinity();
-  std::size_t last_time_line = 0;
   const std::size_t ncols = cols.size();
-  char buffer[64];
-  for (; p < end; p = line_end(p) + 1, ++line_no) {
-    const char* e = line_end(p);
-    const char* line_begin = p;
-    auto column = [&](const char* at) { return static_cast<std::size_t>(at - line_begin) + 1; };
-    if (is_blank(p, e)) {
-      if (e == end) break;
-      continue;
-    }
-    double time = kNaN;
-    bool missing = false;
-    std::fill(row.begin(), row.end(), kNaN);
-    const char* q = p;
-    for (std::size_t j = 0; j < ncols; ++j) {
-      // One cell: optional spaces and quotes around a number, "NaN" or nothing.
-      while (q < e && (*q == ' ' || *q == '"')) ++q;
-      double v = kNaN;
-      const char* num_end = q;
-      if (q < e && *q != delimiter && *q != '\r') {
-        const char* s = q + (*q == '+');
-        const char* stop = s;
-        while (stop < e && *stop != delimiter && *stop != '"' && *stop != ' ' && *stop != '\r') ++stop;
-        std::from_chars_result r{};
-        if (decimal_comma) {
-          const std::size_t n = std::min<std::size_t>(stop - s, sizeof buffer);
-          std::copy(s, s + n, buffer);
-          std::replace(buffer, buffer + n, ',', '.');
-          r = std::from_chars(buffer, buffer + n, v);
-          r.ptr = s + (r.ptr - buffer);
-        } else {
-          r = std::from_chars(s, stop, v);
+  const char mark = decimal_comma ? ',' : '.';
+
+  // The rows of [p, end), whose first line is line_no, stored from index
+  // `offset` on (the caller sized the columns for every line).
+  struct Slice {
+    std::size_t rows = 0, dropped = 0, stored = 0, first_line = 0;
+    std::vector<double> periods;
+  };
+  auto parse_rows = [&](const char* p, const char* end, std::size_t line_no, std::size_t offset, Slice& out) {
+    std::vector<double> row(layout.channels.size() + 1);
+
+    double last_time = -std::numeric_limits<double>::infinity();
+    std::size_t last_time_line = 0;
+    char buffer[64];
+    std::vector<double> cells(ncols);
+    // The common row: plain numbers between single delimiters. Anything else
+    // (quotes, spaces, empty or NaN cells, errors) takes the general path.
+    auto plain_row = [&](const char* q, const char* e) {
+      for (std::size_t j = 0; j < ncols; ++j) {
+        const char* stop = fast_number(q, e, mark, cells[j]);
+        if (!stop) return false;
+        if (j + 1 < ncols) {
+          if (stop >= e || *stop != delimiter) return false;
+          q = stop + 1;
+        } else if (stop < e && *stop != '\r') {
+          return false;
         }
-        if (r.ec == std::errc::result_out_of_range) {
-          fail(file, line_no, column(q), "a number out of the range of double");
+      }
+      return true;
+    };
+    for (const char* e = nullptr; p < end; p = e < end ? e + 1 : end, ++line_no) {
+      e = line_end(p);
+      const char* line_begin = p;
+      auto column = [&](const char* at) { return static_cast<std::size_t>(at - line_begin) + 1; };
+      double time = kNaN;
+      bool missing = false;
+      if (plain_row(p, e)) {
+        time = cells[layout.time] * layout.time_scale;
+        for (std::size_t j = 0; j < ncols; ++j) {
+          if (target[j] >= 0) row[target[j]] = cells[j];
         }
-        if (r.ec != std::errc() || r.ptr != stop) {
-          const char* bad = r.ec != std::errc() ? s : r.ptr;
-          if (std::find(std::begin(other_delimiters), std::end(other_delimiters), *bad) !=
-              std::end(other_delimiters)) {
-            fail(file, line_no, column(bad),
-                 std::string("mixed delimiters: found '") + (*bad == '\t' ? "\\t" : std::string(1, *bad)) +
-                     "' in a file whose header separates columns by '" +
-                     (delimiter == '\t' ? std::string("\\t") : std::string(1, delimiter)) + "'");
+      } else if (is_blank(p, e)) {
+        continue;
+      } else {
+      std::fill(row.begin(), row.end(), kNaN);
+      const char* q = p;
+      for (std::size_t j = 0; j < ncols; ++j) {
+        // One cell: optional spaces and quotes around a number, "NaN" or nothing.
+        while (q < e && (*q == ' ' || *q == '"')) ++q;
+        double v = kNaN;
+        const char* num_end = q;
+        if (q < e && *q != delimiter && *q != '\r') {
+          const char* s = q + (*q == '+');
+          const char* stop = fast_number(s, e, decimal_comma ? ',' : '.', v);
+          auto ends_cell = [&](const char* at) {
+            return at >= e || *at == delimiter || *at == '"' || *at == ' ' || *at == '\r';
+          };
+          auto bad_cell = [&](const char* bad) {
+            const char* token_end = s;
+            while (!ends_cell(token_end)) ++token_end;
+            if (std::find(std::begin(other_delimiters), std::end(other_delimiters), *bad) !=
+                std::end(other_delimiters)) {
+              fail(file, line_no, column(bad),
+                   std::string("mixed delimiters: found '") + (*bad == '\t' ? "\\t" : std::string(1, *bad)) +
+                       "' in a file whose header separates columns by '" +
+                       (delimiter == '\t' ? std::string("\\t") : std::string(1, delimiter)) + "'");
+            }
+            fail(file, line_no, column(q),
+                 "got \"" + std::string(q, std::min<const char*>(token_end, q + 40)) + "\" in column \"" +
+                     cols[j].name + "\"; expected a number");
+          };
+          if (!stop) {  // the slow path: NaN, long mantissas, large exponents
+            stop = s;
+            while (!ends_cell(stop)) ++stop;
+            std::from_chars_result r{};
+            if (decimal_comma) {
+              const std::size_t n = std::min<std::size_t>(stop - s, sizeof buffer);
+              std::copy(s, s + n, buffer);
+              std::replace(buffer, buffer + n, ',', '.');
+              r = std::from_chars(buffer, buffer + n, v);
+              r.ptr = s + (r.ptr - buffer);
+            } else {
+              r = std::from_chars(s, stop, v);
+            }
+            if (r.ec == std::errc::result_out_of_range) {
+              fail(file, line_no, column(q), "a number out of the range of double");
+            }
+            if (r.ec != std::errc() || r.ptr != stop) bad_cell(r.ec != std::errc() ? s : r.ptr);
+          } else if (!ends_cell(stop)) {
+            bad_cell(stop);
           }
-          fail(file, line_no, column(q),
-               "got \"" + std::string(q, std::min<const char*>(stop, q + 40)) + "\" in column \"" +
-                   cols[j].name + "\"; expected a number");
+          num_end = stop;
         }
-        num_end = stop;
-      }
-      q = num_end;
-      while (q < e && (*q == ' ' || *q == '"' || *q == '\r')) ++q;
-      if (std::isnan(v)) missing |= target[j] >= -1 && target[j] != period_target;
-      if (target[j] == -1) time = v * layout.time_scale;
-      else if (target[j] >= 0) row[target[j]] = v;
-      if (j + 1 < ncols) {
-        if (q >= e || *q != delimiter) {
+        q = num_end;
+        while (q < e && (*q == ' ' || *q == '"' || *q == '\r')) ++q;
+        if (std::isnan(v)) missing |= target[j] >= -1 && target[j] != period_target;
+        if (target[j] == -1) time = v * layout.time_scale;
+        else if (target[j] >= 0) row[target[j]] = v;
+        if (j + 1 < ncols) {
+          if (q >= e || *q != delimiter) {
+            fail(file, line_no, column(q),
+                 "a truncated row: " + std::to_string(j + 1) + " of " + std::to_string(ncols) +
+                     " columns (column \"" + cols[j + 1].name + "\" is missing)");
+          }
+          ++q;
+        } else if (q < e && !(delimiter && *q == delimiter && is_blank(q, e))) {
           fail(file, line_no, column(q),
-               "a truncated row: " + std::to_string(j + 1) + " of " + std::to_string(ncols) +
-                   " columns (column \"" + cols[j + 1].name + "\" is missing)");
+               "more cells than the " + std::to_string(ncols) +
+                   " columns of the header (mixed delimiters, or a decimal comma in a comma-separated file?)");
         }
-        ++q;
-      } else if (q < e && !(delimiter && *q == delimiter && is_blank(q, e))) {
-        fail(file, line_no, column(q),
-             "more cells than the " + std::to_string(ncols) +
-                 " columns of the header (mixed delimiters, or a decimal comma in a comma-separated file?)");
       }
+      }
+      ++out.rows;
+      if (layout.period && !std::isnan(row[period_target])) {
+        out.periods.push_back(row[period_target] * layout.time_scale);
+      }
+      if (missing || std::isnan(time)) {
+        ++out.dropped;
+        continue;
+      }
+      if (!(time > last_time)) {
+        fail(file, line_no, 1,
+             "time going backwards: " + std::to_string(time) + " s after " + std::to_string(last_time) +
+                 " s on line " + std::to_string(last_time_line) + "; expected increasing times");
+      }
+      if (!std::isfinite(time)) fail(file, line_no, 1, "an infinite time");
+      last_time = time;
+      last_time_line = line_no;
+      if (out.stored == 0) out.first_line = line_no;
+      const std::size_t at = offset + out.stored++;
+      rec.time[at] = time;
+      for (std::size_t k = 0; k < rec.channels.size(); ++k) rec.channels[k][at] = row[k] * layout.channel_scale;
     }
-    ++rec.rows;
-    if (layout.period && !std::isnan(row[period_target])) {
-      rec.periods.push_back(row[period_target] * layout.time_scale);
-    }
-    if (missing || std::isnan(time)) {
-      ++rec.dropped;
-      continue;
-    }
-    if (!(time > last_time)) {
-      fail(file, line_no, 1,
-           "time going backwards: " + std::to_string(time) + " s after " + std::to_string(last_time) +
-               " s on line " + std::to_string(last_time_line) + "; expected increasing times");
-    }
-    if (!std::isfinite(time)) fail(file, line_no, 1, "an infinite time");
-    last_time = time;
-    last_time_line = line_no;
-    rec.time.push_back(time);
-    for (std::size_t k = 0; k < rec.channels.size(); ++k) {
-      rec.channels[k].push_back(row[k] * layout.channel_scale);
-    }
-    if (e == end) break;
+  };
+
+  // Slices of at least 8 MiB, one per core (up to 4), each parsed into its
+  // own lines' places in the columns, which a count of the lines sizes.
+  const char* const data = p;
+  const unsigned cores = std::max(1u, std::min(4u, std::thread::hardware_concurrency()));
+  const std::size_t slices = std::clamp<std::size_t>(static_cast<std::size_t>(end - data) >> 23, 1, cores);
+  std::vector<const char*> cut{data};
+  for (std::size_t k = 1; k < slices; ++k) {
+    const char* c = line_end(data + (end - data) * k / slices);
+    cut.push_back(c < end ? c + 1 : end);
   }
+  cut.push_back(end);
+  std::vector<std::size_t> lines(slices), offsets(slices + 1);
+  std::vector<Slice> parts(slices);
+  std::vector<std::exception_ptr> errors(slices);
+  auto in_parallel = [&](auto&& work) {
+    std::vector<std::thread> pool;
+    for (std::size_t k = 1; k < slices; ++k) pool.emplace_back(work, k);
+    work(0);
+    for (auto& t : pool) t.join();
+  };
+  in_parallel([&](std::size_t k) {
+    lines[k] = static_cast<std::size_t>(std::count(cut[k], cut[k + 1], '\n')) +
+               (cut[k + 1] == end && cut[k] < end && end[-1] != '\n');
+  });
+  for (std::size_t k = 0; k < slices; ++k) offsets[k + 1] = offsets[k] + lines[k];
+  rec.time.resize(offsets[slices]);
+  for (auto& c : rec.channels) c.resize(offsets[slices]);
+  in_parallel([&](std::size_t k) {
+    try {
+      parse_rows(cut[k], cut[k + 1], line_no + offsets[k], offsets[k], parts[k]);
+    } catch (...) {
+      errors[k] = std::current_exception();
+    }
+  });
+  for (const auto& e : errors) {
+    if (e) std::rethrow_exception(e);
+  }
+  // Close the gaps left by blank or dropped lines, and check the time across slices.
+  std::size_t stored = 0;
+  for (std::size_t k = 0; k < slices; ++k) {
+    const Slice& s = parts[k];
+    if (s.stored && stored && !(rec.time[offsets[k]] > rec.time[stored - 1])) {
+      fail(file, s.first_line, 1, "time going backwards: " + std::to_string(rec.time[offsets[k]]) + " s after " +
+                                      std::to_string(rec.time[stored - 1]) + " s; expected increasing times");
+    }
+    if (offsets[k] != stored) {
+      std::copy_n(rec.time.begin() + offsets[k], s.stored, rec.time.begin() + stored);
+      for (auto& c : rec.channels) std::copy_n(c.begin() + offsets[k], s.stored, c.begin() + stored);
+    }
+    stored += s.stored;
+    rec.rows += s.rows;
+    rec.dropped += s.dropped;
+    rec.periods.insert(rec.periods.end(), s.periods.begin(), s.periods.end());
+  }
+  rec.time.resize(stored);
+  for (auto& c : rec.channels) c.resize(stored);
   if (layout.angle_unit_unknown) {
     // Tracker writes "θ" without its unit: more than a turn means degrees.
     const auto& a = rec.channels[0];
@@ -466,13 +619,21 @@ Recording read_recording(const std::string& path, RecordingFormat format, const 
     throw InputError(path, "the file has " + std::to_string(st.st_size) + " bytes; expected at most " +
                                std::to_string(limits.max_bytes) + " (RecordingLimits::max_bytes)");
   }
-  std::FILE* in = std::fopen(path.c_str(), "rb");
-  if (!in) throw InputError(path, std::string("cannot open the file: ") + std::strerror(errno));
-  std::string text(static_cast<std::size_t>(st.st_size), '\0');
-  text.resize(std::fread(text.data(), 1, text.size(), in));
-  const bool failed = std::ferror(in);
-  std::fclose(in);
-  if (failed) throw InputError(path, "cannot read the file");
+  // Mapped, not read: no copy of the text and no zero-filled buffer.
+  const int fd = ::open(path.c_str(), O_RDONLY);
+  if (fd < 0) throw InputError(path, std::string("cannot open the file: ") + std::strerror(errno));
+  const std::size_t size = static_cast<std::size_t>(st.st_size);
+  void* map = size ? ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0) : nullptr;
+  ::close(fd);
+  if (map == MAP_FAILED) throw InputError(path, std::string("cannot read the file: ") + std::strerror(errno));
+  struct Unmap {
+    void* p;
+    std::size_t n;
+    ~Unmap() {
+      if (p) ::munmap(p, n);
+    }
+  } unmap{map, size};
+  const std::string_view text(static_cast<const char*>(map), size);
   return parse_recording(text, path, format);
 }
 

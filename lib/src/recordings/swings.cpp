@@ -24,35 +24,41 @@ struct Signal {
   bool has_amplitude = true;
 };
 
-/// Projection on the principal axis of the mean-removed vectors.
+/// Projection on the principal axis of the mean-removed vectors: one pass
+/// for the sums (shifted by the first sample, against cancellation), one for
+/// the projection.
 Signal principal_axis(const Recording& r) {
-  const std::size_t m = r.channels.size(), n = r.time.size();
-  Eigen::VectorXd mean = Eigen::VectorXd::Zero(m);
-  for (std::size_t j = 0; j < m; ++j) {
-    double sum = 0.0;
-    for (double x : r.channels[j]) sum += x;
-    mean[j] = sum / n;
-  }
-  Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(m, m);
+  const std::size_t m = std::min<std::size_t>(r.channels.size(), 3), n = r.time.size();
+  std::array<const double*, 3> x{};
+  std::array<double, 3> shift{}, sum{};
+  std::array<double, 9> cross{};
+  for (std::size_t j = 0; j < m; ++j) x[j] = r.channels[j].data(), shift[j] = x[j][0];
   for (std::size_t k = 0; k < n; ++k) {
+    double d[3] = {0.0, 0.0, 0.0};
+    for (std::size_t j = 0; j < m; ++j) d[j] = x[j][k] - shift[j], sum[j] += d[j];
     for (std::size_t a = 0; a < m; ++a) {
-      const double da = r.channels[a][k] - mean[a];
-      for (std::size_t b = a; b < m; ++b) cov(a, b) += da * (r.channels[b][k] - mean[b]);
+      for (std::size_t b = a; b < m; ++b) cross[3 * a + b] += d[a] * d[b];
     }
   }
-  cov = cov.selfadjointView<Eigen::Upper>();
+  Eigen::MatrixXd cov(m, m);
+  Eigen::VectorXd mean(m);
+  for (std::size_t a = 0; a < m; ++a) {
+    mean[a] = shift[a] + sum[a] / n;
+    for (std::size_t b = a; b < m; ++b) cov(a, b) = cov(b, a) = cross[3 * a + b] / n - sum[a] * sum[b] / (double(n) * n);
+  }
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(cov);
   Eigen::VectorXd v = eig.eigenvectors().col(m - 1);  // largest eigenvalue last
   Eigen::Index largest = 0;
   v.cwiseAbs().maxCoeff(&largest);
   if (v[largest] < 0.0) v = -v;  // the sign is arbitrary: make it reproducible
   Signal sig;
-  for (std::size_t j = 0; j < m && j < 3; ++j) sig.axis[j] = v[j];
+  for (std::size_t j = 0; j < m; ++j) sig.axis[j] = v[j];
+  const double offset = v.dot(mean);
   sig.s.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
-    double x = 0.0;
-    for (std::size_t j = 0; j < m; ++j) x += v[j] * (r.channels[j][k] - mean[j]);
-    sig.s[k] = x;
+    double y = -offset;
+    for (std::size_t j = 0; j < m; ++j) y += v[j] * x[j][k];
+    sig.s[k] = y;
   }
   return sig;
 }
@@ -149,8 +155,11 @@ Signal make_signal(const Recording& r) {
 /// 0.6745 sqrt(6) for white noise; a smooth swing adds little to them.
 double noise_sigma(const std::vector<double>& s) {
   if (s.size() < 3) return 0.0;
-  std::vector<double> d(s.size() - 2);
-  for (std::size_t k = 1; k + 1 < s.size(); ++k) d[k - 1] = std::fabs(s[k + 1] - 2.0 * s[k] + s[k - 1]);
+  // At most 2^16 differences, evenly spread: the median needs no more.
+  const std::size_t step = std::max<std::size_t>(1, (s.size() - 2) >> 16);
+  std::vector<double> d;
+  d.reserve((s.size() - 2) / step + 1);
+  for (std::size_t k = 1; k + 1 < s.size(); k += step) d.push_back(std::fabs(s[k + 1] - 2.0 * s[k] + s[k - 1]));
   auto mid = d.begin() + d.size() / 2;
   std::nth_element(d.begin(), mid, d.end());
   return *mid / (0.6745 * std::sqrt(6.0));
@@ -181,19 +190,24 @@ Crossing line_zero(const std::vector<double>& t, const std::vector<double>& s, s
 std::pair<double, double> peak(const std::vector<double>& t, const std::vector<double>& s, std::size_t i,
                                std::size_t j, double ta, double tb) {
   const double mid = (ta + tb) / 2.0, half = (tb - ta) / 6.0;
-  Eigen::Matrix<double, 5, 5> ata = Eigen::Matrix<double, 5, 5>::Zero();
-  Eigen::Matrix<double, 5, 1> atb = Eigen::Matrix<double, 5, 1>::Zero();
+  // Normal equations from power sums: sum u^0..u^8 and sum s u^0..u^4.
+  std::array<double, 9> pu{};
+  std::array<double, 5> ps{};
   int used = 0;
-  for (std::size_t k = i; k <= j; ++k) {
+  const auto first = std::lower_bound(t.begin() + i, t.begin() + j + 1, mid - half);
+  for (std::size_t k = first - t.begin(); k <= j && t[k] <= mid + half; ++k) {
     const double u = (t[k] - mid) / half;  // -1 .. 1 inside the window
-    if (std::fabs(u) > 1.0) continue;
-    const Eigen::Matrix<double, 5, 1> row(1.0, u, u * u, u * u * u, u * u * u * u);
-    ata += row * row.transpose();
-    atb += row * s[k];
+    double power = 1.0;
+    for (int q = 0; q < 5; ++q, power *= u) pu[q] += power, ps[q] += power * s[k];
+    for (int q = 5; q < 9; ++q, power *= u) pu[q] += power;
     ++used;
   }
   if (used < 7) return {mid, kNaN};  // too few samples for a peak
-  const Eigen::Matrix<double, 5, 1> c = ata.ldlt().solve(atb);
+  Eigen::Matrix<double, 5, 5> ata;
+  for (int a = 0; a < 5; ++a) {
+    for (int b = 0; b < 5; ++b) ata(a, b) = pu[a + b];
+  }
+  const Eigen::Matrix<double, 5, 1> c = ata.ldlt().solve(Eigen::Map<const Eigen::Matrix<double, 5, 1>>(ps.data()));
   double u = 0.0;
   for (int iter = 0; iter < 8; ++iter) {
     const double d1 = c[1] + u * (2.0 * c[2] + u * (3.0 * c[3] + u * 4.0 * c[4]));

@@ -31,8 +31,10 @@ nlohmann::ordered_json summary_json(const RecordingSummary& r) {
   if (a.decay.amplitudes.empty()) {
     out["amplitude_range"] = nullptr;
   } else {
+    // start: the scene's `amplitude`, at the first crossing, where the timing starts.
     const auto [lo, hi] = std::minmax_element(a.decay.amplitudes.begin(), a.decay.amplitudes.end());
-    out["amplitude_range"] = {{"min", *lo * kDeg}, {"max", *hi * kDeg}, {"unit", "deg"}};
+    out["amplitude_range"] = {{"start", a.start_amplitude * kDeg}, {"end", a.end_amplitude * kDeg},
+                              {"min", *lo * kDeg}, {"max", *hi * kDeg}, {"unit", "deg"}};
   }
   // One trial of all the periods: its uncertainty is used as is (docs/scene.md).
   out["timing"] = {{"oscillations_per_trial", n},
@@ -67,7 +69,7 @@ std::string summary_table(const RecordingSummary& r) {
   put("%-22s %s (%zu rows, %zu skipped)\n", "recording", r.file.c_str(), r.rows, r.dropped);
   put("%-22s %s\n", "format", recording_format_name(r.format));
   put("%-22s %d (%zu crossings)\n", "full periods", a.period.periods, a.crossings.size());
-  put("%-22s %.7f +- %.7f s\n", "period", a.period.value, a.period.uncertainty);
+  put("%-22s %.7f s +- %.2g s\n", "period", a.period.value, a.period.uncertainty);
   put("%-22s %.3g s rms, lag-1 correlation %.2f\n", "crossing residuals", a.period.residual_rms,
       a.period.lag1_correlation);
   if (std::isfinite(a.small_amplitude_period)) {

@@ -417,7 +417,7 @@ TEST_CASE("import: a phone recording becomes timing and decay that a scene takes
   scene["timing"] = out.at("timing");
   scene["decay"] = out.at("decay");
   scene["length"] = {{"value", 0.80}, {"unit", "m"}, {"uncertainty", 0.001}};
-  scene["amplitude"] = {{"value", out.at("amplitude_range").at("max")}, {"unit", "deg"}};
+  scene["amplitude"] = {{"value", out.at("amplitude_range").at("start")}, {"unit", "deg"}};
   const std::string scene_file = temporary_file();
   std::ofstream(scene_file) << scene.dump();
   const Run reduced = run("reduce " + scene_file);

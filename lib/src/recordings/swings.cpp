@@ -465,30 +465,65 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
   }
   // Refit with the amplitude-weighted index once the swings have amplitudes:
   // a long decaying record's crossing times then lie on a line instead of a
-  // curve no quadratic fits. The index takes a smooth amplitude, a cubic in
-  // time fitted to log theta: each swing's own amplitude would carry its noise
+  // curve no quadratic fits. The index takes a smooth amplitude, a polynomial
+  // in time fitted to log theta: each swing's own amplitude would carry its noise
   // into the index as a random walk, which the period then inherits.
   std::vector<double> tk, lk;
   for (std::size_t i = 0; i < theta.size(); ++i) {
     if (std::isfinite(theta[i]) && theta[i] > 0.0) tk.push_back(out.swings[i].peak_time), lk.push_back(std::log(theta[i]));
   }
-  if (cpp == 2 && tk.size() >= 8 && tk.size() * 2 >= theta.size()) {
+  out.start_amplitude = out.end_amplitude = kNaN;
+  if (tk.size() >= 8 && tk.size() * 2 >= theta.size() / (cpp / 2)) {
     const double mid = (tk.front() + tk.back()) / 2.0, half = (tk.back() - tk.front()) / 2.0;
-    const int order = tk.size() >= 16 ? 3 : 2;
+    // The order grows with the record: the value at the ends of a fit of
+    // order q through n noisy points scatters as (q + 1)/sqrt(n), and a short
+    // record's log theta is a line (Eq. 25 over a few per cent of decay).
+    const int order = tk.size() >= 400 ? 3 : tk.size() >= 100 ? 2 : 1;
     Eigen::MatrixXd a(tk.size(), order + 1);
     for (std::size_t k = 0; k < tk.size(); ++k) {
       for (int j = 0; j <= order; ++j) a(k, j) = std::pow((tk[k] - mid) / half, j);
     }
-    const Eigen::VectorXd c = a.colPivHouseholderQr().solve(Eigen::Map<const Eigen::VectorXd>(lk.data(), lk.size()));
-    std::vector<double> smooth(theta.size());
-    for (std::size_t i = 0; i < theta.size(); ++i) {
-      const double x = std::clamp((out.swings[i].peak_time - mid) / half, -1.0, 1.0);
+    const Eigen::Map<const Eigen::VectorXd> y(lk.data(), lk.size());
+    const Eigen::VectorXd c = a.colPivHouseholderQr().solve(y);
+    // Covariance of the coefficients, scaled by the residual variance; the
+    // 1/4, 1/2, 1/4 average over neighbouring swings (above) leaves the slow
+    // part of the noise as it was but shrinks the residuals' variance by
+    // 1/16 + 1/4 + 1/16 = 3/8: the factor 8/3 restores it.
+    const double dof = static_cast<double>(tk.size()) - (order + 1);
+    const double averaged = !events && r.kind != SignalKind::acceleration ? 8.0 / 3.0 : 1.0;
+    const Eigen::MatrixXd cov = (a.transpose() * a).inverse() * ((y - a * c).squaredNorm() / dof * averaged);
+    auto smooth_with = [&](const Eigen::VectorXd& coef, double t) {
+      const double x = (t - mid) / half;  // beyond +-1 by half a swing at most
       double v = 0.0;
-      for (int j = order; j >= 0; --j) v = v * x + c[j];
-      smooth[i] = std::exp(v);
+      for (int j = order; j >= 0; --j) v = v * x + coef[j];
+      return std::exp(v);
+    };
+    auto smooth_at = [&](double t) { return smooth_with(c, t); };
+    if (cpp == 2) {
+      auto period_with = [&](const Eigen::VectorXd& coef) {
+        std::vector<double> smooth(theta.size());
+        for (std::size_t i = 0; i < theta.size(); ++i) smooth[i] = smooth_with(coef, out.swings[i].peak_time);
+        return fit_crossing_times(out.crossings, cpp, smooth);
+      };
+      out.period = period_with(c);
+      // The smooth amplitude's own uncertainty moves the index, hence the
+      // period: g^T C g with g the period's change per coefficient (a step of
+      // one standard uncertainty each; the dependence is linear at that scale).
+      Eigen::VectorXd g(order + 1);
+      for (int j = 0; j <= order; ++j) {
+        Eigen::VectorXd shifted = c;
+        const double step = std::sqrt(cov(j, j));
+        shifted[j] += step;
+        g[j] = step > 0.0 ? (period_with(shifted).value - out.period.value) / step : 0.0;
+      }
+      out.period.amplitude_uncertainty = std::sqrt(std::max(0.0, g.dot(cov * g)));
+      out.period.uncertainty = std::hypot(out.period.uncertainty, out.period.amplitude_uncertainty);
+      amplitudes();  // again, with the final period
     }
-    out.period = fit_crossing_times(out.crossings, cpp, smooth);
-    amplitudes();  // again, with the final period
+    // The ends of the timing, a swing or so beyond the first and last
+    // amplitudes: the cubic extrapolated by a few per cent of its span.
+    out.start_amplitude = smooth_at(out.crossings.front().time);
+    out.end_amplitude = smooth_at(out.crossings.back().time);
   }
   const double origin = out.crossings[0].time;
   for (std::size_t i = 0; i < out.swings.size(); ++i) {

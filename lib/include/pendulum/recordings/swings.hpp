@@ -22,6 +22,8 @@
 ///     over the record, b (u_n - u_0)/n per half (or quarter) swing; the
 ///     quadratic term takes up what drift is left (a length warming up) and,
 ///     even about the mid-range centre, does not change it; the alternating term an offset
+///     (with the weighted index, the smooth amplitude's own uncertainty is
+///     propagated into the period and added in quadrature)
 ///     between the two directions (a gyroscope's bias, a photogate off the
 ///     lowest point). Weights 1/sigma_i^2 with sigma_i proportional to
 ///     1/(|slope_i| sqrt(samples_i)); the covariance is scaled by the
@@ -71,6 +73,9 @@ struct PeriodEstimate {
   double residual_rms = 0.0;  ///< weighted rms of the crossing-time residuals (s)
   double lag1_correlation = 0.0;  ///< of the standardised residuals
   double inflation = 1.0;    ///< variance factor for autocorrelation, >= 1
+  /// The part of `uncertainty` (s) from the smooth amplitude in the
+  /// amplitude-weighted index, added in quadrature; 0 without it.
+  double amplitude_uncertainty = 0.0;
 };
 
 /// One point of the period-against-amplitude curve: one full period.
@@ -101,6 +106,13 @@ struct SwingAnalysis {
   /// when the recording gives no amplitudes.
   double small_amplitude_period = 0.0;
   std::vector<PeriodPoint> period_curve;
+  /// Amplitude (rad) at the first and the last crossing, the start and end of
+  /// the timing, from the smooth amplitude curve (a polynomial in time fitted
+  /// to log theta over the swings: a line below 100 swings, a quadratic below
+  /// 400, a cubic beyond; extrapolated to the crossings);
+  /// NaN without amplitudes. The scene's `amplitude` is the start one.
+  double start_amplitude = 0.0;
+  double end_amplitude = 0.0;
   /// Amplitude of each swing against time from the first crossing (empty
   /// when the recording gives no amplitudes); no sigmas, so the decay fit
   /// scales its covariance by the residual variance.

@@ -281,3 +281,29 @@ TEST_CASE("A gyroscope's amplitudes follow the exact ones by the energy relation
   CHECK_THAT(a.small_amplitude_period,
              Catch::Matchers::WithinAbs(2.0 * M_PI / sim.omega0, 3.0 * a.period.uncertainty + 4.4e-7 * 1.8));
 }
+
+TEST_CASE("A large file is read in slices with the same numbers and line numbers", "[recordings]") {
+  // 450 000 rows (about 18 MiB, so more than one slice of 8 MiB): the values
+  // are read exactly (i/1000 s and i/8 rad/s are exact in decimal), and a
+  // bad cell in the last slice is reported at its own line.
+  std::string text = "\"Time (s)\",\"Gyroscope x (rad/s)\",\"Gyroscope y (rad/s)\",\"Gyroscope z (rad/s)\"\n";
+  const int n = 450000;
+  char row[96];
+  for (int i = 0; i < n; ++i) {
+    text.append(row, std::snprintf(row, sizeof row, "%.3f,%.3f,1.234567890E-1,-2.5E0\n", i / 1000.0, i / 8.0));
+  }
+  REQUIRE(text.size() > (std::size_t{16} << 20));
+  const Recording r = parse_recording(text, "big.csv");
+  REQUIRE(r.time.size() == static_cast<std::size_t>(n));
+  bool exact = true;
+  for (int i = 0; i < n; ++i) {
+    exact &= r.time[i] == i / 1000.0 && r.channels[0][i] == i / 8.0 && r.channels[1][i] == 0.123456789 &&
+             r.channels[2][i] == -2.5;
+  }
+  CHECK(exact);
+  const std::size_t at = text.rfind("1.234567890E-1", text.size() - 1000);
+  text.replace(at, 1, "x");
+  const auto line = 1 + std::count(text.begin(), text.begin() + at, '\n');
+  CHECK_THROWS_WITH(parse_recording(text, "big.csv"),
+                    Contains("big.csv:" + std::to_string(line) + ":") && Contains("expected a number"));
+}

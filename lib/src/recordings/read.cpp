@@ -409,10 +409,11 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
   // The rows of [p, end), whose first line is line_no, stored from index
   // `offset` on (the caller sized the columns for every line).
   struct Slice {
-    std::size_t rows = 0, dropped = 0, stored = 0, first_line = 0;
-    std::vector<double> periods;
+    std::size_t rows = 0, dropped = 0;
+    std::vector<double> time, periods;
+    std::vector<std::vector<double>> channels;
   };
-  auto parse_rows = [&](const char* p, const char* end, std::size_t line_no, std::size_t offset, Slice& out) {
+  auto parse_rows = [&](const char* p, const char* end, std::size_t line_no, Slice& out) {
     std::vector<double> row(layout.channels.size() + 1);
 
     double last_time = -std::numeric_limits<double>::infinity();
@@ -532,15 +533,13 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
       if (!std::isfinite(time)) fail(file, line_no, 1, "an infinite time");
       last_time = time;
       last_time_line = line_no;
-      if (out.stored == 0) out.first_line = line_no;
-      const std::size_t at = offset + out.stored++;
-      rec.time[at] = time;
-      for (std::size_t k = 0; k < rec.channels.size(); ++k) rec.channels[k][at] = row[k] * layout.channel_scale;
+      out.time.push_back(time);
+      for (std::size_t k = 0; k < out.channels.size(); ++k) out.channels[k].push_back(row[k] * layout.channel_scale);
     }
   };
 
-  // Slices of at least 8 MiB, one per core (up to 4), each parsed into its
-  // own lines' places in the columns, which a count of the lines sizes.
+  // Slices of at least 8 MiB, one per core (up to 4), parsed at once; the
+  // first slice's columns are reserved for the whole file and take the others.
   const char* const data = p;
   const unsigned cores = std::max(1u, std::min(4u, std::thread::hardware_concurrency()));
   const std::size_t slices = std::clamp<std::size_t>(static_cast<std::size_t>(end - data) >> 23, 1, cores);
@@ -550,51 +549,59 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
     cut.push_back(c < end ? c + 1 : end);
   }
   cut.push_back(end);
-  std::vector<std::size_t> lines(slices), offsets(slices + 1);
+  const double bytes_per_row = static_cast<double>(std::max<std::size_t>(first_data.size() + 1, 4));
   std::vector<Slice> parts(slices);
+  for (std::size_t k = 0; k < slices; ++k) {
+    // One allocation per column: rows from the first row's length, 5 % spare.
+    const double span = static_cast<double>(k == 0 ? end - cut[0] : cut[k + 1] - cut[k]);
+    const std::size_t guess = static_cast<std::size_t>(1.05 * span / bytes_per_row) + 16;
+    parts[k].time.reserve(guess);
+    parts[k].channels.resize(layout.channels.size());
+    for (auto& c : parts[k].channels) c.reserve(guess);
+  }
   std::vector<std::exception_ptr> errors(slices);
-  auto in_parallel = [&](auto&& work) {
-    std::vector<std::thread> pool;
-    for (std::size_t k = 1; k < slices; ++k) pool.emplace_back(work, k);
-    work(0);
-    for (auto& t : pool) t.join();
-  };
-  in_parallel([&](std::size_t k) {
-    lines[k] = static_cast<std::size_t>(std::count(cut[k], cut[k + 1], '\n')) +
-               (cut[k + 1] == end && cut[k] < end && end[-1] != '\n');
-  });
-  for (std::size_t k = 0; k < slices; ++k) offsets[k + 1] = offsets[k] + lines[k];
-  rec.time.resize(offsets[slices]);
-  for (auto& c : rec.channels) c.resize(offsets[slices]);
-  in_parallel([&](std::size_t k) {
+  std::vector<std::thread> pool;
+  auto work = [&](std::size_t k) {
     try {
-      parse_rows(cut[k], cut[k + 1], line_no + offsets[k], offsets[k], parts[k]);
+      parse_rows(cut[k], cut[k + 1], line_no, parts[k]);  // line numbers right for slice 0 only
     } catch (...) {
       errors[k] = std::current_exception();
     }
-  });
-  for (const auto& e : errors) {
-    if (e) std::rethrow_exception(e);
+  };
+  for (std::size_t k = 1; k < slices; ++k) pool.emplace_back(work, k);
+  work(0);
+  for (auto& t : pool) t.join();
+  // The first line of slice k, counted only when a message needs it.
+  auto first_line = [&](std::size_t k) {
+    return line_no + static_cast<std::size_t>(std::count(data, cut[k], '\n'));
+  };
+  for (std::size_t k = 0; k < slices; ++k) {
+    if (!errors[k]) continue;
+    if (k > 0) {
+      Slice again;
+      again.channels.resize(layout.channels.size());
+      parse_rows(cut[k], cut[k + 1], first_line(k), again);  // throws with the right line
+    }
+    std::rethrow_exception(errors[k]);
   }
-  // Close the gaps left by blank or dropped lines, and check the time across slices.
-  std::size_t stored = 0;
+  rec.time = std::move(parts[0].time);
+  rec.channels = std::move(parts[0].channels);
   for (std::size_t k = 0; k < slices; ++k) {
     const Slice& s = parts[k];
-    if (s.stored && stored && !(rec.time[offsets[k]] > rec.time[stored - 1])) {
-      fail(file, s.first_line, 1, "time going backwards: " + std::to_string(rec.time[offsets[k]]) + " s after " +
-                                      std::to_string(rec.time[stored - 1]) + " s; expected increasing times");
+    if (k > 0 && !s.time.empty()) {
+      if (!rec.time.empty() && !(s.time.front() > rec.time.back())) {
+        fail(file, first_line(k), 1, "time going backwards: " + std::to_string(s.time.front()) + " s after " +
+                                         std::to_string(rec.time.back()) + " s; expected increasing times");
+      }
+      rec.time.insert(rec.time.end(), s.time.begin(), s.time.end());
+      for (std::size_t c = 0; c < rec.channels.size(); ++c) {
+        rec.channels[c].insert(rec.channels[c].end(), s.channels[c].begin(), s.channels[c].end());
+      }
     }
-    if (offsets[k] != stored) {
-      std::copy_n(rec.time.begin() + offsets[k], s.stored, rec.time.begin() + stored);
-      for (auto& c : rec.channels) std::copy_n(c.begin() + offsets[k], s.stored, c.begin() + stored);
-    }
-    stored += s.stored;
     rec.rows += s.rows;
     rec.dropped += s.dropped;
     rec.periods.insert(rec.periods.end(), s.periods.begin(), s.periods.end());
   }
-  rec.time.resize(stored);
-  for (auto& c : rec.channels) c.resize(stored);
   if (layout.angle_unit_unknown) {
     // Tracker writes "θ" without its unit: more than a turn means degrees.
     const auto& a = rec.channels[0];

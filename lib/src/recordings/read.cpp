@@ -19,6 +19,7 @@
 #include <thread>
 
 #include "pendulum/scene_json.hpp"
+#include "huge_pages.hpp"
 
 namespace pendulum {
 
@@ -558,6 +559,8 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
     parts[k].time.reserve(guess);
     parts[k].channels.resize(layout.channels.size());
     for (auto& c : parts[k].channels) c.reserve(guess);
+    detail::huge_pages(parts[k].time);
+    for (auto& c : parts[k].channels) detail::huge_pages(c);
   }
   std::vector<std::exception_ptr> errors(slices);
   std::vector<std::thread> pool;

@@ -9,6 +9,7 @@
 #include "pendulum/amplitude.hpp"
 #include "pendulum/numeric.hpp"
 #include "pendulum/scene_json.hpp"
+#include "huge_pages.hpp"
 
 namespace pendulum {
 namespace {
@@ -54,6 +55,8 @@ Signal principal_axis(const Recording& r) {
   Signal sig;
   for (std::size_t j = 0; j < m; ++j) sig.axis[j] = v[j];
   const double offset = v.dot(mean);
+  sig.s.reserve(n);
+  detail::huge_pages(sig.s);
   sig.s.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     double y = -offset;

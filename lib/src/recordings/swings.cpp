@@ -9,6 +9,7 @@
 #include "pendulum/amplitude.hpp"
 #include "pendulum/numeric.hpp"
 #include "pendulum/scene_json.hpp"
+#include "pendulum/swing_energy.hpp"
 #include "huge_pages.hpp"
 
 namespace pendulum {
@@ -334,13 +335,13 @@ PeriodEstimate fit_crossing_times(const std::vector<Crossing>& c, int per_period
 
 namespace {
 
-/// theta0 from a peak speed ratio x = omega_max T0 / (4 pi) = sin(theta0/2).
-double amplitude_from_sine(double x, const std::string& file) {
-  if (!(x < 1.0)) {
+/// Throws unless sin(theta0/2) = `sine` < 1: a peak rate or speed beyond
+/// the energy of 180 deg means the pendulum went over the top.
+void require_below_top(double sine, const std::string& file) {
+  if (!(sine < 1.0)) {
     throw InputError(file, "a swing's peak rate means an amplitude of 180 deg or more "
                            "(the pendulum went over the top); expected a swinging pendulum");
   }
-  return 2.0 * std::asin(x);
 }
 
 }  // namespace
@@ -398,16 +399,15 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
   // Amplitudes (rad), by kind.
   std::vector<double> theta(nc - 1, kNaN);
   out.small_amplitude_period = kNaN;
-  auto solve_with_t0 = [&](auto sine_of) {  // sin(theta0/2) = sine_of(i, T0)
+  auto solve_with_t0 = [&](auto amplitude_of) {  // theta0 of swing i given T0, NaN if unknown
     const double T = out.period.value;
     double t0 = T;
     for (int iter = 0; iter < 5; ++iter) {
       double mean_correction = 0.0;
       int count = 0;
       for (std::size_t i = 0; i < theta.size(); ++i) {
-        const double x = sine_of(i, t0);
-        theta[i] = std::isfinite(x) ? amplitude_from_sine(x, file) : kNaN;
-        if (std::isfinite(x)) mean_correction += finite_amplitude_agm(theta[i]), ++count;
+        theta[i] = amplitude_of(i, t0);
+        if (std::isfinite(theta[i])) mean_correction += finite_amplitude_agm(theta[i]), ++count;
       }
       t0 = T / (1.0 + (count ? mean_correction / count : 0.0));
     }
@@ -426,13 +426,17 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
   auto amplitudes = [&] {
     switch (r.kind) {
       case SignalKind::angular_rate:
-        solve_with_t0([&](std::size_t i, double t0) { return raw[i] * t0 / (4.0 * kPi); });  // omega_max = (4 pi/T0) sin(theta0/2)
+        solve_with_t0([&](std::size_t i, double t0) {
+        if (!std::isfinite(raw[i])) return kNaN;
+        require_below_top(raw[i] * t0 / (4.0 * kPi), file);
+        return amplitude_from_peak_rate(raw[i], t0);
+      });
         break;
       case SignalKind::linear_acceleration:
         // The tangential acceleration at a turning point is g sin theta0
         // (standard g: a local g 0.3 % off moves theta0 by 0.3 %).
         for (std::size_t i = 0; i < raw.size(); ++i) {
-          if (std::isfinite(raw[i])) theta[i] = std::asin(std::min(raw[i] / kStandardGravity, 1.0));
+          if (std::isfinite(raw[i])) theta[i] = amplitude_from_turning_acceleration(std::min(raw[i], kStandardGravity), kStandardGravity);
         }
         break;
       case SignalKind::angle:
@@ -445,7 +449,7 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
         for (std::size_t i = 1; i + 1 < raw.size(); ++i) {
           if (sig.s[(at[i] + at[i + 1]) / 2] < 0.0) continue;  // a dip, not a bottom
           const double ratio = (sig.offset + raw[i]) / (sig.offset - (raw[i - 1] + raw[i + 1]) / 2.0);
-          theta[i] = std::acos(std::clamp(3.0 / (ratio + 2.0), -1.0, 1.0));
+          theta[i] = amplitude_from_acceleration_ratio(std::max(ratio, 1.0));
         }
         break;
       case SignalKind::gate_states:
@@ -454,7 +458,8 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
             const double v = *options.bob_width / durations[i];
             const double sqrt_gl = options.length ? 2.0 * kPi * *options.length / t0
                                                   : kStandardGravity * t0 / (2.0 * kPi);
-            return v / (2.0 * sqrt_gl);  // v = 2 sqrt(g l) sin(theta0/2)
+            require_below_top(v / (2.0 * sqrt_gl), file);
+          return amplitude_from_bottom_speed(v, sqrt_gl);
           });
         }
         break;

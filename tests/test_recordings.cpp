@@ -159,6 +159,11 @@ TEST_CASE("Readers: delimiters, decimal commas, NaN cells, the header decides", 
   CHECK(p.format == RecordingFormat::plain);
   CHECK(p.time == std::vector<double>{0.1, 0.2505});
 
+  // Logger Pro's text export: a data-set line above the column names.
+  const Recording v = parse_recording("Run 1\nTime (s)\tGate State\n0.10\t1\n0.12\t0\n", "g.txt");
+  CHECK(v.format == RecordingFormat::vernier);
+  CHECK(v.channels[0] == std::vector<double>{1.0, 0.0});
+
   // A forced format that the header does not fit.
   CHECK_THROWS_WITH(parse_recording("Time (s),Gyroscope x (rad/s)\n1,2\n", "e.csv", RecordingFormat::vernier),
                     Contains("e.csv:1:1") && Contains("does not fit a vernier export"));

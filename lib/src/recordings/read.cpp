@@ -236,16 +236,16 @@ Layout detect(RecordingFormat forced, const std::vector<Column>& cols, bool prea
          std::string("the header does not fit a ") + recording_format_name(forced) +
              " export (docs/recordings.md lists the columns each format needs)");
   }
-  const bool pasco = std::any_of(cols.begin(), cols.end(), [](const Column& c) { return c.run > 0; });
-  const bool vernier = std::any_of(cols.begin(), cols.end(), [](const Column& c) {
-    return c.prefixed || c.role == Role::state;
-  });
-  RecordingFormat guess = RecordingFormat::phyphox;
-  if (!has_header || cols.size() == 1) guess = RecordingFormat::plain;
-  else if (pasco) guess = RecordingFormat::pasco;
-  else if (preamble || (!cols.empty() && cols[0].name == "t")) guess = RecordingFormat::tracker;
-  else if (vernier) guess = RecordingFormat::vernier;
-  if (auto l = layout_for(guess, cols, preamble)) return *l;
+  // The first family whose columns the header has; the most specific first
+  // (a PASCO gate file also has what a Vernier one needs).
+  if (!has_header || cols.size() == 1) {
+    if (auto l = layout_for(RecordingFormat::plain, cols, preamble)) return *l;
+  } else {
+    for (auto family : {RecordingFormat::pasco, RecordingFormat::vernier, RecordingFormat::tracker,
+                        RecordingFormat::phyphox}) {
+      if (auto l = layout_for(family, cols, preamble)) return *l;
+    }
+  }
   std::string names;
   for (const auto& c : cols) names += (names.empty() ? "\"" : ", \"") + c.name + "\"";
   fail(file, header_line, 1,

@@ -19,6 +19,7 @@
 #include "pendulum/recordings/swings.hpp"
 #include "pendulum/scene_json.hpp"
 #include "recording_simulation.hpp"
+#include "scene_files.hpp"
 
 using namespace pendulum;
 using Catch::Matchers::Contains;
@@ -310,4 +311,44 @@ TEST_CASE("A large file is read in slices with the same numbers and line numbers
   const auto line = 1 + std::count(text.begin(), text.begin() + at, '\n');
   CHECK_THROWS_WITH(parse_recording(text, "big.csv"),
                     Contains("big.csv:" + std::to_string(line) + ":") && Contains("expected a number"));
+}
+
+TEST_CASE("Mutated recordings fail cleanly or give finite results", "[recordings][robustness]") {
+  // Seeded mutations of each family's file: bytes changed to delimiters,
+  // signs, letters, NUL or newlines, runs deleted or repeated, the file cut.
+  // Each must either throw InputError or give a finite period, uncertainty
+  // and amplitudes: nothing else is thrown, nothing crashes, no NaN leaks.
+  const char* files[] = {"phyphox_gyroscope.csv", "phyphox_pendulum_raw.tsv", "vernier_photogate.csv",
+                         "pasco_rotary.csv", "tracker_xy.txt", "plain_blocking_times.txt"};
+  const char alphabet[] = {',', ';', '\t', '\n', '-', '+', '.', 'E', 'x', '"', ' ', '\0', '9'};
+  std::mt19937_64 random(20261130);
+  int failed_cleanly = 0, succeeded = 0;
+  for (const char* name : files) {
+    const std::string original = test::read_text(kDir + name);
+    for (int trial = 0; trial < 150; ++trial) {
+      std::string text = original;
+      const int edits = 1 + static_cast<int>(random() % 4);
+      for (int k = 0; k < edits && !text.empty(); ++k) {
+        const std::size_t at = random() % text.size();
+        switch (random() % 4) {
+          case 0: text[at] = alphabet[random() % sizeof alphabet]; break;
+          case 1: text.erase(at, 1 + random() % 40); break;
+          case 2: text.insert(at, text.substr(at, 1 + random() % 40)); break;
+          case 3: text.resize(at); break;
+        }
+      }
+      try {
+        const SwingAnalysis a = analyse_swings(parse_recording(text, name), name);
+        ++succeeded;
+        CHECK(std::isfinite(a.period.value));
+        CHECK(std::isfinite(a.period.uncertainty));
+        for (double x : a.decay.amplitudes) CHECK(std::isfinite(x));
+      } catch (const InputError&) {
+        ++failed_cleanly;
+      }
+    }
+  }
+  WARN(succeeded << " mutated recordings reduced, " << failed_cleanly << " refused");
+  CHECK(succeeded > 0);
+  CHECK(failed_cleanly > 0);
 }

@@ -433,28 +433,28 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
     std::size_t last_time_line = 0;
     char buffer[64];
     std::vector<double> cells(ncols);
-    // The common row: plain numbers between single delimiters. Anything else
-    // (quotes, spaces, empty or NaN cells, errors) takes the general path.
-    auto plain_row = [&](const char* q, const char* e) {
-      for (std::size_t j = 0; j < ncols; ++j) {
-        const char* stop = fast_number(q, e, mark, cells[j]);
-        if (!stop) return false;
-        if (j + 1 < ncols) {
-          if (stop >= e || *stop != delimiter) return false;
-          q = stop + 1;
-        } else if (stop < e && *stop != '\r') {
-          return false;
-        }
+    // The common row: plain numbers between single delimiters, read up to its
+    // newline, which it returns (no search for the line's end first). Anything
+    // else (quotes, spaces, empty or NaN cells, errors) takes the general path.
+    auto plain_row = [&](const char* q) -> const char* {
+      for (std::size_t j = 0; j + 1 < ncols; ++j) {
+        q = fast_number(q, end, mark, cells[j]);
+        if (!q || q >= end || *q != delimiter) return nullptr;
+        ++q;
       }
-      return true;
+      q = fast_number(q, end, mark, cells[ncols - 1]);
+      if (!q) return nullptr;
+      q += q < end && *q == '\r';
+      return q >= end || *q == '\n' ? q : nullptr;
     };
     for (const char* e = nullptr; p < end; p = e < end ? e + 1 : end, ++line_no) {
-      e = line_end(p);
+      const char* plain = plain_row(p);
+      e = plain ? plain : line_end(p);
       const char* line_begin = p;
       auto column = [&](const char* at) { return static_cast<std::size_t>(at - line_begin) + 1; };
       double time = kNaN;
       bool missing = false;
-      if (plain_row(p, e)) {
+      if (plain) {
         time = cells[layout.time] * layout.time_scale;
         for (std::size_t j = 0; j < ncols; ++j) {
           if (target[j] >= 0) row[target[j]] = cells[j];

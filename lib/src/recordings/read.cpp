@@ -324,6 +324,10 @@ inline const char* fast_number(const char* s, const char* e, char mark, double& 
 }  // namespace
 
 Recording parse_recording(std::string_view text, const std::string& file, RecordingFormat format) {
+  if (starts_with(text, "PK\x03\x04")) {
+    fail(file, 1, 1, "a zip archive (phyphox's zip export?); expected a text export: unzip it and "
+                     "import the sensor's CSV inside (docs/recordings.md)");
+  }
   if (const void* nul = std::memchr(text.data(), '\0', text.size())) {
     const std::size_t at = static_cast<const char*>(nul) - text.data();
     const std::size_t line = 1 + std::count(text.data(), text.data() + at, '\n');

@@ -134,6 +134,13 @@ TEST_CASE("A photogate with the bob's width gives amplitudes", "[recordings]") {
   // 0.9 deg: 1e-4 relative, far inside these bounds.
   CHECK_THAT(r.swings.decay.amplitudes.front(), Catch::Matchers::WithinAbs(0.2495, 0.0015));
   CHECK_THAT(r.swings.decay.amplitudes.back(), Catch::Matchers::WithinAbs(0.2365, 0.0015));
+  // The same events with the states the other way round (an exporter that
+  // writes 0 for blocked): the shorter state is the blocking, same result.
+  Recording inverted = read_recording(kDir + "vernier_photogate.csv");
+  for (double& x : inverted.channels[0]) x = 1.0 - x;
+  const SwingAnalysis flipped = analyse_swings(inverted, "inverted", o);
+  CHECK(flipped.period.value == r.swings.period.value);
+  CHECK(flipped.decay.amplitudes == r.swings.decay.amplitudes);
   // The Vernier file's own period column (every other blocking) agrees.
   const Recording raw = read_recording(kDir + "vernier_photogate.csv");
   REQUIRE(raw.periods.size() == 10);

@@ -263,10 +263,17 @@ std::vector<Crossing> gate_passages(const Recording& r, std::vector<double>& dur
     durations.assign(out.size(), kNaN);
     return out;
   }
+  // A passage blocks the beam for a small part of the swing. Exporters differ
+  // in which state they call blocked: the state held for less time overall is.
   const auto& state = r.channels[0];
+  double time_high = 0.0, time_low = 0.0;
+  for (std::size_t k = 0; k + 1 < r.time.size(); ++k) {
+    (state[k] > 0.5 ? time_high : time_low) += r.time[k + 1] - r.time[k];
+  }
+  const bool high_is_blocked = time_high <= time_low;
   std::optional<double> blocked_at;
   for (std::size_t k = 0; k < r.time.size(); ++k) {
-    const bool blocked = state[k] > 0.5;
+    const bool blocked = (state[k] > 0.5) == high_is_blocked;
     if (blocked && !blocked_at) blocked_at = r.time[k];
     if (!blocked && blocked_at) {
       out.push_back({(*blocked_at + r.time[k]) / 2.0, 0.0, 0});

@@ -12,7 +12,7 @@
 ///    (m/s^2)", "Rotation x (rad/s)" (the Pendulum experiment's raw data).
 ///  - Vernier (Graphical Analysis, Logger Pro): "Latest: Time (s)",
 ///    "Latest: GateState" (or "Run 1: ...", "Gate State"), one row per gate
-///    change, state 1 blocked, 0 unblocked; "Period (s)" where present.
+///    change with the state, 0 or 1; "Period (s)" where present.
 ///  - PASCO Capstone: "Time (s) Run #1" and a measurement of run 1: "Angle
 ///    (rad) Run #1", "Angular Velocity (rad/s) Run #1", "State Run #1".
 ///  - plain: one column of blocking times, header optional ("t (ms)").
@@ -39,7 +39,7 @@ enum class SignalKind {
   linear_acceleration,  ///< m/s^2, gravity removed (swings at f)
   angle,           ///< rad, the pendulum's angle (tracked or a rotary sensor)
   position,        ///< x, y of the bob in any length unit (video track)
-  gate_states,     ///< gate state per event row: 1 blocked, 0 unblocked
+  gate_states,     ///< gate state (0 or 1) per event row; the state held for the shorter total time is "blocked"
   blocking_times,  ///< times at which the gate was blocked
 };
 

@@ -297,8 +297,13 @@ PeriodEstimate fit_crossing_times(const std::vector<Crossing>& c, int per_period
     u[i] = u[i - 1] + 1.0 + (weighted_index ? finite_amplitude_agm(amplitudes[i - 1]) : 0.0);
   }
   const double centre = (u[0] + u[n - 1]) / 2.0;  // mid-range: the quadratic term then drops out of the mean
-  Eigen::Matrix4d xtwx = Eigen::Matrix4d::Zero();
-  Eigen::Vector4d xtwt = Eigen::Vector4d::Zero();
+  // Without the amplitude-weighted index, a cubic term too: the finite-amplitude
+  // period drifts with theta0^2, whose curvature puts a cubic of some 20 us into
+  // 20 s of crossings (a photogate times them to a few us).
+  const bool cubic = !weighted_index && n >= 12;
+  const int q = cubic ? 5 : 4;  // parameters: 1, x, x^2, (x^3,) (-1)^i
+  Eigen::MatrixXd xtwx = Eigen::MatrixXd::Zero(q, q);
+  Eigen::VectorXd xtwt = Eigen::VectorXd::Zero(q);
   std::vector<double> w(n, 1.0);
   if (c[0].samples > 0) {
     double mean = 0.0;
@@ -308,15 +313,18 @@ PeriodEstimate fit_crossing_times(const std::vector<Crossing>& c, int per_period
   const double t0 = c[0].time;
   auto row = [&](std::size_t i) {
     const double x = u[i] - centre;
-    return Eigen::Vector4d(1.0, x, x * x, i % 2 ? -1.0 : 1.0);
+    Eigen::VectorXd r(q);
+    r[0] = 1.0, r[1] = x, r[2] = x * x, r[3] = i % 2 ? -1.0 : 1.0;
+    if (cubic) r[4] = x * x * x;
+    return r;
   };
   for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector4d r = row(i);
+    const Eigen::VectorXd r = row(i);
     xtwx += w[i] * r * r.transpose();
     xtwt += w[i] * r * (c[i].time - t0);
   }
-  const Eigen::Matrix4d inv = xtwx.inverse();
-  const Eigen::Vector4d beta = inv * xtwt;
+  const Eigen::MatrixXd inv = xtwx.inverse();
+  const Eigen::VectorXd beta = inv * xtwt;
   std::vector<double> z(n);
   double ssr = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -329,12 +337,17 @@ PeriodEstimate fit_crossing_times(const std::vector<Crossing>& c, int per_period
   p.lag1_correlation = ssr > 0.0 ? lag / ssr : 0.0;
   const double rho = std::min(p.lag1_correlation, 0.95);
   p.inflation = rho > 0.0 ? (1.0 + rho) / (1.0 - rho) : 1.0;
-  const double s2 = ssr / (n - 4.0);
-  // The mean period over the crossings: the fitted line's rise from the first
-  // to the last, per period; the quadratic term, even about the centre, adds nothing.
+  const double s2 = ssr / (static_cast<double>(n) - q);
+  // The mean period over the crossings: the fitted curve's rise from the
+  // first to the last, per period. About the centre, x_n = -x_0 = X: the
+  // quadratic term adds nothing, the cubic X^2 times its coefficient.
+  const double half_range = (u[n - 1] - u[0]) / 2.0;
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(q);
+  g[1] = 1.0;
+  if (cubic) g[4] = half_range * half_range;
   const double scale = per_period * (u[n - 1] - u[0]) / (n - 1.0);
-  p.value = scale * beta[1];
-  p.uncertainty = scale * std::sqrt(s2 * inv(1, 1) * p.inflation);
+  p.value = scale * g.dot(beta);
+  p.uncertainty = scale * std::sqrt(s2 * g.dot(inv * g) * p.inflation);
   p.residual_rms = std::sqrt(s2);
   p.periods = static_cast<int>((n - 1) / per_period);
   return p;

@@ -21,7 +21,9 @@
 ///     crossings of a decaying swing lie on a line. The period is the mean
 ///     over the record, b (u_n - u_0)/n per half (or quarter) swing; the
 ///     quadratic term takes up what drift is left (a length warming up) and,
-///     even about the mid-range centre, does not change it; the alternating term an offset
+///     even about the mid-range centre, does not change it (without amplitudes a
+///     cubic term e x^3 joins from 12 crossings on, and the mean is b + e X^2,
+///     X = (u_n - u_0)/2); the alternating term an offset
 ///     (with the weighted index, the smooth amplitude's own uncertainty is
 ///     propagated into the period and added in quadrature)
 ///     between the two directions (a gyroscope's bias, a photogate off the

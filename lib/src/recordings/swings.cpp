@@ -527,7 +527,13 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
       return std::exp(v);
     };
     auto smooth_at = [&](double t) { return smooth_with(c, t); };
-    if (cpp == 2) {
+    // Not for a photogate: its amplitudes take the bob's speed as constant
+    // through the beam, which reads theta0 low by about theta_g^2/(6 theta0^2)
+    // (theta_g the beam's half-width in angle), a bias that drifts as the
+    // swing decays and, through the index, moves the period by several of its
+    // sub-microsecond uncertainties. The cubic model of the plain index is
+    // unbiased there (tests/test_recordings.cpp, photogate coverage).
+    if (cpp == 2 && !events) {
       auto period_with = [&](const Eigen::VectorXd& coef) {
         std::vector<double> smooth(theta.size());
         for (std::size_t i = 0; i < theta.size(); ++i) smooth[i] = smooth_with(coef, out.swings[i].peak_time);

@@ -474,12 +474,18 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
         break;
       case SignalKind::gate_states:
         if (options.bob_width && !durations.empty()) {
+          // Swing i runs from passage i to passage i + 1 round a turning point:
+          // its amplitude is the mean of theirs.
           solve_with_t0([&](std::size_t i, double t0) {
-            const double v = *options.bob_width / durations[i];
             const double sqrt_gl = options.length ? 2.0 * kPi * *options.length / t0
                                                   : kStandardGravity * t0 / (2.0 * kPi);
-            require_below_top(v / (2.0 * sqrt_gl), file);
-          return amplitude_from_bottom_speed(v, sqrt_gl);
+            double sum = 0.0;
+            for (std::size_t k : {i, i + 1}) {
+              const double v = *options.bob_width / durations[k];
+              require_below_top(v / (2.0 * sqrt_gl), file);
+              sum += amplitude_from_bottom_speed(v, sqrt_gl);
+            }
+            return sum / 2.0;
           });
         }
         break;
@@ -487,10 +493,6 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
     }
   };
   amplitudes();
-  if (r.kind == SignalKind::gate_states) {
-    // Swings of a photogate are the passages; theta[i] belongs to passage i.
-    for (std::size_t i = 0; i < out.swings.size(); ++i) out.swings[i].peak_time = out.crossings[i].time;
-  }
   // Refit with the amplitude-weighted index once the swings have amplitudes:
   // a long decaying record's crossing times then lie on a line instead of a
   // curve no quadratic fits. The index takes a smooth amplitude, a polynomial

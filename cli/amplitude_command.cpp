@@ -50,7 +50,7 @@ Command add_amplitude_command(CLI::App& app) {
              : amplitude_error_bound(o->method, theta0, o->terms)},
         {"equation", "Nelson & Olsson (1986) Eq. (8)"}};
     if (o->method == AmplitudeMethod::series) out["series_terms"] = o->terms;
-    std::cout << json_text(out) << "\n";
+    std::cout << out.dump(2) << "\n";
     return 0;
   }};
 }

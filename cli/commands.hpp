@@ -10,9 +10,12 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include "pendulum/amplitude.hpp"
+
+namespace pendulum {
+struct AnalysisOptions;
+}
 
 namespace pendulum::cli {
 
@@ -25,16 +28,16 @@ struct Command {
 /// The text of a file, or of standard input for "-".
 std::string read_input(const std::string& file);
 
-/// JSON as printed by every command (indent -1: one line). A file name that
-/// is not UTF-8 prints its bad bytes as U+FFFD instead of failing.
-std::string json_text(const nlohmann::ordered_json& j, int indent = 2);
-
 /// Each warning on stderr, prefixed "pendulum-g: warning: ".
 void print_warnings(const std::vector<std::string>& warnings);
 
 /// The finite-amplitude methods by their output names, `auto` included
 /// when the command can choose.
 std::map<std::string, AmplitudeMethod> amplitude_methods(bool with_auto);
+
+/// The options of an analysis (--negligible-fraction, --amplitude-method,
+/// --series-terms), shared by the commands that reduce one scene.
+void add_analysis_options(CLI::App& cmd, AnalysisOptions& options);
 
 /// `pendulum-g reduce SCENE`: scene -> corrected g (cli/reduce_command.cpp).
 Command add_reduce_command(CLI::App& app);
@@ -46,11 +49,24 @@ Command add_amplitude_command(CLI::App& app);
 /// `pendulum-g batch SCENES...`: many scenes -> one summary (cli/batch_command.cpp).
 Command add_batch_command(CLI::App& app);
 
+/// `pendulum-g report SCENE -o report.html`: the reduction as one HTML page
+/// or one SVG plot (cli/report_command.cpp).
+Command add_report_command(CLI::App& app);
+
+/// Writes `text` to `path` ("-": standard output): a regular file through a
+/// temporary file renamed over it, so that a failure leaves no partial file;
+/// a device or pipe (/dev/stdout) in place. Throws InputError ("output: cannot
+/// write PATH: reason").
+void write_output(const std::string& path, const std::string& text);
+
 /// `pendulum-g fit-decay SCENE`: the decay record -> alpha, beta (cli/fit_decay_command.cpp).
 Command add_fit_decay_command(CLI::App& app);
 
 /// `pendulum-g import RECORDING`: a phone, photogate or video-tracker
 /// recording -> period, amplitudes, timing and decay (cli/import_command.cpp).
 Command add_import_command(CLI::App& app);
+/// `pendulum-g clock SCENE`: circular and impulse error of a clock
+/// pendulum (cli/clock_command.cpp).
+Command add_clock_command(CLI::App& app);
 
 }  // namespace pendulum::cli

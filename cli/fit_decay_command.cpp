@@ -4,7 +4,7 @@
 
 #include "commands.hpp"
 #include "pendulum/analysis.hpp"
-#include "pendulum/result_json.hpp"
+#include "pendulum/output.hpp"
 #include "pendulum/scene_json.hpp"
 
 namespace pendulum::cli {
@@ -33,17 +33,11 @@ Command add_fit_decay_command(CLI::App& app) {
     DecayFitOptions fit_options;
     fit_options.model = o->model;
     const DecayFit fit = fit_decay(*scene.decay_data, fit_options);
-    nlohmann::ordered_json out = {{"schema", "pendulum-g/decay-fit/1"}, {"input", o->file}};
-    out.update(decay_fit_to_json(fit, scene.value.decay));
-    const ParsedScene fitted = with_fitted_decay(scene, fit);
-    if (const auto drag = predict_drag(fitted.value)) {
-      out["drag_theory"] = drag_to_json(*drag, *fitted.value.decay);
-    }
     std::vector<std::string> warnings = scene.warnings;
     for (auto& w : review_decay_fit(fit)) warnings.push_back(std::move(w));
-    out["warnings"] = warnings;
+    const std::string text = decay_fit_json(o->file, scene, fit, warnings);
     print_warnings(warnings);
-    std::cout << json_text(out) << "\n";
+    std::cout << text << "\n";
     return 0;
   }};
 }

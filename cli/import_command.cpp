@@ -9,10 +9,12 @@
 #include <memory>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "commands.hpp"
 #include "pendulum/numeric.hpp"
 #include "pendulum/recordings/swings.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/input_error.hpp"
 
 namespace pendulum::cli {
 namespace {
@@ -140,7 +142,7 @@ Command add_import_command(CLI::App& app) {
     options.bob_width = o->bob_width;
     options.length = o->length;
     const RecordingSummary summary = analyse_recording(o->file, format, options);
-    std::cout << (table ? summary_table(summary) : json_text(summary_json(summary)) + "\n");
+    std::cout << (table ? summary_table(summary) : summary_json(summary).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     return 0;
   }};
 }

@@ -4,7 +4,7 @@
 
 #include "commands.hpp"
 #include "pendulum/analysis.hpp"
-#include "pendulum/result_json.hpp"
+#include "pendulum/output.hpp"
 #include "pendulum/scene_json.hpp"
 
 namespace pendulum::cli {
@@ -21,25 +21,15 @@ Command add_reduce_command(CLI::App& app) {
   cmd->add_option("scene", o->file, "Scene file (JSON), or - for standard input")->required();
   cmd->add_option("--format", o->format, "Output: json (default) or table")
       ->check(CLI::IsMember({"json", "table"}));
-  cmd->add_option("--negligible-fraction", o->analysis.negligible_fraction,
-                  "Flag a correction negligible below this fraction of the period's "
-                  "uncertainty (default 0.1)")
-      ->check(CLI::Range(0.0, 1e6));
-  cmd->add_option("--amplitude-method", o->analysis.reduction.amplitude_method,
-                  "Finite-amplitude method: auto (default: the cheapest whose error bound "
-                  "is below 1% of the period's uncertainty), agm (exact), series, small_angle")
-      ->transform(CLI::CheckedTransformer(amplitude_methods(true), CLI::ignore_case));
-  cmd->add_option("--series-terms", o->analysis.reduction.series_terms,
-                  "Terms of the Eq. (8) series for --amplitude-method series (default 4)")
-      ->check(CLI::Range(1, 1000));
+  add_analysis_options(*cmd, o->analysis);
 
   return {cmd, [o] {
     const ParsedScene scene = parse_scene(read_input(o->file));
     const Analysis analysis = analyse(scene, o->analysis);
     const std::string text =
         o->format == "table"
-            ? result_to_table(scene, analysis)
-            : json_text(result_to_json(scene, analysis, o->analysis, o->file)) + "\n";
+            ? result_table(scene, analysis)
+            : result_json(scene, analysis, o->analysis, o->file) + "\n";
     print_warnings(scene.warnings);
     print_warnings(analysis.warnings);
     std::cout << text;

@@ -1,7 +1,7 @@
 #pragma once
 // The scene catalogues (tests/bad_scenes.json, tests/valid_scenes.json): each
-// case is a raw `text`, or a whole `scene`, or the Nelson-Olsson scene with
-// an RFC 7386 merge `patch`, then optionally
+// case is a raw `text`, or a whole `scene`, or the Nelson-Olsson scene (or the
+// file of data/ named by `base`) with an RFC 7386 merge `patch`, then optionally
 // - `fill`: the array at the JSON pointer `fill.pointer` made of `fill.count`
 //   copies of `fill.value` (a file too large to write out);
 // - `splice`: {"PLACEHOLDER": "raw text"}: the string "PLACEHOLDER" in the
@@ -19,7 +19,10 @@ namespace pendulum::test {
 /// The scene text of one catalogue case; `base` is the scene patches apply to.
 inline std::string catalogue_text(const nlohmann::json& entry, const nlohmann::json& base) {
   if (entry.contains("text")) return entry.at("text").get<std::string>();
-  nlohmann::json scene = entry.value("scene", base);
+  nlohmann::json scene = entry.contains("base")
+                             ? nlohmann::json::parse(read_text(std::string(PENDULUM_DATA_DIR) + "/" +
+                                                               entry.at("base").get<std::string>()))
+                             : entry.value("scene", base);
   if (entry.contains("patch")) scene.merge_patch(entry.at("patch"));
   if (entry.contains("fill")) {
     const nlohmann::json& fill = entry.at("fill");

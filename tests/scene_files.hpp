@@ -1,5 +1,6 @@
 #pragma once
 // Reading the bundled scene files in tests.
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -11,6 +12,20 @@ inline std::string read_text(const std::string& path) {
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+/// What a command prints on stdout; `status` gets its exit status.
+inline std::string command_output(const std::string& command, int& status) {
+  std::string text;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) {
+    status = -1;
+    return text;
+  }
+  char buffer[4096];
+  while (const std::size_t k = std::fread(buffer, 1, sizeof buffer, pipe)) text.append(buffer, k);
+  status = pclose(pipe);
+  return text;
 }
 
 inline std::string nelson_olsson_text() {

@@ -206,12 +206,9 @@ TEST_CASE("Bad decay records are refused by path", "[decay_fit][errors]") {
 TEST_CASE("The bundled decay record is what its generator writes", "[decay_fit][data]") {
   const std::string command = std::string(PENDULUM_MAKE_DECAY_SCENE) + " " + PENDULUM_DATA_DIR +
                               "/nelson_olsson_1986.json";
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe);
-  std::string text;
-  char buffer[4096];
-  while (const std::size_t k = std::fread(buffer, 1, sizeof buffer, pipe)) text.append(buffer, k);
-  REQUIRE(pclose(pipe) == 0);
+  int status = 0;
+  const std::string text = test::command_output(command, status);
+  REQUIRE(status == 0);
   const auto generated = nlohmann::json::parse(text);
   const auto bundled = nlohmann::json::parse(test::read_text(std::string(PENDULUM_DATA_DIR) +
                                                              "/nelson_olsson_1986_decay.json"));
@@ -241,12 +238,15 @@ TEST_CASE("The bundled record gives back the paper's alpha and beta, and Table I
   // issue 2 tolerance plus twice the row's own uncertainty, propagated from
   // the fit's covariance through the reduction by automatic differentiation.
   using J = ceres::Jet<double, 2>;
-  const ParsedScene fitted = with_fitted_decay(scene, f);
-  const Scene<J> dual = convert_scene<J>(fitted.value, [](const char* path, double x) {
-    const std::string p = path;
+  ParsedScene fitted = scene;
+  use_fitted_decay(fitted, f);
+  const Apparatus<J> dual = convert_apparatus<J>(fitted.apparatus, [](const Field& field, double x) {
+    const std::string p = field.path;
     return p == "decay.alpha" ? J(x, 0) : p == "decay.beta" ? J(x, 1) : J(x);
   });
-  const Reduction<J> r = reduce(dual);
+  const Observation<J> observation =
+      convert_observation<J>(fitted.observations[0], [](const Field&, double x) { return J(x); });
+  const Reduction<J> r = reduce(dual, observation);
   const double s_aa = f.covariance[0], s_ab = f.covariance[1], s_bb = f.covariance[4];
   struct Row {
     CorrectionId id;

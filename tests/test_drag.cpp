@@ -12,7 +12,7 @@ using Catch::Matchers::WithinRel;
 
 TEST_CASE("Drag constants of the Nelson-Olsson pendulum (Sec. III.C.4)", "[drag]") {
   const ParsedScene scene = parse_scene(test::nelson_olsson_text());
-  const auto p = predict_drag(scene.value);
+  const auto p = predict_drag(scene.apparatus, scene.observations[0]);
   REQUIRE(p);
   // Sec. III.C.2: the ball's largest Reynolds number is 1100, the wire's 6.
   CHECK_THAT(p->reynolds_sphere, WithinAbs(1100.0, 50.0));
@@ -22,7 +22,7 @@ TEST_CASE("Drag constants of the Nelson-Olsson pendulum (Sec. III.C.4)", "[drag]
   // The paper's b uses the rounded C_H = 0.50; the unrounded 0.503 gives
   // 0.497e-4 (docs/deviations.md), so b is checked both ways.
   CHECK_THAT(p->c_d_prime, WithinAbs(0.61, 0.005));
-  const auto& air = *scene.value.air;
+  const auto& air = *scene.apparatus.air;
   const double rho = air_density(air.pressure, air.temperature, air.molar_mass);
   const double delta = penetration_depth(air.viscosity, test::kOmega0, rho);
   CHECK_THAT(sphere_linear_drag(air.viscosity, test::kBobRadius, 0.50, delta), WithinAbs(0.49e-4, 0.005e-4));
@@ -50,11 +50,11 @@ TEST_CASE("Measured drag from alpha and beta: b = 4.27e-4 kg/s, c = 1.18e-3 kg/m
 
 TEST_CASE("No air, no drag prediction; a wire without diameter has no quadratic drag", "[drag]") {
   ParsedScene scene = parse_scene(test::nelson_olsson_text());
-  scene.value.wire->diameter.reset();
-  const auto p = predict_drag(scene.value);
+  scene.apparatus.wire->diameter.reset();
+  const auto p = predict_drag(scene.apparatus, scene.observations[0]);
   REQUIRE(p);
   CHECK(p->b_wire);
   CHECK_FALSE(p->c_wire);
-  scene.value.air.reset();
-  CHECK_FALSE(predict_drag(scene.value));
+  scene.apparatus.air.reset();
+  CHECK_FALSE(predict_drag(scene.apparatus, scene.observations[0]));
 }

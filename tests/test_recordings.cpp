@@ -19,7 +19,7 @@
 #include "pendulum/amplitude.hpp"
 #include "pendulum/decay_fit.hpp"
 #include "pendulum/recordings/swings.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/input_error.hpp"
 #include "recording_simulation.hpp"
 #include "scene_files.hpp"
 

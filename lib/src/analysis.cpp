@@ -5,7 +5,15 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <Eigen/Dense>
+#include <boost/math/special_functions/gamma.hpp>
 #include <ceres/jet.h>
+
+#include "pendulum/input_error.hpp"
+#include "pendulum/models/simple_pendulum.hpp"
+#include "pendulum/period_fit.hpp"
+#include "plausibility.hpp"
+#include "text.hpp"
 
 namespace pendulum {
 
@@ -17,22 +25,6 @@ const char* status_name(Status s) {
   }
   return "";
 }
-
-namespace {
-
-using Dual = ceres::Jet<double, 1>;
-
-/// The reduction on dual numbers seeded on one input: its derivatives.
-Reduction<Dual> reduce_seeded(const ParsedScene& scene, const std::string& input,
-                              const ReductionOptions& options) {
-  const Scene<Dual> dual = convert_scene<Dual>(
-      scene.value, [&](const char* path, double x) {
-        return input == path ? Dual(x, 0) : Dual(x);
-      });
-  return reduce(dual, options);
-}
-
-}  // namespace
 
 std::vector<std::string> review_decay_fit(const DecayFit& fit) {
   std::vector<std::string> warnings;
@@ -48,7 +40,12 @@ std::vector<std::string> review_decay_fit(const DecayFit& fit) {
     }
   }
   for (const auto& [name, q] : {std::pair{"alpha", fit.alpha}, std::pair{"beta", fit.beta}}) {
-    if (q.fitted && !q.at_bound && !q.significant) {
+    if (q.fitted && !q.uncertainty) {
+      warnings.push_back(std::string("decay fit: the record cannot fix ") + name +
+                         " (the fit's covariance is singular): its uncertainty is unknown, and it is "
+                         "listed in g.inputs_without_uncertainty, not in the budget");
+    }
+    if (q.fitted && q.uncertainty && !q.at_bound && !q.significant) {
       warnings.push_back(std::string("decay fit: ") + name +
                          " is not significant (less than two standard uncertainties from 0)");
     }
@@ -56,138 +53,556 @@ std::vector<std::string> review_decay_fit(const DecayFit& fit) {
   return warnings;
 }
 
-ParsedScene with_fitted_decay(const ParsedScene& scene, const DecayFit& fit) {
-  ParsedScene out = scene;
-  out.value.decay = Decay<double>{fit.alpha.value, fit.beta.value};
-  out.uncertainty.decay = Decay<double>{fit.alpha.uncertainty.value_or(0.0),
-                                        fit.beta.uncertainty.value_or(0.0)};
-  out.si_unit["decay.alpha"] = "1/s";
-  out.si_unit["decay.beta"] = "1/(s rad)";
-  return out;
+void use_fitted_decay(ParsedScene& scene, const DecayFit& fit) {
+  scene.apparatus.decay = Decay<double>{fit.alpha.value, fit.beta.value};
+  scene.apparatus_uncertainty.decay =
+      Decay<double>{fit.alpha.uncertainty.value_or(0.0), fit.beta.uncertainty.value_or(0.0)};
+  if (fit.alpha.uncertainty && fit.beta.uncertainty) {
+    scene.input_covariances.push_back({"decay.alpha", "decay.beta", fit.covariance[1]});
+  }
 }
+
+namespace {
+
+/// One input: a scalar of the apparatus or of one observation.
+struct Input {
+  std::string path;
+  const char* unit;
+  double value, sigma;
+  int observation;  ///< -1: the apparatus
+  int ordinal;      ///< place in its owner's zip order
+  FieldRole role;
+};
+
+/// The quantities derived per observation, whose uncertainties are
+/// propagated: the model's period, the ideal period, each correction's
+/// DeltaT and the cross term's, all in seconds.
+constexpr int kModelPeriod = 0, kIdealPeriod = 1, kFirstRow = 2, kCross = kFirstRow + kCorrectionCount;
+constexpr int kQuantities = kCross + 1;
+
+template <class T>
+std::array<T, kQuantities> derived(const PeriodPrediction<T>& pr) {
+  std::array<T, kQuantities> q;
+  q[kModelPeriod] = pr.period;
+  q[kIdealPeriod] = pr.ideal;
+  for (int i = 0; i < kCorrectionCount; ++i) {
+    q[kFirstRow + i] = pr.terms[i].ratio ? T(*pr.terms[i].ratio * pr.ideal) : T(0.0);
+  }
+  q[kCross] = pr.composition.cross * pr.ideal;
+  return q;
+}
+
+/// The data with the scalar at `ordinal` of its zip order seeded as the
+/// derivative direction of a one-component dual number.
+using Dual = ceres::Jet<double, 1>;
+struct Seeder {
+  int seed;
+  int ordinal = 0;
+  Dual operator()(const Field&, double x) { return ordinal++ == seed ? Dual(x, 0) : Dual(x); }
+};
+
+/// The period model fitted to the observations and every input propagated
+/// through its optimum (see analyse()).
+template <class Model>
+class Fit {
+ public:
+  static constexpr int P = Model::kParameters;
+  using Vector = Eigen::Matrix<double, P, 1>;
+  using Matrix = Eigen::Matrix<double, P, P>;
+
+  Fit(const ParsedScene& scene, const AnalysisOptions& options, Analysis& out)
+      : scene_(scene), options_(options), out_(out), k_(scene.observations.size()) {}
+
+  void run() {
+    choose_unknowns();
+    solve();
+    linearise();
+    propagate();
+    report();
+  }
+
+ private:
+  void choose_unknowns() {
+    fitted_.fill(false);
+    fitted_[0] = true;  // g
+    for (const std::string& name : scene_.fit) {
+      for (int i = 0; i < P; ++i) {
+        if (name == Model::kParameterInfo[i].name) fitted_[i] = true;
+      }
+    }
+    free_count_ = static_cast<int>(std::count(fitted_.begin(), fitted_.end(), true));
+    amplitude_.resize(k_);
+    weights_.resize(k_);
+    for (std::size_t k = 0; k < k_; ++k) {
+      const double period = scene_.observations[k].period;
+      const double sigma = scene_.observation_uncertainties[k].period;
+      ReductionOptions reduction = options_.reduction;
+      reduction.amplitude_tolerance = options_.amplitude_fraction * sigma / period;
+      amplitude_[k] = choose_amplitude_method(reduction, scene_.observations[k].amplitude);
+      weights_[k] = 1.0;  // the closed form's, where it cancels; a series's: weigh()
+    }
+  }
+
+  void solve() {
+    std::copy(Model::kDefaults.begin(), Model::kDefaults.end(), p_.begin());
+    textbook_ = textbook_line();
+    if (k_ == 1 && free_count_ == 1) {
+      p_[0] = Model::solve_g(p_.data(), scene_.observations[0], scene_.apparatus, amplitude_[0]);
+      out_.fit.method = "closed_form";
+      out_.fit.termination = "closed form of one observation";
+      return;
+    }
+    // From the textbook line through the origin, the offset at 0: close
+    // enough at any amplitude for Levenberg-Marquardt, and finite however
+    // close the lengths (the line with an intercept is not).
+    std::vector<double> x(k_), y(k_), zero(k_, 0.0);
+    for (std::size_t k = 0; k < k_; ++k) {
+      x[k] = scene_.observations[k].length;
+      y[k] = scene_.observations[k].period * scene_.observations[k].period;
+    }
+    p_[0] = 4.0 * kPi * kPi / fit_straight_line(x, y, zero, zero, false).slope;
+    // Effective variance: weights from each observation's own uncertainties
+    // (period, length, amplitude) carried to its period at the textbook
+    // start, then once more at the optimum.
+    const PeriodFitProblem<Model> problem{&scene_.apparatus, &scene_.observations, &amplitude_, &weights_, fitted_};
+    weigh();
+    PeriodFitSolution solution = fit_periods(problem, p_);
+    std::copy(solution.parameters.begin(), solution.parameters.end(), p_.begin());
+    weigh();
+    solution = fit_periods(problem, p_);
+    std::copy(solution.parameters.begin(), solution.parameters.end(), p_.begin());
+    out_.fit.method = "ceres_levenberg_marquardt";
+    out_.fit.converged = solution.converged;
+    out_.fit.termination = solution.termination;
+    out_.fit.iterations = solution.iterations;
+    if (!solution.converged) out_.warnings.push_back("fit: did not converge (" + solution.termination + ")");
+  }
+
+  /// w_k = 1 / sqrt(sum over the observation's inputs x of
+  /// (d(T_model,k - T_k)/dx sigma_x)^2) at the current parameters.
+  void weigh() {
+    std::array<Dual, P> p;
+    for (int i = 0; i < P; ++i) p[i] = Dual(p_[i]);
+    const Apparatus<Dual> app = convert_apparatus<Dual>(scene_.apparatus, [](const Field&, double x) { return Dual(x); });
+    for (std::size_t k = 0; k < k_; ++k) {
+      double variance = 0.0;
+      int ordinal = 0;
+      zip_observation(scene_.observations[k], scene_.observation_uncertainties[k],
+                      [&](const Field&, const double&, const double& sigma) {
+                        const int seed = ordinal++;
+                        if (sigma == 0.0) return;
+                        const Observation<Dual> o = convert_observation<Dual>(scene_.observations[k], Seeder{seed});
+                        const double d = (Model::predict(p.data(), o, app, amplitude_[k]).period - o.period).v[0];
+                        variance += d * d * sigma * sigma;
+                      });
+      weights_[k] = 1.0 / std::sqrt(variance);
+    }
+  }
+
+  StraightLine textbook_line() const {
+    std::vector<double> x(k_), y(k_), sx(k_), sy(k_);
+    for (std::size_t k = 0; k < k_; ++k) {
+      const auto& o = scene_.observations[k];
+      const auto& u = scene_.observation_uncertainties[k];
+      x[k] = o.length;
+      y[k] = o.period * o.period;
+      sx[k] = u.length;
+      sy[k] = 2.0 * o.period * u.period;
+    }
+    return fit_straight_line(x, y, sx, sy, P > 1 && fitted_[1]);
+  }
+
+  /// Values and parameter gradients of every derived quantity, the
+  /// residuals and their Jacobian, at the optimum.
+  void linearise() {
+    using JetP = ceres::Jet<double, P>;
+    const Apparatus<JetP> app = convert_apparatus<JetP>(scene_.apparatus, [](const Field&, double x) { return JetP(x); });
+    std::array<JetP, P> p;
+    for (int i = 0; i < P; ++i) p[i] = fitted_[i] ? JetP(p_[i], i) : JetP(p_[i]);
+    base_.resize(k_);
+    hessian_.setZero();
+    out_.fit.chi2 = 0.0;
+    for (std::size_t k = 0; k < k_; ++k) {
+      const auto& o = scene_.observations[k];
+      const Observation<JetP> oj = convert_observation<JetP>(o, [](const Field&, double x) { return JetP(x); });
+      const PeriodPrediction<JetP> pr = Model::predict(p.data(), oj, app, amplitude_[k]);
+      Base& b = base_[k];
+      const auto q = derived(pr);
+      for (int j = 0; j < kQuantities; ++j) {
+        b.value[j] = q[j].a;
+        b.gradient[j] = q[j].v;
+      }
+      for (int i = 0; i < kCorrectionCount; ++i) {
+        const Term<JetP>& t = pr.terms[i];
+        b.terms[i] = {t.ratio ? std::optional<double>(t.ratio->a) : std::nullopt, t.method, t.skip_reason,
+                      t.error_bound, t.series_terms};
+      }
+      b.cross_ratio = pr.composition.cross.a;
+      b.total_ratio = pr.composition.total.a;
+      b.residual = (pr.period.a - o.period) * weights_[k];
+      b.jacobian = pr.period.v * weights_[k];
+      hessian_ += b.jacobian * b.jacobian.transpose();
+      if (k_ > 1) out_.fit.chi2 += b.residual * b.residual;
+    }
+    // The fitted block of J^T J, inverted where it is regular: judged on
+    // its correlation form, which the parameters' units do not affect.
+    for (int i = 0; i < P; ++i) {
+      if (!fitted_[i]) hessian_(i, i) = 1.0;  // held: decoupled, its derivative masked below
+    }
+    const Vector d = hessian_.diagonal().cwiseSqrt().cwiseInverse();
+    const Matrix normalised = d.asDiagonal() * hessian_ * d.asDiagonal();
+    const Eigen::SelfAdjointEigenSolver<Matrix> eigen(normalised);
+    singular_ = !(eigen.eigenvalues().minCoeff() > 1e-12 * eigen.eigenvalues().maxCoeff()) || !d.allFinite();
+    if (!singular_) inverse_ = hessian_.inverse();
+    for (int i = 0; i < P; ++i) {
+      if (!fitted_[i]) inverse_.row(i).setZero(), inverse_.col(i).setZero();
+    }
+  }
+
+  /// d(parameters)/d(input) through the optimum: -(J^T J)^-1 J^T dr/dx.
+  Vector parameter_derivative(const Vector& jt_dr) const { return -inverse_ * jt_dr; }
+
+  void gather_inputs() {
+    for (std::size_t k = 0; k < k_; ++k) {
+      int ordinal = 0;
+      zip_observation(scene_.observations[k], scene_.observation_uncertainties[k],
+                      [&](const Field& f, const double& v, const double& u) {
+                        add_input(scene_.sources[k].path + f.path, f, v, u, static_cast<int>(k), ordinal++);
+                      });
+    }
+    int ordinal = 0;
+    zip_apparatus(scene_.apparatus, scene_.apparatus_uncertainty,
+                  [&](const Field& f, const double& v, const double& u) { add_input(f.path, f, v, u, -1, ordinal++); });
+  }
+
+  void add_input(std::string path, const Field& f, double value, double sigma, int observation, int ordinal) {
+    if (sigma > 0.0) {
+      inputs_.push_back({std::move(path), f.unit, value, sigma, observation, ordinal, f.role});
+    } else {
+      out_.inputs_without_uncertainty.push_back(std::move(path));
+    }
+  }
+
+  void propagate() {
+    gather_inputs();
+    variance_.assign(k_, {});
+    covariance_.setZero();
+    covariance_pl_.setZero();
+    Matrix observations_total = Matrix::Zero();
+    std::vector<Matrix> observation_own(k_, Matrix::Zero());
+    std::array<Dual, P> p;
+    for (int i = 0; i < P; ++i) p[i] = Dual(p_[i]);
+    const Apparatus<Dual> app = convert_apparatus<Dual>(scene_.apparatus, [](const Field&, double x) { return Dual(x); });
+
+    // The correlated inputs keep their total derivatives for the cross terms.
+    for (const auto& c : scene_.input_covariances) {
+      const int a = find_input(c.first), b = find_input(c.second);
+      if (a >= 0 && b >= 0) pairs_.push_back({a, b, c.covariance, {}, {}});
+    }
+    std::vector<std::array<double, kQuantities>> partial(k_);
+    std::vector<double> residual_partial(k_);
+    for (std::size_t j = 0; j < inputs_.size(); ++j) {
+      const Input& in = inputs_[j];
+      const std::size_t first = in.observation < 0 ? 0 : in.observation;
+      const std::size_t last = in.observation < 0 ? k_ : in.observation + 1;
+      const Apparatus<Dual> seeded_app =
+          in.observation < 0 ? convert_apparatus<Dual>(scene_.apparatus, Seeder{in.ordinal}) : app;
+      Vector jt_dr = Vector::Zero();
+      for (std::size_t k = first; k < last; ++k) {
+        const Observation<Dual> o = convert_observation<Dual>(
+            scene_.observations[k], Seeder{in.observation < 0 ? -1 : in.ordinal});
+        const PeriodPrediction<Dual> pr = Model::predict(p.data(), o, seeded_app, amplitude_[k]);
+        const auto q = derived(pr);
+        for (int i = 0; i < kQuantities; ++i) partial[k][i] = q[i].v[0];
+        residual_partial[k] = (pr.period - o.period).v[0] * weights_[k];
+        jt_dr += base_[k].jacobian * residual_partial[k];
+      }
+      const Vector dp = parameter_derivative(jt_dr);
+      sensitivities_.push_back(dp);
+      const Matrix outer = dp * dp.transpose() * (in.sigma * in.sigma);
+      covariance_ += outer;
+      if (in.role != FieldRole::other) covariance_pl_ += outer;
+      if (in.observation >= 0) {
+        observations_total += outer;
+        observation_own[in.observation] += outer;
+      }
+      Pair* pair = nullptr;
+      for (auto& pr : pairs_) {
+        if (pr.a == static_cast<int>(j) || pr.b == static_cast<int>(j)) pair = &pr;
+      }
+      if (pair) (pair->a == static_cast<int>(j) ? pair->da : pair->db).assign(k_, {});
+      for (std::size_t k = first; k < last; ++k) {
+        for (int i = 0; i < kQuantities; ++i) {
+          const double total = partial[k][i] + base_[k].gradient[i].dot(dp);
+          variance_[k][i] += total * total * in.sigma * in.sigma;
+          if (pair) (pair->a == static_cast<int>(j) ? pair->da : pair->db)[k][i] = total;
+        }
+      }
+    }
+    // An observation's inputs move the others' quantities through the
+    // parameters alone.
+    for (std::size_t k = 0; k < k_; ++k) {
+      const Matrix others = observations_total - observation_own[k];
+      for (int i = 0; i < kQuantities; ++i) {
+        variance_[k][i] += base_[k].gradient[i].dot(others * base_[k].gradient[i]);
+      }
+    }
+    for (const Pair& pr : pairs_) {
+      const Vector& da = sensitivities_[pr.a];
+      const Vector& db = sensitivities_[pr.b];
+      covariance_ += (da * db.transpose() + db * da.transpose()) * pr.covariance;
+      if (pr.da.empty() || pr.db.empty()) continue;
+      for (std::size_t k = 0; k < k_; ++k) {
+        for (int i = 0; i < kQuantities; ++i) variance_[k][i] += 2.0 * pr.da[k][i] * pr.db[k][i] * pr.covariance;
+      }
+    }
+  }
+
+  int find_input(const std::string& path) const {
+    for (std::size_t j = 0; j < inputs_.size(); ++j) {
+      if (inputs_[j].path == path) return static_cast<int>(j);
+    }
+    return -1;
+  }
+
+  std::optional<double> deviation(double variance) const {
+    if (singular_) return std::nullopt;
+    return std::sqrt(std::max(variance, 0.0));
+  }
+
+  void report() {
+    const double g = p_[0];
+    out_.g = {g, deviation(covariance_(0, 0))};
+    out_.g_period_and_length_uncertainty = deviation(covariance_pl_(0, 0));
+    report_parameters();
+    report_observations(g);
+    report_budget();
+    report_textbook();
+    if (singular_) {
+      out_.warnings.push_back(
+          "fit: the observations cannot separate the unknowns (their covariance is singular), so no "
+          "uncertainty is given; add observations at other lengths, or fit fewer unknowns");
+    }
+  }
+
+  void report_parameters() {
+    FitReport& fit = out_.fit;
+    std::vector<int> free;
+    for (int i = 0; i < P; ++i) {
+      const ParameterInfo& info = Model::kParameterInfo[i];
+      std::optional<double> from_periods;
+      // (J^T W J)^-1 of the weighted residuals: what ceres::Covariance gives.
+      if (fitted_[i] && k_ > 1 && !singular_) from_periods = std::sqrt(inverse_(i, i));
+      fit.parameters.push_back({info.name, info.unit, p_[i], fitted_[i] ? deviation(covariance_(i, i)) : std::nullopt,
+                                from_periods, fitted_[i]});
+      if (fitted_[i]) free.push_back(i);
+    }
+    if (!singular_) {
+      for (int a : free) {
+        for (int b : free) {
+          fit.correlation.push_back(covariance_(a, b) / std::sqrt(covariance_(a, a) * covariance_(b, b)));
+        }
+      }
+    }
+    fit.dof = static_cast<int>(k_) - free_count_;
+    if (fit.dof > 0) fit.probability = boost::math::gamma_q(fit.dof / 2.0, fit.chi2 / 2.0);
+  }
+
+  void report_observations(double g) {
+    for (std::size_t k = 0; k < k_; ++k) {
+      const Base& b = base_[k];
+      const auto& o = scene_.observations[k];
+      const double sigma = scene_.observation_uncertainties[k].period;
+      ObservationResult r;
+      r.path = scene_.sources[k].path;
+      r.length = o.length;
+      r.amplitude = o.amplitude;
+      r.trials = scene_.sources[k].trial_count;
+      r.oscillations_per_trial = o.oscillations_per_trial;
+      r.period_measured = {o.period, sigma};
+      r.period_model = b.value[kModelPeriod];
+      r.period_ideal = {b.value[kIdealPeriod], deviation(variance_[k][kIdealPeriod])};
+      if (k_ > 1) {
+        r.residual = b.residual;  // in effective standard uncertainties
+        r.effective_uncertainty = 1.0 / weights_[k];
+      }
+      r.negligible_below = options_.negligible_fraction * sigma;
+      for (int i = 0; i < kCorrectionCount; ++i) {
+        const Term<double>& term = b.terms[i];
+        CorrectionRow row;
+        row.info = kCorrections[i];
+        row.method = term.method;
+        row.series_terms = term.series_terms;
+        if (!term.ratio) {
+          row.reason = term.skip_reason;
+        } else {
+          row.ratio = term.ratio;
+          row.delta_T = b.value[kFirstRow + i];
+          row.delta_g = 2.0 * g * *term.ratio;
+          row.delta_T_uncertainty = deviation(variance_[k][kFirstRow + i]);
+          if (term.error_bound) row.error_bound_delta_T = *term.error_bound * b.value[kIdealPeriod];
+          set_status(row, r.negligible_below);
+        }
+        r.corrections.push_back(std::move(row));
+      }
+      r.cross_term_delta_T = b.value[kCross];
+      if (r.cross_term_delta_T != 0.0 && std::abs(r.cross_term_delta_T) >= r.negligible_below) {
+        CorrectionRow row;
+        row.info = kAmplitudeCrossTerm;
+        row.method = "product";
+        row.ratio = b.cross_ratio;
+        row.delta_T = r.cross_term_delta_T;
+        row.delta_g = 2.0 * g * b.cross_ratio;
+        row.delta_T_uncertainty = deviation(variance_[k][kCross]);
+        set_status(row, r.negligible_below);
+        r.corrections.push_back(std::move(row));
+      }
+      r.total_delta_T = b.value[kModelPeriod] - b.value[kIdealPeriod];
+      r.total_delta_g = 2.0 * g * b.total_ratio;
+      if (r.residual && std::abs(*r.residual) > 3.0) {
+        out_.warnings.push_back(r.path + "timing: the period " + format_number(o.period, 7) + " s is " +
+                                format_number(std::abs(*r.residual), 2) + " of its standard uncertainties from the model's " +
+                                format_number(r.period_model, 7) + " s; a miscounted oscillation, a length misread, or an "
+                                "uncertainty too small?");
+      }
+      out_.observations.push_back(std::move(r));
+    }
+  }
+
+  void set_status(CorrectionRow& row, double negligible_below) const {
+    row.status = std::abs(*row.delta_T) < negligible_below ? Status::negligible : Status::applied;
+    if (row.status == Status::negligible) {
+      row.reason = "|delta_T| below " + format_number(options_.negligible_fraction, 6) +
+                   " of the period's uncertainty (" + format_number(negligible_below, 6) + " s)";
+    }
+  }
+
+  void report_budget() {
+    for (std::size_t j = 0; j < inputs_.size(); ++j) {
+      const Input& in = inputs_[j];
+      const double s = sensitivities_[j](0);
+      out_.budget.push_back({in.path, in.unit, in.value, in.sigma, s, std::abs(s) * in.sigma});
+    }
+    std::stable_sort(out_.budget.begin(), out_.budget.end(),
+                     [](const BudgetEntry& x, const BudgetEntry& y) { return x.contribution > y.contribution; });
+    if (!pairs_.empty()) {
+      const Pair& pr = pairs_.front();
+      const Input &a = inputs_[pr.a], &b = inputs_[pr.b];
+      out_.budget_correlation = BudgetCorrelation{a.path, b.path, pr.covariance / (a.sigma * b.sigma),
+                                                  2.0 * sensitivities_[pr.a](0) * sensitivities_[pr.b](0) * pr.covariance};
+    }
+    if (singular_) out_.budget.clear();
+  }
+
+  void report_textbook() {
+    const StraightLine& line = textbook_;
+    TextbookFit& t = out_.fit.textbook;
+    const double g = 4.0 * kPi * kPi / line.slope;
+    t.g = {g, g * std::sqrt(line.var_slope) / line.slope};
+    if (P > 1 && fitted_[1]) {
+      const double a = line.slope, b = line.intercept;
+      const double var = line.var_intercept / (a * a) + b * b * line.var_slope / (a * a * a * a) -
+                         2.0 * b * line.cov / (a * a * a);
+      t.length_offset = Estimate{b / a, std::sqrt(std::max(var, 0.0))};
+      if (!singular_) {
+        // With the offset unknown, g's uncertainty grows by 1/sqrt(1 - rho^2).
+        const double rho = inverse_(0, 1) / std::sqrt(inverse_(0, 0) * inverse_(1, 1));
+        const double inflation = 1.0 / std::sqrt(std::max(1.0 - rho * rho, 0.0));
+        if (inflation > 10.0) {
+          const auto [lo, hi] = std::minmax_element(
+              scene_.observations.begin(), scene_.observations.end(),
+              [](const auto& x, const auto& y) { return x.length < y.length; });
+          out_.warnings.push_back("observations: the lengths span only " + format_number(lo->length, 5) + " m to " +
+                                  format_number(hi->length, 5) + " m, too close together to separate g from "
+                                  "length_offset (correlation " + format_number(rho, 6) + "), which makes g's uncertainty " +
+                                  format_number(inflation, 3) + " times what a known offset would give; swing at "
+                                  "lengths further apart");
+        }
+      }
+    }
+    if (k_ > 1 && out_.fit.probability) {
+      const double upper = *out_.fit.probability;
+      const double lower = boost::math::gamma_p(out_.fit.dof / 2.0, out_.fit.chi2 / 2.0);
+      if (upper < 1e-3 || lower < 1e-3) {
+        out_.warnings.push_back(
+            "fit: chi2 = " + format_number(out_.fit.chi2, 4) + " for " + std::to_string(out_.fit.dof) +
+            " degrees of freedom (chi2/dof = " + format_number(out_.fit.chi2 / out_.fit.dof, 4) + "); so " +
+            (upper < 1e-3 ? "large" : "small") + " a chi2 has probability " + format_number(std::min(upper, lower), 2) +
+            (upper < 1e-3 ? ": the periods' uncertainties are too small, or the model misses something"
+                          : ": the periods' uncertainties are too large"));
+      }
+    }
+  }
+
+  struct Base {
+    std::array<double, kQuantities> value;
+    std::array<Vector, kQuantities> gradient;  ///< with respect to the parameters
+    Terms<double> terms;
+    double cross_ratio, total_ratio;
+    double residual;
+    Vector jacobian;  ///< of the residual
+  };
+  struct Pair {
+    int a, b;
+    double covariance;
+    std::vector<std::array<double, kQuantities>> da, db;  ///< total derivatives of the quantities
+  };
+
+  const ParsedScene& scene_;
+  const AnalysisOptions& options_;
+  Analysis& out_;
+  const std::size_t k_;
+  std::array<bool, P> fitted_;
+  int free_count_ = 0;
+  std::vector<AmplitudeChoice> amplitude_;
+  std::vector<double> weights_;
+  std::array<double, P> p_;
+  StraightLine textbook_{};
+  std::vector<Base> base_;
+  Matrix hessian_, inverse_ = Matrix::Zero();
+  bool singular_ = false;
+  std::vector<Input> inputs_;
+  std::vector<Vector> sensitivities_;
+  std::vector<Pair> pairs_;
+  Matrix covariance_, covariance_pl_;
+  std::vector<std::array<double, kQuantities>> variance_;
+};
+
+}  // namespace
 
 Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
   Analysis out;
   std::optional<ParsedScene> fitted;
   if (given.decay_data) {
     out.decay_fit = fit_decay(*given.decay_data);
-    out.decay_given = given.value.decay;
+    out.decay_given = given.apparatus.decay;
     out.warnings = review_decay_fit(*out.decay_fit);
-    fitted = with_fitted_decay(given, *out.decay_fit);
+    fitted = given;
+    use_fitted_decay(*fitted, *out.decay_fit);
+    check_first_order(*fitted);  // alpha and beta from the fit, too
   }
   const ParsedScene& scene = fitted ? *fitted : given;
-  if (scene.value.decay) out.drag = predict_drag(scene.value);
-  ReductionOptions reduction = options.reduction;
-  reduction.amplitude_tolerance =
-      options.amplitude_fraction * scene.uncertainty.period / scene.value.period;
-  const Reduction<double> r = reduce(scene.value, reduction);
-  out.period_measured = {scene.value.period, scene.uncertainty.period};
-  out.negligible_below = options.negligible_fraction * scene.uncertainty.period;
-
-  // Every input with a stated uncertainty, and the derivatives of g, T0 and
-  // each row with respect to it, by one dual-number reduction per input.
-  struct Input {
-    std::string path;
-    double value, sigma;
-    Reduction<Dual> d;
-  };
-  std::vector<Input> inputs;
-  zip_fields(scene.value, scene.uncertainty, [&](const char* path, const double& v, const double& u) {
-    if (u > 0.0) inputs.push_back({path, v, u, reduce_seeded(scene, path, reduction)});
-  });
-  // Their covariance matrix: diagonal but for alpha and beta of one fit.
-  const std::size_t k = inputs.size();
-  std::vector<double> cov(k * k, 0.0);
-  for (std::size_t a = 0; a < k; ++a) {
-    cov[a * k + a] = inputs[a].sigma * inputs[a].sigma;
-    for (std::size_t b = 0; b < k; ++b) {
-      if (out.decay_fit && inputs[a].path == "decay.alpha" && inputs[b].path == "decay.beta") {
-        cov[a * k + b] = cov[b * k + a] = out.decay_fit->covariance[1];
-      }
-    }
+  if (scene.apparatus.decay && scene.observations.size() == 1) {
+    out.drag = predict_drag(scene.apparatus, scene.observations[0]);
   }
-  // Var f = sum_ab df/da cov(a, b) df/db over the inputs `keep` accepts.
-  std::vector<double> d(k);
-  const auto variance = [&](auto&& derivative, auto&& keep) {
-    for (std::size_t a = 0; a < k; ++a) d[a] = keep(inputs[a]) ? derivative(inputs[a].d) : 0.0;
-    double v = 0.0;
-    for (std::size_t a = 0; a < k; ++a) {
-      if (d[a] == 0.0) continue;
-      for (std::size_t b = 0; b < k; ++b) v += d[a] * cov[a * k + b] * d[b];
-    }
-    return std::sqrt(std::max(v, 0.0));
-  };
-  const auto all = [](const Input&) { return true; };
-  const auto g_of = [](const Reduction<Dual>& d) { return d.g.v[0]; };
-  out.g = {r.g, variance(g_of, all)};
-  out.g_period_and_length_uncertainty = variance(g_of, [](const Input& a) {
-    return a.path == "timing.trials" || a.path == "length";
-  });
-  out.period_ideal = {r.period_ideal, variance([](const Reduction<Dual>& d) { return d.period_ideal.v[0]; }, all)};
-  out.g_uncorrected = {r.g_uncorrected, variance([](const Reduction<Dual>& d) { return d.g_uncorrected.v[0]; }, all)};
-  for (const Input& a : inputs) {
-    out.budget.push_back({a.path, scene.si_unit.at(a.path), a.value, a.sigma, g_of(a.d),
-                          std::abs(g_of(a.d)) * a.sigma});
-  }
-  std::stable_sort(out.budget.begin(), out.budget.end(),
-                   [](const BudgetEntry& x, const BudgetEntry& y) { return x.contribution > y.contribution; });
-  if (out.decay_fit && out.decay_fit->alpha.uncertainty && out.decay_fit->beta.uncertainty) {
-    double d_alpha = 0.0, d_beta = 0.0;
-    for (const Input& a : inputs) {
-      if (a.path == "decay.alpha") d_alpha = g_of(a.d);
-      if (a.path == "decay.beta") d_beta = g_of(a.d);
-    }
-    out.budget_correlation = BudgetCorrelation{"decay.alpha", "decay.beta", out.decay_fit->correlation_alpha_beta,
-                                               2.0 * d_alpha * d_beta * out.decay_fit->covariance[1]};
-  }
-  zip_fields(scene.value, scene.uncertainty, [&](const char* path, const double&, const double& u) {
-    if (u == 0.0) out.inputs_without_uncertainty.push_back(path);
-  });
-
-  out.total_delta_T = r.total_ratio * r.period_ideal;
-  out.total_delta_g = 2.0 * r.g * r.total_ratio;
-  for (int i = 0; i < kCorrectionCount; ++i) {
-    const Term<double>& term = r.terms[i];
-    CorrectionRow row;
-    row.info = kCorrections[i];
-    row.method = term.method;
-    row.series_terms = term.series_terms;
-    if (!term.ratio) {
-      row.status = Status::skipped;
-      row.reason = term.skip_reason;
-    } else {
-      row.ratio = *term.ratio;
-      row.delta_T = *term.ratio * r.period_ideal;
-      row.delta_g = 2.0 * r.g * *term.ratio;
-      row.delta_T_uncertainty = variance(
-          [i](const Reduction<Dual>& d) { return (*d.terms[i].ratio * d.period_ideal).v[0]; }, all);
-      if (term.error_bound) row.error_bound_delta_T = *term.error_bound * r.period_ideal;
-      row.status = std::abs(*row.delta_T) < out.negligible_below ? Status::negligible
-                                                                  : Status::applied;
-      if (row.status == Status::negligible) {
-        std::ostringstream why;
-        why << "|delta_T| below " << options.negligible_fraction
-            << " of the period's uncertainty (" << out.negligible_below << " s)";
-        row.reason = why.str();
-      }
-    }
-    out.corrections.push_back(row);
-  }
+  Fit<SimplePendulum>(scene, options, out).run();
+  for (auto& w : warn_about_skipped_parts(scene, options.negligible_fraction)) out.warnings.push_back(std::move(w));
 
   if (scene.site) out.expected_g = expected_gravity(*scene.site);
-  if (out.expected_g) {
-    const double combined = std::hypot(out.g.uncertainty, out.expected_g->uncertainty);
+  if (out.expected_g && out.g.uncertainty) {
+    const double combined = std::hypot(*out.g.uncertainty, out.expected_g->uncertainty);
     const double z = (out.g.value - out.expected_g->value) / combined;
     if (combined > 0.0 && std::isfinite(z)) out.z_score = z;
   }
 
   // An uncertainty so large that the propagated ones overflow (1e300 on a
   // rate, say) is the input's fault: name the input that contributes most.
-  bool finite_uncertainties = std::isfinite(out.g.uncertainty) &&
-                              std::isfinite(out.period_ideal.uncertainty) &&
-                              std::isfinite(out.g_uncorrected.uncertainty);
-  for (const auto& row : out.corrections) {
-    if (row.delta_T_uncertainty && !std::isfinite(*row.delta_T_uncertainty)) finite_uncertainties = false;
+  bool finite_uncertainties = !out.g.uncertainty || std::isfinite(*out.g.uncertainty);
+  for (const auto& o : out.observations) {
+    if (o.period_ideal.uncertainty && !std::isfinite(*o.period_ideal.uncertainty)) finite_uncertainties = false;
+    for (const auto& row : o.corrections) {
+      if (row.delta_T_uncertainty && !std::isfinite(*row.delta_T_uncertainty)) finite_uncertainties = false;
+    }
   }
   if (!finite_uncertainties && !out.budget.empty()) {
     const auto worst = std::max_element(out.budget.begin(), out.budget.end(), [](const auto& x, const auto& y) {
@@ -200,15 +615,16 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
   }
 
   // A non-finite number here is a bug, not an input error: never print it.
-  auto check = [](double x, const char* what) {
-    if (!std::isfinite(x)) throw std::logic_error(std::string("non-finite ") + what);
+  auto check = [](double x, const std::string& what) {
+    if (!std::isfinite(x)) throw std::logic_error("non-finite " + what);
   };
   check(out.g.value, "g");
-  check(out.g.uncertainty, "uncertainty of g");
-  check(out.period_ideal.uncertainty, "uncertainty of the ideal period");
-  check(out.period_ideal.value, "ideal period");
-  for (const auto& row : out.corrections) {
-    if (row.delta_T) check(*row.delta_T, row.info.id);
+  for (const auto& o : out.observations) {
+    check(o.period_ideal.value, "ideal period");
+    check(o.period_model, "model period");
+    for (const auto& row : o.corrections) {
+      if (row.delta_T) check(*row.delta_T, row.info.id);
+    }
   }
   return out;
 }

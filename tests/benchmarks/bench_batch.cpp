@@ -12,7 +12,8 @@
 
 #include "pendulum/analysis.hpp"
 #include "pendulum/decay_simulation.hpp"
-#include "pendulum/result_json.hpp"
+#include "pendulum/output.hpp"
+#include "pendulum/scene_json.hpp"
 
 namespace {
 
@@ -50,7 +51,7 @@ const std::vector<std::string>& decay_scenes() {
 /// Everything `pendulum-g batch` does for one scene but the file read.
 std::string whole(const std::string& text) {
   const pendulum::ParsedScene scene = pendulum::parse_scene(text);
-  return pendulum::batch_summary("-", scene, pendulum::analyse(scene)).dump();
+  return pendulum::batch_line("-", scene, pendulum::analyse(scene)).json;
 }
 
 template <class F>

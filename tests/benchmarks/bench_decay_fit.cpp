@@ -11,15 +11,15 @@
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
 
-#include <cstring>
 #include <fstream>
 
 #include "../textbook_decay_fit.hpp"
+#include "bench_main.hpp"
 #include "pendulum/decay_simulation.hpp"
 
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kDeg = pendulum::kPi / 180.0;
 constexpr int kSizes[] = {10, 100, 1000, 10000, 100000};
 
 pendulum::DecaySimulation simulation(int points) {
@@ -66,11 +66,4 @@ int export_data(const std::string& dir) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  if (argc == 3 && std::strcmp(argv[1], "--export") == 0) return export_data(argv[2]);
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}
+int main(int argc, char** argv) { return pendulum::bench::main_with_export(argc, argv, export_data); }

@@ -7,7 +7,8 @@
 #include <sstream>
 
 #include "pendulum/analysis.hpp"
-#include "pendulum/result_json.hpp"
+#include "pendulum/output.hpp"
+#include "pendulum/scene_json.hpp"
 
 namespace {
 
@@ -26,7 +27,7 @@ BENCHMARK(BM_ParseJsonOnly);
 
 void BM_ReduceDouble(benchmark::State& state) {
   const pendulum::ParsedScene scene = pendulum::parse_scene(nelson_olsson());
-  for (auto _ : state) benchmark::DoNotOptimize(pendulum::reduce(scene.value));
+  for (auto _ : state) benchmark::DoNotOptimize(pendulum::reduce(scene.apparatus, scene.observations.front()));
 }
 BENCHMARK(BM_ReduceDouble);
 
@@ -47,7 +48,7 @@ void BM_WriteJson(benchmark::State& state) {
   const pendulum::AnalysisOptions options;
   const pendulum::Analysis analysis = pendulum::analyse(scene, options);
   for (auto _ : state) {
-    benchmark::DoNotOptimize(pendulum::result_to_json(scene, analysis, options, "-").dump(2));
+    benchmark::DoNotOptimize(pendulum::result_json(scene, analysis, options, "-"));
   }
 }
 BENCHMARK(BM_WriteJson);
@@ -58,7 +59,7 @@ void BM_WholeReduction(benchmark::State& state) {
   for (auto _ : state) {
     const pendulum::ParsedScene scene = pendulum::parse_scene(text);
     const pendulum::Analysis analysis = pendulum::analyse(scene, options);
-    benchmark::DoNotOptimize(pendulum::result_to_json(scene, analysis, options, "-").dump());
+    benchmark::DoNotOptimize(pendulum::result_json(scene, analysis, options, "-", -1));
   }
 }
 BENCHMARK(BM_WholeReduction);

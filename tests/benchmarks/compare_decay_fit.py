@@ -17,11 +17,12 @@ import json
 import subprocess
 import sys
 import tempfile
-import time
 
 import numpy as np
 import scipy
 from scipy.optimize import curve_fit
+
+from peer_timing import benchmark_medians, median_time
 
 
 def eq25(t, alpha, beta, theta0m):
@@ -29,29 +30,9 @@ def eq25(t, alpha, beta, theta0m):
     return alpha * theta0m * e / (beta * theta0m * (1.0 - e) + alpha)
 
 
-def median_time(fn, budget_s=1.0, min_reps=7):
-    times = []
-    start = time.perf_counter()
-    while len(times) < min_reps or time.perf_counter() - start < budget_s:
-        t0 = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - t0)
-        if len(times) >= 2000:
-            break
-    return float(np.median(times))
-
-
 def main():
     bench = sys.argv[1]
-    runs = json.loads(subprocess.run(
-        [bench, "--benchmark_repetitions=7", "--benchmark_report_aggregates_only=true",
-         "--benchmark_format=json"], check=True, capture_output=True, text=True).stdout)
-    ours = {}
-    for b in runs["benchmarks"]:
-        if b.get("aggregate_name") != "median":
-            continue
-        name, n = b["run_name"].split("/")
-        ours[(name, int(n))] = b["real_time"] * {"us": 1e-6, "ms": 1e-3, "ns": 1e-9}[b["time_unit"]]
+    ours = benchmark_medians(bench)
     with tempfile.TemporaryDirectory() as tmp:
         subprocess.run([bench, "--export", tmp], check=True)
         fits = json.load(open(tmp + "/fits.json"))

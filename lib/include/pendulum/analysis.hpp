@@ -1,6 +1,8 @@
 #pragma once
 /// \file analysis.hpp
-/// \brief The reduction of a parsed scene with its uncertainties and the
+/// \brief A parsed scene reduced to g: the period model fitted to its
+/// observations (in closed form for one observation), every input's
+/// uncertainty propagated to the parameters and to each correction, and the
 /// status of every correction: what `pendulum-g reduce` prints.
 
 #include <optional>
@@ -9,8 +11,8 @@
 
 #include "pendulum/decay_fit.hpp"
 #include "pendulum/drag.hpp"
+#include "pendulum/parsed_scene.hpp"
 #include "pendulum/reduction.hpp"
-#include "pendulum/scene_json.hpp"
 
 namespace pendulum {
 
@@ -35,7 +37,8 @@ struct CorrectionRow {
   std::optional<double> ratio;        ///< DeltaT/T0
   std::optional<double> delta_T;      ///< (s)
   std::optional<double> delta_g;      ///< (m/s^2), linearised: 2 g DeltaT/T0
-  /// Standard uncertainty of delta_T from every input's (s).
+  /// Standard uncertainty of delta_T from every input's (s); empty when the
+  /// fit's covariance is singular.
   std::optional<double> delta_T_uncertainty;
   std::optional<double> error_bound_delta_T;  ///< (s), bound on the formula's error
   int series_terms = 0;               ///< terms of a truncated series, 0 otherwise
@@ -51,7 +54,7 @@ struct BudgetEntry {
   double contribution;  ///< |sensitivity| x uncertainty (m/s^2)
 };
 
-/// The one correlated pair of inputs: alpha and beta of a decay fit.
+/// A correlated pair of inputs (alpha and beta of a decay fit).
 struct BudgetCorrelation {
   std::string first, second;
   double correlation;
@@ -63,35 +66,98 @@ struct ValueWithUncertainty {
   double uncertainty;
 };
 
-struct Analysis {
-  std::vector<CorrectionRow> corrections;
+/// A value whose uncertainty may be unknown (a singular fit).
+struct Estimate {
+  double value;
+  std::optional<double> uncertainty;
+};
+
+/// One observation's measured and modelled period and its corrections.
+struct ObservationResult {
+  std::string path;  ///< "" or "observations[3]."
+  double length;     ///< as measured (m)
+  double amplitude;  ///< (rad)
+  int trials = 0;
+  int oscillations_per_trial = 1;
   ValueWithUncertainty period_measured;  ///< (s)
-  ValueWithUncertainty period_ideal;     ///< (s)
-  ValueWithUncertainty g;                ///< (m/s^2)
-  ValueWithUncertainty g_uncorrected;    ///< (m/s^2), Eq. (5)
-  double total_delta_T;                  ///< (s)
-  double total_delta_g;                  ///< (m/s^2)
-  double negligible_below;               ///< (s)
+  double period_model;                   ///< the fitted model's T (s)
+  Estimate period_ideal;                 ///< T0 at the fitted parameters (s)
+  /// (model - measured) / the effective uncertainty (the observation's
+  /// period, length and amplitude uncertainties carried to its period, the
+  /// fit's weight); empty for one observation.
+  std::optional<double> residual;
+  double effective_uncertainty = 0.0;  ///< (s), 1 / the fit's weight; 0 for one observation
+  /// The 16 corrections, and the amplitude cross term where it is not negligible.
+  std::vector<CorrectionRow> corrections;
+  double cross_term_delta_T;  ///< (s), shown as a row only when not negligible
+  double total_delta_T;       ///< T_model - T0 (s), every row and the cross term
+  double total_delta_g;       ///< 2 g (T/T0 - 1) (m/s^2)
+  double negligible_below;    ///< (s)
+};
+
+/// A fitted (or held) parameter of the period model.
+struct ParameterResult {
+  const char* name;
+  const char* unit;
+  double value;
+  std::optional<double> uncertainty;  ///< from every input's; empty when singular or held
+  /// From the observations' own uncertainties (period, length, amplitude):
+  /// (J^T W J)^-1 of the fit's effective-variance weights, what
+  /// ceres::Covariance or curve_fit with absolute sigma would give.
+  std::optional<double> uncertainty_from_observations;
+  bool fitted;
+};
+
+/// The textbook answer beside the fit: T^2 against L as a straight line,
+/// with no corrections (through the origin unless the length offset is fitted).
+struct TextbookFit {
+  Estimate g;                            ///< 4 pi^2 / slope (m/s^2)
+  std::optional<Estimate> length_offset; ///< intercept / slope (m)
+};
+
+/// What the fit of a series adds.
+struct FitReport {
+  std::vector<ParameterResult> parameters;
+  /// Correlations of the fitted parameters (row-major, in `parameters`'
+  /// order among those fitted); empty when singular.
+  std::vector<double> correlation;
+  double chi2;
+  int dof;
+  /// P(chi2 >= the one found) for `dof` degrees of freedom; empty at dof 0.
+  std::optional<double> probability;
+  bool converged = true;
+  std::string method;  ///< "closed_form" or "ceres_levenberg_marquardt"
+  std::string termination;
+  int iterations = 0;
+  TextbookFit textbook;
+};
+
+struct Analysis {
+  std::vector<ObservationResult> observations;
+  FitReport fit;
+  Estimate g;                            ///< (m/s^2)
+  /// The uncertainty of g from the observations' periods and lengths alone,
+  /// as in Nelson & Olsson's Eq. (91) (m/s^2).
+  std::optional<double> g_period_and_length_uncertainty;
   /// Every input with a stated uncertainty, largest contribution first.
   /// Their squares and budget_correlation's variance add to g.uncertainty^2.
   std::vector<BudgetEntry> budget;
   std::optional<BudgetCorrelation> budget_correlation;
-  /// The uncertainty of g from the period and the length alone, as in
-  /// Nelson & Olsson's Eq. (91) (m/s^2).
-  double g_period_and_length_uncertainty = 0.0;
   /// JSON paths of the inputs stated without an uncertainty.
   std::vector<std::string> inputs_without_uncertainty;
   /// The fit of alpha and beta when the scene gives a decay record.
   std::optional<DecayFit> decay_fit;
   /// alpha and beta given beside a decay record, for comparison.
   std::optional<Decay<double>> decay_given;
-  /// The air's predicted damping, when the scene has air and decay.
+  /// The air's predicted damping, for one observation with air and decay.
   std::optional<DragPrediction<double>> drag;
   /// The g expected at the site, when the scene gives one, and how far the
   /// measurement is from it: (g - expected) / sqrt(sigma_g^2 + sigma_expected^2).
   std::optional<ExpectedGravity> expected_g;
   std::optional<double> z_score;
-  /// Findings of the analysis itself (the scene's own are in ParsedScene).
+  /// Findings of the analysis itself (the scene's own are in ParsedScene),
+  /// among them the corrections skipped for a part not described that
+  /// typical values would not leave negligible.
   std::vector<std::string> warnings;
 };
 
@@ -99,13 +165,13 @@ struct Analysis {
 /// the stated sigmas cannot explain, a term that is not significant.
 std::vector<std::string> review_decay_fit(const DecayFit& fit);
 
-/// The scene with alpha and beta taken from the fit of its decay record,
-/// if it has one (its uncertainties from the fit's covariance).
-ParsedScene with_fitted_decay(const ParsedScene& scene, const DecayFit& fit);
+/// The apparatus with alpha and beta taken from the fit of the decay
+/// record (their uncertainties from the fit's covariance).
+void use_fitted_decay(ParsedScene& scene, const DecayFit& fit);
 
-/// Reduces the scene and propagates every input's uncertainty (and the
-/// decay fit's alpha-beta covariance) by automatic differentiation through
-/// the whole reduction.
+/// Fits the scene's period model to its observations and propagates every
+/// input's uncertainty (and the decay fit's alpha-beta covariance) by
+/// automatic differentiation: implicit-function sensitivities of the fit.
 Analysis analyse(const ParsedScene& scene, const AnalysisOptions& options = {});
 
 }  // namespace pendulum

@@ -10,7 +10,9 @@
 #include <optional>
 
 #include "pendulum/air.hpp"
-#include "pendulum/scene.hpp"
+#include "pendulum/apparatus.hpp"
+#include "pendulum/numeric.hpp"
+#include "pendulum/observation.hpp"
 
 namespace pendulum {
 
@@ -31,7 +33,7 @@ T sphere_drag_coefficient_beyond_stokes(const T& reynolds) {
 /// \return b (kg/s). Reference: Nelson & Olsson (1986) Eq. (64).
 template <class T>
 T sphere_linear_drag(const T& eta, const T& a, const T& c_h, const T& delta) {
-  return 6.0 * 3.14159265358979323846 * eta * a * (1.0 + c_h * a / delta);
+  return 6.0 * kPi * eta * a * (1.0 + c_h * a / delta);
 }
 
 /// Quadratic drag constant of the sphere: c = (1/2) C'_D pi a^2 rho.
@@ -39,7 +41,7 @@ T sphere_linear_drag(const T& eta, const T& a, const T& c_h, const T& delta) {
 /// density (kg/m^3). \return c (kg/m). Reference: Nelson & Olsson (1986) Eq. (64).
 template <class T>
 T sphere_quadratic_drag(const T& c_d_prime, const T& a, const T& rho) {
-  return 0.5 * c_d_prime * 3.14159265358979323846 * a * a * rho;
+  return 0.5 * c_d_prime * kPi * a * a * rho;
 }
 
 /// Linear drag constant of the wire, referred to the bob: b = (5/3) eta l,
@@ -72,7 +74,7 @@ T alpha_from_linear_drag(const T& b, const T& m) {
 /// \return beta (1/(s rad)). Reference: Nelson & Olsson (1986) Eq. (27).
 template <class T>
 T beta_from_quadratic_drag(const T& c, const T& omega0, const T& l, const T& m) {
-  return 4.0 / 3.0 * omega0 / 3.14159265358979323846 * c * l / m;
+  return 4.0 / 3.0 * omega0 / kPi * c * l / m;
 }
 
 /// The damping the air alone predicts for a scene (Nelson & Olsson 1986,
@@ -88,38 +90,40 @@ struct DragPrediction {
   T alpha, beta;                     ///< Eqs. (26), (27)
 };
 
-/// Predicted drag constants; empty in vacuum. The wire's quadratic drag
-/// needs its diameter; its linear drag does not (Eq. 67).
-/// The velocity scale is the scene's amplitude, as in the paper (R = 1100).
+/// Predicted drag constants of `app` swinging as observed in `o`; empty in
+/// vacuum or without the bob's mass. The wire's quadratic drag needs its
+/// diameter; its linear drag does not (Eq. 67).
+/// The velocity scale is the observation's amplitude, as in the paper (R = 1100).
 template <class T>
-std::optional<DragPrediction<T>> predict_drag(const Scene<T>& s) {
+std::optional<DragPrediction<T>> predict_drag(const Apparatus<T>& app, const Observation<T>& o) {
   using std::sqrt;
-  if (!s.air) return std::nullopt;
-  const auto& air = *s.air;
-  const T omega0 = 2.0 * 3.14159265358979323846 / s.period;
+  if (!app.air || !app.bob || !app.bob->mass) return std::nullopt;
+  const auto& air = *app.air;
+  const auto& bob = *app.bob;
+  const T omega0 = 2.0 * kPi / o.period;
   const T rho = air_density(air.pressure, air.temperature, air.molar_mass);
-  const T a = s.bob.diameter / 2.0;
-  const T speed = omega0 * s.length * s.amplitude;
+  const T a = bob.diameter / 2.0;
+  const T speed = omega0 * o.length * o.amplitude;
   DragPrediction<T> p;
-  p.reynolds_sphere = rho * speed * s.bob.diameter / air.viscosity;
+  p.reynolds_sphere = rho * speed * bob.diameter / air.viscosity;
   p.c_d_prime = sphere_drag_coefficient_beyond_stokes(T(p.reynolds_sphere / sqrt(2.0)));
-  const T x = inverse_acceleration_modulus(s.bob.diameter, s.length, s.amplitude);
+  const T x = inverse_acceleration_modulus(bob.diameter, o.length, o.amplitude);
   const T delta = penetration_depth(air.viscosity, omega0, rho);
   p.b_sphere = sphere_linear_drag(air.viscosity, a, history_coefficient(x), delta);
   p.c_sphere = sphere_quadratic_drag(p.c_d_prime, a, rho);
   p.b = p.b_sphere;
   p.c = p.c_sphere;
-  if (s.wire) {
-    p.b_wire = wire_linear_drag(air.viscosity, s.length);
+  if (app.wire) {
+    p.b_wire = wire_linear_drag(air.viscosity, o.length);
     p.b += *p.b_wire;
-    if (s.wire->diameter) {
-      p.c_wire = wire_quadratic_drag(rho, *s.wire->diameter, s.length);
+    if (app.wire->diameter) {
+      p.c_wire = wire_quadratic_drag(rho, *app.wire->diameter, o.length);
       p.c += *p.c_wire;
-      p.reynolds_wire = rho * speed * *s.wire->diameter / air.viscosity;
+      p.reynolds_wire = rho * speed * *app.wire->diameter / air.viscosity;
     }
   }
-  p.alpha = alpha_from_linear_drag(p.b, s.bob.mass);
-  p.beta = beta_from_quadratic_drag(p.c, omega0, s.length, s.bob.mass);
+  p.alpha = alpha_from_linear_drag(p.b, *bob.mass);
+  p.beta = beta_from_quadratic_drag(p.c, omega0, o.length, *bob.mass);
   return p;
 }
 

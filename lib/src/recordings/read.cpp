@@ -18,7 +18,7 @@
 #include <optional>
 #include <thread>
 
-#include "pendulum/scene_json.hpp"
+#include "pendulum/input_error.hpp"
 #include "huge_pages.hpp"
 
 namespace pendulum {

@@ -1,0 +1,173 @@
+#pragma once
+/// \file apparatus.hpp
+/// \brief What stays the same during an experiment: the bob, the suspension,
+/// the air, the support and the decay of the amplitude, as plain data in SI
+/// units, generic in the scalar type so that the same reduction runs on
+/// `double` and on dual numbers.
+///
+/// A part that the experiment lacks is an empty std::optional, and the
+/// corrections for it are skipped. Every scalar field is visited by
+/// `zip_apparatus` with its JSON path and SI unit (docs/scene.md), in one
+/// place, so that conversions (double -> Jet, values -> uncertainties) list
+/// no field twice.
+
+#include <optional>
+#include <type_traits>
+
+#include "pendulum/fields.hpp"
+
+namespace pendulum {
+
+/// Sphere of uniform density hanging at the end of the suspension.
+template <class T>
+struct Bob {
+  T diameter;             ///< (m)
+  std::optional<T> mass;  ///< (kg); the corrections of the other parts need it
+  template <class A, class B, class F>
+  static void zip(A& a, B& b, F& f) {
+    f({"bob.diameter", "m"}, a.diameter, b.diameter);
+    f({"bob.mass", "kg"}, a.mass, b.mass);
+  }
+};
+
+/// Suspension ring (annulus) with the pivot inside it, above the wire.
+template <class T>
+struct Ring {
+  T mass;            ///< (kg)
+  T inner_radius;    ///< (m)
+  T outer_radius;    ///< (m)
+  T pivot_distance;  ///< pivot to ring centre (m)
+  template <class A, class B, class F>
+  static void zip(A& a, B& b, F& f) {
+    f({"ring.mass", "kg"}, a.mass, b.mass);
+    f({"ring.inner_radius", "m"}, a.inner_radius, b.inner_radius);
+    f({"ring.outer_radius", "m"}, a.outer_radius, b.outer_radius);
+    f({"ring.pivot_distance", "m"}, a.pivot_distance, b.pivot_distance);
+  }
+};
+
+/// Cap joining the wire to the bob.
+template <class T>
+struct Cap {
+  T mass;             ///< without its screw (kg)
+  T center_distance;  ///< cap centre of mass above the bob centre (m)
+  std::optional<T> volume;  ///< (m^3), displaces air with the bob
+  template <class A, class B, class F>
+  static void zip(A& a, B& b, F& f) {
+    f({"cap.mass", "kg"}, a.mass, b.mass);
+    f({"cap.center_distance", "m"}, a.center_distance, b.center_distance);
+    f({"cap.volume", "m^3"}, a.volume, b.volume);
+  }
+};
+
+/// Screw of the cap, lighter than the bob material it replaces.
+template <class T>
+struct CapScrew {
+  T mass_deficit;     ///< mass missing from the bob (kg); negative for a heavier screw
+  T center_distance;  ///< deficit's centre above the bob centre (m)
+  template <class A, class B, class F>
+  static void zip(A& a, B& b, F& f) {
+    f({"cap_screw.mass_deficit", "kg"}, a.mass_deficit, b.mass_deficit);
+    f({"cap_screw.center_distance", "m"}, a.center_distance, b.center_distance);
+  }
+};
+
+/// Suspension wire from the ring (or pivot) to the cap (or bob).
+template <class T>
+struct Wire {
+  T mass;                           ///< (kg)
+  std::optional<T> diameter;        ///< (m)
+  std::optional<T> youngs_modulus;  ///< (Pa)
+  template <class A, class B, class F>
+  static void zip(A& a, B& b, F& f) {
+    f({"wire.mass", "kg"}, a.mass, b.mass);
+    f({"wire.diameter", "m"}, a.diameter, b.diameter);
+    f({"wire.youngs_modulus", "Pa"}, a.youngs_modulus, b.youngs_modulus);
+  }
+};
+
+/// Still air around the pendulum (absent for a vacuum).
+template <class T>
+struct Air {
+  T pressure;     ///< (Pa)
+  T temperature;  ///< (K)
+  T molar_mass;   ///< (kg/mol)
+  T viscosity;    ///< (Pa s)
+  template <class A, class B, class F>
+  static void zip(A& a, B& b, F& f) {
+    f({"air.pressure", "Pa"}, a.pressure, b.pressure);
+    f({"air.temperature", "K"}, a.temperature, b.temperature);
+    f({"air.molar_mass", "kg/mol"}, a.molar_mass, b.molar_mass);
+    f({"air.viscosity", "Pa s"}, a.viscosity, b.viscosity);
+  }
+};
+
+/// The support, as a mass on a spring (Nelson & Olsson Fig. 3); at least one
+/// of the two is given.
+template <class T>
+struct Support {
+  std::optional<T> stiffness;  ///< (N/m)
+  std::optional<T> mass;       ///< (kg)
+  template <class A, class B, class F>
+  static void zip(A& a, B& b, F& f) {
+    f({"support.stiffness", "N/m"}, a.stiffness, b.stiffness);
+    f({"support.mass", "kg"}, a.mass, b.mass);
+  }
+};
+
+/// Amplitude decay d theta0/dt = -alpha theta0 - beta theta0^2 (Eq. 24).
+template <class T>
+struct Decay {
+  T alpha;  ///< (1/s)
+  T beta;   ///< (1/(s rad))
+  template <class A, class B, class F>
+  static void zip(A& a, B& b, F& f) {
+    f({"decay.alpha", "1/s"}, a.alpha, b.alpha);
+    f({"decay.beta", "1/(s rad)"}, a.beta, b.beta);
+  }
+};
+
+/// The apparatus of one experiment: the parts it has.
+template <class T>
+struct Apparatus {
+  std::optional<Bob<T>> bob;
+  std::optional<Ring<T>> ring;
+  std::optional<Cap<T>> cap;
+  std::optional<CapScrew<T>> cap_screw;
+  std::optional<Wire<T>> wire;
+  std::optional<Air<T>> air;
+  std::optional<Support<T>> support;
+  /// Shared by every observation: what the file states, or the fit of its
+  /// decay record.
+  std::optional<Decay<T>> decay;
+  /// No air by statement ("air": "vacuum"), as opposed to air not described.
+  bool vacuum = false;
+};
+
+/// Visits every scalar field that `a` has, paired with the same field of
+/// `b`: f(Field, a_field, b_field). Parts and optional fields present in `a`
+/// are created in `b` when `b` is writable; a read-only `b` must have the
+/// shape of `a` (pass `a` twice to visit one apparatus).
+template <class A, class B, class F>
+void zip_apparatus(A& a, B& b, F&& f) {
+  detail::FieldZipper<F> z{f};
+  if constexpr (!std::is_const_v<B>) b.vacuum = a.vacuum;
+  detail::zip_part(a.bob, b.bob, z);
+  detail::zip_part(a.ring, b.ring, z);
+  detail::zip_part(a.cap, b.cap, z);
+  detail::zip_part(a.cap_screw, b.cap_screw, z);
+  detail::zip_part(a.wire, b.wire, z);
+  detail::zip_part(a.air, b.air, z);
+  detail::zip_part(a.support, b.support, z);
+  detail::zip_part(a.decay, b.decay, z);
+}
+
+/// The same apparatus with every scalar mapped by f(field, value) -> U.
+template <class U, class T, class F>
+Apparatus<U> convert_apparatus(const Apparatus<T>& a, F&& f) {
+  Apparatus<U> out;
+  zip_apparatus(a, out, [&](const Field& field, const T& x, U& y) { y = f(field, x); });
+  return out;
+}
+
+}  // namespace pendulum

@@ -1,0 +1,311 @@
+#pragma once
+/// \file corrections.hpp
+/// \brief The period corrections of Nelson & Olsson (1986) for an apparatus
+/// and one swing, their metadata in one table, and how they compose into
+/// the period's ratio T/T0. Generic in the scalar type (double, ceres::Jet).
+
+#include <array>
+#include <limits>
+#include <optional>
+
+#include "pendulum/air.hpp"
+#include "pendulum/amplitude.hpp"
+#include "pendulum/apparatus.hpp"
+#include "pendulum/damping.hpp"
+#include "pendulum/elastic.hpp"
+#include "pendulum/mass.hpp"
+#include "pendulum/numeric.hpp"
+#include "pendulum/observation.hpp"
+
+namespace pendulum {
+
+/// The corrections, in the order of Nelson & Olsson's Table II.
+enum class CorrectionId {
+  finite_amplitude,
+  bob_radius,
+  ring,
+  cap,
+  cap_screw,
+  wire_mass,
+  wire_flexibility,
+  bob_rotation,
+  double_pendulum,
+  buoyancy,
+  linear_damping,
+  quadratic_damping,
+  amplitude_decay,
+  added_mass,
+  wire_stretch,
+  support_motion,
+};
+inline constexpr int kCorrectionCount = 16;
+
+/// First-order theories hold while |DeltaT/T0| stays below this: the terms
+/// they neglect, of order (DeltaT/T0)^2, would reach 1% of the period.
+inline constexpr double kFirstOrderLimit = 0.1;
+/// The limit of a correction that is exact at any size.
+inline constexpr double kNoLimit = std::numeric_limits<double>::infinity();
+
+/// What the output says about a correction besides its size.
+struct CorrectionInfo {
+  CorrectionId correction;  ///< its place in the table (checked at compile time)
+  const char* id;           ///< stable JSON id
+  const char* title;        ///< Table II's row name
+  const char* equation;     ///< where the formula comes from
+  const char* part;         ///< the scene part it corrects for, named in its errors
+  double max_ratio;         ///< validity: |DeltaT/T0| below this
+};
+
+/// The table of corrections, indexed by CorrectionId.
+inline constexpr std::array<CorrectionInfo, kCorrectionCount> kCorrections{{
+    {CorrectionId::finite_amplitude, "finite_amplitude", "Finite amplitude",
+     "Nelson & Olsson (1986) Eq. (8)", "amplitude", kNoLimit},
+    {CorrectionId::bob_radius, "bob_radius", "Finite radius of bob", "Nelson & Olsson (1986) Eq. (10)", "bob",
+     kFirstOrderLimit},
+    {CorrectionId::ring, "ring", "Mass of ring", "Nelson & Olsson (1986) Eq. (11)", "ring", kFirstOrderLimit},
+    {CorrectionId::cap, "cap", "Mass of cap", "Nelson & Olsson (1986) Eq. (12)", "cap", kFirstOrderLimit},
+    {CorrectionId::cap_screw, "cap_screw", "Mass of cap screw", "Nelson & Olsson (1986) Eq. (12), Sec. III.B.2",
+     "cap_screw", kFirstOrderLimit},
+    {CorrectionId::wire_mass, "wire_mass", "Mass of wire", "Nelson & Olsson (1986) Eq. (13)", "wire",
+     kFirstOrderLimit},
+    {CorrectionId::wire_flexibility, "wire_flexibility", "Flexibility of wire",
+     "Nelson & Olsson (1986) Sec. III.B.3, (71-55)/1440 (m_w/m)^2", "wire", kFirstOrderLimit},
+    {CorrectionId::bob_rotation, "bob_rotation", "Rotation of bob",
+     "Nelson & Olsson (1986) Sec. III.B.3, Eq. (10) x (2/5)(a/l)", "bob", kFirstOrderLimit},
+    {CorrectionId::double_pendulum, "double_pendulum", "Double pendulum",
+     "Nelson & Olsson (1986) Eq. (15), third term", "ring", kFirstOrderLimit},
+    {CorrectionId::buoyancy, "buoyancy", "Buoyancy", "Nelson & Olsson (1986) Eq. (16)", "air", kFirstOrderLimit},
+    {CorrectionId::linear_damping, "linear_damping", "Linear damping", "Nelson & Olsson (1986) Eq. (34)", "decay",
+     kFirstOrderLimit},
+    {CorrectionId::quadratic_damping, "quadratic_damping", "Quadratic damping", "Nelson & Olsson (1986) Eq. (48)",
+     "decay", kFirstOrderLimit},
+    {CorrectionId::amplitude_decay, "amplitude_decay", "Decay of finite amplitude",
+     "Nelson & Olsson (1986) Eqs. (50a), (50b)", "decay", kFirstOrderLimit},
+    {CorrectionId::added_mass, "added_mass", "Added mass", "Nelson & Olsson (1986) Eqs. (54), (61), (62)", "air",
+     kFirstOrderLimit},
+    {CorrectionId::wire_stretch, "wire_stretch", "Stretching of wire", "Nelson & Olsson (1986) Eq. (79)", "wire",
+     kFirstOrderLimit},
+    {CorrectionId::support_motion, "support_motion", "Motion of support",
+     "Nelson & Olsson (1986) Eqs. (83), (87), (88)", "support", kFirstOrderLimit},
+}};
+
+namespace detail {
+constexpr bool table_follows_enum() {
+  for (int i = 0; i < kCorrectionCount; ++i) {
+    if (static_cast<int>(kCorrections[i].correction) != i) return false;
+  }
+  return true;
+}
+}  // namespace detail
+static_assert(detail::table_follows_enum(), "kCorrections must list the corrections in CorrectionId order");
+
+/// The row that composition adds: the finite-amplitude factor times the sum
+/// of the other corrections (see compose()).
+inline constexpr CorrectionInfo kAmplitudeCrossTerm{
+    CorrectionId::finite_amplitude, "amplitude_cross_term", "Finite amplitude x other corrections",
+    "(1 + r_amplitude)(1 + sum of the other r_i): Kelley (1993) Eq. (16) on the corrected pendulum",
+    "amplitude", kNoLimit};
+
+/// One correction's outcome: its relative size, or why it was skipped.
+template <class T>
+struct Term {
+  std::optional<T> ratio;      ///< DeltaT/T0; empty when skipped
+  const char* method = "";     ///< formula variant used
+  const char* skip_reason = "";
+  std::optional<double> error_bound;  ///< bound on |error| of ratio, where proven
+  int series_terms = 0;        ///< terms of a truncated series, 0 otherwise
+};
+
+template <class T>
+using Terms = std::array<Term<T>, kCorrectionCount>;
+
+/// Every correction for `app` swinging as `s`, handed to `sink` as
+/// sink.set(id, ratio, method) or sink.skip({ids...}, reason): a correction
+/// whose part the apparatus lacks is skipped with the reason. The
+/// finite-amplitude factor by `amplitude`. Pure: no I/O, no state.
+template <class T, class Sink>
+void visit_corrections(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude, Sink& sink) {
+  using Id = CorrectionId;
+  auto set = [&](Id id, const T& ratio, const char* method) { sink.set(id, ratio, method); };
+  auto skip = [&](std::initializer_list<Id> ids, const char* reason) { sink.skip(ids, reason); };
+
+  const T& l = s.length;
+  const T& theta0 = s.amplitude;
+  const T& omega0 = s.omega;
+
+  set(Id::finite_amplitude, finite_amplitude(amplitude.method, theta0, amplitude.terms),
+      method_name(amplitude.method));
+
+  if (!app.bob) {
+    skip({Id::bob_radius, Id::bob_rotation}, "the scene has no bob");
+  } else {
+    const T a = app.bob->diameter / 2.0;
+    set(Id::bob_radius, bob_radius(a, l), "eq10");
+    set(Id::bob_rotation, bob_rotation(a, l), "eq10_rotation");
+  }
+  // The other parts' corrections are their mass (or the air's) relative to the bob's.
+  const T* m = app.bob && app.bob->mass ? &*app.bob->mass : nullptr;
+  const char* no_bob_mass = "needs the bob's mass (bob.mass)";
+
+  if (!app.ring) {
+    skip({Id::ring, Id::double_pendulum}, "the scene has no ring");
+  } else if (!m) {
+    skip({Id::ring, Id::double_pendulum}, no_bob_mass);
+  } else {
+    const auto& r = *app.ring;
+    const T i_r = ring_moment_of_inertia(r.mass, r.pivot_distance, r.inner_radius, r.outer_radius);
+    set(Id::ring, ring(r.mass, i_r, r.pivot_distance, *m, l), "eq11");
+    set(Id::double_pendulum, double_pendulum(r.mass, r.pivot_distance, r.outer_radius, *m, l), "eq15");
+  }
+
+  if (!app.cap) {
+    skip({Id::cap}, "the scene has no cap");
+  } else if (!m) {
+    skip({Id::cap}, no_bob_mass);
+  } else {
+    set(Id::cap, point_mass_on_bob(app.cap->mass, app.cap->center_distance, *m, l), "eq12");
+  }
+  if (!app.cap_screw) {
+    skip({Id::cap_screw}, "the scene has no cap_screw");
+  } else if (!m) {
+    skip({Id::cap_screw}, no_bob_mass);
+  } else {
+    set(Id::cap_screw,
+        point_mass_on_bob(T(-app.cap_screw->mass_deficit), app.cap_screw->center_distance, *m, l), "eq12");
+  }
+
+  const std::initializer_list<Id> wire_ids{Id::wire_mass, Id::wire_flexibility, Id::wire_stretch};
+  if (!app.wire) {
+    skip(wire_ids, "the scene has no wire");
+  } else if (!m) {
+    skip(wire_ids, no_bob_mass);
+  } else {
+    const auto& w = *app.wire;
+    set(Id::wire_mass, wire_mass(w.mass, *m), "eq13");
+    set(Id::wire_flexibility, wire_flexibility(w.mass, *m), "second_order_flexible_minus_rigid");
+    if (w.diameter && w.youngs_modulus) {
+      const T& d = *w.diameter;
+      const T area = kPi * d * d / 4.0;
+      set(Id::wire_stretch, wire_stretch(*m, s.working_g(), *w.youngs_modulus, area, theta0), "eq79");
+    } else {
+      skip({Id::wire_stretch}, "the wire needs both diameter and youngs_modulus");
+    }
+  }
+
+  if (!app.air) {
+    skip({Id::buoyancy, Id::added_mass}, app.vacuum ? "the scene is in vacuum" : "the scene gives no air");
+  } else if (!m) {
+    skip({Id::buoyancy, Id::added_mass}, "needs the bob's diameter and mass (bob)");
+  } else {
+    const auto& air = *app.air;
+    const T a = app.bob->diameter / 2.0;
+    const T rho = air_density(air.pressure, air.temperature, air.molar_mass);
+    T volume = sphere_volume(a);
+    if (app.cap && app.cap->volume) volume += *app.cap->volume;
+    const T m_air = rho * volume;
+    set(Id::buoyancy, buoyancy(m_air, *m), "eq16");
+    const T x = inverse_acceleration_modulus(app.bob->diameter, l, theta0);
+    const T delta = penetration_depth(air.viscosity, omega0, rho);
+    const T kappa = added_mass_factor(added_mass_coefficient(x), history_coefficient(x), delta, a);
+    set(Id::added_mass, added_mass(kappa, m_air, *m), "eq54_eq62");
+  }
+
+  if (!app.decay) {
+    skip({Id::linear_damping, Id::quadratic_damping, Id::amplitude_decay},
+         "the scene gives no decay (alpha, beta)");
+  } else {
+    const auto& d = *app.decay;
+    set(Id::linear_damping, linear_damping(d.alpha, omega0), "eq34");
+    set(Id::quadratic_damping, quadratic_damping(d.beta, omega0, theta0), "eq48");
+    set(Id::amplitude_decay, amplitude_decay(theta0, d.alpha, d.beta, s.trial_duration), "eq50");
+  }
+
+  if (!app.support) {
+    skip({Id::support_motion}, "the scene has no support (taken as rigid)");
+  } else if (!m) {
+    skip({Id::support_motion}, no_bob_mass);
+  } else {
+    const auto& sup = *app.support;
+    if (sup.stiffness && sup.mass) {
+      set(Id::support_motion, support_coupled(*m, *sup.mass, *sup.stiffness, omega0), "eq83");
+    } else if (sup.stiffness) {
+      set(Id::support_motion, support_elastic(*m, s.working_g(), *sup.stiffness, l), "eq87");
+    } else {
+      set(Id::support_motion, support_inertial(*m, *sup.mass), "eq88");
+    }
+  }
+}
+
+/// Every correction as a row: its ratio and method, or why it was skipped.
+template <class T>
+Terms<T> correction_terms(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
+  struct Rows {
+    Terms<T> out;
+    void set(CorrectionId id, const T& ratio, const char* method) {
+      auto& term = out[static_cast<int>(id)];
+      term.ratio = ratio;
+      term.method = method;
+    }
+    void skip(std::initializer_list<CorrectionId> ids, const char* reason) {
+      for (CorrectionId id : ids) out[static_cast<int>(id)].skip_reason = reason;
+    }
+  } rows;
+  visit_corrections(app, s, amplitude, rows);
+  auto& amplitude_term = rows.out[static_cast<int>(CorrectionId::finite_amplitude)];
+  amplitude_term.error_bound = amplitude.bound;
+  if (amplitude.method == AmplitudeMethod::series) amplitude_term.series_terms = amplitude.terms;
+  return rows.out;
+}
+
+/// T/T0 from the corrections' ratios r_i = DeltaT_i/T0.
+///
+/// Eqs. (6)-(7) of Nelson & Olsson add the ratios, but the exact amplitude
+/// factor 2K(k)/pi (Kelley 1993, Eq. 16) multiplies the period of the
+/// pendulum it acts on, the one the other corrections describe:
+///   T/T0 = (1 + r_amplitude)(1 + sum of the other r_i).
+/// The product exceeds the sum by the cross term r_amplitude x (sum of the
+/// others), which the output shows as its own row where it is not negligible
+/// (3e-5 of T at 90 deg in room air; 1e-8 at Nelson & Olsson's 3 deg).
+template <class T>
+struct Composition {
+  T amplitude;  ///< r_amplitude
+  T others;     ///< sum of the other applied r_i
+  T cross;      ///< r_amplitude x others
+  T total;      ///< T/T0 - 1 = amplitude + others + cross
+};
+
+/// The composition straight from the corrections, without their rows: what
+/// a fit needs at every step.
+template <class T>
+Composition<T> compose(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
+  struct Sums {
+    Composition<T> c{T(0.0), T(0.0), T(0.0), T(0.0)};
+    void set(CorrectionId id, const T& ratio, const char*) {
+      (id == CorrectionId::finite_amplitude ? c.amplitude : c.others) += ratio;
+    }
+    void skip(std::initializer_list<CorrectionId>, const char*) {}
+  } sums;
+  visit_corrections(app, s, amplitude, sums);
+  Composition<T>& c = sums.c;
+  c.cross = c.amplitude * c.others;
+  c.total = c.amplitude + c.others + c.cross;
+  return c;
+}
+
+template <class T>
+Composition<T> compose(const Terms<T>& terms) {
+  Composition<T> c{T(0.0), T(0.0), T(0.0), T(0.0)};
+  for (int i = 0; i < kCorrectionCount; ++i) {
+    if (!terms[i].ratio) continue;
+    if (i == static_cast<int>(CorrectionId::finite_amplitude)) {
+      c.amplitude = *terms[i].ratio;
+    } else {
+      c.others += *terms[i].ratio;
+    }
+  }
+  c.cross = c.amplitude * c.others;
+  c.total = c.amplitude + c.others + c.cross;
+  return c;
+}
+
+}  // namespace pendulum

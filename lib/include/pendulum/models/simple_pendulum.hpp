@@ -1,0 +1,65 @@
+#pragma once
+/// \file models/simple_pendulum.hpp
+/// \brief The period model of a ball on a wire (Nelson & Olsson 1986): the
+/// ideal pendulum's 2 pi sqrt(l/g) times every correction the apparatus
+/// needs, with g and a common length offset as its parameters.
+
+#include <array>
+
+#include "pendulum/corrections.hpp"
+#include "pendulum/period_model.hpp"
+#include "pendulum/reduction.hpp"
+
+namespace pendulum {
+
+struct SimplePendulum {
+  static constexpr int kParameters = 2;
+  enum Parameter { g, length_offset };
+  static constexpr std::array<ParameterInfo, kParameters> kParameterInfo{{
+      {"g", "m/s^2", "local acceleration of gravity"},
+      {"length_offset", "m",
+       "length to add to every measured length: from the mark measured to, to the bob's centre"},
+  }};
+  /// Starting values where the data give none (SI).
+  static constexpr std::array<double, kParameters> kDefaults{{kStandardGravity, 0.0}};
+
+  /// The period of one observation at parameters p = (g (m/s^2), length
+  /// offset (m)): T0 = 2 pi sqrt(l/g) (Eq. 3) with l = length + offset, times
+  /// T/T0 of the corrections (corrections.hpp, compose).
+  template <class T>
+  static PeriodPrediction<T> predict(const T* p, const Observation<T>& o, const Apparatus<T>& app,
+                                     const AmplitudeChoice& amplitude) {
+    const Swing<T> swing = Swing<T>::of(o, p[length_offset]);
+    PeriodPrediction<T> out;
+    out.terms = correction_terms(app, swing, amplitude);
+    out.composition = compose(out.terms);
+    out.ideal = ideal_period(p, swing);
+    out.period = out.ideal * (1.0 + out.composition.total);
+    return out;
+  }
+
+  /// predict()'s period alone, without the rows: the fit's residuals.
+  template <class T>
+  static T period(const T* p, const Observation<T>& o, const Apparatus<T>& app, const AmplitudeChoice& amplitude) {
+    const Swing<T> swing = Swing<T>::of(o, p[length_offset]);
+    return ideal_period(p, swing) * (1.0 + compose(app, swing, amplitude).total);
+  }
+
+  /// T0 = 2 pi sqrt(l/g) (Eq. 3).
+  template <class T>
+  static T ideal_period(const T* p, const Swing<T>& swing) {
+    using std::sqrt;
+    return 2.0 * kPi * sqrt(swing.length / p[g]);  // Eq. (3)
+  }
+
+  /// The closed form for one observation with g the only unknown (the
+  /// other parameters held at p): the g at which predict() returns the
+  /// measured period (reduction.hpp).
+  template <class T>
+  static T solve_g(const T* p, const Observation<T>& o, const Apparatus<T>& app,
+                   const AmplitudeChoice& amplitude) {
+    return reduce(app, o, amplitude, p[length_offset]).g;
+  }
+};
+
+}  // namespace pendulum

@@ -1,0 +1,69 @@
+#pragma once
+/// \file observation.hpp
+/// \brief What was measured at one setting of the apparatus: the length, the
+/// amplitude and the timing, and the swing the corrections act on.
+
+#include <type_traits>
+
+#include "pendulum/fields.hpp"
+#include "pendulum/numeric.hpp"
+
+namespace pendulum {
+
+/// One timed setting of the pendulum, in SI units.
+template <class T>
+struct Observation {
+  T period;     ///< mean measured period (s)
+  T length;     ///< measured length (m): pivot to the bob's centre, or to
+                ///< the mark measured to when the scene fits length_offset
+  T amplitude;  ///< amplitude at the start of each timing (rad)
+  int oscillations_per_trial = 1;  ///< oscillations in one timing
+
+  template <class A, class B, class F>
+  static void zip(A& a, B& b, F& f) {
+    f(Field{"timing.period", "s", FieldRole::period}, a.period, b.period);
+    f(Field{"length", "m", FieldRole::length}, a.length, b.length);
+    f(Field{"amplitude", "rad"}, a.amplitude, b.amplitude);
+  }
+};
+
+/// Visits the observation's scalar fields: f(Field, a_field, b_field); the
+/// oscillation count is copied along.
+template <class A, class B, class F>
+void zip_observation(A& a, B& b, F&& f) {
+  detail::FieldZipper<F> z{f};
+  if constexpr (!std::is_const_v<B>) b.oscillations_per_trial = a.oscillations_per_trial;
+  std::decay_t<A>::zip(a, b, z);
+}
+
+/// The same observation with every scalar mapped by f(field, value) -> U.
+template <class U, class T, class F>
+Observation<U> convert_observation(const Observation<T>& o, F&& f) {
+  Observation<U> out;
+  zip_observation(o, out, [&](const Field& field, const T& x, U& y) { y = f(field, x); });
+  return out;
+}
+
+/// The swing the period corrections act on (Nelson & Olsson 1986, Sec. III).
+///
+/// The corrections that need the pendulum's frequency or g (damping, added
+/// mass, stretch, support) take the working values omega = 2 pi / T and
+/// g = omega^2 l from the measured period: they are second-order terms, and
+/// the difference from T0 changes them by about DeltaT/T (1e-4 of their size).
+template <class T>
+struct Swing {
+  T length;          ///< pivot to the bob's centre (m)
+  T amplitude;       ///< theta0 (rad)
+  T omega;           ///< working angular frequency 2 pi / T (rad/s)
+  T trial_duration;  ///< duration of one timing, t_f (s)
+
+  /// The swing of an observation whose length is off by `length_offset` (m).
+  static Swing of(const Observation<T>& o, const T& length_offset) {
+    return {o.length + length_offset, o.amplitude, 2.0 * kPi / o.period,
+            double(o.oscillations_per_trial) * o.period};
+  }
+  /// g from the working frequency, omega^2 l (m/s^2).
+  T working_g() const { return omega * omega * length; }
+};
+
+}  // namespace pendulum

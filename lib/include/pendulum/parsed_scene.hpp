@@ -1,0 +1,56 @@
+#pragma once
+/// \file parsed_scene.hpp
+/// \brief A scene as read from its file (scene_json.hpp): the apparatus and
+/// its observations with their uncertainties, and what the file says besides.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pendulum/apparatus.hpp"
+#include "pendulum/decay_fit.hpp"
+#include "pendulum/observation.hpp"
+#include "pendulum/site.hpp"
+
+namespace pendulum {
+
+/// What the file says about one observation beyond its values.
+struct ObservationSource {
+  /// Prefix of its JSON paths: "" for a scene of one observation (its keys at
+  /// the top level), "observations[3]." in a series.
+  std::string path;
+  int trial_count = 0;
+  /// The amplitude as written, for the degrees-and-radians check.
+  double amplitude_raw = 0.0;
+  std::string amplitude_unit;
+};
+
+struct ParsedScene {
+  Apparatus<double> apparatus;              ///< SI values
+  Apparatus<double> apparatus_uncertainty;  ///< same shape; 0 where the file states none
+  std::vector<Observation<double>> observations;  ///< one, or a series
+  std::vector<Observation<double>> observation_uncertainties;
+  std::vector<ObservationSource> sources;  ///< one per observation
+  /// The file holds "observations" (a series), not one observation's keys at the top.
+  bool series = false;
+  /// Unknowns besides g ("fit"), by the period model's parameter names.
+  std::vector<std::string> fit;
+  std::string title;
+  std::string source;
+  /// A decay record to fit alpha and beta from (decay.data); the fit
+  /// replaces any alpha and beta given beside it.
+  std::optional<DecayData> decay_data;
+  /// Where the experiment was done, to compare g with.
+  std::optional<Site> site;
+  /// Inputs whose errors are correlated (alpha and beta of a decay fit), by
+  /// their JSON paths, with their covariance (SI).
+  struct Covariance {
+    std::string first, second;
+    double covariance;
+  };
+  std::vector<Covariance> input_covariances;
+  std::vector<std::string> assumptions;  ///< defaults the reduction used
+  std::vector<std::string> warnings;     ///< legal but suspicious input
+};
+
+}  // namespace pendulum

@@ -1,0 +1,64 @@
+#pragma once
+/// \file period_fit.hpp
+/// \brief One Ceres fit of any period model (period_model.hpp) to any number
+/// of observations: weighted least squares of the periods, with automatic
+/// derivatives. The uncertainties are the analysis's (analysis.hpp), which
+/// propagates every input through the fit's optimum and forms (J^T J)^-1
+/// from the same Jacobian (what ceres::Covariance would compute again).
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "pendulum/amplitude.hpp"
+#include "pendulum/apparatus.hpp"
+#include "pendulum/models/simple_pendulum.hpp"
+#include "pendulum/observation.hpp"
+
+namespace pendulum {
+
+/// The data of a period fit; the pointers outlive the fit.
+template <class Model>
+struct PeriodFitProblem {
+  const Apparatus<double>* apparatus;
+  const std::vector<Observation<double>>* observations;
+  const std::vector<AmplitudeChoice>* amplitude;  ///< one per observation
+  /// 1 / (the period's standard uncertainty) of each observation (1/s).
+  const std::vector<double>* weights;
+  std::array<bool, Model::kParameters> fitted;  ///< the others are held at `initial`
+};
+
+struct PeriodFitSolution {
+  std::vector<double> parameters;  ///< SI, in the model's order
+  double chi2 = 0.0;               ///< sum of squared weighted residuals
+  /// (J^T W J)^-1 at the optimum: the parameters' covariance from the
+  /// weights alone (row-major, zero rows for held ones; empty when singular).
+  std::vector<double> covariance;
+  bool converged = false;
+  std::string termination;  ///< Ceres's message
+  int iterations = 0;
+};
+
+/// Minimises sum_k [(T_model,k(p) - T_k) w_k]^2 over the fitted parameters
+/// by Levenberg-Marquardt from `initial`, to the last digits (the tests
+/// recover noiseless parameters to 1e-12).
+template <class Model>
+PeriodFitSolution fit_periods(const PeriodFitProblem<Model>& problem,
+                              const std::array<double, Model::kParameters>& initial);
+
+extern template PeriodFitSolution fit_periods<SimplePendulum>(const PeriodFitProblem<SimplePendulum>&,
+                                                               const std::array<double, 2>&);
+
+/// A weighted straight line y = slope x + intercept (intercept 0 when
+/// `with_intercept` is false) with the effective-variance weights
+/// sigma_y^2 + slope^2 sigma_x^2 (one refinement of the slope), and the
+/// parameters' covariance.
+struct StraightLine {
+  double slope, intercept;
+  double var_slope, var_intercept, cov;
+};
+StraightLine fit_straight_line(const std::vector<double>& x, const std::vector<double>& y,
+                               const std::vector<double>& sigma_x, const std::vector<double>& sigma_y,
+                               bool with_intercept);
+
+}  // namespace pendulum

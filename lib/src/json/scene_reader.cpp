@@ -1,0 +1,152 @@
+// parse_scene: the top level of a scene file (docs/scene.md): its
+// observations, one at the top level or a series under "observations", the
+// unknowns to fit, and the checks across parts and observations.
+#include <algorithm>
+#include <cmath>
+
+#include "../plausibility.hpp"
+#include "parts.hpp"
+#include "pendulum/models/simple_pendulum.hpp"
+#include "pendulum/scene_json.hpp"
+
+namespace pendulum {
+
+using namespace json_reader;
+
+namespace {
+
+constexpr const char* kSceneSchema = "pendulum-g/scene/1";
+
+/// The keys of one observation, under `o` (the top level, or an item of
+/// "observations") with `prefix` on every path.
+void read_observation(Object& o, const std::string& prefix, ParsedScene& out) {
+  Observation<double> v, u;
+  ObservationSource source;
+  source.path = prefix;
+  read_timing(o, prefix, v, u, source, out);
+  put(o, "length", Dimension::length, Range::positive, v.length, u.length);
+  within(v.length, 1e-3, 1e3, prefix + "length.value", "m", "a laboratory pendulum, 1 mm to 1 km long");
+  put(o, "amplitude", Dimension::angle, Range::positive, v.amplitude, u.amplitude);
+  PENDULUM_FAIL_IF(v.amplitude >= kPi, prefix + "amplitude.value",
+                   "got " + format_number(v.amplitude * 180.0 / kPi) +
+                       " deg; expected an amplitude below 180 deg (at 180 deg and beyond "
+                       "the pendulum goes over the top)");
+  const json& amplitude = o.at("amplitude");
+  source.amplitude_raw = amplitude.at("value").get<double>();
+  source.amplitude_unit = amplitude.at("unit").get<std::string>();
+  out.observations.push_back(v);
+  out.observation_uncertainties.push_back(u);
+  out.sources.push_back(std::move(source));
+}
+
+/// "observations": a non-empty array of objects with length, amplitude, timing.
+void read_series(Object& top, ParsedScene& out) {
+  for (const char* key : {"length", "amplitude", "timing"}) {
+    PENDULUM_FAIL_IF(top.has(key), key,
+                     "got both observations and a top-level " + std::string(key) +
+                         "; expected the observations to hold every length, amplitude and timing");
+  }
+  const json& list = top.at("observations");
+  PENDULUM_FAIL_IF(!list.is_array() || list.empty(), "observations",
+                   "got " + shown(list) + "; expected a non-empty array of observations, each with length, "
+                   "amplitude and timing");
+  out.series = true;
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const std::string path = "observations[" + std::to_string(k) + "]";
+    Object o(list[k], path, "an object with length, amplitude and timing");
+    read_observation(o, path + ".", out);
+    if (o.has("source")) o.text("source");
+    o.finish();
+    PENDULUM_FAIL_IF(out.observation_uncertainties.back().period == 0.0, path + ".timing",
+                     "got a period with no uncertainty (equal trials and no resolution); expected one: a series "
+                     "weighs each period by its uncertainty, so state timing.resolution or timing.uncertainty");
+  }
+}
+
+/// "fit": the unknowns besides g, by the period model's parameter names.
+void read_fit(Object& top, ParsedScene& out) {
+  const json& list = top.at("fit");
+  std::string names;
+  for (const auto& p : SimplePendulum::kParameterInfo) names += (names.empty() ? "" : ", ") + std::string(p.name);
+  PENDULUM_FAIL_IF(!list.is_array(), "fit", "got " + shown(list) + "; expected an array of unknowns from: " + names);
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string path = "fit[" + std::to_string(i) + "]";
+    const json& name = list[i];
+    const bool known = name.is_string() && std::any_of(SimplePendulum::kParameterInfo.begin(),
+                                                       SimplePendulum::kParameterInfo.end(),
+                                                       [&](const ParameterInfo& p) { return name == p.name; });
+    PENDULUM_FAIL_IF(!known, path, "got " + shown(name) + "; expected one of the unknowns: " + names);
+    PENDULUM_FAIL_IF(std::find(out.fit.begin(), out.fit.end(), name.get<std::string>()) != out.fit.end(), path,
+                     "got " + shown(name) + " twice; expected each unknown once");
+    if (name != "g") out.fit.push_back(name.get<std::string>());  // g is always fitted
+  }
+}
+
+/// The parts against every observation's length.
+void check_geometry(const ParsedScene& out) {
+  const Apparatus<double>& v = out.apparatus;
+  for (std::size_t k = 0; k < out.observations.size(); ++k) {
+    const double length = out.observations[k].length;
+    const std::string at = out.sources[k].path + "length.value";
+    if (!v.bob) continue;
+    const double radius = v.bob->diameter / 2.0;
+    PENDULUM_FAIL_IF(radius >= length, at,
+                     "got " + format_number(length) + " m; expected more than the bob radius " +
+                         format_number(radius) + " m");
+    if (v.ring) {
+      PENDULUM_FAIL_IF(v.ring->pivot_distance + v.ring->outer_radius >= length - radius, "ring.outer_radius.value",
+                       "the ring reaches " + format_number(v.ring->pivot_distance + v.ring->outer_radius) +
+                           " m below the pivot; expected it to end above the bob, which starts at " +
+                           format_number(length - radius) + " m");
+    }
+    if (v.cap) {
+      PENDULUM_FAIL_IF(v.cap->center_distance >= length, "cap.center_distance.value",
+                       "got " + format_number(v.cap->center_distance) + " m; expected less than the length (" +
+                           format_number(length) + " m): the cap hangs between the pivot and the bob");
+    }
+  }
+}
+
+}  // namespace
+
+ParsedScene parse_scene(const std::string& text) {
+  const json doc = parse_json(text, kMaxSceneBytes);
+  ParsedScene out;
+  Object top(doc, "", "a JSON object (the scene)");
+
+  if (top.has("schema")) {
+    PENDULUM_FAIL_IF(top.text("schema") != kSceneSchema, "schema",
+                     "got " + shown(top.at("schema")) + "; expected \"" + kSceneSchema + "\"");
+  }
+  if (top.has("title")) {
+    // The table prints the title as is: no control character may reach the terminal.
+    out.title = top.text("title");
+    PENDULUM_FAIL_IF(std::any_of(out.title.begin(), out.title.end(),
+                                 [](unsigned char c) { return c < 0x20 || c == 0x7f; }),
+                     "title", "got " + shown(top.at("title")) + "; expected one line of printable text");
+  }
+  if (top.has("source")) out.source = top.text("source");
+  if (top.has("notes")) top.text("notes");
+
+  if (top.has("observations")) {
+    read_series(top, out);
+  } else {
+    read_observation(top, "", out);
+  }
+  read_parts(top, out);
+  if (top.has("decay")) read_decay(top, out);
+  if (top.has("site")) read_site(top, out);
+  if (top.has("fit")) read_fit(top, out);
+  top.finish();
+  const std::size_t unknowns = out.fit.size() + 1;
+  PENDULUM_FAIL_IF(out.observations.size() < unknowns, out.series ? "observations" : "fit",
+                   "got " + std::to_string(out.observations.size()) + " observation" +
+                       (out.observations.size() == 1 ? "" : "s") + " for " + std::to_string(unknowns) +
+                       " unknowns (g and " + out.fit.front() + "); expected at least as many observations "
+                       "as unknowns");
+  check_geometry(out);
+  check_plausibility(out);
+  return out;
+}
+
+}  // namespace pendulum

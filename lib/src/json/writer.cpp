@@ -1,0 +1,426 @@
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "pendulum/output.hpp"
+#include "writer.hpp"
+
+namespace pendulum {
+
+namespace {
+/// Throws std::logic_error at a number that is not finite: the JSON library
+/// would print it as null, where the API promises a number.
+void require_finite(const nlohmann::ordered_json& j, const std::string& path) {
+  if (j.is_structured()) {
+    for (const auto& item : j.items()) require_finite(item.value(), path + "/" + item.key());
+  } else if (j.is_number_float() && !std::isfinite(j.get<double>())) {
+    throw std::logic_error("non-finite number in the output at " + path);
+  }
+}
+
+}  // namespace
+
+/// JSON text as every command prints it, after the check above. A file name
+/// that is not UTF-8 prints its bad bytes as U+FFFD instead of failing.
+std::string json_text(const nlohmann::ordered_json& j, int indent) {
+  require_finite(j, "");
+  return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+namespace {
+
+constexpr const char* kResultSchema = "pendulum-g/result/1";
+
+using json = nlohmann::ordered_json;
+
+json optional_number(const std::optional<double>& x) { return x ? json(*x) : json(nullptr); }
+
+json measured(const ValueWithUncertainty& x, const char* unit) {
+  return {{"value", x.value}, {"uncertainty", x.uncertainty}, {"unit", unit}};
+}
+
+json measured(const Estimate& x, const char* unit) {
+  return {{"value", x.value}, {"uncertainty", optional_number(x.uncertainty)}, {"unit", unit}};
+}
+
+
+json parameter(const FittedParameter& q, const char* unit) {
+  return {{"value", q.value},
+          {"uncertainty", optional_number(q.uncertainty)},
+          {"unit", unit},
+          {"fitted", q.fitted},
+          {"at_bound", q.at_bound},
+          {"significant", q.significant}};
+}
+
+json decay_fit_to_json(const DecayFit& f, const std::optional<Decay<double>>& given) {
+  json out = {{"equation", "Nelson & Olsson (1986) Eq. (25)"},
+              {"model", decay_model_name(f.model)},
+              {"model_reason", f.model_reason},
+              {"alpha", parameter(f.alpha, "1/s")},
+              {"beta", parameter(f.beta, "1/(s rad)")},
+              {"initial_amplitude", parameter(f.initial_amplitude, "rad")},
+              {"correlation_alpha_beta", f.correlation_alpha_beta},
+              {"chi2", f.chi2},
+              {"dof", f.dof},
+              {"reduced_chi2", f.dof > 0 ? json(f.chi2 / f.dof) : json(nullptr)},
+              {"residual_standard_error_rad", f.residual_standard_error},
+              {"uncertainty_scaling", f.uncertainty_scaling},
+              {"points", f.points},
+              {"converged", f.converged},
+              {"termination", f.termination},
+              {"iterations", f.iterations}};
+  if (given) out["given"] = {{"alpha_1_s", given->alpha}, {"beta_1_s_rad", given->beta}};
+  return out;
+}
+
+json drag_to_json(const DragPrediction<double>& d, const Decay<double>& decay) {
+  auto optional = [](const std::optional<double>& x) { return x ? json(*x) : json(nullptr); };
+  return {{"equation", "Nelson & Olsson (1986) Eqs. (26), (27), (63)-(67)"},
+          {"reynolds_sphere", d.reynolds_sphere},
+          {"reynolds_wire", optional(d.reynolds_wire)},
+          {"c_d_prime", d.c_d_prime},
+          {"b_kg_s", {{"sphere", d.b_sphere}, {"wire", optional(d.b_wire)}, {"total", d.b}}},
+          {"c_kg_m", {{"sphere", d.c_sphere}, {"wire", optional(d.c_wire)}, {"total", d.c}}},
+          {"alpha_1_s", d.alpha},
+          {"beta_1_s_rad", d.beta},
+          {"measured_over_predicted", {{"alpha", decay.alpha / d.alpha}, {"beta", decay.beta / d.beta}}}};
+}
+
+// RFC 4180: quote a field that holds a comma, quote or line break.
+std::string csv_field(const json& v) {
+  if (v.is_null()) return "";
+  std::string text = v.is_string() ? v.get<std::string>() : v.dump();
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+constexpr const char* kCsvColumns[] = {"input", "ok", "g_m_s2", "g_uncertainty_m_s2", "largest_budget_input",
+                                       "largest_budget_m_s2", "expected_g_m_s2", "z", "warnings", "error"};
+
+std::string csv_row(const json& summary) {
+  std::string line;
+  bool first = true;
+  for (const char* c : kCsvColumns) {
+    if (!first) line += ",";
+    first = false;
+    if (summary.contains(c)) line += csv_field(summary.at(c));
+  }
+  return line + "\n";
+}
+
+json correction_json(const CorrectionRow& row) {
+  json c = {{"id", row.info.id},
+            {"title", row.info.title},
+            {"status", status_name(row.status)},
+            {"delta_T_s", optional_number(row.delta_T)},
+            {"delta_T_uncertainty_s", optional_number(row.delta_T_uncertainty)},
+            {"delta_T_over_T0", optional_number(row.ratio)},
+            {"delta_g_m_s2", optional_number(row.delta_g)},
+            {"equation", row.info.equation},
+            {"method", row.method.empty() ? json(nullptr) : json(row.method)},
+            {"error_bound_delta_T_s", optional_number(row.error_bound_delta_T)}};
+  if (row.series_terms > 0) c["series_terms"] = row.series_terms;
+  if (!row.reason.empty()) c["reason"] = row.reason;
+  return c;
+}
+
+json corrections_json(const ObservationResult& o) {
+  json corrections = json::array();
+  for (const auto& row : o.corrections) corrections.push_back(correction_json(row));
+  return corrections;
+}
+
+json g_json(const Analysis& a) {
+  json budget = json::array();
+  for (const auto& b : a.budget) {
+    budget.push_back({{"input", b.input},
+                      {"value", b.value},
+                      {"uncertainty", b.uncertainty},
+                      {"unit", b.unit},
+                      {"sensitivity", b.sensitivity},
+                      {"contribution_m_s2", b.contribution}});
+  }
+  json g = measured(a.g, "m/s^2");
+  g["uncertainty_period_and_length"] = optional_number(a.g_period_and_length_uncertainty);
+  g["budget"] = budget;
+  if (a.budget_correlation) {
+    g["budget_correlation"] = {{"inputs", {a.budget_correlation->first, a.budget_correlation->second}},
+                               {"correlation", a.budget_correlation->correlation},
+                               {"variance_m2_s4", a.budget_correlation->variance}};
+  }
+  g["inputs_without_uncertainty"] = a.inputs_without_uncertainty;
+  return g;
+}
+
+json fit_json(const ParsedScene& scene, const Analysis& a) {
+  const FitReport& f = a.fit;
+  json parameters = json::array();
+  json names = json::array();
+  for (const auto& p : f.parameters) {
+    parameters.push_back({{"name", p.name},
+                          {"value", p.value},
+                          {"uncertainty", optional_number(p.uncertainty)},
+                          {"uncertainty_from_observations", optional_number(p.uncertainty_from_observations)},
+                          {"unit", p.unit},
+                          {"fitted", p.fitted}});
+    if (p.fitted) names.push_back(p.name);
+  }
+  json matrix = json::array();
+  const std::size_t n = names.size();
+  for (std::size_t i = 0; i < n && !f.correlation.empty(); ++i) {
+    matrix.push_back(std::vector<double>(f.correlation.begin() + i * n, f.correlation.begin() + (i + 1) * n));
+  }
+  json observations = json::array();
+  for (std::size_t k = 0; k < a.observations.size(); ++k) {
+    const ObservationResult& o = a.observations[k];
+    const auto& u = scene.observation_uncertainties[k];
+    observations.push_back(
+        {{"index", k},
+         {"length", measured(ValueWithUncertainty{o.length, u.length}, "m")},
+         {"amplitude", measured(ValueWithUncertainty{o.amplitude, u.amplitude}, "rad")},
+         {"period",
+          {{"measured", measured(o.period_measured, "s")},
+           {"model_s", o.period_model},
+           {"ideal", measured(o.period_ideal, "s")},
+           {"trials", o.trials},
+           {"oscillations_per_trial", o.oscillations_per_trial}}},
+         {"effective_uncertainty_s", o.effective_uncertainty},
+         {"residual_sigma", optional_number(o.residual)},
+         {"total_delta_T_s", o.total_delta_T},
+         {"negligible_threshold_delta_T_s", o.negligible_below},
+         {"corrections", corrections_json(o)}});
+  }
+  json textbook = {{"equation", f.textbook.length_offset ? "T^2 = (4 pi^2 / g) (L + length_offset), no corrections"
+                                                          : "T^2 = (4 pi^2 / g) L, no corrections"},
+                   {"g", measured(f.textbook.g, "m/s^2")}};
+  if (f.textbook.length_offset) textbook["length_offset"] = measured(*f.textbook.length_offset, "m");
+  return {{"model", "simple_pendulum"},
+          {"method", f.method},
+          {"parameters", parameters},
+          {"correlation", {{"parameters", names}, {"matrix", matrix.empty() ? json(nullptr) : matrix}}},
+          {"chi2", f.chi2},
+          {"dof", f.dof},
+          {"reduced_chi2", f.dof > 0 ? json(f.chi2 / f.dof) : json(nullptr)},
+          {"probability", optional_number(f.probability)},
+          {"converged", f.converged},
+          {"termination", f.termination},
+          {"iterations", f.iterations},
+          {"observations", observations},
+          {"textbook", textbook}};
+}
+
+json warnings_json(const ParsedScene& scene, const Analysis& a) {
+  json warnings = scene.warnings;
+  for (const auto& w : a.warnings) warnings.push_back(w);
+  return warnings;
+}
+
+}  // namespace
+
+std::string result_json(const ParsedScene& scene, const Analysis& a, const AnalysisOptions& options,
+                        const std::string& input, int indent) {
+  json out = {{"schema", kResultSchema}, {"input", input}, {"title", scene.title}};
+  if (scene.series) {
+    out["kind"] = "series";
+    out["g"] = g_json(a);
+    out["fit"] = fit_json(scene, a);
+    out["negligible_threshold"] = {{"fraction_of_period_uncertainty", options.negligible_fraction}};
+  } else {
+    const ObservationResult& o = a.observations.front();
+    out["g"] = g_json(a);
+    out["g_uncorrected"] = measured(a.fit.textbook.g, "m/s^2");
+    out["period"] = {{"measured", measured(o.period_measured, "s")},
+                     {"ideal", measured(o.period_ideal, "s")},
+                     {"trials", o.trials},
+                     {"oscillations_per_trial", o.oscillations_per_trial}};
+    out["total_delta_T_s"] = o.total_delta_T;
+    out["total_delta_g_m_s2"] = o.total_delta_g;
+    out["negligible_threshold"] = {{"fraction_of_period_uncertainty", options.negligible_fraction},
+                                   {"delta_T_s", o.negligible_below}};
+    out["corrections"] = corrections_json(o);
+  }
+  out["assumptions"] = scene.assumptions;
+  out["warnings"] = warnings_json(scene, a);
+  if (a.expected_g) {
+    out["expected_g"] = {{"value", a.expected_g->value},
+                         {"uncertainty", a.expected_g->uncertainty},
+                         {"unit", "m/s^2"},
+                         {"source", a.expected_g->source},
+                         {"note", a.expected_g->note}};
+    out["comparison"] = {{"difference_m_s2", a.g.value - a.expected_g->value},
+                         {"z", optional_number(a.z_score)}};
+  }
+  if (a.decay_fit) out["decay_fit"] = decay_fit_to_json(*a.decay_fit, a.decay_given);
+  if (a.drag) {
+    const Decay<double> used = a.decay_fit ? Decay<double>{a.decay_fit->alpha.value, a.decay_fit->beta.value}
+                                           : *scene.apparatus.decay;
+    out["drag_theory"] = drag_to_json(*a.drag, used);
+  }
+  return json_text(out, indent);
+}
+
+std::string decay_fit_json(const std::string& input, const ParsedScene& scene, const DecayFit& fit,
+                           const std::vector<std::string>& warnings) {
+  json out = {{"schema", "pendulum-g/decay-fit/1"}, {"input", input}};
+  out.update(decay_fit_to_json(fit, scene.apparatus.decay));
+  ParsedScene fitted = scene;
+  use_fitted_decay(fitted, fit);
+  if (const auto drag = predict_drag(fitted.apparatus, fitted.observations.front())) {
+    out["drag_theory"] = drag_to_json(*drag, *fitted.apparatus.decay);
+  }
+  out["warnings"] = warnings;
+  return json_text(out, 2);
+}
+
+BatchLine batch_line(const std::string& input, const ParsedScene& scene, const Analysis& a) {
+  const json line = {{"input", input},
+                     {"ok", true},
+                     {"title", scene.title},
+                     {"g_m_s2", a.g.value},
+                     {"g_uncertainty_m_s2", optional_number(a.g.uncertainty)},
+                     {"largest_budget_input", a.budget.empty() ? json(nullptr) : json(a.budget.front().input)},
+                     {"largest_budget_m_s2", a.budget.empty() ? json(nullptr) : json(a.budget.front().contribution)},
+                     {"expected_g_m_s2", a.expected_g ? json(a.expected_g->value) : json(nullptr)},
+                     {"z", optional_number(a.z_score)},
+                     {"warnings", scene.warnings.size() + a.warnings.size()}};
+  return {true, json_text(line, -1), csv_row(line)};
+}
+
+BatchLine batch_failure(const std::string& input, const std::string& error) {
+  const json line = {{"input", input}, {"ok", false}, {"error", error}};
+  return {false, json_text(line, -1), csv_row(line)};
+}
+
+std::string batch_csv_header() {
+  std::string line;
+  for (const char* c : kCsvColumns) line += (line.empty() ? "" : ",") + std::string(c);
+  return line + "\n";
+}
+
+namespace {
+
+/// "+- 0.00148" or "(no uncertainty: singular fit)"
+std::string plus_minus(const std::optional<double>& u, const char* format) {
+  if (!u) return "+- ? (singular fit)";
+  char text[64];
+  std::snprintf(text, sizeof text, format, *u);
+  return std::string("+- ") + text;
+}
+
+void correction_table(std::ostringstream& os, const ObservationResult& o) {
+  char line[320];
+  std::snprintf(line, sizeof line, "%-26s %12s %10s %16s  %-10s %s\n", "Correction", "dT (us)", "+- (us)",
+                "dg (1e-5 m/s^2)", "status", "method");
+  os << line;
+  for (const auto& row : o.corrections) {
+    if (row.delta_T) {
+      char sigma[32] = "?";
+      if (row.delta_T_uncertainty) std::snprintf(sigma, sizeof sigma, "%10.4f", *row.delta_T_uncertainty * 1e6);
+      std::snprintf(line, sizeof line, "%-26s %+12.4f %10s %+16.4f  %-10s %s\n", row.info.title, *row.delta_T * 1e6,
+                    sigma, *row.delta_g * 1e5, status_name(row.status), row.method.c_str());
+    } else {
+      std::snprintf(line, sizeof line, "%-26s %12s %10s %16s  %-10s %s\n", row.info.title, "-", "", "-",
+                    status_name(row.status), row.reason.c_str());
+    }
+    os << line;
+  }
+  std::snprintf(line, sizeof line, "%-26s %+12.4f %10s %+16.4f\n", "Total", o.total_delta_T * 1e6, "",
+                o.total_delta_g * 1e5);
+  os << line;
+}
+
+}  // namespace
+
+std::string result_table(const ParsedScene& scene, const Analysis& a) {
+  std::ostringstream os;
+  char line[320];
+  if (!scene.title.empty()) os << scene.title << "\n\n";
+  if (!scene.series) {
+    const ObservationResult& o = a.observations.front();
+    correction_table(os, o);
+    os << "\n";
+    std::snprintf(line, sizeof line, "Measured period T   = %.6f +- %.6f s (%d trials)\n", o.period_measured.value,
+                  o.period_measured.uncertainty, o.trials);
+    os << line;
+    std::snprintf(line, sizeof line, "Ideal period T0     = %.6f %s s\n", o.period_ideal.value,
+                  plus_minus(o.period_ideal.uncertainty, "%.6f").c_str());
+    os << line;
+    std::snprintf(line, sizeof line, "g (uncorrected)     = %.5f %s m/s^2\n", a.fit.textbook.g.value,
+                  plus_minus(a.fit.textbook.g.uncertainty, "%.5f").c_str());
+    os << line;
+  } else {
+    std::snprintf(line, sizeof line, "%5s %9s %12s %12s %10s %12s %9s %12s\n", "obs", "L (m)", "theta0 (deg)",
+                  "T meas (s)", "+- (s)", "T model (s)", "resid (sd)", "T-T0 (us)");
+    os << line;
+    for (std::size_t k = 0; k < a.observations.size(); ++k) {
+      const ObservationResult& o = a.observations[k];
+      std::snprintf(line, sizeof line, "%5zu %9.4f %12.2f %12.6f %10.6f %12.6f %+10.2f %+12.2f\n", k, o.length,
+                    o.amplitude * 180.0 / kPi, o.period_measured.value, o.period_measured.uncertainty,
+                    o.period_model, o.residual.value_or(0.0), o.total_delta_T * 1e6);
+      os << line;
+    }
+    os << "\nFit (" << a.fit.method << ", " << a.fit.dof << " degrees of freedom):\n";
+    for (const auto& p : a.fit.parameters) {
+      if (!p.fitted) continue;
+      std::snprintf(line, sizeof line, "  %-14s = %.8g %s %s\n", p.name, p.value,
+                    plus_minus(p.uncertainty, "%.3g").c_str(), p.unit);
+      os << line;
+    }
+    if (a.fit.dof > 0) {
+      std::snprintf(line, sizeof line, "  chi2/dof       = %.4g (probability of a larger chi2: %.3g)\n",
+                    a.fit.chi2 / a.fit.dof, a.fit.probability.value_or(0.0));
+      os << line;
+    }
+    const TextbookFit& t = a.fit.textbook;
+    std::snprintf(line, sizeof line, "Textbook line T^2 = (4 pi^2/g)%s, no corrections: g = %.5f %s m/s^2",
+                  t.length_offset ? "(L + offset)" : " L", t.g.value, plus_minus(t.g.uncertainty, "%.5f").c_str());
+    os << line;
+    if (t.length_offset) {
+      std::snprintf(line, sizeof line, ", offset = %.5f %s m", t.length_offset->value,
+                    plus_minus(t.length_offset->uncertainty, "%.5f").c_str());
+      os << line;
+    }
+    os << "\n";
+  }
+  std::snprintf(line, sizeof line, "g                   = %.5f %s m/s^2", a.g.value,
+                plus_minus(a.g.uncertainty, "%.5f").c_str());
+  os << line;
+  if (a.g_period_and_length_uncertainty) {
+    std::snprintf(line, sizeof line, " (period and length alone: +- %.5f)", *a.g_period_and_length_uncertainty);
+    os << line;
+  }
+  os << "\n";
+  if (a.expected_g) {
+    std::snprintf(line, sizeof line, "expected g          = %.5f +- %.5f m/s^2 (%s)\n", a.expected_g->value,
+                  a.expected_g->uncertainty, a.expected_g->source.c_str());
+    os << line;
+    if (a.z_score) {
+      std::snprintf(line, sizeof line, "difference          = %+.5f m/s^2 = %+.2f combined sigma\n",
+                    a.g.value - a.expected_g->value, *a.z_score);
+      os << line;
+    }
+  }
+  if (!a.budget.empty()) {
+    // A series lists every observation's inputs: the table shows the largest.
+    constexpr std::size_t kShown = 12;
+    os << "\nUncertainty budget of g (largest first):\n";
+    for (std::size_t i = 0; i < a.budget.size() && i < kShown; ++i) {
+      std::snprintf(line, sizeof line, "  %-32s %.6f m/s^2\n", a.budget[i].input.c_str(), a.budget[i].contribution);
+      os << line;
+    }
+    if (a.budget.size() > kShown) os << "  ... and " << a.budget.size() - kShown << " more (JSON: g.budget)\n";
+  }
+  for (const auto& w : scene.warnings) os << "warning: " << w << "\n";
+  for (const auto& w : a.warnings) os << "warning: " << w << "\n";
+  return os.str();
+}
+
+}  // namespace pendulum

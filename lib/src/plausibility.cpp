@@ -1,0 +1,150 @@
+#include "plausibility.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "pendulum/air.hpp"
+#include "pendulum/input_error.hpp"
+#include "pendulum/reduction.hpp"
+#include "pendulum/units.hpp"
+#include "text.hpp"
+
+namespace pendulum {
+
+namespace {
+
+/// A measured period this far from the expected one draws a warning...
+constexpr double kPeriodWarning = 0.05;
+/// ...this factor off, an error: no laboratory's g is 100 times off.
+constexpr double kPeriodFactor = 10.0;
+/// The other reading of an amplitude's unit fits when it brings the period
+/// this close to the expected one.
+constexpr double kPeriodFit = 0.01;
+constexpr double kSmallAngleLab = 20.0;  // (deg)
+
+/// The period this pendulum has at standard gravity, with every correction:
+/// 2 pi sqrt(l/g) T/T0 (Eqs. 3, 6).
+double expected_period(const Apparatus<double>& app, const Observation<double>& o) {
+  return 2.0 * kPi * std::sqrt(o.length / kStandardGravity) * (1.0 + reduce(app, o).total_ratio);
+}
+
+/// "5.3% longer"
+std::string off_by(double ratio) {
+  return format_number(100.0 * std::abs(ratio - 1.0), 2) + "% " + (ratio > 1.0 ? "longer" : "shorter");
+}
+
+void check_first_order(const Apparatus<double>& app, const Observation<double>& o) {
+  const Reduction<double> r = reduce(app, o);
+  for (int i = 0; i < kCorrectionCount; ++i) {
+    const std::optional<double>& x = r.terms[i].ratio;
+    const CorrectionInfo& info = kCorrections[i];
+    if (!x || std::abs(*x) < info.max_ratio) continue;
+    throw InputError(info.part, "got DeltaT/T0 = " + format_number(*x) + " for \"" + info.title + "\" (" +
+                                    info.equation + "); expected |DeltaT/T0| below " +
+                                    format_number(info.max_ratio) + ", where its first-order formula holds");
+  }
+}
+
+void check_observation(ParsedScene& scene, std::size_t k) {
+  const Apparatus<double>& app = scene.apparatus;
+  const Observation<double>& o = scene.observations[k];
+  const ObservationSource& source = scene.sources[k];
+  const std::string& at = source.path;
+  const double expected = expected_period(app, o);
+  const double ratio = o.period / expected;
+  const std::string standard = "standard gravity (" + format_number(kStandardGravity) + " m/s^2)";
+  const std::string at_g = "this pendulum has at " + standard;
+
+  // Degrees and radians mixed up: the period fits the other reading.
+  const std::string& unit = source.amplitude_unit;
+  if (!(std::abs(ratio - 1.0) <= kPeriodWarning) && (unit == "deg" || unit == "rad")) {
+    const std::string other = unit == "deg" ? "rad" : "deg";
+    const double raw = source.amplitude_raw;
+    Observation<double> alt = o;
+    alt.amplitude = raw * find_unit(other, Dimension::angle)->factor;
+    const double alt_ratio = alt.amplitude < kPi ? o.period / expected_period(app, alt) : 0.0;
+    if (std::abs(alt_ratio - 1.0) <= kPeriodFit) {
+      throw InputError(at + "amplitude.unit", "got \"" + unit + "\": at " + format_number(raw) + " " + unit +
+                                                  " the measured period is " + off_by(ratio) + " than the one " +
+                                                  at_g + "; expected \"" + other + "\": at " + format_number(raw) +
+                                                  " " + other + " it is " + off_by(alt_ratio));
+    }
+  }
+
+  // Against the finite-amplitude correction alone, so that a wrong unit is
+  // named as such before it drives a correction out of its range.
+  const double swing =
+      2.0 * kPi * std::sqrt(o.length / kStandardGravity) * (1.0 + finite_amplitude_agm(o.amplitude));
+  if (!(o.period / swing > 1.0 / kPeriodFactor && o.period / swing < kPeriodFactor)) {
+    throw InputError(at + "timing.trials",
+                     "got a period of " + format_number(o.period, 5) + " s, but this pendulum swings in " +
+                         format_number(swing, 5) + " s at " + standard + "; expected them within a factor of " +
+                         format_number(kPeriodFactor) + " (is a unit or oscillations_per_trial wrong?)");
+  }
+
+  check_first_order(app, o);
+
+  if (std::abs(ratio - 1.0) > kPeriodWarning) {
+    scene.warnings.push_back(at + "timing.trials: the measured period " + format_number(o.period, 5) + " s is " +
+                             off_by(ratio) + " than the " + format_number(expected, 5) + " s " + at_g +
+                             "; check the length's unit and oscillations_per_trial");
+  }
+  const double degrees = o.amplitude * 180.0 / kPi;
+  // A series may sweep the amplitude on purpose.
+  if (degrees > kSmallAngleLab && !scene.series) {
+    scene.warnings.push_back(at + "amplitude.value: " + format_number(degrees, 4) +
+                             " deg is over the 20 deg of a small-angle lab; the finite-amplitude "
+                             "correction is exact at any amplitude, but check the amplitude and its unit");
+  }
+}
+
+}  // namespace
+
+void check_first_order(const ParsedScene& scene) {
+  for (const auto& o : scene.observations) check_first_order(scene.apparatus, o);
+}
+
+std::vector<std::string> warn_about_skipped_parts(const ParsedScene& scene, double negligible_fraction) {
+  const Apparatus<double>& app = scene.apparatus;
+  std::vector<std::string> warnings;
+  if (!app.bob) return warnings;  // nothing to estimate the air's share with
+  const bool no_air = !app.air && !app.vacuum;
+  const bool no_mass = app.air && !app.bob->mass;
+  if (!no_air && !no_mass) return warnings;
+  // Room air: ISO 554's 20 degC and the standard atmosphere's 101.325 kPa,
+  // dry; steel at 7850 kg/m^3 (a typical carbon steel's density).
+  Apparatus<double> typical = app;
+  if (no_air) {
+    const double temperature = 293.15;
+    typical.air = Air<double>{101325.0, temperature, kDryAirMolarMass, air_viscosity(temperature)};
+  }
+  if (!typical.bob->mass) typical.bob->mass = 7850.0 * sphere_volume(typical.bob->diameter / 2.0);
+  double worst = 0.0, worst_delta = 0.0, worst_threshold = 0.0;
+  for (std::size_t k = 0; k < scene.observations.size(); ++k) {
+    const Observation<double>& o = scene.observations[k];
+    const Reduction<double> r = reduce(typical, o);
+    const double delta = (*r.terms[static_cast<int>(CorrectionId::buoyancy)].ratio +
+                          *r.terms[static_cast<int>(CorrectionId::added_mass)].ratio) * r.period_ideal;
+    const double threshold = negligible_fraction * scene.observation_uncertainties[k].period;
+    const double size = threshold > 0.0 ? std::abs(delta) / threshold : HUGE_VAL;
+    if (size > worst) worst = size, worst_delta = delta, worst_threshold = threshold;
+  }
+  if (worst < 1.0) return warnings;
+  const std::string change = format_number(worst_delta * 1e6, 3) + " us, over the " +
+                             format_number(worst_threshold * 1e6, 3) + " us below which a correction is negligible";
+  if (no_air) {
+    warnings.push_back("air: not given, so buoyancy and added mass are skipped; room air (20 degC, 101.325 kPa) "
+                       "would change the period by " + change + "; give the air's pressure and temperature, or "
+                       "\"vacuum\"");
+  } else {
+    warnings.push_back("bob.mass: not given, so buoyancy and added mass are skipped; a steel bob (7850 kg/m^3) of "
+                       "this diameter would change the period by " + change + "; give the bob's mass");
+  }
+  return warnings;
+}
+
+void check_plausibility(ParsedScene& scene) {
+  for (std::size_t k = 0; k < scene.observations.size(); ++k) check_observation(scene, k);
+}
+
+}  // namespace pendulum

@@ -1,0 +1,30 @@
+#pragma once
+// Checks that need the corrections: each first-order correction inside its
+// theory's range, each period within reach of the pendulum's, and warnings
+// about what is legal but suspicious (docs/robustness.md).
+
+#include <string>
+#include <vector>
+
+#include "pendulum/parsed_scene.hpp"
+
+namespace pendulum {
+
+/// Throws InputError naming the part whose correction leaves its
+/// first-order range (|DeltaT/T0| >= its limit in kCorrections) for any
+/// observation. The analysis runs it again on a fitted decay.
+void check_first_order(const ParsedScene& scene);
+
+/// Refuses a period no laboratory's g explains and an amplitude in the other
+/// angular unit; warns about what is legal but suspicious. Runs
+/// check_first_order.
+void check_plausibility(ParsedScene& scene);
+
+/// Warnings about corrections skipped for a part the scene does not describe
+/// that would not be negligible for typical values: room air (20 degC,
+/// 101.325 kPa) where the scene gives no air, a steel bob (7850 kg/m^3) of
+/// the given diameter where it gives no bob mass. Negligible as in the
+/// analysis: below `negligible_fraction` of the period's uncertainty.
+std::vector<std::string> warn_about_skipped_parts(const ParsedScene& scene, double negligible_fraction);
+
+}  // namespace pendulum

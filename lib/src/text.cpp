@@ -1,0 +1,27 @@
+#include "text.hpp"
+
+#include <sstream>
+
+namespace pendulum {
+
+std::string one_line(const std::string& s, std::size_t max) {
+  std::string out;
+  for (const unsigned char c : s) {
+    if (c >= 0x20 && c < 0x7f) {
+      out += static_cast<char>(c);
+    } else {
+      static const char hex[] = "0123456789abcdef";
+      out += {'\\', 'x', hex[c >> 4], hex[c & 15]};
+    }
+  }
+  return out.size() > max ? out.substr(0, max - 3) + "..." : out;
+}
+
+std::string format_number(double x, int digits) {
+  std::ostringstream os;
+  os.precision(digits);
+  os << x;
+  return os.str();
+}
+
+}  // namespace pendulum

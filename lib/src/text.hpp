@@ -1,0 +1,16 @@
+#pragma once
+// Numbers and strings in messages: one line of printable ASCII.
+
+#include <cstddef>
+#include <string>
+
+namespace pendulum {
+
+/// `s` fit for a one-line message: ASCII only, control and non-ASCII bytes
+/// as \xNN, cut to `max` characters.
+std::string one_line(const std::string& s, std::size_t max);
+
+/// `x` with `digits` significant digits.
+std::string format_number(double x, int digits = 10);
+
+}  // namespace pendulum

@@ -1,0 +1,267 @@
+// Series of observations of one apparatus (issue 9): the Ceres fit of the
+// period model, its propagation of every input, and its warnings, on
+// synthetic series drawn from the model (lib/include/pendulum/series_simulation.hpp).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "pendulum/analysis.hpp"
+#include "pendulum/period_fit.hpp"
+#include "pendulum/scene_json.hpp"
+#include "pendulum/series_simulation.hpp"
+#include "reference.hpp"
+#include "scene_files.hpp"
+
+using namespace pendulum;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+namespace {
+
+const Apparatus<double>& nelson_olsson_apparatus() {
+  static const ParsedScene scene = parse_scene(test::nelson_olsson_text());
+  return scene.apparatus;
+}
+
+const ParameterResult& parameter(const Analysis& a, const std::string& name) {
+  for (const auto& p : a.fit.parameters) {
+    if (name == p.name) return p;
+  }
+  throw std::logic_error("no parameter " + name);
+}
+
+/// Six lengths, 0.5 m to 3 m, measured to the top of Nelson & Olsson's ball
+/// (so the offset is its radius), 3 deg, a stopwatch's 0.2 ms on each mean
+/// period, 0.5 mm on each length, 0.3 deg on each amplitude.
+SeriesSimulation lengths_series(std::uint64_t seed) {
+  SeriesSimulation sim;
+  sim.g = 9.8034;
+  sim.length_offset = test::kBobRadius;
+  sim.lengths = {0.5, 1.0, 1.5, 2.0, 2.5, 3.0};
+  sim.amplitudes.assign(sim.lengths.size(), 3.0 * test::kDegree);
+  sim.period_sigma = 2e-4;
+  sim.length_sigma = 5e-4;
+  sim.amplitude_sigma = 0.3 * test::kDegree;
+  sim.seed = seed;
+  return sim;
+}
+
+}  // namespace
+
+/// The exact amplitude factor, as the simulation's.
+AnalysisOptions exact() {
+  AnalysisOptions options;
+  options.reduction.amplitude_method = AmplitudeMethod::agm;
+  return options;
+}
+
+TEST_CASE("A noiseless series gives back g and the length offset to 1e-12", "[series]") {
+  SeriesSimulation sim = lengths_series(1);
+  sim.noise = false;
+  const Analysis a = analyse(simulate_series(nelson_olsson_apparatus(), sim), exact());
+  INFO(a.fit.termination);
+  CHECK(a.fit.method == "ceres_levenberg_marquardt");
+  CHECK(a.fit.converged);
+  CHECK_THAT(a.g.value, WithinRel(sim.g, 1e-12));
+  CHECK_THAT(parameter(a, "length_offset").value, WithinAbs(sim.length_offset, 1e-12));
+  CHECK(a.fit.chi2 < 1e-18);
+  CHECK(a.fit.dof == 4);
+  // Every observation is modelled to rounding, and its rows add up to T - T0.
+  for (const auto& o : a.observations) {
+    CHECK_THAT(o.period_model, WithinRel(o.period_measured.value, 1e-14));
+    double sum = o.cross_term_delta_T;
+    for (const auto& row : o.corrections) {
+      if (row.delta_T && row.info.id != std::string("amplitude_cross_term")) sum += *row.delta_T;
+    }
+    CHECK_THAT(o.total_delta_T, WithinRel(sum, 1e-12));
+  }
+  // Noiseless data fit better than their stated noise allows, and are told so.
+  REQUIRE(a.warnings.size() == 1);
+  CHECK_THAT(a.warnings[0], Catch::Matchers::Contains("the periods' uncertainties are too large"));
+}
+
+TEST_CASE("Coverage: +-1 sigma holds the true g and offset 68% of the time", "[series][coverage]") {
+  // 400 series (seeds 100-499). If the propagated uncertainties are right, the
+  // count inside +-1 sigma is Binomial(400, 0.6827): mean 273.1, standard
+  // deviation 9.3; the test allows 3.5 standard deviations. The mean of chi2
+  // is dof = 4 with a standard error of sqrt(2 dof / 400) = 0.14.
+  const int n = 400;
+  int g_in = 0, offset_in = 0;
+  double chi2 = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const SeriesSimulation sim = lengths_series(100 + k);
+    const Analysis a = analyse(simulate_series(nelson_olsson_apparatus(), sim));
+    REQUIRE(a.fit.converged);
+    g_in += std::abs(a.g.value - sim.g) <= *a.g.uncertainty;
+    const ParameterResult& offset = parameter(a, "length_offset");
+    offset_in += std::abs(offset.value - sim.length_offset) <= *offset.uncertainty;
+    chi2 += a.fit.chi2 / n;
+  }
+  INFO("g " << g_in << ", offset " << offset_in << " of " << n << "; mean chi2 " << chi2);
+  CHECK(std::abs(g_in - 273.1) <= 3.5 * 9.3);
+  CHECK(std::abs(offset_in - 273.1) <= 3.5 * 9.3);
+  // The weights hold the lengths' and amplitudes' noise too (effective variance).
+  CHECK_THAT(chi2, WithinAbs(4.0, 5 * 0.14));
+}
+
+TEST_CASE("The uncertainties of a series match finite differences of the fit", "[series][budget]") {
+  // g as a function of each input, by refitting with that input shifted by
+  // +-1e-3 of its uncertainty (central differences), added in quadrature.
+  // Noiseless, so that the propagation's Gauss-Newton linearisation (which
+  // drops the residuals times the model's second derivatives) is exact; with
+  // noise the two differ by the order of the residuals (1.4e-4 relative on
+  // seed 7's series).
+  SeriesSimulation sim = lengths_series(7);
+  sim.noise = false;
+  const ParsedScene scene = simulate_series(nelson_olsson_apparatus(), sim);
+  const Analysis a = analyse(scene, exact());
+  double variance = 0.0;
+  for (std::size_t k = 0; k < scene.observations.size(); ++k) {
+    for (int field = 0; field < 3; ++field) {
+      auto g_at = [&](double h) {
+        ParsedScene t = scene;
+        Observation<double>& o = t.observations[k];
+        (field == 0 ? o.period : field == 1 ? o.length : o.amplitude) += h;
+        return analyse(t, exact()).g.value;
+      };
+      const auto& u = scene.observation_uncertainties[k];
+      const double sigma = field == 0 ? u.period : field == 1 ? u.length : u.amplitude;
+      const double h = 1e-3 * sigma;
+      const double d = (g_at(h) - g_at(-h)) / (2 * h);
+      variance += d * d * sigma * sigma;
+    }
+  }
+  CHECK_THAT(*a.g.uncertainty, WithinRel(std::sqrt(variance), 1e-5));
+  double quadrature = 0.0;
+  for (const auto& b : a.budget) quadrature += b.contribution * b.contribution;
+  CHECK_THAT(std::sqrt(quadrature), WithinRel(*a.g.uncertainty, 1e-12));
+  // From the observations' own inputs, the propagation is the fit's
+  // (J^T W J)^-1 but for the period's second role, the corrections' working
+  // frequency, which the weights leave out: of order DeltaT/T (1e-4).
+  double own = 0.0;
+  for (const auto& b : a.budget) {
+    if (b.input.rfind("observations[", 0) == 0) own += b.contribution * b.contribution;
+  }
+  CHECK_THAT(std::sqrt(own), WithinRel(*parameter(a, "g").uncertainty_from_observations, 1e-4));
+}
+
+TEST_CASE("A series of one observation equals the closed-form reduction", "[series]") {
+  const ParsedScene single = parse_scene(test::nelson_olsson_text());
+  ParsedScene series = single;
+  series.series = true;
+  series.sources[0].path = "observations[0].";
+  const Analysis closed = analyse(single);
+  const Analysis as_series = analyse(series);
+  CHECK(closed.fit.method == "closed_form");
+  CHECK_THAT(as_series.g.value, WithinRel(closed.g.value, 1e-15));
+  CHECK_THAT(*as_series.g.uncertainty, WithinRel(*closed.g.uncertainty, 1e-15));
+
+  // The Ceres fit of the same observation lands on the closed form.
+  const std::vector<AmplitudeChoice> amplitude{cheapest_amplitude_method(single.observations[0].amplitude, 0.0)};
+  const std::vector<double> weights{1.0 / single.observation_uncertainties[0].period};
+  const PeriodFitProblem<SimplePendulum> problem{&single.apparatus, &single.observations, &amplitude, &weights,
+                                                 {true, false}};
+  const PeriodFitSolution fit = fit_periods(problem, {9.0, 0.0});
+  const double zero[2] = {0.0, 0.0};
+  const double g = SimplePendulum::solve_g(zero, single.observations[0], single.apparatus, amplitude[0]);
+  CHECK(fit.converged);
+  CHECK_THAT(fit.parameters[0], WithinRel(g, 1e-12));
+  CHECK(fit.parameters[1] == 0.0);  // held
+}
+
+TEST_CASE("One length swung from 1 to 170 deg gives one g with the exact amplitude factor", "[series][amplitude]") {
+  // A 1 m pendulum in Nelson & Olsson's apparatus timed to 0.1 ms at eight
+  // amplitudes; only g is unknown. The period grows by a factor of 2.44 over
+  // the sweep (2K(sin 85 deg)/pi).
+  SeriesSimulation sim = lengths_series(3);
+  sim.lengths.assign(8, 1.0);
+  sim.amplitudes.clear();
+  for (double deg : {1.0, 10.0, 30.0, 60.0, 90.0, 120.0, 150.0, 170.0}) sim.amplitudes.push_back(deg * test::kDegree);
+  sim.period_sigma = 1e-4;
+  sim.noise = false;
+  sim.fit_offset = false;
+  sim.length_offset = 0.0;
+  const ParsedScene scene = simulate_series(nelson_olsson_apparatus(), sim);
+  const Analysis a = analyse(scene, exact());
+  CHECK_THAT(a.g.value, WithinRel(sim.g, 1e-12));
+  for (const auto& o : a.observations) CHECK(std::abs(*o.residual) < 1e-6);
+
+  // Each amplitude alone gives the same g (the closed form); with theta0^2/16
+  // the 170 deg swing alone would give a g 34% low (2.44^2 against
+  // (1 + 170^2/16 rad^2)^2 = 1.81^2), and the fit cannot reconcile the
+  // amplitudes: chi2 says so.
+  for (const auto& o : scene.observations) {
+    const ReductionOptions agm{AmplitudeMethod::agm};
+    CHECK_THAT(reduce(scene.apparatus, o, agm).g, WithinRel(sim.g, 1e-12));
+  }
+  const ReductionOptions small_angle{AmplitudeMethod::small_angle};
+  // 2K(sin 85 deg)/pi = 2.4393627196739 (an independent AGM in Python,
+  // 30 steps) against 1 + (170 deg)^2/16 = 1.5502152144897: g x 0.40386035740.
+  CHECK_THAT(reduce(scene.apparatus, scene.observations.back(), small_angle).g,
+             WithinRel(sim.g * 0.4038603574051547, 1e-9));
+  AnalysisOptions small;
+  small.reduction.amplitude_method = AmplitudeMethod::small_angle;
+  const Analysis wrong = analyse(scene, small);
+  REQUIRE(wrong.fit.probability);
+  CHECK(*wrong.fit.probability < 1e-6);
+  CHECK(std::abs(wrong.g.value - sim.g) > 10 * *wrong.g.uncertainty);
+  CHECK_FALSE(wrong.warnings.empty());
+}
+
+TEST_CASE("Lengths too close together, or all equal, are named", "[series][warnings]") {
+  SeriesSimulation sim = lengths_series(5);
+  sim.lengths = {1.000, 1.001, 1.002};
+  sim.amplitudes.assign(3, 3.0 * test::kDegree);
+  const Analysis close = analyse(simulate_series(nelson_olsson_apparatus(), sim));
+  const auto named = [](const Analysis& a, const char* text) {
+    return std::any_of(a.warnings.begin(), a.warnings.end(),
+                       [&](const std::string& w) { return w.find(text) != std::string::npos; });
+  };
+  CHECK(named(close, "too close together to separate g from length_offset"));
+
+  // Three identical observations: J^T J has rank 1.
+  sim.lengths = {1.0, 1.0, 1.0};
+  sim.noise = false;
+  const Analysis equal = analyse(simulate_series(nelson_olsson_apparatus(), sim));
+  CHECK_FALSE(equal.g.uncertainty);
+  CHECK(equal.budget.empty());
+  CHECK(named(equal, "covariance is singular"));
+}
+
+TEST_CASE("A period off the model by many sigma, and an implausible chi2, are named", "[series][warnings]") {
+  ParsedScene scene = simulate_series(nelson_olsson_apparatus(), lengths_series(9));
+  scene.observations[2].period *= 1.01;  // a miscounted oscillation in 100
+  const Analysis a = analyse(scene);
+  bool outlier = false, chi2 = false;
+  for (const auto& w : a.warnings) {
+    outlier |= w.rfind("observations[2].timing: the period", 0) == 0;
+    chi2 |= w.rfind("fit: chi2 = ", 0) == 0 && w.find("too small, or the model misses something") != std::string::npos;
+  }
+  CHECK(outlier);
+  CHECK(chi2);
+  REQUIRE(a.fit.probability);
+  CHECK(*a.fit.probability < 1e-3);
+}
+
+TEST_CASE("The bundled series is what its generator writes, and gives back its truth", "[series][data]") {
+  int status = 0;
+  const std::string text = test::command_output(PENDULUM_MAKE_SERIES_SCENE, status);
+  REQUIRE(status == 0);
+  const std::string bundled = test::read_text(std::string(PENDULUM_DATA_DIR) + "/pendulum_lengths_series.json");
+  // Trials are rounded to 0.01 s; another libm may move one by a unit, so
+  // the scenes are compared as read.
+  const ParsedScene generated = parse_scene(text), file = parse_scene(bundled);
+  REQUIRE(generated.observations.size() == file.observations.size());
+  for (std::size_t k = 0; k < file.observations.size(); ++k) {
+    CHECK_THAT(file.observations[k].period, WithinAbs(generated.observations[k].period, 0.01 / 10 / 5 + 1e-12));
+    CHECK(file.observations[k].length == generated.observations[k].length);
+  }
+  // The truth (tests/tools/make_series_scene.cpp): the site's normal gravity
+  // and the ball's radius, each within 3 of the fit's standard uncertainties.
+  const Analysis a = analyse(file);
+  REQUIRE(a.expected_g);
+  CHECK(std::abs(a.g.value - a.expected_g->value) < 3 * *a.g.uncertainty);
+  const ParameterResult& offset = parameter(a, "length_offset");
+  CHECK(std::abs(offset.value - 0.0127) < 3 * *offset.uncertainty);
+}

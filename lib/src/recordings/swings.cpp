@@ -406,7 +406,7 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
   std::vector<double> raw(nc - 1, kNaN);
   out.swings.resize(nc - 1);
   for (std::size_t i = 0; i + 1 < nc; ++i) {
-    Swing& w = out.swings[i];
+    RecordedSwing& w = out.swings[i];
     w.start = out.crossings[i].time;
     w.end = out.crossings[i + 1].time;
     w.peak_time = (w.start + w.end) / 2.0;
@@ -474,7 +474,7 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
         break;
       case SignalKind::gate_states:
         if (options.bob_width && !durations.empty()) {
-          // Swing i runs from passage i to passage i + 1 round a turning point:
+          // RecordedSwing i runs from passage i to passage i + 1 round a turning point:
           // its amplitude is the mean of theirs.
           solve_with_t0([&](std::size_t i, double t0) {
             const double sqrt_gl = options.length ? 2.0 * kPi * *options.length / t0

@@ -59,7 +59,7 @@ struct Crossing {
 
 /// The half (or, for acceleration with gravity, quarter) swing between two
 /// consecutive crossings.
-struct Swing {
+struct RecordedSwing {
   double start = 0.0;   ///< (s)
   double end = 0.0;     ///< (s)
   double peak_time = 0.0;  ///< (s) of the largest |signal|, or the gate passage
@@ -102,7 +102,7 @@ struct SwingAnalysis {
   /// acceleration), zeros otherwise.
   std::array<double, 3> axis{};
   double noise = 0.0;  ///< noise sigma of the signal (signal unit), 0 for gate events
-  std::vector<Swing> swings;
+  std::vector<RecordedSwing> swings;
   PeriodEstimate period;
   /// Small-amplitude period T0 (s) the amplitudes were solved with; NaN
   /// when the recording gives no amplitudes.

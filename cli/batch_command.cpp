@@ -35,7 +35,14 @@ std::vector<Job> gather(const std::vector<std::string>& paths, const std::string
     if (fs::is_directory(p, ec)) {
       std::vector<std::string> files;
       for (const auto& entry : fs::directory_iterator(p, ec)) {
-        if (entry.path().extension() == ".json") files.push_back(entry.path().string());
+        if (entry.path().extension() != ".json") continue;
+        // A named pipe would block the reader forever, a device feed it junk.
+        if (!entry.is_regular_file(ec)) {
+          std::cerr << "pendulum-g: note: skipping " << entry.path().string()
+                    << ": not a regular file (a named pipe, a device or a socket)\n";
+          continue;
+        }
+        files.push_back(entry.path().string());
       }
       std::sort(files.begin(), files.end());
       for (auto& f : files) jobs.push_back({std::move(f), std::nullopt});

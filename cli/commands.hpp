@@ -62,6 +62,9 @@ void write_output(const std::string& path, const std::string& text);
 /// `pendulum-g fit-decay SCENE`: the decay record -> alpha, beta (cli/fit_decay_command.cpp).
 Command add_fit_decay_command(CLI::App& app);
 
+/// `pendulum-g import RECORDING`: a phone, photogate or video-tracker
+/// recording -> period, amplitudes, timing and decay (cli/import_command.cpp).
+Command add_import_command(CLI::App& app);
 /// `pendulum-g clock SCENE`: circular and impulse error of a clock
 /// pendulum (cli/clock_command.cpp).
 Command add_clock_command(CLI::App& app);

@@ -73,6 +73,7 @@ int main(int argc, char** argv) {
       pendulum::cli::add_fit_decay_command(app),
       pendulum::cli::add_batch_command(app),
       pendulum::cli::add_amplitude_command(app),
+      pendulum::cli::add_import_command(app),
       pendulum::cli::add_report_command(app),
       pendulum::cli::add_clock_command(app),
   };

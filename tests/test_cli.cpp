@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -398,6 +399,90 @@ TEST_CASE("reduce names the amplitude method and its error bound", "[cli][amplit
   CHECK(e.at("error_bound_delta_T_s").get<double>() < 1e-18);
   const json series = json::parse(run("reduce --amplitude-method series --series-terms 3 " + kNelsonOlsson).out);
   CHECK(correction(series, "finite_amplitude").at("series_terms") == 3);
+}
+
+TEST_CASE("import: a phone recording becomes timing and decay that a scene takes as they are",
+          "[cli][import]") {
+  const std::string file = std::string(PENDULUM_DATA_DIR) + "/recordings/phyphox_gyroscope.csv";
+  const Run r = run("import " + file);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  const json out = json::parse(r.out);
+  std::vector<std::string> keys;
+  const nlohmann::ordered_json in_order = nlohmann::ordered_json::parse(r.out);
+  for (const auto& item : in_order.items()) keys.push_back(item.key());
+  CHECK(keys == std::vector<std::string>{"format", "periods", "period", "amplitude_range", "timing", "decay"});
+  CHECK(out.at("format") == "phyphox");
+  CHECK(out.at("periods") == 10);
+  const double period = out.at("period").at("value").get<double>();
+  CHECK(out.at("period").at("unit") == "s");
+  CHECK_THAT(out.at("timing").at("trials")[0].get<double>() / out.at("timing").at("oscillations_per_trial").get<int>(),
+             WithinAbs(period, 1e-12));
+  // Pasted into the Nelson-Olsson scene with this pendulum's length and
+  // amplitude, the scene reduces: the period it reads is the recording's.
+  json scene = json::parse(pendulum::test::read_text(kNelsonOlsson));
+  scene["timing"] = out.at("timing");
+  scene["decay"] = out.at("decay");
+  scene["length"] = {{"value", 0.80}, {"unit", "m"}, {"uncertainty", 0.001}};
+  scene["amplitude"] = {{"value", out.at("amplitude_range").at("start")}, {"unit", "deg"}};
+  const std::string scene_file = temporary_file();
+  std::ofstream(scene_file) << scene.dump();
+  const Run reduced = run("reduce " + scene_file);
+  std::remove(scene_file.c_str());
+  INFO(reduced.err);
+  REQUIRE(reduced.status == 0);
+  CHECK_THAT(json::parse(reduced.out).at("period").at("measured").at("value").get<double>(), WithinAbs(period, 1e-9));
+
+  const Run table = run("import --format table " + file);
+  REQUIRE(table.status == 0);
+  CHECK_THAT(table.out, Contains("period") && Contains("+-"));
+  const Run forced = run("import --format tracker " + file);
+  CHECK(forced.status == 1);
+  CHECK(forced.out.empty());
+  CHECK_THAT(forced.err, Contains("does not fit a tracker export"));
+}
+
+TEST_CASE("import: catalogue of bad recordings (tests/bad_recordings/)", "[cli][import][errors]") {
+  const std::string dir = std::string(PENDULUM_TESTS_DIR) + "/bad_recordings/";
+  const json expected = json::parse(pendulum::test::read_text(dir + "expected.json"));
+  REQUIRE(expected.size() >= 8);
+  for (const auto& [name, message] : expected.items()) {
+    INFO(name);
+    const Run r = run("import " + dir + name);
+    CHECK(r.status == 1);
+    CHECK(r.out.empty());
+    CHECK_THAT(r.err, Contains(message.get<std::string>()));
+  }
+  // A huge file (sparse: 2 GiB of nothing on disk) is refused before reading.
+  const std::string huge = temporary_file();
+  std::filesystem::resize_file(huge, std::uintmax_t{2} << 30);
+  const Run big = run("import " + huge);
+  std::remove(huge.c_str());
+  CHECK(big.status == 1);
+  CHECK(big.out.empty());
+  CHECK_THAT(big.err, Contains("bytes; expected at most"));
+  // A named pipe is refused without waiting for a writer.
+  const std::string fifo = temporary_file();
+  std::remove(fifo.c_str());
+  REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+  const Run pipe = run("import " + fifo);
+  std::remove(fifo.c_str());
+  CHECK(pipe.status == 1);
+  CHECK_THAT(pipe.err, Contains("not a regular file"));
+}
+
+TEST_CASE("batch skips a named pipe in a folder instead of waiting on it", "[cli][batch]") {
+  // Regression: a FIFO called x.json in a folder made batch wait forever.
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(temporary_file() + ".d");
+  fs::create_directory(dir);
+  fs::copy_file(kNelsonOlsson, dir / "a.json");
+  REQUIRE(mkfifo((dir / "x.json").c_str(), 0600) == 0);
+  const Run r = run("batch " + dir.string());
+  fs::remove_all(dir);
+  CHECK(r.status == 0);
+  CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 1);
+  CHECK_THAT(r.err, Contains("skipping") && Contains("x.json") && Contains("not a regular file"));
 }
 
 namespace {

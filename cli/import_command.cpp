@@ -1,0 +1,150 @@
+// `pendulum-g import FILE`: a phone, photogate or video-tracker recording ->
+// the period with its uncertainty, the amplitudes, and the `timing` and
+// `decay` parts of a scene (docs/recordings.md).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "pendulum/numeric.hpp"
+#include "pendulum/recordings/swings.hpp"
+#include "pendulum/input_error.hpp"
+
+namespace pendulum::cli {
+namespace {
+
+constexpr double kDeg = 180.0 / kPi;
+
+nlohmann::ordered_json summary_json(const RecordingSummary& r) {
+  const SwingAnalysis& a = r.swings;
+  const int n = a.period.periods;
+  const std::string source = std::string("pendulum-g import: ") + recording_format_name(r.format) +
+                             " recording " + r.file;
+  nlohmann::ordered_json out;
+  out["format"] = recording_format_name(r.format);
+  out["periods"] = n;
+  out["period"] = {{"value", a.period.value}, {"uncertainty", a.period.uncertainty}, {"unit", "s"}};
+  if (a.decay.amplitudes.empty()) {
+    out["amplitude_range"] = nullptr;
+  } else {
+    // start: the scene's `amplitude`, at the first crossing, where the timing starts.
+    const auto [lo, hi] = std::minmax_element(a.decay.amplitudes.begin(), a.decay.amplitudes.end());
+    out["amplitude_range"] = {{"start", a.start_amplitude * kDeg}, {"end", a.end_amplitude * kDeg},
+                              {"min", *lo * kDeg}, {"max", *hi * kDeg}, {"unit", "deg"}};
+  }
+  // One trial of all the periods: its uncertainty is used as is (docs/scene.md).
+  out["timing"] = {{"oscillations_per_trial", n},
+                   {"unit", "s"},
+                   {"trials", {n * a.period.value}},
+                   {"uncertainty", n * a.period.uncertainty},
+                   {"source", source}};
+  if (a.decay.times.size() < 3) {
+    out["decay"] = nullptr;
+  } else {
+    std::vector<double> degrees(a.decay.amplitudes.size());
+    std::transform(a.decay.amplitudes.begin(), a.decay.amplitudes.end(), degrees.begin(),
+                   [](double x) { return x * kDeg; });
+    out["decay"] = {{"data",
+                     {{"time_unit", "s"},
+                      {"times", a.decay.times},
+                      {"amplitude_unit", "deg"},
+                      {"amplitudes", degrees},
+                      {"source", source}}}};
+  }
+  return out;
+}
+
+std::string summary_table(const RecordingSummary& r) {
+  const SwingAnalysis& a = r.swings;
+  std::ostringstream o;
+  char line[200];
+  auto put = [&](const char* fmt, auto... args) {
+    std::snprintf(line, sizeof line, fmt, args...);
+    o << line;
+  };
+  put("%-22s %s (%zu rows, %zu skipped)\n", "recording", r.file.c_str(), r.rows, r.dropped);
+  put("%-22s %s\n", "format", recording_format_name(r.format));
+  put("%-22s %d (%zu crossings)\n", "full periods", a.period.periods, a.crossings.size());
+  put("%-22s %.7f s +- %.2g s\n", "period", a.period.value, a.period.uncertainty);
+  put("%-22s %.3g s rms, lag-1 correlation %.2f\n", "crossing residuals", a.period.residual_rms,
+      a.period.lag1_correlation);
+  if (std::isfinite(a.small_amplitude_period)) {
+    put("%-22s %.7f s\n", "small-amplitude T0", a.small_amplitude_period);
+  }
+  if (!a.decay.amplitudes.empty()) {
+    put("%-22s %.3f deg at %.1f s -> %.3f deg at %.1f s\n", "amplitude", a.decay.amplitudes.front() * kDeg,
+        a.decay.times.front(), a.decay.amplitudes.back() * kDeg, a.decay.times.back());
+  }
+  // The period against amplitude in ten slices of the record.
+  const auto& c = a.period_curve;
+  const std::size_t slices = std::min<std::size_t>(10, c.size());
+  put("\n%10s %14s %14s\n", "time (s)", "amplitude (deg)", "period (s)");
+  for (std::size_t k = 0; k < slices; ++k) {
+    const std::size_t i = k * c.size() / slices, j = (k + 1) * c.size() / slices;
+    double t = 0.0, amp = 0.0, per = 0.0;
+    for (std::size_t m = i; m < j; ++m) t += c[m].time, amp += c[m].amplitude, per += c[m].period;
+    const double count = static_cast<double>(j - i);
+    if (std::isfinite(amp)) {
+      put("%10.1f %14.3f %14.6f\n", t / count, amp / count * kDeg, per / count);
+    } else {
+      put("%10.1f %14s %14.6f\n", t / count, "-", per / count);
+    }
+  }
+  return o.str();
+}
+
+}  // namespace
+
+Command add_import_command(CLI::App& app) {
+  struct Options {
+    std::string file;
+    std::vector<std::string> formats;
+    std::optional<double> bob_width;
+    std::optional<double> length;
+  };
+  auto o = std::make_shared<Options>();
+  auto* cmd = app.add_subcommand(
+      "import", "Reduce a phone, photogate or video-tracker recording to a period, amplitudes and the "
+                "timing and decay parts of a scene (docs/recordings.md)");
+  cmd->add_option("recording", o->file, "Recording file (CSV or tab-separated text)")->required();
+  cmd->add_option("--format", o->formats,
+                  "The recording's family (auto, phyphox, vernier, pasco, plain, tracker; default: from the "
+                  "header) and/or the output (json, the default, or table); may be given twice")
+      ->check(CLI::IsMember({"auto", "phyphox", "vernier", "pasco", "plain", "tracker", "json", "table"}))
+      ->take_all();
+  cmd->add_option("--bob-width-m", o->bob_width,
+                  "Photogates: the bob's width across the beam (m), for the amplitudes")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--length-m", o->length,
+                  "Photogates: pivot to bob centre (m); without it the amplitudes take g as standard gravity")
+      ->check(CLI::PositiveNumber);
+
+  return {cmd, [o] {
+    RecordingFormat format = RecordingFormat::automatic;
+    bool table = false;
+    for (const auto& f : o->formats) {
+      if (f == "table" || f == "json") {
+        table = f == "table";
+        continue;
+      }
+      for (auto candidate : {RecordingFormat::automatic, RecordingFormat::phyphox, RecordingFormat::vernier,
+                             RecordingFormat::pasco, RecordingFormat::plain, RecordingFormat::tracker}) {
+        if (f == recording_format_name(candidate)) format = candidate;
+      }
+    }
+    SwingOptions options;
+    options.bob_width = o->bob_width;
+    options.length = o->length;
+    const RecordingSummary summary = analyse_recording(o->file, format, options);
+    std::cout << (table ? summary_table(summary) : summary_json(summary).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+    return 0;
+  }};
+}
+
+}  // namespace pendulum::cli

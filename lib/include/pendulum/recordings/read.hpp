@@ -1,0 +1,78 @@
+#pragma once
+/// \file recordings/read.hpp
+/// \brief Reading the files that phones, photogates and video trackers
+/// export (docs/recordings.md): the family is recognised from the header,
+/// the delimiter (comma, tab, semicolon) and the decimal mark (point or
+/// comma) from the text. One pass over the text, numbers by std::from_chars,
+/// no allocation per cell.
+///
+/// Header layouts (docs/recordings.md, "Formats", says where each came from):
+///  - phyphox: "Time (s)","Gyroscope x (rad/s)",... (Gyroscope),
+///    "Acceleration x (m/s^2)" (Acceleration with g), "Linear Acceleration x
+///    (m/s^2)", "Rotation x (rad/s)" (the Pendulum experiment's raw data).
+///  - Vernier (Graphical Analysis, Logger Pro): "Latest: Time (s)",
+///    "Latest: GateState" (or "Run 1: ...", "Gate State"), one row per gate
+///    change with the state, 0 or 1; "Period (s)" where present.
+///  - PASCO Capstone: "Time (s) Run #1" and a measurement of run 1: "Angle
+///    (rad) Run #1", "Angular Velocity (rad/s) Run #1", "State Run #1".
+///  - plain: one column of blocking times, header optional ("t (ms)").
+///  - Tracker: a line naming the track ("mass A"), then "t","x","y",...
+///    or "t","θ"/"theta" or "ω"/"omega".
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace pendulum {
+
+/// The family of a recording; `automatic` recognises it from the header.
+enum class RecordingFormat { automatic, phyphox, vernier, pasco, plain, tracker };
+
+/// "auto", "phyphox", "vernier", "pasco", "plain", "tracker".
+const char* recording_format_name(RecordingFormat format);
+
+/// What the channels of a recording measure.
+enum class SignalKind {
+  angular_rate,    ///< rad/s, one to three axes of a gyroscope
+  acceleration,    ///< m/s^2, three axes including gravity (swings at 2f)
+  linear_acceleration,  ///< m/s^2, gravity removed (swings at f)
+  angle,           ///< rad, the pendulum's angle (tracked or a rotary sensor)
+  position,        ///< x, y of the bob in any length unit (video track)
+  gate_states,     ///< gate state (0 or 1) per event row; the state held for the shorter total time is "blocked"
+  blocking_times,  ///< times at which the gate was blocked
+};
+
+/// A recording in SI units, samples in time order.
+struct Recording {
+  RecordingFormat format = RecordingFormat::automatic;
+  SignalKind kind = SignalKind::angular_rate;
+  std::vector<std::string> channel_names;  ///< as in the header
+  std::vector<double> time;                ///< (s), strictly increasing
+  /// One vector per channel, as long as `time` (unit by `kind`).
+  std::vector<std::vector<double>> channels;
+  /// A period column of a photogate's pendulum timing (s), its non-empty
+  /// cells in order; empty when the file has none.
+  std::vector<double> periods;
+  std::size_t rows = 0;     ///< data rows read
+  std::size_t dropped = 0;  ///< rows skipped for an empty or NaN cell
+};
+
+/// Limits that keep a wrong file from eating the memory or the time.
+struct RecordingLimits {
+  std::size_t max_bytes = std::size_t{1} << 30;  ///< 1 GiB: 8 hours at 500 Hz
+};
+
+/// Reads a recording from its text. `file` names it in errors, which are
+/// pendulum::InputError with path "file:line:column" (column in bytes, from
+/// 1): an unrecognised header, mixed delimiters, a truncated or overlong
+/// row, a cell that is not a number, time going backwards, a binary file.
+Recording parse_recording(std::string_view text, const std::string& file,
+                          RecordingFormat format = RecordingFormat::automatic);
+
+/// Reads the file at `path` (at most limits.max_bytes; a larger file, a
+/// directory, a device or a pipe is refused) and parses it.
+Recording read_recording(const std::string& path, RecordingFormat format = RecordingFormat::automatic,
+                         const RecordingLimits& limits = {});
+
+}  // namespace pendulum

@@ -1,0 +1,600 @@
+#include "pendulum/recordings/swings.hpp"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "pendulum/amplitude.hpp"
+#include "pendulum/numeric.hpp"
+#include "pendulum/input_error.hpp"
+#include "pendulum/swing_energy.hpp"
+#include "huge_pages.hpp"
+
+namespace pendulum {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// The swing signal: one value per sample, zero on average.
+struct Signal {
+  std::vector<double> s;
+  int crossings_per_period = 2;
+  std::array<double, 3> axis{};
+  double offset = 0.0;  ///< the mean removed (|a| for acceleration)
+  bool has_amplitude = true;
+};
+
+/// Projection on the principal axis of the mean-removed vectors: one pass
+/// for the sums (shifted by the first sample, against cancellation), one for
+/// the projection.
+Signal principal_axis(const Recording& r) {
+  const std::size_t m = std::min<std::size_t>(r.channels.size(), 3), n = r.time.size();
+  std::array<const double*, 3> x{};
+  std::array<double, 3> shift{}, sum{};
+  std::array<double, 9> cross{};
+  for (std::size_t j = 0; j < m; ++j) x[j] = r.channels[j].data(), shift[j] = x[j][0];
+  for (std::size_t k = 0; k < n; ++k) {
+    double d[3] = {0.0, 0.0, 0.0};
+    for (std::size_t j = 0; j < m; ++j) d[j] = x[j][k] - shift[j], sum[j] += d[j];
+    for (std::size_t a = 0; a < m; ++a) {
+      for (std::size_t b = a; b < m; ++b) cross[3 * a + b] += d[a] * d[b];
+    }
+  }
+  Eigen::MatrixXd cov(m, m);
+  Eigen::VectorXd mean(m);
+  for (std::size_t a = 0; a < m; ++a) {
+    mean[a] = shift[a] + sum[a] / n;
+    for (std::size_t b = a; b < m; ++b) cov(a, b) = cov(b, a) = cross[3 * a + b] / n - sum[a] * sum[b] / (double(n) * n);
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(cov);
+  Eigen::VectorXd v = eig.eigenvectors().col(m - 1);  // largest eigenvalue last
+  Eigen::Index largest = 0;
+  v.cwiseAbs().maxCoeff(&largest);
+  if (v[largest] < 0.0) v = -v;  // the sign is arbitrary: make it reproducible
+  Signal sig;
+  for (std::size_t j = 0; j < m; ++j) sig.axis[j] = v[j];
+  const double offset = v.dot(mean);
+  sig.s.reserve(n);
+  detail::huge_pages(sig.s);
+  sig.s.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    double y = -offset;
+    for (std::size_t j = 0; j < m; ++j) y += v[j] * x[j][k];
+    sig.s[k] = y;
+  }
+  return sig;
+}
+
+Signal remove_mean(std::vector<double> s) {
+  double sum = 0.0;
+  for (double x : s) sum += x;
+  const double mean = s.empty() ? 0.0 : sum / s.size();
+  for (double& x : s) x -= mean;
+  Signal sig;
+  sig.s = std::move(s);
+  sig.offset = mean;
+  return sig;
+}
+
+/// The angle about the centre of the circle through a video track (Kasa's
+/// algebraic fit: x^2 + y^2 + D x + E y + F = 0 by least squares); the
+/// projection on the principal axis, without amplitudes, when the track is
+/// too straight for a centre.
+Signal track_angle(const Recording& r) {
+  const auto& x = r.channels[0];
+  const auto& y = r.channels[1];
+  const std::size_t n = x.size();
+  double mx = 0.0, my = 0.0;
+  for (std::size_t k = 0; k < n; ++k) mx += x[k], my += y[k];
+  mx /= n, my /= n;
+  Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d atb = Eigen::Vector3d::Zero();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Eigen::Vector3d a(x[k] - mx, y[k] - my, 1.0);
+    const double b = -((x[k] - mx) * (x[k] - mx) + (y[k] - my) * (y[k] - my));
+    ata += a * a.transpose();
+    atb += a * b;
+  }
+  const Eigen::Vector3d c = ata.ldlt().solve(atb);
+  double cx = -c[0] / 2.0, cy = -c[1] / 2.0;
+  const double radius2 = cx * cx + cy * cy - c[2];
+  double spread = 0.0;
+  for (std::size_t k = 0; k < n; ++k) spread = std::max(spread, std::hypot(x[k] - mx, y[k] - my));
+  // Kasa's fit underestimates the radius of a short noisy arc; Gauss-Newton
+  // on the geometric distances |p - c| - R removes that bias.
+  double radius = std::sqrt(radius2);
+  for (int iter = 0; iter < 20 && std::isfinite(radius); ++iter) {
+    Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d jtr = Eigen::Vector3d::Zero();
+    for (std::size_t k = 0; k < n; ++k) {
+      const double dx = x[k] - mx - cx, dy = y[k] - my - cy, d = std::hypot(dx, dy);
+      const Eigen::Vector3d j(-dx / d, -dy / d, -1.0);
+      jtj += j * j.transpose();
+      jtr += j * (d - radius);
+    }
+    const Eigen::Vector3d step = jtj.ldlt().solve(-jtr);
+    cx += step[0], cy += step[1], radius += step[2];
+    if (step.norm() < 1e-12 * radius) break;
+  }
+  if (!(radius > 0.0) || !std::isfinite(radius) || radius > 1e3 * spread) {
+    Signal sig = principal_axis(r);
+    sig.has_amplitude = false;
+    return sig;
+  }
+  // Angles of the points seen from the centre, relative to the mean point's.
+  const double phi0 = std::atan2(-cy, -cx);
+  std::vector<double> angle(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    angle[k] = std::remainder(std::atan2(y[k] - my - cy, x[k] - mx - cx) - phi0, 2.0 * kPi);
+  }
+  return remove_mean(std::move(angle));
+}
+
+Signal make_signal(const Recording& r) {
+  switch (r.kind) {
+    case SignalKind::angular_rate:
+    case SignalKind::linear_acceleration: return principal_axis(r);
+    case SignalKind::acceleration: {
+      std::vector<double> magnitude(r.time.size());
+      for (std::size_t k = 0; k < magnitude.size(); ++k) {
+        double sum = 0.0;
+        for (const auto& c : r.channels) sum += c[k] * c[k];
+        magnitude[k] = std::sqrt(sum);
+      }
+      Signal sig = remove_mean(std::move(magnitude));
+      sig.crossings_per_period = 4;
+      return sig;
+    }
+    case SignalKind::angle: return remove_mean(r.channels[0]);
+    case SignalKind::position: return track_angle(r);
+    case SignalKind::gate_states:
+    case SignalKind::blocking_times: break;
+  }
+  return {};
+}
+
+/// Noise sigma from second differences: their median absolute value over
+/// 0.6745 sqrt(6) for white noise; a smooth swing adds little to them.
+double noise_sigma(const std::vector<double>& s) {
+  if (s.size() < 3) return 0.0;
+  // At most 2^16 differences, evenly spread: the median needs no more.
+  const std::size_t step = std::max<std::size_t>(1, (s.size() - 2) >> 16);
+  std::vector<double> d;
+  d.reserve((s.size() - 2) / step + 1);
+  for (std::size_t k = 1; k + 1 < s.size(); k += step) d.push_back(std::fabs(s[k + 1] - 2.0 * s[k] + s[k - 1]));
+  auto mid = d.begin() + d.size() / 2;
+  std::nth_element(d.begin(), mid, d.end());
+  return *mid / (0.6745 * std::sqrt(6.0));
+}
+
+/// Least-squares line s = a + b (t - tm) through samples [i, j]; its zero.
+Crossing line_zero(const std::vector<double>& t, const std::vector<double>& s, std::size_t i, std::size_t j) {
+  const double n = static_cast<double>(j - i + 1);
+  double tm = 0.0, sm = 0.0;
+  for (std::size_t k = i; k <= j; ++k) tm += t[k], sm += s[k];
+  tm /= n, sm /= n;
+  double stt = 0.0, sts = 0.0;
+  for (std::size_t k = i; k <= j; ++k) {
+    stt += (t[k] - tm) * (t[k] - tm);
+    sts += (t[k] - tm) * (s[k] - sm);
+  }
+  const double slope = sts / stt;
+  return {tm - sm / slope, slope, static_cast<int>(j - i + 1)};
+}
+
+/// The extremum of a half swing between crossings at ta and tb: a quartic
+/// least-squares polynomial through the samples within the middle third of
+/// [ta, tb] (+-60 deg of phase about its centre, where the swing is
+/// symmetric), maximised by Newton's method from the centre. The window is
+/// fixed by the crossings, not by the noisy samples, so noise does not bias
+/// the peak upward as picking the largest sample would; a quartic follows a
+/// cosine over +-60 deg to 2e-4 of its peak. Returns the time and |value|.
+std::pair<double, double> peak(const std::vector<double>& t, const std::vector<double>& s, std::size_t i,
+                               std::size_t j, double ta, double tb) {
+  const double mid = (ta + tb) / 2.0, half = (tb - ta) / 6.0;
+  // Normal equations from power sums: sum u^0..u^8 and sum s u^0..u^4.
+  std::array<double, 9> pu{};
+  std::array<double, 5> ps{};
+  int used = 0;
+  const auto first = std::lower_bound(t.begin() + i, t.begin() + j + 1, mid - half);
+  for (std::size_t k = first - t.begin(); k <= j && t[k] <= mid + half; ++k) {
+    const double u = (t[k] - mid) / half;  // -1 .. 1 inside the window
+    double power = 1.0;
+    for (int q = 0; q < 5; ++q, power *= u) pu[q] += power, ps[q] += power * s[k];
+    for (int q = 5; q < 9; ++q, power *= u) pu[q] += power;
+    ++used;
+  }
+  if (used < 7) return {mid, kNaN};  // too few samples for a peak
+  Eigen::Matrix<double, 5, 5> ata;
+  for (int a = 0; a < 5; ++a) {
+    for (int b = 0; b < 5; ++b) ata(a, b) = pu[a + b];
+  }
+  const Eigen::Matrix<double, 5, 1> c = ata.ldlt().solve(Eigen::Map<const Eigen::Matrix<double, 5, 1>>(ps.data()));
+  double u = 0.0;
+  for (int iter = 0; iter < 8; ++iter) {
+    const double d1 = c[1] + u * (2.0 * c[2] + u * (3.0 * c[3] + u * 4.0 * c[4]));
+    const double d2 = 2.0 * c[2] + u * (6.0 * c[3] + u * 12.0 * c[4]);
+    if (d2 == 0.0) break;
+    u = std::clamp(u - d1 / d2, -1.0, 1.0);
+  }
+  const double value = c[0] + u * (c[1] + u * (c[2] + u * (c[3] + u * c[4])));
+  return {mid + u * half, std::fabs(value)};
+}
+
+/// Crossings of a sampled signal with adaptive hysteresis.
+std::vector<Crossing> find_crossings(const std::vector<double>& t, const Signal& sig, double noise,
+                                     double fraction, std::vector<std::size_t>& at) {
+  const auto& s = sig.s;
+  double rms = 0.0;
+  for (double x : s) rms += x * x;
+  rms = std::sqrt(rms / s.size());
+  const double floor = 5.0 * noise;
+  double h = std::max(fraction * std::sqrt(2.0) * rms, floor);
+  std::vector<Crossing> out;
+  int state = 0;              // -1: beyond -h, +1: beyond +h
+  std::size_t last_beyond = 0;  // last sample beyond the threshold of `state`
+  double half_peak = 0.0;
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const double x = s[k];
+    half_peak = std::max(half_peak, std::fabs(x));
+    if (x < -h || x > h) {
+      const int side = x > 0 ? 1 : -1;
+      if (state == -side) {
+        out.push_back(line_zero(t, s, last_beyond, k));
+        at.push_back(last_beyond);
+        h = std::max(fraction * half_peak, floor);
+        half_peak = 0.0;
+      }
+      state = side;
+      last_beyond = k;
+    }
+  }
+  return out;
+}
+
+/// Gate passages: the middle of each blocking, and its duration (NaN for
+/// bare blocking times).
+std::vector<Crossing> gate_passages(const Recording& r, std::vector<double>& durations) {
+  std::vector<Crossing> out;
+  if (r.kind == SignalKind::blocking_times) {
+    for (double t : r.time) out.push_back({t, 0.0, 0});
+    durations.assign(out.size(), kNaN);
+    return out;
+  }
+  // A passage blocks the beam for a small part of the swing. Exporters differ
+  // in which state they call blocked: the state held for less time overall is.
+  const auto& state = r.channels[0];
+  double time_high = 0.0, time_low = 0.0;
+  for (std::size_t k = 0; k + 1 < r.time.size(); ++k) {
+    (state[k] > 0.5 ? time_high : time_low) += r.time[k + 1] - r.time[k];
+  }
+  const bool high_is_blocked = time_high <= time_low;
+  std::optional<double> blocked_at;
+  for (std::size_t k = 0; k < r.time.size(); ++k) {
+    const bool blocked = (state[k] > 0.5) == high_is_blocked;
+    if (blocked && !blocked_at) blocked_at = r.time[k];
+    if (!blocked && blocked_at) {
+      out.push_back({(*blocked_at + r.time[k]) / 2.0, 0.0, 0});
+      durations.push_back(r.time[k] - *blocked_at);
+      blocked_at.reset();
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+PeriodEstimate fit_crossing_times(const std::vector<Crossing>& c, int per_period,
+                                  const std::vector<double>& amplitudes) {
+  const std::size_t n = c.size();
+  // The index: i, or the amplitude-weighted u_{i+1} = u_i + 1 + DeltaT/T0(theta_i)
+  // (Eq. 8, exact), in which the crossing times of a decaying swing lie on a line.
+  std::vector<double> u(n);
+  const bool weighted_index = amplitudes.size() + 1 == n;
+  for (std::size_t i = 1; i < n; ++i) {
+    u[i] = u[i - 1] + 1.0 + (weighted_index ? finite_amplitude_agm(amplitudes[i - 1]) : 0.0);
+  }
+  const double centre = (u[0] + u[n - 1]) / 2.0;  // mid-range: the quadratic term then drops out of the mean
+  // Without the amplitude-weighted index, a cubic term too: the finite-amplitude
+  // period drifts with theta0^2, whose curvature puts a cubic of some 20 us into
+  // 20 s of crossings (a photogate times them to a few us).
+  const bool cubic = !weighted_index && n >= 12;
+  const int q = cubic ? 5 : 4;  // parameters: 1, x, x^2, (x^3,) (-1)^i
+  Eigen::MatrixXd xtwx = Eigen::MatrixXd::Zero(q, q);
+  Eigen::VectorXd xtwt = Eigen::VectorXd::Zero(q);
+  std::vector<double> w(n, 1.0);
+  if (c[0].samples > 0) {
+    double mean = 0.0;
+    for (std::size_t i = 0; i < n; ++i) mean += (w[i] = c[i].slope * c[i].slope * c[i].samples);
+    for (double& x : w) x /= mean / n;
+  }
+  const double t0 = c[0].time;
+  auto row = [&](std::size_t i) {
+    const double x = u[i] - centre;
+    Eigen::VectorXd r(q);
+    r[0] = 1.0, r[1] = x, r[2] = x * x, r[3] = i % 2 ? -1.0 : 1.0;
+    if (cubic) r[4] = x * x * x;
+    return r;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::VectorXd r = row(i);
+    xtwx += w[i] * r * r.transpose();
+    xtwt += w[i] * r * (c[i].time - t0);
+  }
+  const Eigen::MatrixXd inv = xtwx.inverse();
+  const Eigen::VectorXd beta = inv * xtwt;
+  std::vector<double> z(n);
+  double ssr = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    z[i] = (c[i].time - t0 - row(i).dot(beta)) * std::sqrt(w[i]);
+    ssr += z[i] * z[i];
+  }
+  double lag = 0.0;
+  for (std::size_t i = 0; i + 1 < n; ++i) lag += z[i] * z[i + 1];
+  PeriodEstimate p;
+  p.lag1_correlation = ssr > 0.0 ? lag / ssr : 0.0;
+  const double rho = std::min(p.lag1_correlation, 0.95);
+  p.inflation = rho > 0.0 ? (1.0 + rho) / (1.0 - rho) : 1.0;
+  const double s2 = ssr / (static_cast<double>(n) - q);
+  // The mean period over the crossings: the fitted curve's rise from the
+  // first to the last, per period. About the centre, x_n = -x_0 = X: the
+  // quadratic term adds nothing, the cubic X^2 times its coefficient.
+  const double half_range = (u[n - 1] - u[0]) / 2.0;
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(q);
+  g[1] = 1.0;
+  if (cubic) g[4] = half_range * half_range;
+  const double scale = per_period * (u[n - 1] - u[0]) / (n - 1.0);
+  p.value = scale * g.dot(beta);
+  p.uncertainty = scale * std::sqrt(s2 * g.dot(inv * g) * p.inflation);
+  p.residual_rms = std::sqrt(s2);
+  p.periods = static_cast<int>((n - 1) / per_period);
+  return p;
+}
+
+namespace {
+
+/// Throws unless sin(theta0/2) = `sine` < 1: a peak rate or speed beyond
+/// the energy of 180 deg means the pendulum went over the top.
+void require_below_top(double sine, const std::string& file) {
+  if (!(sine < 1.0)) {
+    throw InputError(file, "a swing's peak rate means an amplitude of 180 deg or more "
+                           "(the pendulum went over the top); expected a swinging pendulum");
+  }
+}
+
+}  // namespace
+
+SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const SwingOptions& options) {
+  SwingAnalysis out;
+  std::vector<std::size_t> at;  // first sample of each crossing's window
+  std::vector<double> durations;
+  Signal sig;
+  const bool events = r.kind == SignalKind::gate_states || r.kind == SignalKind::blocking_times;
+  if (events) {
+    out.crossings = gate_passages(r, durations);
+  } else {
+    if (r.time.size() < 16) {
+      throw InputError(file, std::to_string(r.time.size()) + " samples; expected a recording of several swings");
+    }
+    sig = make_signal(r);
+    out.axis = sig.axis;
+    out.crossings_per_period = sig.crossings_per_period;
+    out.noise = noise_sigma(sig.s);
+    double peak_abs = 0.0;
+    for (double x : sig.s) peak_abs = std::max(peak_abs, std::fabs(x));
+    if (!(peak_abs > 10.0 * out.noise) || peak_abs == 0.0) {
+      throw InputError(file, "no oscillation: the signal's largest excursion is " + std::to_string(peak_abs) +
+                                 ", within 10 times its noise (" + std::to_string(out.noise) + ")");
+    }
+    out.crossings = find_crossings(r.time, sig, out.noise, options.hysteresis_fraction, at);
+  }
+  const int cpp = out.crossings_per_period;
+  const int periods = out.crossings.empty() ? 0 : static_cast<int>((out.crossings.size() - 1) / cpp);
+  if (periods < 3 || out.crossings.size() < 7) {
+    throw InputError(file, "found " + std::to_string(out.crossings.size()) + " crossings (" +
+                               std::to_string(periods) + " full periods); expected at least three swings");
+  }
+  out.period = fit_crossing_times(out.crossings, cpp);
+  if (!(out.period.value > 0.0) || !std::isfinite(out.period.uncertainty)) {
+    throw InputError(file, "no regular oscillation: the crossing times give no period");
+  }
+
+  // Swings and their raw peaks (rate, angle, |a| - mean, or speed).
+  const std::size_t nc = out.crossings.size();
+  std::vector<double> raw(nc - 1, kNaN);
+  out.swings.resize(nc - 1);
+  for (std::size_t i = 0; i + 1 < nc; ++i) {
+    RecordedSwing& w = out.swings[i];
+    w.start = out.crossings[i].time;
+    w.end = out.crossings[i + 1].time;
+    w.peak_time = (w.start + w.end) / 2.0;
+    if (!events) {
+      const auto [tp, value] = peak(r.time, sig.s, at[i], at[i + 1], w.start, w.end);
+      w.peak_time = tp;
+      raw[i] = value;
+    }
+  }
+  // Amplitudes (rad), by kind.
+  std::vector<double> theta(nc - 1, kNaN);
+  out.small_amplitude_period = kNaN;
+  auto solve_with_t0 = [&](auto amplitude_of) {  // theta0 of swing i given T0, NaN if unknown
+    const double T = out.period.value;
+    double t0 = T;
+    for (int iter = 0; iter < 5; ++iter) {
+      double mean_correction = 0.0;
+      int count = 0;
+      for (std::size_t i = 0; i < theta.size(); ++i) {
+        theta[i] = amplitude_of(i, t0);
+        if (std::isfinite(theta[i])) mean_correction += finite_amplitude_agm(theta[i]), ++count;
+      }
+      t0 = T / (1.0 + (count ? mean_correction / count : 0.0));
+    }
+    out.small_amplitude_period = t0;
+  };
+  // A mean removed from a record of no whole number of swings leaves an
+  // offset delta that alternates in sign between swings: |p_i| = A_i +- delta.
+  // The weights 1/4, 1/2, 1/4 over three swings cancel it (and keep a linear
+  // decay centred); the first and last swing get no amplitude.
+  if (!events && r.kind != SignalKind::acceleration) {
+    std::vector<double> smooth(raw.size(), kNaN);
+    for (std::size_t i = 1; i + 1 < raw.size(); ++i) smooth[i] = (raw[i - 1] + 2.0 * raw[i] + raw[i + 1]) / 4.0;
+    raw = smooth;
+  }
+  // Amplitudes (rad), by kind; those from a rate or a speed need T0, hence the period.
+  auto amplitudes = [&] {
+    switch (r.kind) {
+      case SignalKind::angular_rate:
+        solve_with_t0([&](std::size_t i, double t0) {
+        if (!std::isfinite(raw[i])) return kNaN;
+        require_below_top(raw[i] * t0 / (4.0 * kPi), file);
+        return amplitude_from_peak_rate(raw[i], t0);
+      });
+        break;
+      case SignalKind::linear_acceleration:
+        // The tangential acceleration at a turning point is g sin theta0
+        // (standard g: a local g 0.3 % off moves theta0 by 0.3 %).
+        for (std::size_t i = 0; i < raw.size(); ++i) {
+          if (std::isfinite(raw[i])) theta[i] = amplitude_from_turning_acceleration(std::min(raw[i], kStandardGravity), kStandardGravity);
+        }
+        break;
+      case SignalKind::angle:
+      case SignalKind::position:
+        if (sig.has_amplitude) theta = raw;
+        break;
+      case SignalKind::acceleration:
+        // Quarter swings alternate: |a| peaks at the bottom, g(3 - 2 cos theta0),
+        // and dips at the turning points, g cos theta0; the ratio needs no g.
+        for (std::size_t i = 1; i + 1 < raw.size(); ++i) {
+          if (sig.s[(at[i] + at[i + 1]) / 2] < 0.0) continue;  // a dip, not a bottom
+          const double ratio = (sig.offset + raw[i]) / (sig.offset - (raw[i - 1] + raw[i + 1]) / 2.0);
+          theta[i] = amplitude_from_acceleration_ratio(std::max(ratio, 1.0));
+        }
+        break;
+      case SignalKind::gate_states:
+        if (options.bob_width && !durations.empty()) {
+          // RecordedSwing i runs from passage i to passage i + 1 round a turning point:
+          // its amplitude is the mean of theirs.
+          solve_with_t0([&](std::size_t i, double t0) {
+            const double sqrt_gl = options.length ? 2.0 * kPi * *options.length / t0
+                                                  : kStandardGravity * t0 / (2.0 * kPi);
+            double sum = 0.0;
+            for (std::size_t k : {i, i + 1}) {
+              const double v = *options.bob_width / durations[k];
+              require_below_top(v / (2.0 * sqrt_gl), file);
+              sum += amplitude_from_bottom_speed(v, sqrt_gl);
+            }
+            return sum / 2.0;
+          });
+        }
+        break;
+      case SignalKind::blocking_times: break;
+    }
+  };
+  amplitudes();
+  // Refit with the amplitude-weighted index once the swings have amplitudes:
+  // a long decaying record's crossing times then lie on a line instead of a
+  // curve no quadratic fits. The index takes a smooth amplitude, a polynomial
+  // in time fitted to log theta: each swing's own amplitude would carry its noise
+  // into the index as a random walk, which the period then inherits.
+  std::vector<double> tk, lk;
+  for (std::size_t i = 0; i < theta.size(); ++i) {
+    if (std::isfinite(theta[i]) && theta[i] > 0.0) tk.push_back(out.swings[i].peak_time), lk.push_back(std::log(theta[i]));
+  }
+  out.start_amplitude = out.end_amplitude = kNaN;
+  if (tk.size() >= 8 && tk.size() * 2 >= theta.size() / (cpp / 2)) {
+    const double mid = (tk.front() + tk.back()) / 2.0, half = (tk.back() - tk.front()) / 2.0;
+    // The order grows with the record: the value at the ends of a fit of
+    // order q through n noisy points scatters as (q + 1)/sqrt(n), and a short
+    // record's log theta is a line (Eq. 25 over a few per cent of decay).
+    const int order = tk.size() >= 400 ? 3 : tk.size() >= 100 ? 2 : 1;
+    Eigen::MatrixXd a(tk.size(), order + 1);
+    for (std::size_t k = 0; k < tk.size(); ++k) {
+      for (int j = 0; j <= order; ++j) a(k, j) = std::pow((tk[k] - mid) / half, j);
+    }
+    const Eigen::Map<const Eigen::VectorXd> y(lk.data(), lk.size());
+    const Eigen::VectorXd c = a.colPivHouseholderQr().solve(y);
+    // Covariance of the coefficients, scaled by the residual variance; the
+    // 1/4, 1/2, 1/4 average over neighbouring swings (above) leaves the slow
+    // part of the noise as it was but shrinks the residuals' variance by
+    // 1/16 + 1/4 + 1/16 = 3/8: the factor 8/3 restores it.
+    const double dof = static_cast<double>(tk.size()) - (order + 1);
+    const double averaged = !events && r.kind != SignalKind::acceleration ? 8.0 / 3.0 : 1.0;
+    const Eigen::MatrixXd cov = (a.transpose() * a).inverse() * ((y - a * c).squaredNorm() / dof * averaged);
+    auto smooth_with = [&](const Eigen::VectorXd& coef, double t) {
+      const double x = (t - mid) / half;  // beyond +-1 by half a swing at most
+      double v = 0.0;
+      for (int j = order; j >= 0; --j) v = v * x + coef[j];
+      return std::exp(v);
+    };
+    auto smooth_at = [&](double t) { return smooth_with(c, t); };
+    // Not for a photogate: its amplitudes take the bob's speed as constant
+    // through the beam, which reads theta0 low by about theta_g^2/(6 theta0^2)
+    // (theta_g the beam's half-width in angle), a bias that drifts as the
+    // swing decays and, through the index, moves the period by several of its
+    // sub-microsecond uncertainties. The cubic model of the plain index is
+    // unbiased there (tests/test_recordings.cpp, photogate coverage).
+    if (cpp == 2 && !events) {
+      auto period_with = [&](const Eigen::VectorXd& coef) {
+        std::vector<double> smooth(theta.size());
+        for (std::size_t i = 0; i < theta.size(); ++i) smooth[i] = smooth_with(coef, out.swings[i].peak_time);
+        return fit_crossing_times(out.crossings, cpp, smooth);
+      };
+      out.period = period_with(c);
+      // The smooth amplitude's own uncertainty moves the index, hence the
+      // period: g^T C g with g the period's change per coefficient (a step of
+      // one standard uncertainty each; the dependence is linear at that scale).
+      Eigen::VectorXd g(order + 1);
+      for (int j = 0; j <= order; ++j) {
+        Eigen::VectorXd shifted = c;
+        const double step = std::sqrt(cov(j, j));
+        shifted[j] += step;
+        g[j] = step > 0.0 ? (period_with(shifted).value - out.period.value) / step : 0.0;
+      }
+      out.period.amplitude_uncertainty = std::sqrt(std::max(0.0, g.dot(cov * g)));
+      out.period.uncertainty = std::hypot(out.period.uncertainty, out.period.amplitude_uncertainty);
+      amplitudes();  // again, with the final period
+    }
+    // The ends of the timing, a swing or so beyond the first and last
+    // amplitudes: the cubic extrapolated by a few per cent of its span.
+    out.start_amplitude = smooth_at(out.crossings.front().time);
+    out.end_amplitude = smooth_at(out.crossings.back().time);
+  }
+  const double origin = out.crossings[0].time;
+  for (std::size_t i = 0; i < out.swings.size(); ++i) {
+    out.swings[i].amplitude = theta[i];
+    if (std::isfinite(theta[i]) && theta[i] > 0.0) {
+      out.decay.times.push_back(out.swings[i].peak_time - origin);
+      out.decay.amplitudes.push_back(theta[i]);
+    }
+  }
+  for (std::size_t i = 0; i + cpp < nc; i += cpp) {
+    PeriodPoint p;
+    p.time = (out.crossings[i].time + out.crossings[i + cpp].time) / 2.0 - origin;
+    p.period = out.crossings[i + cpp].time - out.crossings[i].time;
+    double sum = 0.0;
+    int count = 0;
+    for (int k = 0; k < cpp; ++k) {
+      if (std::isfinite(theta[i + k])) sum += theta[i + k], ++count;
+    }
+    p.amplitude = count ? sum / count : kNaN;
+    out.period_curve.push_back(p);
+  }
+  return out;
+}
+
+RecordingSummary analyse_recording(const std::string& path, RecordingFormat format, const SwingOptions& options,
+                                   const RecordingLimits& limits) {
+  const Recording r = read_recording(path, format, limits);
+  RecordingSummary s;
+  s.file = path;
+  s.format = r.format;
+  s.kind = r.kind;
+  s.rows = r.rows;
+  s.dropped = r.dropped;
+  s.swings = analyse_swings(r, path, options);
+  return s;
+}
+
+}  // namespace pendulum

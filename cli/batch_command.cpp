@@ -1,6 +1,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -26,6 +27,16 @@ struct Job {
   std::optional<std::string> text;  ///< set for standard input
 };
 
+/// ".json" in any case: CLARK.JSON is a scene too.
+bool json_extension(const std::filesystem::path& p) {
+  std::string e = p.extension().string();
+  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
+  return e == ".json";
+}
+
+/// The scenes to reduce, and a note on stderr for each entry of a folder
+/// that is not one (a subfolder, davis.json.txt), so that none is skipped
+/// without a word.
 std::vector<Job> gather(const std::vector<std::string>& paths, const std::string& list) {
   std::vector<Job> jobs;
   auto add_path = [&](const std::string& p) {
@@ -33,10 +44,23 @@ std::vector<Job> gather(const std::vector<std::string>& paths, const std::string
     std::error_code ec;
     if (fs::is_directory(p, ec)) {
       std::vector<std::string> files;
+      std::vector<std::pair<std::string, std::string>> skipped;
       for (const auto& entry : fs::directory_iterator(p, ec)) {
-        if (entry.path().extension() == ".json") files.push_back(entry.path().string());
+        const fs::path& f = entry.path();
+        if (entry.is_directory(ec)) {
+          skipped.push_back({f.string(), "a folder (batch reads one level; name it to reduce its scenes)"});
+        } else if (json_extension(f)) {
+          files.push_back(f.string());
+        } else if (json_extension(f.stem())) {
+          skipped.push_back({f.string(), "not a .json file; rename it to " + f.stem().filename().string() +
+                                             " to reduce it"});
+        } else {
+          skipped.push_back({f.string(), "not a .json file"});
+        }
       }
       std::sort(files.begin(), files.end());
+      std::sort(skipped.begin(), skipped.end());
+      for (const auto& [f, why] : skipped) std::cerr << "pendulum-g: note: skipped " << f << ": " << why << "\n";
       for (auto& f : files) jobs.push_back({std::move(f), std::nullopt});
     } else {
       jobs.push_back({p, std::nullopt});
@@ -57,8 +81,10 @@ std::vector<Job> gather(const std::vector<std::string>& paths, const std::string
     if (!in) throw InputError("", "cannot open the list " + list);
     std::string line;
     while (std::getline(in, line)) {
-      if (!line.empty() && line.back() == '\r') line.pop_back();
-      if (!line.empty() && line[0] != '#') add_path(line);
+      // Surrounding spaces (and a CR) are no part of a file name.
+      const auto first = line.find_first_not_of(" \t\r");
+      if (first == std::string::npos || line[first] == '#') continue;
+      add_path(line.substr(first, line.find_last_not_of(" \t\r") - first + 1));
     }
   }
   return jobs;
@@ -118,6 +144,8 @@ Command add_batch_command(CLI::App& app) {
     const bool progress = isatty(STDERR_FILENO) && jobs.size() > 1;
     auto last_progress = std::chrono::steady_clock::now();
     std::size_t failed = 0;
+    std::vector<BatchLine> printed;
+    printed.reserve(jobs.size());
     if (o->format == "csv") std::cout << batch_csv_header();
     for (std::size_t i = 0; i < jobs.size(); ++i) {
       BatchLine line;
@@ -128,6 +156,7 @@ Command add_batch_command(CLI::App& app) {
       }
       failed += !line.ok;
       std::cout << (o->format == "csv" ? line.csv : line.json + "\n");
+      printed.push_back(std::move(line));
       const auto now = std::chrono::steady_clock::now();
       if (progress && (now - last_progress > std::chrono::milliseconds(100) || i + 1 == jobs.size())) {
         last_progress = now;
@@ -138,6 +167,8 @@ Command add_batch_command(CLI::App& app) {
     }
     for (auto& w : workers) w.join();
     if (progress) std::cerr << "\n";
+    const ClassSummary summary = summarise_class(printed);
+    std::cout << (o->format == "csv" ? batch_class_csv(summary) : batch_class_json(summary) + "\n");
     return failed ? 1 : 0;
   }};
 }

@@ -15,6 +15,9 @@
 
 namespace pendulum::cli {
 
+/// Exit status of `reduce --strict` on a suspect result (docs/output.md).
+inline constexpr int kExitSuspect = 4;
+
 /// A registered subcommand and the function that runs it.
 struct Command {
   CLI::App* app;

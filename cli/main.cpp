@@ -1,6 +1,6 @@
 // pendulum-g: reduce a pendulum experiment to g. Parses arguments, runs one
 // subcommand, reports errors. Exit status: 0 success, 1 bad input, 2 bad
-// usage, 3 internal error. Nothing reaches stdout unless a whole result does.
+// usage, 3 internal error, 4 a suspect result under reduce --strict. Nothing reaches stdout unless a whole result does.
 
 #include <cerrno>
 #include <cstdio>

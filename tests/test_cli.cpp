@@ -233,6 +233,12 @@ TEST_CASE("Catalogue of valid scenes, extreme or suspicious", "[cli]") {
       CHECK(warnings[i].get<std::string>().rfind(expected[i].get<std::string>(), 0) == 0);
       err += "pendulum-g: warning: " + warnings[i].get<std::string>() + "\n";
     }
+    // The status, "ok" unless the case says otherwise; a suspect one's
+    // reasons follow the warnings on stderr.
+    CHECK(result.at("status") == entry.value("status", "ok"));
+    for (const auto& reason : result.at("status_reasons")) {
+      err += "pendulum-g: suspect: " + reason.get<std::string>() + "\n";
+    }
     CHECK(r.err == err);
     const Run table = run("reduce --format table " + file);
     CHECK(table.status == 0);
@@ -307,7 +313,7 @@ TEST_CASE("batch: a class of scenes, one bad file among them", "[cli][batch]") {
   std::istringstream lines(r.out);
   std::vector<json> summary;
   for (std::string line; std::getline(lines, line);) summary.push_back(json::parse(line));
-  REQUIRE(summary.size() == 3);
+  REQUIRE(summary.size() == 4);  // and the class line
   CHECK(summary[0].at("input") == dir + "/a_student.json");
   CHECK(summary[0].at("ok") == true);
   CHECK_THAT(summary[0].at("g_m_s2").get<double>(), WithinAbs(9.8034, 0.00005));
@@ -319,16 +325,28 @@ TEST_CASE("batch: a class of scenes, one bad file among them", "[cli][batch]") {
   CHECK(summary[2].at("z").is_null());  // no site
   // In vacuum there is no buoyancy or added mass: g is lower by their 638 us.
   CHECK(summary[2].at("g_m_s2").get<double>() < summary[0].at("g_m_s2").get<double>());
+  CHECK(summary[0].at("status") == "ok");
+  CHECK(summary[0].at("warnings") == json::array());
+  CHECK(summary[1].at("status") == "failed");
+  CHECK(summary[3].at("class") == true);
+  CHECK(summary[3].at("counts") == json({{"ok", 2}, {"suspect", 0}, {"failed", 1}}));
+  CHECK(summary[3].at("g_of_ok").at("count") == 2);
+  // The mean and the sample standard deviation of the two ok scenes' g.
+  const double g0 = summary[0].at("g_m_s2"), g2 = summary[2].at("g_m_s2");
+  CHECK_THAT(summary[3].at("g_of_ok").at("mean_m_s2").get<double>(), WithinAbs((g0 + g2) / 2.0, 1e-12));
+  CHECK_THAT(summary[3].at("g_of_ok").at("standard_deviation_m_s2").get<double>(),
+             WithinAbs(std::abs(g0 - g2) / std::sqrt(2.0), 1e-12));
 
   const Run csv = run("batch --format csv " + dir + "/a_student.json " + dir + "/b_student.json");
   CHECK(csv.status == 1);
   CHECK(csv.out.rfind("input,ok,g_m_s2,g_uncertainty_m_s2,", 0) == 0);
-  CHECK(std::count(csv.out.begin(), csv.out.end(), '\n') == 3);
+  CHECK(std::count(csv.out.begin(), csv.out.end(), '\n') == 4);  // header, 2 rows, class line
+  CHECK_THAT(csv.out, Contains("\n# class: 1 ok, 0 suspect, 1 failed; g of the ok scenes: mean 9.80340 m/s^2 (1 scene)\n"));
 
   std::ofstream(dir + "/list.txt") << "# the good ones\n" << dir << "/a_student.json\n" << dir << "/c_student.json\n";
   const Run listed = run("batch --list " + dir + "/list.txt");
   CHECK(listed.status == 0);
-  CHECK(std::count(listed.out.begin(), listed.out.end(), '\n') == 2);
+  CHECK(std::count(listed.out.begin(), listed.out.end(), '\n') == 3);
 
   std::ofstream(dir + "/lines.jsonl") << json::parse(good).dump() << "\n\n" << vacuum.dump() << "\n";
   const Run piped = run("batch - < " + dir + "/lines.jsonl");
@@ -392,4 +410,71 @@ TEST_CASE("reduce names the amplitude method and its error bound", "[cli][amplit
   CHECK(e.at("error_bound_delta_T_s").get<double>() < 1e-18);
   const json series = json::parse(run("reduce --amplitude-method series --series-terms 3 " + kNelsonOlsson).out);
   CHECK(correction(series, "finite_amplitude").at("series_terms") == 3);
+}
+
+TEST_CASE("Catalogue of student slips: each gets its status and message", "[cli][status]") {
+  const json catalogue =
+      json::parse(pendulum::test::read_text(std::string(PENDULUM_TESTS_DIR) + "/student_slips.json"));
+  const json& base = catalogue.at("base");
+  char dir_template[] = "/tmp/pendulum-g-slips-XXXXXX";
+  REQUIRE(mkdtemp(dir_template));
+  const std::string dir = dir_template;
+  std::vector<std::string> files;
+  for (const json& entry : catalogue.at("cases")) {
+    const std::string name = entry.at("name");
+    const std::string status = entry.at("status");
+    const std::string message = entry.value("message", "");
+    char file_name[32];
+    std::snprintf(file_name, sizeof file_name, "/case%03zu.json", files.size());
+    files.push_back(dir + file_name);
+    std::ofstream(files.back(), std::ios::binary) << pendulum::test::catalogue_text(entry, base);
+    const Run r = run("reduce --strict " + files.back());
+    INFO(name << "\nstdout: " << r.out.substr(0, 400) << "\nstderr: " << r.err);
+    if (status == "failed") {
+      CHECK(r.status == 1);
+      CHECK(r.out.empty());
+      CHECK_THAT(r.err, Contains(message));
+      continue;
+    }
+    REQUIRE(r.status == (status == "ok" ? 0 : 4));
+    const json result = json::parse(r.out);
+    CHECK(result.at("status") == status);
+    const json& reasons = result.at("status_reasons");
+    CHECK(reasons.empty() == (status == "ok"));
+    const json& warnings = result.at("warnings");
+    if (status == "suspect") {
+      bool found = false;
+      for (const auto& reason : reasons) {
+        found = found || reason.get<std::string>().find(message) != std::string::npos;
+        CHECK_THAT(r.err, Contains("pendulum-g: suspect: " + reason.get<std::string>()));
+      }
+      CHECK(found);
+    } else if (message.empty()) {
+      CHECK(warnings.empty());
+    } else {
+      REQUIRE(warnings.size() == 1);
+      CHECK_THAT(warnings[0].get<std::string>(), Contains(message));
+    }
+  }
+  // batch gives each scene the same status, and counts them on its last line.
+  std::string args;
+  for (const auto& f : files) args += " " + f;
+  const Run batch = run("batch --jobs 2" + args);
+  std::istringstream lines(batch.out);
+  std::vector<json> rows;
+  for (std::string line; std::getline(lines, line);) rows.push_back(json::parse(line));
+  REQUIRE(rows.size() == files.size() + 1);
+  int counts[3] = {0, 0, 0};
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    const std::string status = catalogue.at("cases")[i].at("status");
+    INFO(catalogue.at("cases")[i].at("name").get<std::string>());
+    CHECK(rows[i].at("status") == status);
+    ++counts[status == "ok" ? 0 : status == "suspect" ? 1 : 2];
+  }
+  const json& last = rows.back();
+  CHECK(last.at("class") == true);
+  CHECK(last.at("counts").at("ok") == counts[0]);
+  CHECK(last.at("counts").at("suspect") == counts[1]);
+  CHECK(last.at("counts").at("failed") == counts[2]);
+  std::filesystem::remove_all(dir);
 }

@@ -159,14 +159,23 @@ TEST_CASE("Plausibility warnings start at their thresholds", "[scene][warnings]"
   REQUIRE(warnings(R"J({"amplitude": {"value": 20.1}})J").size() == 1);
   CHECK_THAT(warnings(R"J({"amplitude": {"value": 20.1}})J")[0],
              Contains("20.1 deg is over the 20 deg of a small-angle lab"));
-  // A trial is off when it lies over 5 x 1.4826 x MAD from the median: with
-  // the published trials but the last, median 347.865 s and MAD 0.035 s, so
-  // the limit is 0.2595 s.
-  const char* near = R"J({"timing": {"trials": [347.84, 347.87, 347.86, 347.91, 347.91, 347.94, 347.84, 347.81, 347.84, 348.11]}})J";
-  const char* far = R"J({"timing": {"trials": [347.84, 347.87, 347.86, 347.91, 347.91, 347.94, 347.84, 347.81, 347.84, 348.13]}})J";
+  // A trial is off when it lies over 5 x the largest of 1.4826 x MAD, the
+  // resolution, and, on a timer read to 0.01 s by hand, a reaction time of
+  // 0.1 s from the median. With the published trials but the last: median
+  // 347.865 s, MAD 0.035 s (1.4826 MAD = 0.0519 s), so the limit is 0.5 s
+  // by hand...
+  const char* near = R"J({"timing": {"trials": [347.84, 347.87, 347.86, 347.91, 347.91, 347.94, 347.84, 347.81, 347.84, 348.36]}})J";
+  const char* far = R"J({"timing": {"trials": [347.84, 347.87, 347.86, 347.91, 347.91, 347.94, 347.84, 347.81, 347.84, 348.37]}})J";
   CHECK(warnings(near).empty());
   REQUIRE(warnings(far).size() == 1);
-  CHECK_THAT(warnings(far)[0], Contains("timing.trials[9]: 348.13 s is 0.265 s from the median trial 347.865 s"));
+  CHECK_THAT(warnings(far)[0], Contains("timing.trials[9]: 348.37 s is 0.505 s from the median trial 347.865 s"));
+  CHECK_THAT(warnings(far)[0], Contains("a hand's reaction time (0.1 s)"));
+  // ...and 0.2595 s on a gate read to 1 ms.
+  const char* gate_near = R"J({"timing": {"resolution": 0.001, "trials": [347.84, 347.87, 347.86, 347.91, 347.91, 347.94, 347.84, 347.81, 347.84, 348.11]}})J";
+  const char* gate_far = R"J({"timing": {"resolution": 0.001, "trials": [347.84, 347.87, 347.86, 347.91, 347.91, 347.94, 347.84, 347.81, 347.84, 348.13]}})J";
+  CHECK(warnings(gate_near).empty());
+  REQUIRE(warnings(gate_far).size() == 1);
+  CHECK_THAT(warnings(gate_far)[0], Contains("timing.trials[9]: 348.13 s is 0.265 s from the median trial 347.865 s"));
   // The published trials scatter by 0.05333 s: a stated one-trial uncertainty
   // warns below a third of that.
   CHECK(warnings(R"J({"timing": {"uncertainty": 0.018}})J").empty());

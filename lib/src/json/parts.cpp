@@ -59,12 +59,22 @@ void read_air(const json& air, ParsedScene& out) {
   }
 }
 
-/// Warns about trials (in `unit`) that disagree more than they should: one
-/// far from the others (a miscounted oscillation, a typo), or a scatter far
-/// beyond the stated one-trial uncertainty. A scatter beyond the resolution
-/// alone is normal: a hand on a stopwatch scatters more than its last digit.
+/// A person starting and stopping a stopwatch scatters a trial by about this
+/// much (s, standard deviation; reaction times of about 0.07 s at each end)...
+constexpr double kReactionTime = 0.1;
+/// ...on a timer read to this resolution (s) or coarser, or of no stated
+/// resolution: a phone's or a stopwatch's 0.01 s. A finer one is a gate's.
+constexpr double kHandTimerResolution = 0.01;
+
+/// Warns about trials (in `unit`, of `seconds` s) that disagree more than
+/// they should: one far from the others (a miscounted oscillation, a typo),
+/// or a scatter far beyond the stated one-trial uncertainty. A scatter beyond
+/// the resolution alone is normal: a hand on a stopwatch scatters more than
+/// its last digit, and with five trials the median deviation alone is no
+/// measure of it (issue 14: 33 of 300 clean hand-timed scenes drew this
+/// warning), so a hand-read timer's trials may stray by 5 reaction times.
 void warn_about_trials(const std::string& path, const std::vector<double>& times, double spread, std::optional<double> resolution,
-                       std::optional<double> trial_sigma, const std::string& unit,
+                       std::optional<double> trial_sigma, const std::string& unit, double seconds,
                        std::vector<std::string>& warnings) {
   auto in_unit = [&](double x) { return format_number(x, 4) + " " + unit; };
   if (trial_sigma && spread > 3.0 * *trial_sigma) {
@@ -86,13 +96,16 @@ void warn_about_trials(const std::string& path, const std::vector<double>& times
   std::vector<double> deviation(times.size());
   for (std::size_t i = 0; i < times.size(); ++i) deviation[i] = std::abs(times[i] - centre);
   const double scatter = 1.4826 * median(deviation);
+  const bool by_hand = !resolution || *resolution * seconds >= kHandTimerResolution * (1.0 - 1e-9);
+  const double reaction = by_hand ? kReactionTime / seconds : 0.0;
   const double allowed =
-      5.0 * std::max({scatter, resolution.value_or(0.0), trial_sigma.value_or(0.0)});
+      5.0 * std::max({scatter, resolution.value_or(0.0), trial_sigma.value_or(0.0), reaction});
   const auto worst = std::max_element(deviation.begin(), deviation.end());
   if (allowed == 0.0 || *worst <= allowed) return;
   std::vector<std::string> allowance{"the trials' scatter (" + in_unit(scatter) + ")"};
   if (resolution) allowance.push_back("the resolution (" + in_unit(*resolution) + ")");
   if (trial_sigma) allowance.push_back("the stated uncertainty (" + in_unit(*trial_sigma) + ")");
+  if (by_hand) allowance.push_back("a hand's reaction time (" + in_unit(reaction) + ")");
   std::string largest = allowance.size() > 1 ? "the largest of " : "";
   for (std::size_t k = 0; k < allowance.size(); ++k) {
     largest += (k == 0 ? "" : k + 1 == allowance.size() ? " and " : ", ") + allowance[k];
@@ -185,7 +198,7 @@ void read_timing(Object& parent, const std::string& prefix, Observation<double>&
           t.path("trials") + ": all trials are equal and no resolution is given, so "
           "the period's uncertainty is 0; state timing.resolution");
     }
-    warn_about_trials(t.path(), times, spread, resolution, trial_sigma, unit_name, out.warnings);
+    warn_about_trials(t.path(), times, spread, resolution, trial_sigma, unit_name, unit->factor, out.warnings);
   } else if (trial_sigma) {
     sigma_trial = *trial_sigma;
     out.assumptions.push_back(

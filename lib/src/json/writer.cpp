@@ -97,8 +97,18 @@ std::string csv_field(const json& v) {
   }
   return quoted + "\"";
 }
+// New columns go at the end: scripts may read the columns by position.
 constexpr const char* kCsvColumns[] = {"input", "ok", "g_m_s2", "g_uncertainty_m_s2", "largest_budget_input",
-                                       "largest_budget_m_s2", "expected_g_m_s2", "z", "warnings", "error"};
+                                       "largest_budget_m_s2", "expected_g_m_s2", "z", "warnings", "error",
+                                       "status", "status_reasons", "title"};
+/// A list of messages in one CSV field.
+constexpr const char* kCsvSeparator = "; ";
+
+json joined(const json& messages) {
+  std::string text;
+  for (const auto& m : messages) text += (text.empty() ? "" : kCsvSeparator) + m.get<std::string>();
+  return text;
+}
 
 std::string csv_row(const json& summary) {
   std::string line;
@@ -106,7 +116,9 @@ std::string csv_row(const json& summary) {
   for (const char* c : kCsvColumns) {
     if (!first) line += ",";
     first = false;
-    if (summary.contains(c)) line += csv_field(summary.at(c));
+    if (!summary.contains(c)) continue;
+    const json& v = summary.at(c);
+    line += csv_field(v.is_array() ? joined(v) : v);
   }
   return line + "\n";
 }
@@ -221,7 +233,11 @@ json warnings_json(const ParsedScene& scene, const Analysis& a) {
 
 std::string result_json(const ParsedScene& scene, const Analysis& a, const AnalysisOptions& options,
                         const std::string& input, int indent) {
-  json out = {{"schema", kResultSchema}, {"input", input}, {"title", scene.title}};
+  json out = {{"schema", kResultSchema},
+              {"input", input},
+              {"title", scene.title},
+              {"status", result_status_name(a.status)},
+              {"status_reasons", a.status_reasons}};
   if (scene.series) {
     out["kind"] = "series";
     out["g"] = g_json(a);
@@ -277,6 +293,8 @@ std::string decay_fit_json(const std::string& input, const ParsedScene& scene, c
 BatchLine batch_line(const std::string& input, const ParsedScene& scene, const Analysis& a) {
   const json line = {{"input", input},
                      {"ok", true},
+                     {"status", result_status_name(a.status)},
+                     {"status_reasons", a.status_reasons},
                      {"title", scene.title},
                      {"g_m_s2", a.g.value},
                      {"g_uncertainty_m_s2", optional_number(a.g.uncertainty)},
@@ -284,13 +302,58 @@ BatchLine batch_line(const std::string& input, const ParsedScene& scene, const A
                      {"largest_budget_m_s2", a.budget.empty() ? json(nullptr) : json(a.budget.front().contribution)},
                      {"expected_g_m_s2", a.expected_g ? json(a.expected_g->value) : json(nullptr)},
                      {"z", optional_number(a.z_score)},
-                     {"warnings", scene.warnings.size() + a.warnings.size()}};
-  return {true, text(line, -1), csv_row(line)};
+                     {"warnings", warnings_json(scene, a)}};
+  return {true, a.status, a.g.value, text(line, -1), csv_row(line)};
 }
 
 BatchLine batch_failure(const std::string& input, const std::string& error) {
-  const json line = {{"input", input}, {"ok", false}, {"error", error}};
-  return {false, text(line, -1), csv_row(line)};
+  const json line = {{"input", input},
+                     {"ok", false},
+                     {"status", result_status_name(ResultStatus::failed)},
+                     {"status_reasons", json::array()},
+                     {"error", error}};
+  return {false, ResultStatus::failed, std::nullopt, text(line, -1), csv_row(line)};
+}
+
+ClassSummary summarise_class(const std::vector<BatchLine>& lines) {
+  ClassSummary c;
+  double mean = 0.0, m2 = 0.0;  // Welford's running mean and sum of squares
+  for (const BatchLine& l : lines) {
+    ++c.count[static_cast<int>(l.status)];
+    if (l.status != ResultStatus::ok || !l.g) continue;
+    ++c.ok_g_count;
+    const double d = *l.g - mean;
+    mean += d / c.ok_g_count;
+    m2 += d * (*l.g - mean);
+  }
+  if (c.ok_g_count > 0) c.ok_g_mean = mean;
+  if (c.ok_g_count > 1) c.ok_g_standard_deviation = std::sqrt(m2 / (c.ok_g_count - 1));
+  return c;
+}
+
+std::string batch_class_json(const ClassSummary& c) {
+  const json line = {{"class", true},
+                     {"scenes", c.count[0] + c.count[1] + c.count[2]},
+                     {"counts", {{"ok", c.count[0]}, {"suspect", c.count[1]}, {"failed", c.count[2]}}},
+                     {"g_of_ok",
+                      {{"count", c.ok_g_count},
+                       {"mean_m_s2", optional_number(c.ok_g_mean)},
+                       {"standard_deviation_m_s2", optional_number(c.ok_g_standard_deviation)}}}};
+  return text(line, -1);
+}
+
+std::string batch_class_csv(const ClassSummary& c) {
+  std::string line = "# class: " + std::to_string(c.count[0]) + " ok, " + std::to_string(c.count[1]) +
+                     " suspect, " + std::to_string(c.count[2]) + " failed; g of the ok scenes: ";
+  if (!c.ok_g_mean) return line + "none\n";
+  char numbers[160];
+  std::snprintf(numbers, sizeof numbers, "mean %.5f m/s^2", *c.ok_g_mean);
+  line += numbers;
+  if (c.ok_g_standard_deviation) {
+    std::snprintf(numbers, sizeof numbers, ", standard deviation %.5f m/s^2", *c.ok_g_standard_deviation);
+    line += numbers;
+  }
+  return line + " (" + std::to_string(c.ok_g_count) + (c.ok_g_count == 1 ? " scene)\n" : " scenes)\n");
 }
 
 std::string batch_csv_header() {
@@ -402,6 +465,8 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
       os << line;
     }
   }
+  os << "status              = " << result_status_name(a.status) << "\n";
+  for (const auto& r : a.status_reasons) os << "  " << r << "\n";
   if (!a.budget.empty()) {
     // A series lists every observation's inputs: the table shows the largest.
     constexpr std::size_t kShown = 12;

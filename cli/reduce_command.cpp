@@ -44,9 +44,12 @@ Command add_reduce_command(CLI::App& app) {
         o->format == "table"
             ? result_table(scene, analysis)
             : result_json(scene, analysis, o->analysis, o->file) + "\n";
-    print_warnings(scene.warnings);
-    print_warnings(analysis.warnings);
-    for (const auto& r : analysis.status_reasons) std::cerr << "pendulum-g: suspect: " << r << "\n";
+    // The table holds the warnings and the status: not twice on a terminal.
+    if (o->format != "table") {
+      print_warnings(scene.warnings);
+      print_warnings(analysis.warnings);
+      for (const auto& r : analysis.status_reasons) std::cerr << "pendulum-g: suspect: " << r << "\n";
+    }
     std::cout << text;
     return o->strict && analysis.status == ResultStatus::suspect ? kExitSuspect : 0;
   }};

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <vector>
 #include <string>
@@ -476,5 +477,80 @@ TEST_CASE("Catalogue of student slips: each gets its status and message", "[cli]
   CHECK(last.at("counts").at("ok") == counts[0]);
   CHECK(last.at("counts").at("suspect") == counts[1]);
   CHECK(last.at("counts").at("failed") == counts[2]);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("batch on the class of issue 14: who is off, and why", "[cli][batch][status]") {
+  // tests/tools/make_class.cpp writes thirty files, each a student's scene
+  // with the slip its notes name (or none); davis.json.txt and drafts/ are to
+  // be skipped with a note, CLARK.JSON read.
+  char dir_template[] = "/tmp/pendulum-g-class-XXXXXX";
+  REQUIRE(mkdtemp(dir_template));
+  const std::string dir = dir_template;
+  int status = 0;
+  pendulum::test::command_output(std::string(PENDULUM_MAKE_CLASS) + " " + dir, status);
+  REQUIRE(status == 0);
+  const Run r = run("batch " + dir);
+  CHECK(r.status == 1);  // some scenes failed
+  CHECK_THAT(r.err, Contains("pendulum-g: note: skipped " + dir + "/davis.json.txt: not a .json file; rename it to davis.json"));
+  CHECK_THAT(r.err, Contains("pendulum-g: note: skipped " + dir + "/drafts: a folder"));
+  std::istringstream lines(r.out);
+  std::map<std::string, json> rows;
+  json last;
+  for (std::string line; std::getline(lines, line);) {
+    last = json::parse(line);
+    if (last.contains("input")) rows[last.at("input").get<std::string>().substr(dir.size() + 1)] = last;
+  }
+  REQUIRE(rows.size() == 29);  // thirty files, davis.json.txt skipped
+  // Each student's slip, the status it must get and the words that name it.
+  // A period exactly 10 times off (baker, martin) falls on either side of
+  // the factor-10 refusal with the trials' noise; named either way.
+  struct Expected {
+    const char* file;
+    std::vector<std::string> statuses;
+    const char* named;
+  };
+  const Expected expected[] = {
+      {"baker.json", {"suspect", "failed"}, "a length in cm is written as m"},
+      {"evans.json", {"failed"}, "a trailing comma at line"},
+      {"fischer.json", {"failed"}, "lenght: unknown key; did you mean length?"},
+      {"hughes.json", {"suspect"}, "half swings are counted as oscillations"},
+      {"jones.json", {"suspect"}, "a length in mm is written as cm"},
+      {"lee.json", {"suspect"}, "a barometer's 1013 hPa written as Pa?"},
+      {"martin.json", {"suspect", "failed"}, "one period per trial is typed with oscillations_per_trial 10"},
+      {"nguyen.json", {"suspect"}, "radians written as deg?"},
+      {"okafor.json", {"suspect", "failed"}, "a mass in kg written as g"},
+      {"quinn.json", {"suspect"}, "timing.oscillations_per_trial is half the oscillations timed"},
+      {"singh.json", {"suspect"}, "combined standard uncertainties from the site's expected"},
+      {"usman.json", {"suspect"}, "a miscounted oscillation? Count again, or drop the trial"},
+  };
+  int suspect = 0, failed = 0;
+  std::vector<double> ok_g;
+  for (const auto& [file, row] : rows) {
+    INFO(file << ": " << row.dump());
+    const Expected* e = nullptr;
+    for (const auto& x : expected) e = file == x.file ? &x : e;
+    const std::string s = row.at("status");
+    if (!e) {
+      CHECK(s == "ok");  // no slip, and within 3 combined sigma of the site's g
+      ok_g.push_back(row.at("g_m_s2"));
+      continue;
+    }
+    CHECK(std::find(e->statuses.begin(), e->statuses.end(), s) != e->statuses.end());
+    const std::string why = s == "failed" ? row.at("error").dump() : row.at("status_reasons").dump();
+    CHECK_THAT(why, Contains(e->named));
+    suspect += s == "suspect";
+    failed += s == "failed";
+  }
+  CHECK(rows.count("CLARK.JSON") == 1);
+  CHECK(rows.at("garcia.json").at("status") == "ok");  // UTF-16, read
+  CHECK(last.at("class") == true);
+  CHECK(last.at("counts") == json({{"ok", ok_g.size()}, {"suspect", suspect}, {"failed", failed}}));
+  double mean = 0.0, ss = 0.0;
+  for (double g : ok_g) mean += g / ok_g.size();
+  for (double g : ok_g) ss += (g - mean) * (g - mean);
+  CHECK_THAT(last.at("g_of_ok").at("mean_m_s2").get<double>(), WithinAbs(mean, 1e-12));
+  CHECK_THAT(last.at("g_of_ok").at("standard_deviation_m_s2").get<double>(),
+             WithinAbs(std::sqrt(ss / (ok_g.size() - 1)), 1e-12));
   std::filesystem::remove_all(dir);
 }

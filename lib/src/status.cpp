@@ -164,6 +164,7 @@ Verdict judge(const ParsedScene& scene, const Analysis& analysis) {
   auto bob = bob_density_slip(scene.apparatus);
   judge_g(analysis, bob.has_value(), v.reasons);
   if (bob) v.reasons.push_back(std::move(*bob));
+  v.reasons.insert(v.reasons.end(), scene.suspicions.begin(), scene.suspicions.end());
   judge_air(scene, v.reasons);
   judge_amplitudes(scene, v.reasons);
   if (!v.reasons.empty()) v.status = ResultStatus::suspect;

@@ -51,6 +51,9 @@ struct ParsedScene {
   std::vector<Covariance> input_covariances;
   std::vector<std::string> assumptions;  ///< defaults the reduction used
   std::vector<std::string> warnings;     ///< legal but suspicious input
+  /// Findings of the reader that make the result suspect (status.hpp): a
+  /// trial far from the others. Each names the input to fix.
+  std::vector<std::string> suspicions;
 };
 
 }  // namespace pendulum

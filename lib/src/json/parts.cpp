@@ -75,7 +75,7 @@ constexpr double kHandTimerResolution = 0.01;
 /// warning), so a hand-read timer's trials may stray by 5 reaction times.
 void warn_about_trials(const std::string& path, const std::vector<double>& times, double spread, std::optional<double> resolution,
                        std::optional<double> trial_sigma, const std::string& unit, double seconds,
-                       std::vector<std::string>& warnings) {
+                       std::vector<std::string>& warnings, std::vector<std::string>& suspicions) {
   auto in_unit = [&](double x) { return format_number(x, 4) + " " + unit; };
   if (trial_sigma && spread > 3.0 * *trial_sigma) {
     warnings.push_back(path + ".uncertainty: the trials scatter by " + in_unit(spread) +
@@ -111,6 +111,9 @@ void warn_about_trials(const std::string& path, const std::vector<double>& times
     largest += (k == 0 ? "" : k + 1 == allowance.size() ? " and " : ", ") + allowance[k];
   }
   const auto i = static_cast<std::size_t>(worst - deviation.begin());
+  suspicions.push_back(path + ".trials[" + std::to_string(i) + "]: " + format_number(times[i]) + " " + unit +
+                       ", far from the other trials (warnings): a miscounted oscillation? Count again, or drop "
+                       "the trial");
   warnings.push_back(path + ".trials[" + std::to_string(i) + "]: " + format_number(times[i]) + " " +
                      unit + " is " + in_unit(*worst) + " from the median trial " +
                      format_number(centre) + " " + unit + ", over 5 times " + largest +
@@ -198,7 +201,8 @@ void read_timing(Object& parent, const std::string& prefix, Observation<double>&
           t.path("trials") + ": all trials are equal and no resolution is given, so "
           "the period's uncertainty is 0; state timing.resolution");
     }
-    warn_about_trials(t.path(), times, spread, resolution, trial_sigma, unit_name, unit->factor, out.warnings);
+    warn_about_trials(t.path(), times, spread, resolution, trial_sigma, unit_name, unit->factor, out.warnings,
+                      out.suspicions);
   } else if (trial_sigma) {
     sigma_trial = *trial_sigma;
     out.assumptions.push_back(

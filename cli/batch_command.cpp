@@ -34,6 +34,49 @@ bool json_extension(const std::filesystem::path& p) {
   return e == ".json";
 }
 
+/// The scenes on standard input, named "stdin:N" by the line each starts
+/// on: one a line (JSON lines), or pretty-printed over many (cat *.json).
+/// A scene ends where its outermost braces close, outside strings; text
+/// outside braces is a scene to the end of its line (and fails as such).
+std::vector<Job> split_documents(std::istream& in) {
+  std::vector<Job> documents;
+  std::string line, text;
+  int depth = 0, start = 0;
+  bool in_string = false, escaped = false;
+  for (int n = 1; std::getline(in, line); ++n) {
+    for (const char c : line) {
+      if (depth == 0 && text.empty()) {
+        if (c == ' ' || c == '\t' || c == '\r') continue;
+        start = n;
+      }
+      text += c;
+      if (in_string) {
+        if (escaped) {
+          escaped = false;
+        } else if (c == '\\') {
+          escaped = true;
+        } else if (c == '"') {
+          in_string = false;
+        }
+        continue;
+      }
+      if (c == '"') in_string = true;
+      if (c == '{' || c == '[') ++depth;
+      if ((c == '}' || c == ']') && depth > 0 && --depth == 0) {
+        documents.push_back({"stdin:" + std::to_string(start), text});
+        text.clear();
+      }
+    }
+    if (depth == 0 && !text.empty()) {  // not a JSON object: the line is one (bad) scene
+      documents.push_back({"stdin:" + std::to_string(start), text});
+      text.clear();
+    }
+    if (!text.empty()) text += '\n';
+  }
+  if (!text.empty()) documents.push_back({"stdin:" + std::to_string(start), text});
+  return documents;
+}
+
 /// The scenes to reduce, and a note on stderr for each entry of a folder
 /// that is not one (a subfolder, davis.json.txt), so that none is skipped
 /// without a word.
@@ -71,10 +114,7 @@ std::vector<Job> gather(const std::vector<std::string>& paths, const std::string
       add_path(p);
       continue;
     }
-    std::string line;
-    for (int n = 1; std::getline(std::cin, line); ++n) {
-      if (line.find_first_not_of(" \t\r") != std::string::npos) jobs.push_back({"stdin:" + std::to_string(n), line});
-    }
+    for (auto& document : split_documents(std::cin)) jobs.push_back(std::move(document));
   }
   if (!list.empty()) {
     std::ifstream in(list);
@@ -114,7 +154,9 @@ Command add_batch_command(CLI::App& app) {
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
       "batch", "Reduce many scenes (files, folders of *.json, a list, or JSON lines on stdin) to one summary");
-  cmd->add_option("scenes", o->paths, "Scene files, folders, or - for one scene per line of standard input");
+  cmd->add_option("scenes", o->paths,
+                  "Scene files, folders (their *.json, any case; other entries are skipped with a note), or - "
+                  "for scenes on standard input (one a line, or pretty-printed one after another)");
   cmd->add_option("--list", o->list, "A file naming one scene file per line (# starts a comment)");
   cmd->add_option("--format", o->format, "Summary: jsonl (default, one JSON object per scene) or csv")
       ->check(CLI::IsMember({"jsonl", "csv"}));

@@ -66,6 +66,16 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     app.exit(e);
+    // Several scenes given to a command that takes one: batch takes many.
+    const std::string command = argc > 1 ? argv[1] : "";
+    if (dynamic_cast<const CLI::ExtrasError*>(&e) && (command == "reduce" || command == "fit-decay")) {
+      std::string scenes;
+      for (int i = 2; i < argc; ++i) {
+        if (argv[i][0] != '-') scenes += std::string(" ") + argv[i];
+      }
+      std::cerr << "pendulum-g: " << command << " takes one scene; for several, run: pendulum-g batch" << scenes
+                << "\n";
+    }
     return kExitUsage;
   }
 

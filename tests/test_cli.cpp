@@ -258,6 +258,12 @@ TEST_CASE("Usage errors exit with status 2, a missing file with 1", "[cli][error
   CHECK(missing.out.empty());
   CHECK_THAT(missing.err, Contains("cannot open the file"));
   CHECK(run("--help").status == 0);
+  // Two scenes for reduce: batch is the command for several (issue 14).
+  const Run two = run("reduce " + kNelsonOlsson + " " + kNelsonOlsson);
+  CHECK(two.status == 2);
+  CHECK(two.out.empty());
+  CHECK_THAT(two.err, Contains("pendulum-g: reduce takes one scene; for several, run: pendulum-g batch " + kNelsonOlsson +
+                               " " + kNelsonOlsson));
 }
 
 TEST_CASE("fit-decay on the bundled record", "[cli][decay_fit]") {
@@ -353,6 +359,17 @@ TEST_CASE("batch: a class of scenes, one bad file among them", "[cli][batch]") {
   const Run piped = run("batch - < " + dir + "/lines.jsonl");
   CHECK(piped.status == 0);
   CHECK_THAT(piped.out, Contains("\"input\":\"stdin:3\""));
+
+  // Pretty-printed files one after another (cat *.json): one scene each,
+  // named by the line it starts on (issue 14: it was one error per line).
+  std::ofstream(dir + "/pretty.txt") << json::parse(good).dump(2) << "\n" << vacuum.dump(2) << "\n";
+  const Run cat = run("batch - < " + dir + "/pretty.txt");
+  CHECK(cat.status == 0);
+  CHECK(std::count(cat.out.begin(), cat.out.end(), '\n') == 3);
+  CHECK_THAT(cat.out, Contains("\"input\":\"stdin:1\""));
+  // A list's lines may carry spaces around the name.
+  std::ofstream(dir + "/spaced.txt") << "  " << dir << "/a_student.json \t\n";
+  CHECK(run("batch --list " + dir + "/spaced.txt").status == 0);
 
   CHECK(run("batch").status == 1);
   std::filesystem::remove_all(dir);

@@ -188,3 +188,44 @@ TEST_CASE("A stated one-trial uncertainty is a floor, like the resolution", "[sc
   const ParsedScene s = parse_scene(patched(R"J({"timing": {"uncertainty": 0.1}})J"));
   CHECK_THAT(s.observation_uncertainties[0].period, WithinRel(0.1 / std::sqrt(10.0) / 100.0, 1e-12));
 }
+
+TEST_CASE("A UTF-16 scene (Notepad's \"Unicode\") reads as its UTF-8 text", "[scene][encoding]") {
+  // A title with a degree sign (U+00B0, one UTF-16 unit) and an astral
+  // character, U+1F30D (a globe: the surrogate pair D83C DF0D).
+  std::string utf8 = test::nelson_olsson_text();
+  const std::string title = "3\xc2\xb0 swing \xf0\x9f\x8c\x8d";
+  utf8.replace(utf8.find("Nelson & Olsson (1986): Leybold"), 31, title);
+  // UTF-16 code units of the text, each ASCII byte one unit.
+  std::vector<unsigned> units;
+  for (std::size_t i = 0; i < utf8.size();) {
+    const auto c = static_cast<unsigned char>(utf8[i]);
+    if (c < 0x80) {
+      units.push_back(c), i += 1;
+    } else if (c < 0xe0) {
+      units.push_back((c & 0x1f) << 6 | (utf8[i + 1] & 0x3f)), i += 2;
+    } else {  // the four-byte emoji: U+1F30D
+      units.push_back(0xd83c), units.push_back(0xdf0d), i += 4;
+    }
+  }
+  auto encode = [&](bool little) {
+    std::string out = little ? "\xff\xfe" : "\xfe\xff";
+    for (unsigned u : units) {
+      const char lo = static_cast<char>(u & 0xff), hi = static_cast<char>(u >> 8);
+      out += little ? std::string{lo, hi} : std::string{hi, lo};
+    }
+    return out;
+  };
+  const ParsedScene expected = parse_scene(utf8);
+  for (bool little : {true, false}) {
+    const ParsedScene s = parse_scene(encode(little));
+    CHECK(s.title.rfind(title, 0) == 0);
+    CHECK(s.title == expected.title);
+    CHECK(s.observations[0].period == expected.observations[0].period);
+  }
+  // A lone surrogate, or an odd byte count, is refused with the fix.
+  std::string broken = encode(true);
+  broken[2] = '\x00', broken[3] = '\xdc';
+  CHECK_THROWS_WITH(parse_scene(broken), Contains("UTF-16 text with a lone low surrogate at byte 2") &&
+                                             Contains("save it as UTF-8"));
+  CHECK_THROWS_WITH(parse_scene(encode(true) + "x"), Contains("an odd number of bytes"));
+}

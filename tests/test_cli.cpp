@@ -24,6 +24,7 @@
 using nlohmann::json;
 using Catch::Matchers::Contains;
 using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
 
 namespace {
 
@@ -301,6 +302,42 @@ TEST_CASE("fit-decay on the bundled record", "[cli][decay_fit]") {
   CHECK(none.status == 1);
   CHECK(none.out.empty());
   CHECK_THAT(none.err, Contains("decay.data: missing"));
+
+  // A file holding only the record (issue 14): the same fit, no drag theory
+  // (no pendulum to predict it for).
+  const json whole = json::parse(pendulum::test::read_text(scene));
+  const std::string only = temporary_file();
+  std::ofstream(only) << json({{"title", "the record alone"}, {"decay", {{"data", whole.at("decay").at("data")}}}}).dump();
+  const Run alone = run("fit-decay " + only);
+  REQUIRE(alone.status == 0);
+  const json alone_fit = json::parse(alone.out);
+  CHECK(alone_fit.at("alpha").at("value").get<double>() == alpha);
+  CHECK(alone_fit.at("beta").at("value").get<double>() == beta);
+  CHECK_FALSE(alone_fit.contains("drag_theory"));
+  // The residual variance by its name: the residual standard error squared.
+  CHECK(alone_fit.at("residual_variance_rad2").get<double>() ==
+        std::pow(alone_fit.at("residual_standard_error_rad").get<double>(), 2));
+  // Without sigma, reduced_chi2 is that residual variance (rad^2), kept for
+  // scripts that read it.
+  json unweighted = json::parse(pendulum::test::read_text(only));
+  unweighted["decay"]["data"].erase("sigma");
+  std::ofstream(only) << unweighted.dump();
+  const json plain = json::parse(run("fit-decay " + only).out);
+  CHECK(plain.at("uncertainty_scaling") == "residual_variance");
+  CHECK_THAT(plain.at("reduced_chi2").get<double>(), WithinRel(plain.at("residual_variance_rad2").get<double>(), 1e-12));
+  // A table for people; in reduce's table too.
+  const Run table = run("fit-decay --format table " + scene);
+  REQUIRE(table.status == 0);
+  CHECK_THAT(table.out, Contains("Decay fit, Nelson & Olsson (1986) Eq. (25): model both"));
+  CHECK_THAT(table.out, Contains("  alpha             = "));
+  CHECK_THAT(table.out, Contains("  beta              = "));
+  CHECK_THAT(run("reduce --format table " + scene).out, Contains("Decay fit, Nelson & Olsson (1986) Eq. (25)"));
+  // A decay-only file takes no parts: they need a pendulum.
+  std::ofstream(only) << json({{"bob", whole.at("bob")}, {"decay", {{"data", whole.at("decay").at("data")}}}}).dump();
+  const Run parts = run("fit-decay " + only);
+  CHECK(parts.status == 1);
+  CHECK_THAT(parts.err, Contains("bob: unknown key; this object takes: amplitude, decay, length, notes"));
+  std::remove(only.c_str());
 }
 
 TEST_CASE("batch: a class of scenes, one bad file among them", "[cli][batch]") {

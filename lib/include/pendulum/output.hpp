@@ -26,6 +26,9 @@ std::string result_table(const ParsedScene& scene, const Analysis& analysis);
 std::string decay_fit_json(const std::string& input, const ParsedScene& scene, const DecayFit& fit,
                            const std::vector<std::string>& warnings);
 
+/// The same fit as a text table for people (`fit-decay --format table`).
+std::string decay_fit_table(const ParsedScene& scene, const DecayFit& fit, const std::vector<std::string>& warnings);
+
 /// One scene's line in a batch summary (`pendulum-g batch`), as a JSON line
 /// and as a CSV row.
 struct BatchLine {

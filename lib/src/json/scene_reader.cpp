@@ -107,13 +107,8 @@ void check_geometry(const ParsedScene& out) {
   }
 }
 
-}  // namespace
-
-ParsedScene parse_scene(const std::string& text) {
-  const json doc = parse_json(text, kMaxSceneBytes);
-  ParsedScene out;
-  Object top(doc, "", "a JSON object (the scene)");
-
+/// schema, title, source, notes: what every document may say about itself.
+void read_header(Object& top, ParsedScene& out) {
   if (top.has("schema")) {
     PENDULUM_FAIL_IF(top.text("schema") != kSceneSchema, "schema",
                      "got " + shown(top.at("schema")) + "; expected \"" + kSceneSchema + "\"");
@@ -127,6 +122,15 @@ ParsedScene parse_scene(const std::string& text) {
   }
   if (top.has("source")) out.source = top.text("source");
   if (top.has("notes")) top.text("notes");
+}
+
+}  // namespace
+
+ParsedScene parse_scene(const std::string& text) {
+  const json doc = parse_json(text, kMaxSceneBytes);
+  ParsedScene out;
+  Object top(doc, "", "a JSON object (the scene)");
+  read_header(top, out);
 
   if (top.has("observations")) {
     read_series(top, out);
@@ -146,6 +150,21 @@ ParsedScene parse_scene(const std::string& text) {
                        "as unknowns");
   check_geometry(out);
   check_plausibility(out);
+  return out;
+}
+
+ParsedScene parse_decay_document(const std::string& text) {
+  const json doc = parse_json(text, kMaxSceneBytes);
+  Object top(doc, "", "a JSON object (the scene)");
+  for (const char* key : {"observations", "timing", "length", "amplitude"}) {
+    if (top.has(key)) return parse_scene(text);
+  }
+  ParsedScene out;
+  read_header(top, out);
+  PENDULUM_FAIL_IF(!top.has("decay"), "decay",
+                   "missing; expected a decay record (decay.data), alone or in a whole scene");
+  read_decay(top, out);
+  top.finish();
   return out;
 }
 

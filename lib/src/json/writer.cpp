@@ -63,6 +63,7 @@ json decay_fit_to_json(const DecayFit& f, const std::optional<Decay<double>>& gi
               {"dof", f.dof},
               {"reduced_chi2", f.dof > 0 ? json(f.chi2 / f.dof) : json(nullptr)},
               {"residual_standard_error_rad", f.residual_standard_error},
+              {"residual_variance_rad2", f.residual_standard_error * f.residual_standard_error},
               {"uncertainty_scaling", f.uncertainty_scaling},
               {"points", f.points},
               {"converged", f.converged},
@@ -283,8 +284,11 @@ std::string decay_fit_json(const std::string& input, const ParsedScene& scene, c
   out.update(decay_fit_to_json(fit, scene.apparatus.decay));
   ParsedScene fitted = scene;
   use_fitted_decay(fitted, fit);
-  if (const auto drag = predict_drag(fitted.apparatus, fitted.observations.front())) {
-    out["drag_theory"] = drag_to_json(*drag, *fitted.apparatus.decay);
+  // A decay-only document has no pendulum to predict the air's damping of.
+  if (!fitted.observations.empty()) {
+    if (const auto drag = predict_drag(fitted.apparatus, fitted.observations.front())) {
+      out["drag_theory"] = drag_to_json(*drag, *fitted.apparatus.decay);
+    }
   }
   out["warnings"] = warnings;
   return text(out, 2);
@@ -394,7 +398,54 @@ void correction_table(std::ostringstream& os, const ObservationResult& o) {
   os << line;
 }
 
+/// "alpha = 2.49e-04 +- 1.1e-05 1/s (fitted)" for the tables.
+std::string decay_parameter_line(const char* name, const FittedParameter& q, const char* unit) {
+  char line[200];
+  if (!q.fitted) {
+    std::snprintf(line, sizeof line, "  %-17s = %.4g %s (held%s)\n", name, q.value, unit,
+                  q.value == 0.0 ? ": not in the model" : "");
+  } else if (!q.uncertainty) {
+    std::snprintf(line, sizeof line, "  %-17s = %.4g +- ? %s (singular fit)\n", name, q.value, unit);
+  } else {
+    std::snprintf(line, sizeof line, "  %-17s = %.4g +- %.2g %s%s\n", name, q.value, *q.uncertainty, unit,
+                  q.at_bound ? " (at its bound 0)" : q.significant ? "" : " (not significant)");
+  }
+  return line;
+}
+
+std::string decay_fit_lines(const DecayFit& f) {
+  std::ostringstream os;
+  os << "Decay fit, Nelson & Olsson (1986) Eq. (25): model " << decay_model_name(f.model);
+  if (!f.model_reason.empty()) os << " (" << f.model_reason << ")";
+  os << "\n" << decay_parameter_line("alpha", f.alpha, "1/s") << decay_parameter_line("beta", f.beta, "1/(s rad)")
+     << decay_parameter_line("initial amplitude", f.initial_amplitude, "rad");
+  char line[200];
+  if (f.alpha.fitted && f.beta.fitted) {
+    std::snprintf(line, sizeof line, "  correlation(alpha, beta) = %+.3f\n", f.correlation_alpha_beta);
+    os << line;
+  }
+  if (f.uncertainty_scaling == "sigma") {
+    std::snprintf(line, sizeof line, "  chi2/dof = %.4g (%d points, %d degrees of freedom)\n",
+                  f.dof > 0 ? f.chi2 / f.dof : 0.0, f.points, f.dof);
+  } else {
+    std::snprintf(line, sizeof line,
+                  "  no sigma given: uncertainties scaled by the residual variance %.3g rad^2 "
+                  "(residual standard error %.3g rad; %d points)\n",
+                  f.residual_standard_error * f.residual_standard_error, f.residual_standard_error, f.points);
+  }
+  os << line;
+  return os.str();
+}
+
 }  // namespace
+
+std::string decay_fit_table(const ParsedScene& scene, const DecayFit& fit, const std::vector<std::string>& warnings) {
+  std::ostringstream os;
+  if (!scene.title.empty()) os << scene.title << "\n\n";
+  os << decay_fit_lines(fit);
+  for (const auto& w : warnings) os << "warning: " << w << "\n";
+  return os.str();
+}
 
 std::string result_table(const ParsedScene& scene, const Analysis& a) {
   std::ostringstream os;
@@ -467,6 +518,7 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
   }
   os << "status              = " << result_status_name(a.status) << "\n";
   for (const auto& r : a.status_reasons) os << "  " << r << "\n";
+  if (a.decay_fit) os << "\n" << decay_fit_lines(*a.decay_fit);
   if (!a.budget.empty()) {
     // A series lists every observation's inputs: the table shows the largest.
     constexpr std::size_t kShown = 12;

@@ -126,12 +126,14 @@ void read_timing(Object& parent, const std::string& prefix, Observation<double>&
                  ObservationSource& source, ParsedScene& out) {
   Object t(parent.at("timing"), prefix + "timing");
   const json& n_json = t.at("oscillations_per_trial");
-  if (!n_json.is_number_integer() || n_json.get<long long>() < 1 ||
-      n_json.get<long long>() > 1000000000) {
+  // 10.0 is the whole number 10, as a spreadsheet writes it.
+  const double n_value = n_json.is_number() ? n_json.get<double>() : 0.0;
+  if (!(n_value >= 1.0 && n_value <= 1e9 && n_value == std::floor(n_value))) {
     throw InputError(t.path("oscillations_per_trial"),
-                     "got " + shown(n_json) + "; expected a positive whole number");
+                     "got " + shown(n_json) + "; expected a positive whole number of oscillations (an "
+                     "oscillation is a full swing, there and back)");
   }
-  const int n_osc = static_cast<int>(n_json.get<long long>());
+  const int n_osc = static_cast<int>(n_value);
   const std::string unit_name = t.text("unit");
   const auto unit = find_unit(unit_name, Dimension::time);
   if (!unit) {
@@ -153,9 +155,12 @@ void read_timing(Object& parent, const std::string& prefix, Observation<double>&
     }
     times.push_back(x);
   }
+  // A bare number in the trials' unit, or a quantity like any other.
   auto optional_time = [&](const char* key) -> std::optional<double> {
     if (!t.has(key)) return std::nullopt;
-    const double x = finite_number(t.at(key), [&] { return t.path(key); }, "a number");
+    const double x = t.at(key).is_object()
+                         ? quantity(t, key, Dimension::time, Range::any).value / unit->factor
+                         : finite_number(t.at(key), [&] { return t.path(key); }, "a number or a quantity");
     if (x <= 0.0) {
       throw InputError(t.path(key), "got " + format_number(x) + " " + unit_name +
                                         "; expected a positive time");
@@ -352,7 +357,11 @@ void read_decay(Object& top, ParsedScene& out) {
     PENDULUM_FAIL_IF(d.has("sigma") && d.has("sigmas"), d.path("sigmas"),
             "got both sigma and sigmas; expected one of them");
     if (d.has("sigma")) {
-      const double sigma = finite_number(d.at("sigma"), [&] { return d.path("sigma"); }, "a number");
+      // A bare number in amplitude_unit, or a quantity like any other.
+      const double sigma = d.at("sigma").is_object()
+                               ? quantity(d, "sigma", Dimension::angle, Range::any).value / angle_unit.factor
+                               : finite_number(d.at("sigma"), [&] { return d.path("sigma"); },
+                                               "a number or a quantity");
       PENDULUM_FAIL_IF(!(sigma > 0.0), d.path("sigma"),
               "got " + format_number(sigma) + "; expected a positive uncertainty");
       data.sigmas.assign(data.times.size(), sigma * angle_unit.factor);

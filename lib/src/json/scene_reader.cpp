@@ -33,7 +33,7 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out) {
                        "the pendulum goes over the top)");
   const json& amplitude = o.at("amplitude");
   source.amplitude_raw = amplitude.at("value").get<double>();
-  source.amplitude_unit = amplitude.at("unit").get<std::string>();
+  source.amplitude_unit = find_unit(amplitude.at("unit").get<std::string>(), Dimension::angle)->name;
   out.observations.push_back(v);
   out.observation_uncertainties.push_back(u);
   out.sources.push_back(std::move(source));

@@ -44,6 +44,9 @@ Command add_amplitude_command(CLI::App& app);
 /// `pendulum-g batch SCENES...`: many scenes -> one summary (cli/batch_command.cpp).
 Command add_batch_command(CLI::App& app);
 
+/// `pendulum-g template`: a starter scene on stdout (cli/template_command.cpp).
+Command add_template_command(CLI::App& app);
+
 /// `pendulum-g fit-decay SCENE`: the decay record -> alpha, beta (cli/fit_decay_command.cpp).
 Command add_fit_decay_command(CLI::App& app);
 

@@ -29,7 +29,8 @@ Command add_fit_decay_command(CLI::App& app) {
   cmd->add_option("--model", o->model,
                   "Force a model: both, linear_only (beta = 0), quadratic_only (alpha = 0); "
                   "by default the data decide")
-      ->transform(CLI::CheckedTransformer(models, CLI::ignore_case));
+      ->transform(CLI::CheckedTransformer(models, CLI::ignore_case).description(""))
+      ->type_name("both|linear_only|quadratic_only");
 
   return {cmd, [o] {
     const ParsedScene scene = parse_decay_document(read_input(o->file));

@@ -49,7 +49,13 @@ int main(int argc, char** argv) {
   constexpr int kExitInput = 1, kExitUsage = 2, kExitInternal = 3;
   // Ceres reports through glog; pendulum-g reports through its own messages.
   FLAGS_minloglevel = google::GLOG_FATAL;
-  CLI::App app{"pendulum-g: reduce a pendulum experiment to g (docs/ for the scene schema)"};
+  CLI::App app{
+      "pendulum-g: reduce a pendulum experiment to g.\n"
+      "Start with `pendulum-g template > my_pendulum.json`, put your numbers in, then run\n"
+      "`pendulum-g reduce --format table my_pendulum.json`. The scene (JSON) holds timing\n"
+      "(oscillations_per_trial, unit, resolution, trials), length (pivot to the bob's centre),\n"
+      "amplitude, and optionally bob, air, site, ...: docs/scene.md. An oscillation is a full\n"
+      "swing, there and back; count full oscillations, not half swings."};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("pendulum-g ") + PENDULUM_G_VERSION);
 
@@ -58,6 +64,7 @@ int main(int argc, char** argv) {
       pendulum::cli::add_fit_decay_command(app),
       pendulum::cli::add_batch_command(app),
       pendulum::cli::add_amplitude_command(app),
+      pendulum::cli::add_template_command(app),
   };
 
   try {

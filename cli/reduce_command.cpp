@@ -32,7 +32,8 @@ Command add_reduce_command(CLI::App& app) {
   cmd->add_option("--amplitude-method", o->analysis.reduction.amplitude_method,
                   "Finite-amplitude method: auto (default: the cheapest whose error bound "
                   "is below 1% of the period's uncertainty), agm (exact), series, small_angle")
-      ->transform(CLI::CheckedTransformer(amplitude_methods(true), CLI::ignore_case));
+      ->transform(CLI::CheckedTransformer(amplitude_methods(true), CLI::ignore_case).description(""))
+      ->type_name("auto|agm|series|small_angle");
   cmd->add_option("--series-terms", o->analysis.reduction.series_terms,
                   "Terms of the Eq. (8) series for --amplitude-method series (default 4)")
       ->check(CLI::Range(1, 1000));

@@ -608,3 +608,21 @@ TEST_CASE("batch on the class of issue 14: who is off, and why", "[cli][batch][s
              WithinAbs(std::sqrt(ss / (ok_g.size() - 1)), 1e-12));
   std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("template prints a scene that reduces to an ok g with no warning", "[cli][template]") {
+  const std::string file = temporary_file();
+  const Run t = run("template > " + file);
+  REQUIRE(t.status == 0);
+  const Run r = run("reduce --strict " + file);
+  std::remove(file.c_str());
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  const json result = json::parse(r.out);
+  CHECK(result.at("status") == "ok");
+  CHECK(result.at("warnings").empty());
+  // Its trials are a 1 m pendulum's at standard gravity (2 pi sqrt(l/g)
+  // with the corrections, about 2.0076 s), timed by hand: g within its
+  // uncertainty of 9.80665 m/s^2.
+  const double g = result.at("g").at("value"), u = result.at("g").at("uncertainty");
+  CHECK(std::abs(g - 9.80665) < u);
+}

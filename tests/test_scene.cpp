@@ -229,3 +229,15 @@ TEST_CASE("A UTF-16 scene (Notepad's \"Unicode\") reads as its UTF-8 text", "[sc
                                              Contains("save it as UTF-8"));
   CHECK_THROWS_WITH(parse_scene(encode(true) + "x"), Contains("an odd number of bytes"));
 }
+
+TEST_CASE("A length measured to the top or bottom of the bob is referred to its centre", "[scene]") {
+  // N&O's bob: 6.10 +- 0.01 cm, so the radius is 3.05 cm +- 0.005 cm.
+  const ParsedScene centre = parse_scene(test::nelson_olsson_text());
+  const ParsedScene top = parse_scene(patched(R"J({"length": {"value": 2.9739, "measured_to": "top_of_bob"}})J"));
+  const ParsedScene bottom = parse_scene(patched(R"J({"length": {"value": 3.0349, "measured_to": "bottom_of_bob"}})J"));
+  CHECK_THAT(top.observations[0].length, WithinAbs(3.0044, 1e-15));
+  CHECK_THAT(bottom.observations[0].length, WithinAbs(3.0044, 1e-15));
+  // sqrt(0.0003^2 + 0.00005^2) m.
+  CHECK_THAT(top.observation_uncertainties[0].length, WithinRel(std::hypot(0.0003, 0.00005), 1e-12));
+  CHECK(centre.observation_uncertainties[0].length == 0.0003);
+}

@@ -23,6 +23,9 @@ struct ObservationSource {
   /// The amplitude as written, for the degrees-and-radians check.
   double amplitude_raw = 0.0;
   std::string amplitude_unit;
+  /// What the length was measured to: "center" (the default), "top_of_bob"
+  /// or "bottom_of_bob"; the reader adds or subtracts the bob's radius.
+  std::string measured_to = "center";
 };
 
 struct ParsedScene {

@@ -102,7 +102,10 @@ struct Measured {
 };
 
 /// {"value": x, "unit": "cm", "uncertainty": u, "source": "..."} under `key`.
-Measured quantity(Object& parent, const std::string& key, Dimension dim, Range range);
+/// With `measured_to`, the quantity may also hold "measured_to" (a length's
+/// reference point, read as text into it).
+Measured quantity(Object& parent, const std::string& key, Dimension dim, Range range,
+                  std::string* measured_to = nullptr);
 
 /// A required quantity into a field and its uncertainty.
 void put(Object& parent, const std::string& key, Dimension dim, Range range, double& value, double& sigma);

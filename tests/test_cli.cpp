@@ -132,7 +132,22 @@ TEST_CASE("The table format prints every row and g", "[cli]") {
   const Run r = run("reduce --format table " + kNelsonOlsson);
   REQUIRE(r.status == 0);
   CHECK_THAT(r.out, Contains("Decay of finite amplitude"));
-  CHECK_THAT(r.out, Contains("g                   = 9.8034"));
+  // g rounded to its uncertainty's two significant digits (0.00148 m/s^2).
+  CHECK_THAT(r.out, Contains("g                   = 9.8034 +- 0.0015 m/s^2 (period and length alone: +- 0.0014)"));
+  CHECK_THAT(r.out, Contains("dg (mGal)"));
+  CHECK_THAT(r.out, Contains("status              = ok"));
+  CHECK_THAT(r.out, Contains("Inputs without an uncertainty (they add nothing to the budget): ring.mass"));
+  // The warnings and the status are in the table, not repeated on stderr.
+  CHECK(r.err.empty());
+  // Without any uncertainty there is no z, but the difference is printed.
+  const std::string file = temporary_file();
+  std::ofstream(file) << R"({"length": {"value": 1, "unit": "m"}, "amplitude": {"value": 5, "unit": "deg"},
+    "timing": {"oscillations_per_trial": 10, "unit": "s", "trials": [20.08, 20.08]},
+    "site": {"reference_g": {"value": 9.81, "unit": "m/s^2"}}})";
+  const Run exact = run("reduce --format table " + file);
+  std::remove(file.c_str());
+  CHECK_THAT(exact.out, Contains("difference          = -0.0"));
+  CHECK_THAT(exact.out, Contains("(no z: neither g nor the expected g has an uncertainty)"));
 }
 
 TEST_CASE("The scene may come on standard input", "[cli]") {

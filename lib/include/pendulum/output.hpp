@@ -18,7 +18,8 @@ namespace pendulum {
 std::string result_json(const ParsedScene& scene, const Analysis& analysis, const AnalysisOptions& options,
                         const std::string& input, int indent = 2);
 
-/// The same result as an aligned text table (microseconds, 1e-5 m/s^2).
+/// The same result as an aligned text table for people: corrections in
+/// microseconds and mGal, g rounded to its uncertainty, the status.
 std::string result_table(const ParsedScene& scene, const Analysis& analysis);
 
 /// The document of `pendulum-g fit-decay`: the fit of the scene's decay

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -368,6 +369,12 @@ std::string batch_csv_header() {
 
 namespace {
 
+std::string format_fixed(double x, int decimals) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, x);
+  return text;
+}
+
 /// "+- 0.00148" or "(no uncertainty: singular fit)"
 std::string plus_minus(const std::optional<double>& u, const char* format) {
   if (!u) return "+- ? (singular fit)";
@@ -376,10 +383,24 @@ std::string plus_minus(const std::optional<double>& u, const char* format) {
   return std::string("+- ") + text;
 }
 
+/// Decimals that show `u` to two significant digits, as a lab report
+/// rounds a value to its uncertainty.
+int decimals_of(double u) {
+  if (!(u > 0.0) || !std::isfinite(u)) return 5;
+  return std::clamp(1 - static_cast<int>(std::floor(std::log10(u))), 0, 12);
+}
+
+/// "9.8034 +- 0.0015": the value rounded to its uncertainty.
+std::string rounded(double value, const std::optional<double>& u) {
+  if (!u) return plus_minus(u, "%.5f").insert(0, format_fixed(value, 5) + " ");
+  const int d = decimals_of(*u);
+  return format_fixed(value, d) + " +- " + format_fixed(*u, d);
+}
+
 void correction_table(std::ostringstream& os, const ObservationResult& o) {
   char line[320];
   std::snprintf(line, sizeof line, "%-26s %12s %10s %16s  %-10s %s\n", "Correction", "dT (us)", "+- (us)",
-                "dg (1e-5 m/s^2)", "status", "method");
+                "dg (mGal)", "status", "method");
   os << line;
   for (const auto& row : o.corrections) {
     if (row.delta_T) {
@@ -395,7 +416,7 @@ void correction_table(std::ostringstream& os, const ObservationResult& o) {
   }
   std::snprintf(line, sizeof line, "%-26s %+12.4f %10s %+16.4f\n", "Total", o.total_delta_T * 1e6, "",
                 o.total_delta_g * 1e5);
-  os << line;
+  os << line << "(dT: the correction to the period, in microseconds; dg: to g, in mGal, 1 mGal = 1e-5 m/s^2)\n";
 }
 
 /// "alpha = 2.49e-04 +- 1.1e-05 1/s (fitted)" for the tables.
@@ -461,9 +482,7 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     std::snprintf(line, sizeof line, "Ideal period T0     = %.6f %s s\n", o.period_ideal.value,
                   plus_minus(o.period_ideal.uncertainty, "%.6f").c_str());
     os << line;
-    std::snprintf(line, sizeof line, "g (uncorrected)     = %.5f %s m/s^2\n", a.fit.textbook.g.value,
-                  plus_minus(a.fit.textbook.g.uncertainty, "%.5f").c_str());
-    os << line;
+    os << "g (uncorrected)     = " << rounded(a.fit.textbook.g.value, a.fit.textbook.g.uncertainty) << " m/s^2\n";
   } else {
     std::snprintf(line, sizeof line, "%5s %9s %12s %12s %10s %12s %9s %12s\n", "obs", "L (m)", "theta0 (deg)",
                   "T meas (s)", "+- (s)", "T model (s)", "resid (sd)", "T-T0 (us)");
@@ -498,12 +517,10 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     }
     os << "\n";
   }
-  std::snprintf(line, sizeof line, "g                   = %.5f %s m/s^2", a.g.value,
-                plus_minus(a.g.uncertainty, "%.5f").c_str());
-  os << line;
+  os << "g                   = " << rounded(a.g.value, a.g.uncertainty) << " m/s^2";
   if (a.g_period_and_length_uncertainty) {
-    std::snprintf(line, sizeof line, " (period and length alone: +- %.5f)", *a.g_period_and_length_uncertainty);
-    os << line;
+    os << " (period and length alone: +- "
+       << format_fixed(*a.g_period_and_length_uncertainty, a.g.uncertainty ? decimals_of(*a.g.uncertainty) : 5) << ")";
   }
   os << "\n";
   if (a.expected_g) {
@@ -513,8 +530,11 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     if (a.z_score) {
       std::snprintf(line, sizeof line, "difference          = %+.5f m/s^2 = %+.2f combined sigma\n",
                     a.g.value - a.expected_g->value, *a.z_score);
-      os << line;
+    } else {
+      std::snprintf(line, sizeof line, "difference          = %+.5f m/s^2 (no z: neither g nor the expected g has an "
+                    "uncertainty)\n", a.g.value - a.expected_g->value);
     }
+    os << line;
   }
   os << "status              = " << result_status_name(a.status) << "\n";
   for (const auto& r : a.status_reasons) os << "  " << r << "\n";
@@ -529,6 +549,12 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     }
     if (a.budget.size() > kShown) os << "  ... and " << a.budget.size() - kShown << " more (JSON: g.budget)\n";
   }
+  if (!a.inputs_without_uncertainty.empty()) {
+    os << "Inputs without an uncertainty (they add nothing to the budget):";
+    for (const auto& in : a.inputs_without_uncertainty) os << " " << in;
+    os << "\n";
+  }
+  for (const auto& assumption : scene.assumptions) os << "assumption: " << assumption << "\n";
   for (const auto& w : scene.warnings) os << "warning: " << w << "\n";
   for (const auto& w : a.warnings) os << "warning: " << w << "\n";
   return os.str();

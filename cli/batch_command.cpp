@@ -157,6 +157,14 @@ Command add_batch_command(CLI::App& app) {
   cmd->add_option("scenes", o->paths,
                   "Scene files, folders (their *.json, any case; other entries are skipped with a note), or - "
                   "for scenes on standard input (one a line, or pretty-printed one after another)");
+  cmd->footer(
+      "Output: one line per scene, in the order given (folders: by file name), then a class line.\n"
+      "Columns (CSV; JSON lines have the same keys): input, ok (a result exists), g_m_s2,\n"
+      "g_uncertainty_m_s2, largest_budget_input and largest_budget_m_s2 (the input that dominates\n"
+      "g's uncertainty), expected_g_m_s2 and z (with a site), warnings (their texts), error,\n"
+      "status (ok, suspect or failed), status_reasons (the likely slip and the input to fix), title.\n"
+      "Class line: JSON {\"class\": true, \"counts\": ..., \"g_of_ok\": ...}; CSV \"# class: ...\".\n"
+      "Exit status 1 when any scene failed. docs/instructors.md has an example.");
   cmd->add_option("--list", o->list, "A file naming one scene file per line (# starts a comment)");
   cmd->add_option("--format", o->format, "Summary: jsonl (default, one JSON object per scene) or csv")
       ->check(CLI::IsMember({"jsonl", "csv"}));

@@ -149,6 +149,24 @@ void judge_amplitudes(const ParsedScene& scene, std::vector<std::string>& reason
   }
 }
 
+/// A decay record whose amplitudes are 57 times the scene's, or 1/57 of
+/// them, is in the other angular unit. Nothing finer: a record may well start
+/// from a larger release than the timing (Nelson & Olsson's starts at 17 deg,
+/// their trials at 3 deg).
+void judge_decay_record(const ParsedScene& scene, std::vector<std::string>& reasons) {
+  constexpr double kUnitFactor = 20.0;  // far beyond any release, short of 57.3
+  if (!scene.decay_data || scene.series || scene.decay_data->amplitudes.empty()) return;
+  const double first = scene.decay_data->amplitudes.front(), swing = scene.observations.front().amplitude;
+  const double ratio = first / swing, degree = kPi / 180.0;
+  if (ratio > 1.0 / kUnitFactor && ratio < kUnitFactor) return;
+  const bool tiny = ratio < 1.0;
+  reasons.push_back("decay.data.amplitude_unit: the record starts at " + format_number(first / degree, 3) +
+                    " deg, " + (tiny ? "1/" : "") + format_number(tiny ? 1.0 / ratio : ratio, 3) +
+                    " times the scene's amplitude " + format_number(swing / degree, 3) + " deg: " +
+                    (tiny ? "radians labelled deg? fix decay.data.amplitude_unit (\"rad\")"
+                          : "degrees labelled rad? fix decay.data.amplitude_unit (\"deg\")"));
+}
+
 }  // namespace
 
 std::optional<std::string> name_slip(double ratio) {
@@ -167,6 +185,7 @@ Verdict judge(const ParsedScene& scene, const Analysis& analysis) {
   v.reasons.insert(v.reasons.end(), scene.suspicions.begin(), scene.suspicions.end());
   judge_air(scene, v.reasons);
   judge_amplitudes(scene, v.reasons);
+  judge_decay_record(scene, v.reasons);
   if (!v.reasons.empty()) v.status = ResultStatus::suspect;
   return v;
 }

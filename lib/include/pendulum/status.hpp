@@ -45,7 +45,9 @@ std::optional<std::string> bob_density_slip(const Apparatus<double>& apparatus);
 /// lighter than any solid ball (a mass unit slip) or than the air, when the
 /// air pressure is a hundredth or a thousandth of an atmosphere (hPa or kPa
 /// written as Pa), or when an amplitude in deg reads as an ordinary lab
-/// amplitude only in radians, or when the reader found a trial far from the
+/// amplitude only in radians, when a decay record starts 20 times above or
+/// below the scene's amplitude (the other angular unit), or when the reader
+/// found a trial far from the
 /// others (ParsedScene::suspicions). Otherwise ok.
 struct Verdict {
   ResultStatus status = ResultStatus::ok;

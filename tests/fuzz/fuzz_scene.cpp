@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "pendulum/analysis.hpp"
 #include "pendulum/output.hpp"
 #include "pendulum/scene_json.hpp"

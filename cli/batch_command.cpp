@@ -16,6 +16,7 @@
 #include "commands.hpp"
 #include "pendulum/analysis.hpp"
 #include "pendulum/output.hpp"
+#include "pendulum/report/html_report.hpp"
 #include "pendulum/scene_json.hpp"
 
 namespace pendulum::cli {
@@ -130,15 +131,23 @@ std::vector<Job> gather(const std::vector<std::string>& paths, const std::string
   return jobs;
 }
 
-/// The summary line of one scene; never throws.
-BatchLine process(const Job& job, const AnalysisOptions& options) {
+/// The summary line of one scene and, for --report, its report; never throws.
+struct Outcome {
+  BatchLine line;
+  report::ClassEntry entry;
+};
+Outcome process(const Job& job, const AnalysisOptions& options, bool with_report) {
   try {
     const ParsedScene scene = parse_scene(job.text ? *job.text : read_input(job.name));
-    return batch_line(job.name, scene, analyse(scene, options));
+    const Analysis analysis = analyse(scene, options);
+    Outcome out{batch_line(job.name, scene, analysis), {job.name, std::nullopt, ""}};
+    if (with_report) out.entry.report = report::make_scene_report(job.name, scene, analysis);
+    return out;
   } catch (const InputError& e) {
-    return batch_failure(job.name, e.what());
+    return {batch_failure(job.name, e.what()), {job.name, std::nullopt, e.what()}};
   } catch (const std::exception& e) {
-    return batch_failure(job.name, std::string("internal error: ") + e.what());
+    const std::string error = std::string("internal error: ") + e.what();
+    return {batch_failure(job.name, error), {job.name, std::nullopt, error}};
   }
 }
 
@@ -149,6 +158,7 @@ Command add_batch_command(CLI::App& app) {
     std::vector<std::string> paths;
     std::string list;
     std::string format = "jsonl";
+    std::string report;
     unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
   };
   auto o = std::make_shared<Options>();
@@ -168,6 +178,9 @@ Command add_batch_command(CLI::App& app) {
   cmd->add_option("--list", o->list, "A file naming one scene file per line (# starts a comment)");
   cmd->add_option("--format", o->format, "Summary: jsonl (default, one JSON object per scene) or csv")
       ->check(CLI::IsMember({"jsonl", "csv"}));
+  cmd->add_option("--report", o->report,
+                  "Also write an HTML class report to this file: every g against the expected g, the failures, "
+                  "each scene's section");
   cmd->add_option("--jobs", o->jobs, "Scenes reduced at once (default: the number of cores)")
       ->check(CLI::Range(1u, 256u));
 
@@ -175,15 +188,16 @@ Command add_batch_command(CLI::App& app) {
     const std::vector<Job> jobs = gather(o->paths, o->list);
     if (jobs.empty()) throw InputError("", "no scenes: give files, folders, --list, or - for standard input");
     const AnalysisOptions options;
-    std::vector<std::optional<BatchLine>> results(jobs.size());
+    std::vector<std::optional<Outcome>> results(jobs.size());
+    std::vector<report::ClassEntry> entries;
     std::mutex mutex;
     std::condition_variable ready;
     std::atomic<std::size_t> next{0};
     auto work = [&] {
       for (std::size_t i = next++; i < jobs.size(); i = next++) {
-        auto line = process(jobs[i], options);
+        auto outcome = process(jobs[i], options, !o->report.empty());
         std::lock_guard<std::mutex> lock(mutex);
-        results[i] = std::move(line);
+        results[i] = std::move(outcome);
         ready.notify_one();
       }
     };
@@ -202,7 +216,8 @@ Command add_batch_command(CLI::App& app) {
       {
         std::unique_lock<std::mutex> lock(mutex);
         ready.wait(lock, [&] { return results[i].has_value(); });
-        line = std::move(*results[i]);
+        line = std::move(results[i]->line);
+        if (!o->report.empty()) entries.push_back(std::move(results[i]->entry));
       }
       failed += !line.ok;
       std::cout << (o->format == "csv" ? line.csv : line.json + "\n");
@@ -219,6 +234,7 @@ Command add_batch_command(CLI::App& app) {
     if (progress) std::cerr << "\n";
     const ClassSummary summary = summarise_class(printed);
     std::cout << (o->format == "csv" ? batch_class_csv(summary) : batch_class_json(summary) + "\n");
+    if (!o->report.empty()) write_output(o->report, report::class_report_html(entries));
     return failed ? 1 : 0;
   }};
 }

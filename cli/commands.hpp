@@ -13,6 +13,10 @@
 
 #include "pendulum/amplitude.hpp"
 
+namespace pendulum {
+struct AnalysisOptions;
+}
+
 namespace pendulum::cli {
 
 /// Exit status of `reduce --strict` on a suspect result (docs/output.md).
@@ -34,6 +38,10 @@ void print_warnings(const std::vector<std::string>& warnings);
 /// when the command can choose.
 std::map<std::string, AmplitudeMethod> amplitude_methods(bool with_auto);
 
+/// The options of an analysis (--negligible-fraction, --amplitude-method,
+/// --series-terms), shared by the commands that reduce one scene.
+void add_analysis_options(CLI::App& cmd, AnalysisOptions& options);
+
 /// `pendulum-g reduce SCENE`: scene -> corrected g (cli/reduce_command.cpp).
 Command add_reduce_command(CLI::App& app);
 
@@ -47,7 +55,21 @@ Command add_batch_command(CLI::App& app);
 /// `pendulum-g template`: a starter scene on stdout (cli/template_command.cpp).
 Command add_template_command(CLI::App& app);
 
+/// `pendulum-g report SCENE -o report.html`: the reduction as one HTML page
+/// or one SVG plot (cli/report_command.cpp).
+Command add_report_command(CLI::App& app);
+
+/// Writes `text` to `path` ("-": standard output): a regular file through a
+/// temporary file renamed over it, so that a failure leaves no partial file;
+/// a device or pipe (/dev/stdout) in place. Throws InputError ("output: cannot
+/// write PATH: reason").
+void write_output(const std::string& path, const std::string& text);
+
 /// `pendulum-g fit-decay SCENE`: the decay record -> alpha, beta (cli/fit_decay_command.cpp).
 Command add_fit_decay_command(CLI::App& app);
+
+/// `pendulum-g clock SCENE`: circular and impulse error of a clock
+/// pendulum (cli/clock_command.cpp).
+Command add_clock_command(CLI::App& app);
 
 }  // namespace pendulum::cli

@@ -11,6 +11,7 @@
 #include <glog/logging.h>
 
 #include "commands.hpp"
+#include "pendulum/analysis.hpp"
 #include "pendulum/scene_json.hpp"
 
 namespace pendulum::cli {
@@ -43,6 +44,21 @@ std::map<std::string, AmplitudeMethod> amplitude_methods(bool with_auto) {
   return names;
 }
 
+void add_analysis_options(CLI::App& cmd, AnalysisOptions& options) {
+  cmd.add_option("--negligible-fraction", options.negligible_fraction,
+                 "Flag a correction negligible below this fraction of the period's "
+                 "uncertainty (default 0.1)")
+      ->check(CLI::Range(0.0, 1e6));
+  cmd.add_option("--amplitude-method", options.reduction.amplitude_method,
+                 "Finite-amplitude method: auto (default: the cheapest whose error bound "
+                 "is below 1% of the period's uncertainty), agm (exact), series, small_angle")
+      ->transform(CLI::CheckedTransformer(amplitude_methods(true), CLI::ignore_case).description(""))
+      ->type_name("auto|agm|series|small_angle");
+  cmd.add_option("--series-terms", options.reduction.series_terms,
+                 "Terms of the Eq. (8) series for --amplitude-method series (default 4)")
+      ->check(CLI::Range(1, 1000));
+}
+
 }  // namespace pendulum::cli
 
 int main(int argc, char** argv) {
@@ -64,6 +80,8 @@ int main(int argc, char** argv) {
       pendulum::cli::add_fit_decay_command(app),
       pendulum::cli::add_batch_command(app),
       pendulum::cli::add_amplitude_command(app),
+      pendulum::cli::add_report_command(app),
+      pendulum::cli::add_clock_command(app),
       pendulum::cli::add_template_command(app),
   };
 

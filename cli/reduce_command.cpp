@@ -25,18 +25,7 @@ Command add_reduce_command(CLI::App& app) {
   cmd->add_flag("--strict", o->strict,
                "Exit with status 4 when the result is suspect (g far from the expected value, or an input "
                "that looks like a slip); the result is printed all the same");
-  cmd->add_option("--negligible-fraction", o->analysis.negligible_fraction,
-                  "Flag a correction negligible below this fraction of the period's "
-                  "uncertainty (default 0.1)")
-      ->check(CLI::Range(0.0, 1e6));
-  cmd->add_option("--amplitude-method", o->analysis.reduction.amplitude_method,
-                  "Finite-amplitude method: auto (default: the cheapest whose error bound "
-                  "is below 1% of the period's uncertainty), agm (exact), series, small_angle")
-      ->transform(CLI::CheckedTransformer(amplitude_methods(true), CLI::ignore_case).description(""))
-      ->type_name("auto|agm|series|small_angle");
-  cmd->add_option("--series-terms", o->analysis.reduction.series_terms,
-                  "Terms of the Eq. (8) series for --amplitude-method series (default 4)")
-      ->check(CLI::Range(1, 1000));
+  add_analysis_options(*cmd, o->analysis);
 
   return {cmd, [o] {
     const ParsedScene scene = parse_scene(read_input(o->file));

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <sstream>
 #include <vector>
 #include <string>
@@ -184,6 +185,11 @@ TEST_CASE("Catalogue of bad scenes", "[cli][errors]") {
     // sanitizer report after it.
     CHECK(r.err.rfind("pendulum-g: error: ", 0) == 0);
     CHECK(r.err.find('\n') == r.err.size() - 1);
+    // report fails with the same message and writes nothing (docs/report.md).
+    const Run report = run("report " + file + " -o " + file + ".html");
+    CHECK(report.status == 1);
+    CHECK(report.err == r.err);
+    CHECK_FALSE(std::filesystem::exists(file + ".html"));
   }
   std::remove(file.c_str());
 }
@@ -640,4 +646,357 @@ TEST_CASE("template prints a scene that reduces to an ok g with no warning", "[c
   // uncertainty of 9.80665 m/s^2.
   const double g = result.at("g").at("value"), u = result.at("g").at("uncertainty");
   CHECK(std::abs(g - 9.80665) < u);
+}
+
+namespace {
+
+const std::string kDecayScene = std::string(PENDULUM_DATA_DIR) + "/nelson_olsson_1986_decay.json";
+
+// What in a page would load something from elsewhere: a scheme, a
+// protocol-relative "//", a src, a CSS url() or @import, an element that
+// fetches, or a link that leaves the page. Returns the first found, or "".
+std::string external_reference(const std::string& page) {
+  for (const char* bad : {"http:", "https:", "ftp:", "file://", "//", "src=", "srcset", "url(", "@import", "<link",
+                          "<script", "<iframe", "<object", "<embed", "<img", "<base"}) {
+    if (page.find(bad) != std::string::npos) return bad;
+  }
+  for (std::size_t at = page.find("href="); at != std::string::npos; at = page.find("href=", at + 1)) {
+    if (page.compare(at, 7, "href=\"#") != 0) return page.substr(at, 20);
+  }
+  return "";
+}
+
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// A new empty directory for a test's output.
+std::string temporary_directory() {
+  char name[] = "/tmp/pendulum-g-report-XXXXXX";
+  REQUIRE(mkdtemp(name));
+  return name;
+}
+
+const std::string kFeinsteinClock = std::string(PENDULUM_DATA_DIR) + "/feinstein_2005_clock.json";
+
+// The bundled clock scene with `patch` merged in (RFC 7386), run by `clock`.
+Run run_clock(const json& patch, const std::string& options = "") {
+  json scene = json::parse(pendulum::test::read_text(kFeinsteinClock));
+  scene.merge_patch(patch);
+  const std::string file = temporary_file();
+  std::ofstream(file) << scene.dump();
+  const Run r = run("clock " + options + " " + file);
+  std::remove(file.c_str());
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("report: one self-contained HTML page, the same bytes twice", "[cli][report]") {
+  const std::string dir = temporary_directory();
+  struct Case {
+    std::string scene;
+    std::size_t plots;  // corrections, budget, and the decay record when there is one
+  };
+  for (const Case& c : {Case{kNelsonOlsson, 2}, Case{kDecayScene, 3}}) {
+    INFO(c.scene);
+    const Run first = run("report " + c.scene + " -o " + dir + "/first.html");
+    REQUIRE(first.status == 0);
+    CHECK(first.out.empty());
+    CHECK(first.err.empty());
+    const Run second = run("report " + c.scene + " --output " + dir + "/second.html");
+    REQUIRE(second.status == 0);
+    const std::string page = pendulum::test::read_text(dir + "/first.html");
+    CHECK(page == pendulum::test::read_text(dir + "/second.html"));
+    CHECK(page == run("report " + c.scene).out);  // standard output by default
+
+    CHECK(page.rfind("<!DOCTYPE html>\n<html lang=\"en\">", 0) == 0);
+    CHECK(external_reference(page) == "");
+    CHECK(occurrences(page, "<svg ") == c.plots);
+    CHECK(occurrences(page, "<title id=") == c.plots);
+    CHECK(occurrences(page, "<desc id=") == c.plots);
+    // The numbers of `reduce --format table` (README): g and the comparison.
+    CHECK_THAT(page, Contains("g = 9.80340 \u00B1 0.00148 m/s\u00B2"));
+    CHECK_THAT(page, Contains("+0.00080 m/s\u00B2 = +0.54 combined standard uncertainties"));
+    CHECK_THAT(page, Contains("Nelson &amp; Olsson (1986)"));
+    CHECK_THAT(page, Contains("<td>Finite amplitude</td><td class=\"num\">+596.00"));
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("report: bad input fails as reduce does and leaves no file", "[cli][report][errors]") {
+  const std::string dir = temporary_directory();
+  json scene = json::parse(pendulum::test::read_text(kNelsonOlsson));
+  scene["bob"]["diameter"]["unit"] = "inch";
+  const std::string bad = dir + "/bad.json";
+  std::ofstream(bad) << scene.dump();
+
+  const Run reduce = run("reduce " + bad);
+  const Run report = run("report " + bad + " -o " + dir + "/report.html");
+  CHECK(reduce.status == 1);
+  CHECK(report.status == 1);
+  CHECK(report.out.empty());
+  CHECK(report.err == reduce.err);  // the same message, naming the file and the JSON path
+  CHECK_THAT(report.err, Contains("bad.json: bob.diameter.unit: got \"inch\""));
+  // Nothing written: no report, no temporary file beside it.
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) files.push_back(entry.path().filename());
+  CHECK(files == std::vector<std::string>{"bad.json"});
+
+  // An earlier report stays as it was.
+  std::ofstream(dir + "/report.html") << "earlier";
+  CHECK(run("report " + bad + " -o " + dir + "/report.html").status == 1);
+  CHECK(pendulum::test::read_text(dir + "/report.html") == "earlier");
+
+  const Run unwritable = run("report " + kNelsonOlsson + " -o " + dir + "/missing/report.html");
+  CHECK(unwritable.status == 1);
+  CHECK_THAT(unwritable.err, Contains("output: cannot write " + dir + "/missing/report.html: No such file or directory"));
+  const Run directory = run("report " + kNelsonOlsson + " -o " + dir);
+  CHECK(directory.status == 1);
+  CHECK_THAT(directory.err, Contains("output: cannot write " + dir + ": Is a directory"));
+  // A device is written in place, never replaced by a file (/dev/stdout here).
+  const Run device = run("report " + kNelsonOlsson + " -o /dev/stdout");
+  CHECK(device.status == 0);
+  CHECK(device.out == run("report " + kNelsonOlsson).out);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("report --plot: one plot as an SVG file", "[cli][report]") {
+  const Run corrections = run("report " + kNelsonOlsson + " --plot corrections");
+  REQUIRE(corrections.status == 0);
+  CHECK(corrections.out.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"", 0) ==
+        0);
+  CHECK_THAT(corrections.out, Contains("<title id=\"corrections-title\">Corrections to the period</title>"));
+  CHECK(corrections.out == run("report --format svg --plot corrections " + kNelsonOlsson).out);
+  CHECK(run("report " + kDecayScene + " --plot decay").status == 0);
+
+  const Run no_record = run("report " + kNelsonOlsson + " --plot decay");
+  CHECK(no_record.status == 1);
+  CHECK(no_record.out.empty());
+  CHECK_THAT(no_record.err, Contains("decay.data: the scene has no decay record to plot"));
+  CHECK(run("report " + kNelsonOlsson + " --format svg").status == 2);  // which plot?
+  CHECK(run("report " + kNelsonOlsson + " --format html --plot budget").status == 2);
+  CHECK(run("report " + kNelsonOlsson + " --plot residuals").status == 2);
+}
+
+TEST_CASE("batch --report: the class, sorted, failures, a section per scene", "[cli][batch][report]") {
+  const std::string dir = temporary_directory();
+  const std::string cls = std::string(PENDULUM_DATA_DIR) + "/class";
+  const Run r = run("batch --jobs 2 --report " + dir + "/class.html " + cls);
+  CHECK(r.status == 1);  // student_c fails
+  CHECK(occurrences(r.out, "\n") == 4);  // the summary as without --report: three scenes and the class line
+  const std::string page = pendulum::test::read_text(dir + "/class.html");
+  CHECK(external_reference(page) == "");
+  CHECK_THAT(page, Contains("3 scenes: 2 reduced, 1 failed."));
+  // The rows link to the sections; student_c has a row among the failures only.
+  for (const char* s : {"href=\"#scene-1\"", "href=\"#scene-2\"", "id=\"scene-1\"", "id=\"scene-2\""}) {
+    INFO(s);
+    CHECK(occurrences(page, s) >= 1);
+  }
+  CHECK(page.find("scene-3") == std::string::npos);
+  CHECK_THAT(page, Contains("<td><code>" + cls + "/student_c.json</code></td><td>bob.diameter.unit: got &quot;inch&quot;"));
+  // docs/instructors.md: A at +0.54, B at +5.18 combined standard uncertainties, in that order (by g).
+  const std::size_t a = page.find("<td class=\"num\">+0.54</td>"), b = page.find("<td class=\"num\">+5.18</td>");
+  CHECK(a != std::string::npos);
+  CHECK(b != std::string::npos);
+  CHECK(a < b);
+  // One worker or two, the same page.
+  CHECK(run("batch --jobs 1 --report " + dir + "/again.html " + cls).status == 1);
+  CHECK(page == pendulum::test::read_text(dir + "/again.html"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("report: a page for every valid scene of the catalogue, extreme or suspicious", "[cli][report]") {
+  const json catalogue =
+      json::parse(pendulum::test::read_text(std::string(PENDULUM_TESTS_DIR) + "/valid_scenes.json"));
+  const json base = json::parse(pendulum::test::read_text(kNelsonOlsson));
+  const std::string file = temporary_file();
+  // A number printed from NaN or infinity, not a word holding those letters.
+  const std::regex non_finite("(^|[^A-Za-z])-?(nan|inf)", std::regex::icase);
+  for (const json& entry : catalogue.at("cases")) {
+    std::ofstream(file, std::ios::binary) << pendulum::test::catalogue_text(entry, base);
+    const Run r = run("report " + file);
+    INFO(entry.at("name").get<std::string>() << "\nstderr: " << r.err);
+    REQUIRE(r.status == 0);
+    CHECK(external_reference(r.out) == "");
+    CHECK_FALSE(std::regex_search(r.out, non_finite));
+    CHECK(occurrences(r.out, "<svg ") >= 1);
+    CHECK(r.out.size() > 10000);
+  }
+  std::remove(file.c_str());
+}
+
+TEST_CASE("report: text from the scene is escaped, never markup", "[cli][report]") {
+  const std::string dir = temporary_directory();
+  json scene = json::parse(pendulum::test::read_text(kNelsonOlsson));
+  scene["title"] = "<script>alert(\"g\")</script> & <b>co</b>";
+  scene["source"] = "notebook p. 3 <img onerror=x>";
+  std::ofstream(dir + "/odd.json") << scene.dump();
+  const Run r = run("report " + dir + "/odd.json");
+  REQUIRE(r.status == 0);
+  CHECK(external_reference(r.out) == "");
+  CHECK_THAT(r.out, Contains("<h2>&lt;script&gt;alert(&quot;g&quot;)&lt;/script&gt; &amp; &lt;b&gt;co&lt;/b&gt;</h2>"));
+  CHECK_THAT(r.out, Contains("notebook p. 3 &lt;img onerror=x&gt;"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("clock on Feinstein's 1-second pendulum: Tables 1 and 3B, Sec. IX", "[cli][clock]") {
+  const Run r = run("clock " + kFeinsteinClock);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  const json out = json::parse(r.out);
+  CHECK(out.at("schema") == "pendulum-g/clock/1");
+  // Asked 1e-3 s/day: the cycloid's bound at 240' (3e-3 s/day) is too wide.
+  CHECK(out.at("route").at("name") == "circular_elliptic");
+  // Table 1 at 240': 26.326 s/day, 3.6575E-03 s/day/asec; the uncertainty
+  // is the rate times the scene's 1' (60 arc seconds).
+  CHECK_THAT(out.at("circular_error").at("value").get<double>(), WithinAbs(26.326, 0.5e-3));
+  CHECK_THAT(out.at("circular_error_rate").at("value").get<double>(), WithinAbs(3.6575e-3, 0.5e-7));
+  CHECK_THAT(out.at("circular_error").at("uncertainty").get<double>(), WithinAbs(60 * 3.6575e-3, 1e-5));
+  // Table 3B, Q = 10 000, relative location 0.9, 240': 8.916 s/day and
+  // 0.003619 s/day/asec, negative for an impulse toward equilibrium.
+  CHECK_THAT(out.at("impulse_error").at("value").get<double>(), WithinAbs(-8.916, 0.5e-3));
+  CHECK_THAT(out.at("impulse_error_rate").at("value").get<double>(), WithinAbs(-0.003619, 0.5e-6));
+  // Table 1: the free period 2.000609 s (2.0000 s nominal; 2.00000019 s here).
+  CHECK_THAT(out.at("period").at("free").at("value").get<double>(), WithinAbs(2.000610, 0.5e-6));
+  // Sec. IX: "a slight ... decrease in the semi-amplitude" cancels the rates.
+  const double cancel = out.at("cancelling_semi_amplitude").at("value").get<double>();
+  CHECK(cancel < 240.0);
+  CHECK(cancel > 236.0);
+  // At a fixed location an impulse toward equilibrium adds to the circular
+  // error's change with the amplitude (+0.9 * 0.003619 s/day/asec): no
+  // amplitude holds the daily loss still.
+  CHECK_THAT(out.at("impulse_error_amplitude_rate").at("value").get<double>(), WithinAbs(0.9 * 0.003619, 1e-5));
+  CHECK(out.at("amplitude_insensitive_semi_amplitude").at("value").is_null());
+
+  const Run table = run("clock --format table " + kFeinsteinClock);
+  REQUIRE(table.status == 0);
+  for (const char* row : {"route: circular_elliptic", "circular error (E-2)", "26.3263", "impulse error (D-1)",
+                          "-8.91618", "cancelling semi-amplitude (IX)", "238.7447"}) {
+    CHECK_THAT(table.out, Contains(row));
+  }
+}
+
+TEST_CASE("clock picks the cheapest route within the scene's accuracy", "[cli][clock]") {
+  struct Case {
+    json patch;
+    const char* route;
+  };
+  const Case cases[] = {
+      {{{"accuracy", {{"value", 0.01}, {"unit", "s/day"}}}}, "cycloid"},
+      {{{"accuracy", {{"value", 0}, {"unit", "s/day"}}}}, "circular_elliptic"},
+      {{{"damped", true}, {"accuracy", {{"value", 0.01}, {"unit", "s/day"}}}}, "cycloid"},
+      {{{"damped", true}, {"accuracy", {{"value", 2}, {"unit", "ms/day"}}}}, "circular_elliptic"},
+      {{{"damped", true}, {"accuracy", {{"value", 1e-6}, {"unit", "s/day"}}}}, "circular_rk4"},
+      {{{"path", "cycloidal"}}, "cycloid"},
+      {{{"path", "cycloidal"}, {"damped", true}, {"accuracy", {{"value", 1e-6}, {"unit", "s/day"}}}},
+       "cycloid_damped"},
+  };
+  for (const Case& c : cases) {
+    INFO(c.patch.dump());
+    const Run r = run_clock(c.patch);
+    REQUIRE(r.status == 0);
+    const json out = json::parse(r.out);
+    CHECK(out.at("route").at("name") == c.route);
+    // Every route is within its bound, and near the exact value: Table 3B's
+    // 8.916 s/day on the circle (damping moves it 1.4e-4 s/day, the cycloid
+    // standing in 2e-4); on a cycloid of semi-amplitude beta0 = 240', the
+    // closed form of App. H, omega0 dt = asin(x) - asin(x/sqrt(1 + pi/Q)),
+    // x = sin(216')/sin(240'), in s/day: 86400 dt/(T0/2); damping moves it
+    // by less than 1/Q of itself.
+    CHECK(out.at("route").at("error_bound_s_day").get<double>() <=
+          std::max(out.at("route").at("accuracy_asked_s_day").get<double>(), 1e-8));
+    const double x = std::sin(216.0 / 60.0 * M_PI / 180.0) / std::sin(240.0 / 60.0 * M_PI / 180.0);
+    const double cycloid = 86400.0 / M_PI * (std::asin(x) - std::asin(x / std::sqrt(1.0 + M_PI / 1e4)));
+    const bool on_cycloid = c.patch.contains("path");
+    CHECK_THAT(out.at("impulse_error").at("value").get<double>(),
+               WithinAbs(on_cycloid ? -cycloid : -8.916, on_cycloid ? cycloid / 1e4 : 1e-3));
+  }
+  // A cycloid has no circular error and nothing to cancel.
+  const json cycloid = json::parse(run_clock({{"path", "cycloidal"}}).out);
+  CHECK(cycloid.at("circular_error").at("value") == 0.0);
+  CHECK(cycloid.at("cancelling_semi_amplitude").at("value").is_null());
+  // Impulse at the very end: finite error (Table 3B 487.6), unbounded rate printed as null.
+  const json end = json::parse(run_clock({{"impulse", {{"relative_location", 1.0}}}}).out);
+  CHECK_THAT(end.at("impulse_error").at("value").get<double>(), WithinAbs(-487.6, 0.05));
+  CHECK(end.at("impulse_error_rate").at("value").is_null());
+  CHECK(end.at("impulse_error").at("uncertainty").is_null());
+  // A forced route is used and named.
+  const json forced = json::parse(run_clock(json::object(), "--route circular_rk4").out);
+  CHECK(forced.at("route").at("name") == "circular_rk4");
+  CHECK(forced.at("route").at("rk4_steps_per_period").get<int>() >= 128);
+}
+
+TEST_CASE("clock refuses bad clock scenes with exit 1 and nothing on stdout", "[cli][clock][errors]") {
+  struct Case {
+    json patch;
+    std::string options, error;
+  };
+  const Case cases[] = {
+      {{{"g", nullptr}}, "", "g: missing"},
+      {{{"g", {{"unit", "deg"}}}}, "", "g.unit: got \"deg\"; expected a unit of an acceleration"},
+      {{{"nominal_period", {{"value", 2}, {"unit", "s"}}}}, "", "nominal_period: given beside length"},
+      {{{"length", nullptr}}, "", "length: missing; expected length or nominal_period"},
+      {{{"semi_amplitude", {{"value", 200}, {"unit", "deg"}}}}, "", "semi_amplitude.value: got 200 deg"},
+      {{{"semi_amplitude", {{"value", 0}}}}, "", "semi_amplitude.value: got 0"},
+      {{{"semi_amplitude", {{"value", 1e-200}, {"uncertainty", 0}}}}, "",
+       "semi_amplitude.value: got 1e-200 arcmin; expected an angle from 1e-9 rad"},
+      {{{"semi_amplitude", {{"uncertainty", 300}}}}, "", "semi_amplitude.uncertainty: got 300 arcmin"},
+      {{{"Q", 0.25}}, "", "Q: got 0.25; expected a quality factor from 1 to 1e15"},
+      {{{"Q", 0.5000001}, {"damped", true}}, "", "Q: got 0.5000001; expected a quality factor from 1"},
+      {{{"Q", "many"}}, "", "Q: got \"many\"; expected a number or an object"},
+      {{{"Q", 2}, {"semi_amplitude", {{"value", 170}, {"unit", "deg"}}}}, "", "Q: got 2; expected a Q large enough"},
+      {{{"impulse", {{"direction", "sideways"}}}}, "", "impulse.direction: got \"sideways\"; expected one of"},
+      {{{"impulse", {{"relative_location", 1.5}}}}, "", "impulse.relative_location: got 1.5"},
+      {{{"impulse", {{"location", {{"value", 5}, {"unit", "deg"}}}}}}, "", "impulse.relative_location: given beside location"},
+      {{{"impulse", {{"relative_location", nullptr}, {"location", {{"value", 5}, {"unit", "deg"}}}}}}, "",
+       "impulse.location.value: got 5 deg; expected an angle from 0 to the semi-amplitude"},
+      {{{"path", "elliptical"}}, "", "path: got \"elliptical\"; expected one of \"circular\", \"cycloidal\""},
+      {{{"damped", "yes"}}, "", "damped: got \"yes\"; expected true or false"},
+      {{{"accuracy", {{"unit", "s"}}}}, "", "accuracy.unit: got \"s\"; expected a unit of a daily rate: s/day, ms/day"},
+      {{{"colour", "brass"}}, "", "colour: unknown key"},
+      {{{"schema", "pendulum-g/scene/1"}}, "", "schema: got \"pendulum-g/scene/1\"; expected \"pendulum-g/clock-scene/1\""},
+      {{{"path", "cycloidal"}}, "--route circular_elliptic", "--route: got circular_elliptic; a circular route cannot"},
+      {{{"semi_amplitude", {{"value", 70}, {"unit", "deg"}}}}, "--route cycloid", "--route: got cycloid; a cycloid of equal energy"},
+  };
+  for (const Case& c : cases) {
+    INFO(c.patch.dump() << " " << c.options);
+    const Run r = run_clock(c.patch, c.options);
+    INFO("stderr: " << r.err);
+    CHECK(r.status == 1);
+    CHECK(r.out.empty());
+    CHECK_THAT(r.err, Contains("pendulum-g: error: "));
+    CHECK_THAT(r.err, Contains(c.error));
+  }
+  // Not JSON, and a key given twice.
+  const std::string file = temporary_file();
+  std::ofstream(file) << "{\"schema\": \"pendulum-g/clock-scene/1\", \"g\": 1, \"g\": 2}";
+  const Run twice = run("clock " + file);
+  CHECK(twice.status == 1);
+  CHECK_THAT(twice.err, Contains("g: got this key twice"));
+  std::ofstream(file) << "{not json";
+  const Run broken = run("clock " + file);
+  CHECK(broken.status == 1);
+  CHECK_THAT(broken.err, Contains("not valid JSON"));
+  std::remove(file.c_str());
+  CHECK(run("clock").status == 2);
+  CHECK(run("clock --route magic " + kFeinsteinClock).status == 2);
+}
+
+TEST_CASE("report: a series, its fit and the textbook line", "[cli][report]") {
+  const std::string series = std::string(PENDULUM_DATA_DIR) + "/pendulum_lengths_series.json";
+  const Run r = run("report " + series);
+  REQUIRE(r.status == 0);
+  CHECK(external_reference(r.out) == "");
+  CHECK(occurrences(r.out, "<svg ") == 3);  // corrections of the first observation, budget, series
+  CHECK_THAT(r.out, Contains("<h3>Series fit</h3>"));
+  CHECK_THAT(r.out, Contains("g of the textbook line (no corrections)"));
+  const Run plot = run("report " + series + " --plot series");
+  REQUIRE(plot.status == 0);
+  CHECK_THAT(plot.out, Contains("<title id=\"series-title\">Series: T\u00B2 against length"));
+  const Run single = run("report " + kNelsonOlsson + " --plot series");
+  CHECK(single.status == 1);
+  CHECK_THAT(single.err, Contains("observations: the scene is not a series of observations"));
 }

@@ -13,6 +13,7 @@
 #include "pendulum/models/simple_pendulum.hpp"
 #include "pendulum/period_fit.hpp"
 #include "plausibility.hpp"
+#include "text.hpp"
 
 namespace pendulum {
 
@@ -99,13 +100,6 @@ struct Seeder {
   int ordinal = 0;
   Dual operator()(const Field&, double x) { return ordinal++ == seed ? Dual(x, 0) : Dual(x); }
 };
-
-std::string format(double x, int digits = 4) {
-  std::ostringstream os;
-  os.precision(digits);
-  os << x;
-  return os.str();
-}
 
 /// The period model fitted to the observations and every input propagated
 /// through its optimum (see analyse()).
@@ -466,9 +460,9 @@ class Fit {
       r.total_delta_T = b.value[kModelPeriod] - b.value[kIdealPeriod];
       r.total_delta_g = 2.0 * g * b.total_ratio;
       if (r.residual && std::abs(*r.residual) > 3.0) {
-        out_.warnings.push_back(r.path + "timing: the period " + format(o.period, 7) + " s is " +
-                                format(std::abs(*r.residual), 2) + " of its standard uncertainties from the model's " +
-                                format(r.period_model, 7) + " s; a miscounted oscillation, a length misread, or an "
+        out_.warnings.push_back(r.path + "timing: the period " + format_number(o.period, 7) + " s is " +
+                                format_number(std::abs(*r.residual), 2) + " of its standard uncertainties from the model's " +
+                                format_number(r.period_model, 7) + " s; a miscounted oscillation, a length misread, or an "
                                 "uncertainty too small?");
       }
       out_.observations.push_back(std::move(r));
@@ -478,8 +472,8 @@ class Fit {
   void set_status(CorrectionRow& row, double negligible_below) const {
     row.status = std::abs(*row.delta_T) < negligible_below ? Status::negligible : Status::applied;
     if (row.status == Status::negligible) {
-      row.reason = "|delta_T| below " + format(options_.negligible_fraction, 6) +
-                   " of the period's uncertainty (" + format(negligible_below, 6) + " s)";
+      row.reason = "|delta_T| below " + format_number(options_.negligible_fraction, 6) +
+                   " of the period's uncertainty (" + format_number(negligible_below, 6) + " s)";
     }
   }
 
@@ -518,10 +512,10 @@ class Fit {
           const auto [lo, hi] = std::minmax_element(
               scene_.observations.begin(), scene_.observations.end(),
               [](const auto& x, const auto& y) { return x.length < y.length; });
-          out_.warnings.push_back("observations: the lengths span only " + format(lo->length, 5) + " m to " +
-                                  format(hi->length, 5) + " m, too close together to separate g from "
-                                  "length_offset (correlation " + format(rho, 6) + "), which makes g's uncertainty " +
-                                  format(inflation, 3) + " times what a known offset would give; swing at "
+          out_.warnings.push_back("observations: the lengths span only " + format_number(lo->length, 5) + " m to " +
+                                  format_number(hi->length, 5) + " m, too close together to separate g from "
+                                  "length_offset (correlation " + format_number(rho, 6) + "), which makes g's uncertainty " +
+                                  format_number(inflation, 3) + " times what a known offset would give; swing at "
                                   "lengths further apart");
         }
       }
@@ -531,9 +525,9 @@ class Fit {
       const double lower = boost::math::gamma_p(out_.fit.dof / 2.0, out_.fit.chi2 / 2.0);
       if (upper < 1e-3 || lower < 1e-3) {
         out_.warnings.push_back(
-            "fit: chi2 = " + format(out_.fit.chi2) + " for " + std::to_string(out_.fit.dof) +
-            " degrees of freedom (chi2/dof = " + format(out_.fit.chi2 / out_.fit.dof) + "); so " +
-            (upper < 1e-3 ? "large" : "small") + " a chi2 has probability " + format(std::min(upper, lower), 2) +
+            "fit: chi2 = " + format_number(out_.fit.chi2, 4) + " for " + std::to_string(out_.fit.dof) +
+            " degrees of freedom (chi2/dof = " + format_number(out_.fit.chi2 / out_.fit.dof, 4) + "); so " +
+            (upper < 1e-3 ? "large" : "small") + " a chi2 has probability " + format_number(std::min(upper, lower), 2) +
             (upper < 1e-3 ? ": the periods' uncertainties are too small, or the model misses something"
                           : ": the periods' uncertainties are too large"));
       }

@@ -8,7 +8,9 @@
 #include <Eigen/Eigenvalues>
 #include <ceres/ceres.h>
 
+#include "newton_decrement.hpp"
 #include "decay_kernel.hpp"
+#include "pendulum/numeric.hpp"
 #include "pendulum/scene_json.hpp"
 
 namespace pendulum {
@@ -178,23 +180,6 @@ std::array<double, 3> initial_guess(const DecayData& data, DecayModel model) {
   return {alpha, beta, theta0};
 }
 
-/// Stops when a full Gauss-Newton step would lower the sum of squares by
-/// less than 1e-14 of the residual variance s^2 = |r|^2/dof: the parameters
-/// are then within about 1e-7 of their standard uncertainties from the
-/// optimum, whatever the scale of the residuals. (Ceres's own relative
-/// function tolerance stops too early on large sums, or never on noise.)
-class NewtonDecrement final : public ceres::IterationCallback {
- public:
-  NewtonDecrement(const CompressedDecayCost& cost, int dof) : cost_(cost), dof_(std::max(dof, 1)) {}
-  ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
-    return cost_.decrement() <= 1e-14 * cost_.rr() / dof_ ? ceres::SOLVER_TERMINATE_SUCCESSFULLY
-                                                          : ceres::SOLVER_CONTINUE;
-  }
-
- private:
-  const CompressedDecayCost& cost_;
-  int dof_;
-};
 
 struct Solution {
   std::array<double, 3> p;
@@ -259,7 +244,7 @@ Solution solve(const DecayData& data, DecayModel model) {
   options.function_tolerance = 1e-18;
   options.gradient_tolerance = 1e-20;
   options.parameter_tolerance = 1e-15;
-  NewtonDecrement converged(*cost, static_cast<int>(data.times.size() - free.size()));
+  NewtonDecrement<CompressedDecayCost> converged(*cost, static_cast<int>(data.times.size() - free.size()));
   options.callbacks.push_back(&converged);
   ceres::Solve(options, &problem, &s.summary);
   const kernel::DecaySums& sums = cost->sums_at(s.p.data());
@@ -351,7 +336,7 @@ void validate_decay_data(const DecayData& data, const std::string& path) {
                                            "; expected strictly increasing times (no repeats)");
     }
     if (!std::isfinite(data.amplitudes[i]) || data.amplitudes[i] <= 0.0 ||
-        data.amplitudes[i] >= 3.14159265358979323846) {
+        data.amplitudes[i] >= kPi) {
       throw InputError(at("amplitudes", i), "got " + number(data.amplitudes[i]) +
                                                 " rad; expected a positive amplitude below 180 deg");
     }

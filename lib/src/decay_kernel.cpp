@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "pendulum/damping.hpp"
+
 namespace pendulum::kernel {
 namespace {
 
@@ -17,8 +19,11 @@ struct Point {
   double j[3];  ///< d r / d(alpha, beta, theta0m)
 };
 
-/// Eq. (25) at one time, in the form theta0m u / (1 + beta theta0m t E(alpha t)),
-/// u = e^{-alpha t}, which has no 0/0 at alpha = 0 (Eq. 46) or beta = 0 (Eq. 33).
+/// Eq. (25) at one time (pendulum::decayed_amplitude_from_factors, which has
+/// no 0/0 at alpha = 0 (Eq. 46) or beta = 0 (Eq. 33)) and its derivatives.
+/// The derivatives are written out here rather than taken by ceres::Jet: they
+/// reuse u, E, E' (from the same series pass) and the denominator, and Jets
+/// would bring Eigen into this -ffast-math file and out of the simd loop.
 template <bool kSeries>
 inline Point point(double t, double theta, double w, double alpha, double beta,
                    double theta0) {
@@ -40,7 +45,7 @@ inline Point point(double t, double theta, double w, double alpha, double beta,
     e_prime = (u - e) * inv_y;
   }
   const double inv_d = 1.0 / (1.0 + beta * theta0 * t * e);
-  const double model = theta0 * u * inv_d;
+  const double model = decayed_amplitude_from_factors(theta0, beta, t, u, e);
   return {model - theta, (model - theta) * w,
           {-t * model * (1.0 + beta * theta0 * t * e_prime * inv_d) * w,
            -model * theta0 * t * e * inv_d * w, u * inv_d * inv_d * w}};

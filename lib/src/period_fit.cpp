@@ -7,58 +7,184 @@
 #include <Eigen/Dense>
 #include <ceres/ceres.h>
 
+#include "newton_decrement.hpp"
 #include "pendulum/models/simple_pendulum.hpp"
 
 namespace pendulum {
 
 namespace {
 
-/// Every observation's weighted residual in one cost function: one block of
-/// K residuals, so that Ceres's cost per observation is the model's alone.
-template <class Model>
-class PeriodResiduals : public ceres::CostFunction {
- public:
-  static constexpr int P = Model::kParameters;
-  using Jet = ceres::Jet<double, P>;
+/// The sums of a weighted least-squares problem at one point: J^T J, J^T r
+/// and r^T r over the K observations, J with respect to N parameters.
+template <int N>
+struct NormalSums {
+  Eigen::Matrix<double, N, N> jtj = Eigen::Matrix<double, N, N>::Zero();
+  Eigen::Matrix<double, N, 1> jtr = Eigen::Matrix<double, N, 1>::Zero();
+  double rr = 0.0;
+};
 
-  explicit PeriodResiduals(const PeriodFitProblem<Model>& problem)
-      : problem_(problem),
-        apparatus_jet_(convert_apparatus<Jet>(*problem.apparatus, [](const Field&, double x) { return Jet(x); })) {
-    set_num_residuals(static_cast<int>(problem.observations->size()));
-    mutable_parameter_block_sizes()->push_back(P);
-    observations_jet_.reserve(problem.observations->size());
+/// The apparatus and each observation's parameter-free swing (Model::swing)
+/// as dual numbers of N components: constants, converted once.
+template <class Model, int N>
+struct DualData {
+  using Jet = ceres::Jet<double, N>;
+  explicit DualData(const PeriodFitProblem<Model>& problem)
+      : apparatus(convert_apparatus<Jet>(*problem.apparatus, [](const Field&, double x) { return Jet(x); })) {
+    swings.reserve(problem.observations->size());
     for (const auto& o : *problem.observations) {
-      observations_jet_.push_back(convert_observation<Jet>(o, [](const Field&, double x) { return Jet(x); }));
+      swings.push_back(Model::swing(convert_observation<Jet>(o, [](const Field&, double x) { return Jet(x); })));
     }
   }
+  Apparatus<Jet> apparatus;
+  std::vector<Swing<Jet>> swings;
+};
 
-  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
-    const double* p = parameters[0];
+/// g projected out (variable projection, Golub & Pereyra 1973). Every period
+/// model's period is T = g^-1/2 h(q), q the other parameters: g enters only
+/// the ideal period's sqrt(length/g), and the corrections' working frequency
+/// comes from the measured period. With s = g^-1/2, the best s for given q
+/// is closed form, s = A/B with A = sum w^2 T h, B = sum w^2 h^2, so Ceres
+/// varies q alone, on dual numbers of P - 1 components, against the
+/// residuals r_k = (s(q) h_k(q) - T_k) w_k, whose derivatives are
+/// dr_k = w_k (h_k s' + s h'_k) with s' = (a - 2 s b)/B,
+/// a = sum w^2 T h', b = sum w^2 h h'. One pass evaluates the model and the
+/// four sums; a second forms r and dr from the stored h, h' (forming r^T r
+/// as C - s A instead would cancel to 1e-7 of it).
+template <class Model>
+class ProjectedPeriods {
+ public:
+  static constexpr int P = Model::kParameters;
+  static constexpr int Q = P - 1;  // the parameters after g
+  using Jet = ceres::Jet<double, Q>;
+  using VectorQ = Eigen::Matrix<double, Q, 1>;
+
+  explicit ProjectedPeriods(const PeriodFitProblem<Model>& problem) : problem_(problem), data_(problem) {}
+
+  struct Point {
+    double s;  ///< g^-1/2 at its best for q
+    NormalSums<Q> sums;
+  };
+
+  /// The best s and the sums at q; held parameters' rows and columns are the
+  /// identity's, so that they stay decoupled (their J^T r is 0).
+  const Point& at(const double* q) const {
+    if (cached_ && std::equal(q, q + Q, cached_q_.begin())) return point_;
+    std::array<Jet, P> p;
+    p[0] = Jet(1.0);  // g = 1: the period is h
+    for (int i = 0; i < Q; ++i) p[i + 1] = problem_.fitted[i + 1] ? Jet(q[i], i) : Jet(q[i]);
+    double big_a = 0.0, big_b = 0.0;
+    VectorQ a = VectorQ::Zero(), b = VectorQ::Zero();
     const auto& obs = *problem_.observations;
-    const auto& w = *problem_.weights;
-    const auto& amplitude = *problem_.amplitude;
-    if (jacobians == nullptr || jacobians[0] == nullptr) {
-      for (std::size_t k = 0; k < obs.size(); ++k) {
-        const double t = Model::period(p, obs[k], *problem_.apparatus, amplitude[k]);
-        residuals[k] = (t - obs[k].period) * w[k];
-      }
-      return std::isfinite(residuals[0]);
-    }
-    std::array<Jet, P> pj;
-    for (int i = 0; i < P; ++i) pj[i] = Jet(p[i], i);
+    const auto& weights = *problem_.weights;
+    h_.resize(obs.size());
     for (std::size_t k = 0; k < obs.size(); ++k) {
-      const Jet t = Model::period(pj.data(), observations_jet_[k], apparatus_jet_, amplitude[k]);
-      residuals[k] = (t.a - obs[k].period) * w[k];
-      for (int i = 0; i < P; ++i) jacobians[0][k * P + i] = t.v[i] * w[k];
-      if (!std::isfinite(residuals[k])) return false;
+      h_[k] = Model::period(p.data(), data_.swings[k], data_.apparatus, (*problem_.amplitude)[k]);
+      const double w2 = weights[k] * weights[k];
+      big_a += w2 * obs[k].period * h_[k].a;
+      big_b += w2 * h_[k].a * h_[k].a;
+      a += w2 * obs[k].period * h_[k].v;
+      b += w2 * h_[k].a * h_[k].v;
     }
-    return true;
+    Point& pt = point_;
+    pt.s = big_a / big_b;
+    const double s = pt.s;
+    const VectorQ ds = (a - 2.0 * s * b) / big_b;
+    pt.sums = NormalSums<Q>();
+    for (std::size_t k = 0; k < obs.size(); ++k) {
+      const double r = (s * h_[k].a - obs[k].period) * weights[k];
+      const VectorQ j = (h_[k].a * ds + s * h_[k].v) * weights[k];
+      pt.sums.jtj.noalias() += j * j.transpose();
+      pt.sums.jtr += j * r;
+      pt.sums.rr += r * r;
+    }
+    for (int i = 0; i < Q; ++i) {
+      if (!problem_.fitted[i + 1]) {
+        pt.sums.jtj.row(i).setZero(), pt.sums.jtj.col(i).setZero(), pt.sums.jtj(i, i) = 1.0, pt.sums.jtr(i) = 0.0;
+      }
+    }
+    std::copy(q, q + Q, cached_q_.begin());
+    cached_ = true;
+    return point_;
   }
 
  private:
   const PeriodFitProblem<Model>& problem_;
-  const Apparatus<Jet> apparatus_jet_;
-  std::vector<Observation<Jet>> observations_jet_;  ///< constants, converted once
+  const DualData<Model, Q> data_;
+  mutable bool cached_ = false;
+  mutable std::array<double, Q> cached_q_{};
+  mutable Point point_;
+  mutable std::vector<Jet> h_;  ///< each observation's h and h' at the cached q
+
+ public:
+  /// J^T J over every parameter, g first, at the cached q and its best s:
+  /// dr_k/dg = w_k h_k ds/dg with s = g^-1/2, dr_k/dq = w_k s h'_k.
+  Eigen::Matrix<double, P, P> full_jtj() const {
+    const double s = point_.s;
+    const double ds_dg = -0.5 * s * s * s;
+    Eigen::Matrix<double, P, P> jtj = Eigen::Matrix<double, P, P>::Zero();
+    for (std::size_t k = 0; k < h_.size(); ++k) {
+      Eigen::Matrix<double, P, 1> j;
+      j(0) = h_[k].a * ds_dg;
+      j.template tail<Q>() = s * h_[k].v;
+      jtj.noalias() += (*problem_.weights)[k] * (*problem_.weights)[k] * j * j.transpose();
+    }
+    return jtj;
+  }
+};
+
+/// The projected problem handed to Ceres "compressed" as in the decay fit
+/// (docs/decay_fit.md): with J^T J = R^T R, the Q + 1 residuals
+/// q = R^-T J^T r and sqrt(|r|^2 - |q|^2), whose Jacobian is [R; 0], have the
+/// same cost, gradient and Gauss-Newton matrix as the K residuals, so the
+/// iterates are the same while Ceres's own work no longer grows with K.
+template <class Model>
+class CompressedPeriodResiduals : public ceres::CostFunction {
+ public:
+  static constexpr int Q = Model::kParameters - 1;
+  using Matrix = Eigen::Matrix<double, Q, Q>;
+
+  explicit CompressedPeriodResiduals(const ProjectedPeriods<Model>& projected) : projected_(projected) {
+    set_num_residuals(Q + 1);
+    mutable_parameter_block_sizes()->push_back(Q);
+  }
+
+  bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
+    const NormalSums<Q>& s = projected_.at(parameters[0]).sums;
+    if (!s.jtj.allFinite() || !s.jtr.allFinite() || !std::isfinite(s.rr)) return false;
+    // R from the Cholesky factor of the column-scaled J^T J, with a ridge of
+    // 1e-14 on its unit diagonal so that a singular problem (identical
+    // observations) still steps; the gradient R^T q = J^T r stays exact.
+    Eigen::Matrix<double, Q, 1> scale = s.jtj.diagonal().cwiseSqrt();
+    scale = (scale.array() > 0.0).select(scale.cwiseInverse(), 1.0);
+    Matrix scaled = scale.asDiagonal() * s.jtj * scale.asDiagonal();
+    scaled.diagonal().array() += 1e-14;
+    const Eigen::LLT<Matrix> llt(scaled);
+    if (llt.info() != Eigen::Success) return false;
+    const Matrix r_factor = Matrix(llt.matrixU()) * scale.cwiseInverse().asDiagonal();
+    const Eigen::Matrix<double, Q, 1> q = r_factor.transpose().template triangularView<Eigen::Lower>().solve(s.jtr);
+    for (int i = 0; i < Q; ++i) residuals[i] = q[i];
+    residuals[Q] = std::sqrt(std::max(s.rr - q.squaredNorm(), 0.0));
+    if (jacobians && jacobians[0]) {
+      decrement_ = q.squaredNorm();
+      rr_ = s.rr;
+      // Ceres's row-major (Q + 1) x Q block (one column: the same either way).
+      constexpr int kLayout = Q == 1 ? Eigen::ColMajor : Eigen::RowMajor;
+      Eigen::Map<Eigen::Matrix<double, Q + 1, Q, kLayout>> jac(jacobians[0]);
+      jac.template topRows<Q>() = r_factor;
+      jac.row(Q).setZero();
+    }
+    return true;
+  }
+
+  /// At the last point whose Jacobian Ceres asked for: |q|^2 = r^T J
+  /// (J^T J)^-1 J^T r, twice the cost a full Gauss-Newton step would still
+  /// remove, and |r|^2 (NewtonDecrement).
+  double decrement() const { return decrement_; }
+  double rr() const { return rr_; }
+
+ private:
+  const ProjectedPeriods<Model>& projected_;
+  mutable double decrement_ = 0.0, rr_ = 0.0;
 };
 
 }  // namespace
@@ -67,63 +193,68 @@ template <class Model>
 PeriodFitSolution fit_periods(const PeriodFitProblem<Model>& problem,
                               const std::array<double, Model::kParameters>& initial) {
   constexpr int P = Model::kParameters;
-  std::array<double, P> p = initial;
-  ceres::Problem::Options problem_options;
-  problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-  ceres::Problem ceres_problem(problem_options);
-  PeriodResiduals<Model> residuals(problem);
-  ceres_problem.AddResidualBlock(&residuals, nullptr, p.data());
-  std::vector<int> held;
-  for (int i = 0; i < P; ++i) {
-    if (!problem.fitted[i]) held.push_back(i);
-  }
-  if (static_cast<int>(held.size()) == P) {
-    ceres_problem.SetParameterBlockConstant(p.data());
-  } else if (!held.empty()) {
-    ceres_problem.SetManifold(p.data(), new ceres::SubsetManifold(P, held));
-  }
-  // g stays positive: the model's sqrt(l/g) has no meaning below.
-  ceres_problem.SetParameterLowerBound(p.data(), 0, 1e-6 * initial[0]);
-
-  ceres::Solver::Options options;
-  options.linear_solver_type = ceres::DENSE_QR;
-  options.max_num_iterations = 200;
-  // To the last digits: the optimum is where the tests and the propagation
-  // (implicit-function derivatives) need it.
-  options.function_tolerance = 1e-16;
-  options.gradient_tolerance = 1e-30;
-  options.parameter_tolerance = 1e-15;
-  options.logging_type = ceres::SILENT;
-  ceres::Solver::Summary summary;
-  ceres::Solve(options, &ceres_problem, &summary);
-
+  constexpr int Q = P - 1;
+  static_assert(Q >= 1, "a period model has parameters besides g");
+  std::array<double, Q> q;
+  std::copy(initial.begin() + 1, initial.end(), q.begin());
+  const ProjectedPeriods<Model> projected(problem);
   PeriodFitSolution out;
-  out.parameters.assign(p.begin(), p.end());
-  // (J^T J)^-1 over the fitted parameters from the Jacobian at the optimum.
-  const std::size_t k = problem.observations->size();
-  std::vector<double> r(k), jacobian(k * P);
-  const double* blocks[] = {p.data()};
-  double* jacobians[] = {jacobian.data()};
-  Eigen::Matrix<double, P, P> jtj = Eigen::Matrix<double, P, P>::Zero();
-  if (residuals.Evaluate(blocks, r.data(), jacobians)) {
-    const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, P, Eigen::RowMajor>> j(jacobian.data(), k, P);
-    jtj = j.transpose() * j;
+  std::vector<int> held;
+  for (int i = 0; i < Q; ++i) {
+    if (!problem.fitted[i + 1]) held.push_back(i);
   }
+  if (static_cast<int>(held.size()) == Q) {
+    // g alone: its closed form.
+    out.converged = true;
+    out.termination = "g alone: closed form of the weighted least squares";
+  } else {
+    ceres::Problem::Options problem_options;
+    problem_options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+    ceres::Problem ceres_problem(problem_options);
+    CompressedPeriodResiduals<Model> residuals(projected);
+    ceres_problem.AddResidualBlock(&residuals, nullptr, q.data());
+    if (!held.empty()) ceres_problem.SetManifold(q.data(), new ceres::SubsetManifold(Q, held));
+    ceres::Solver::Options options;
+    options.linear_solver_type = ceres::DENSE_QR;  // on the Q + 1 compressed residuals
+    options.max_num_iterations = 200;
+    // NewtonDecrement decides; Ceres's tolerances, at the last digits, only
+    // stop a stalled fit.
+    options.function_tolerance = 1e-16;
+    options.gradient_tolerance = 1e-30;
+    options.parameter_tolerance = 1e-15;
+    options.logging_type = ceres::SILENT;
+    const int free = Q - static_cast<int>(held.size()) + 1;
+    NewtonDecrement<CompressedPeriodResiduals<Model>> converged(
+        residuals, static_cast<int>(problem.observations->size()) - free);
+    options.callbacks.push_back(&converged);
+    ceres::Solver::Summary summary;
+    ceres::Solve(options, &ceres_problem, &summary);
+    out.converged =
+        summary.termination_type == ceres::CONVERGENCE || summary.termination_type == ceres::USER_SUCCESS;
+    out.termination = summary.message;
+    out.iterations = static_cast<int>(summary.iterations.size()) - 1;
+  }
+  const typename ProjectedPeriods<Model>::Point& best = projected.at(q.data());
+  out.parameters.assign(P, 0.0);
+  out.parameters[0] = 1.0 / (best.s * best.s);
+  std::copy(q.begin(), q.end(), out.parameters.begin() + 1);
+  out.chi2 = best.sums.rr;
+  // (J^T J)^-1 over the fitted parameters at the optimum, g included,
+  // judged singular on its column-scaled form, which the parameters' units
+  // do not affect.
+  Eigen::Matrix<double, P, P> jtj = projected.full_jtj();
   for (int i = 0; i < P; ++i) {
     if (!problem.fitted[i]) jtj.row(i).setZero(), jtj.col(i).setZero(), jtj(i, i) = 1.0;
   }
-  const Eigen::LDLT<Eigen::Matrix<double, P, P>> ldlt(jtj);
-  if (ldlt.info() == Eigen::Success && ldlt.isPositive() && ldlt.vectorD().minCoeff() > 1e-12 * ldlt.vectorD().maxCoeff()) {
-    Eigen::Matrix<double, P, P, Eigen::RowMajor> c = ldlt.solve(Eigen::Matrix<double, P, P>::Identity());
+  const Eigen::Matrix<double, P, 1> scale = jtj.diagonal().cwiseSqrt().cwiseInverse();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, P, P>> eigen(scale.asDiagonal() * jtj * scale.asDiagonal());
+  if (scale.allFinite() && eigen.eigenvalues().minCoeff() > 1e-12 * eigen.eigenvalues().maxCoeff()) {
+    Eigen::Matrix<double, P, P, Eigen::RowMajor> c = jtj.inverse();
     for (int i = 0; i < P; ++i) {
       if (!problem.fitted[i]) c.row(i).setZero(), c.col(i).setZero();
     }
     out.covariance.assign(c.data(), c.data() + P * P);
   }
-  out.chi2 = 2.0 * summary.final_cost;
-  out.converged = summary.termination_type == ceres::CONVERGENCE;
-  out.termination = summary.message;
-  out.iterations = static_cast<int>(summary.iterations.size()) - 1;
   return out;
 }
 

@@ -2,14 +2,15 @@
 
 #include <array>
 
+#include "pendulum/numeric.hpp"
+
 namespace pendulum {
 namespace {
 
-constexpr double kPiDouble = 3.14159265358979323846;
-constexpr double kDegree = kPiDouble / 180.0;
+constexpr double kDegree = kPi / 180.0;
 constexpr double kMmHg = 133.322387415;  // Pa, conventional (13.5951 g/cm^3, 9.80665 m/s^2)
 
-constexpr std::array<Unit, 56> kUnits{{
+constexpr std::array<Unit, 60> kUnits{{
     {"m", Dimension::length, 1.0, 0.0},
     {"cm", Dimension::length, 1e-2, 0.0},
     {"mm", Dimension::length, 1e-3, 0.0},
@@ -27,6 +28,8 @@ constexpr std::array<Unit, 56> kUnits{{
     {"rad", Dimension::angle, 1.0, 0.0},
     {"mrad", Dimension::angle, 1e-3, 0.0},
     {"deg", Dimension::angle, kDegree, 0.0},
+    {"arcmin", Dimension::angle, kDegree / 60.0, 0.0},
+    {"arcsec", Dimension::angle, kDegree / 3600.0, 0.0},
     {"Pa", Dimension::pressure, 1.0, 0.0},
     {"hPa", Dimension::pressure, 1e2, 0.0},
     {"kPa", Dimension::pressure, 1e3, 0.0},
@@ -66,6 +69,8 @@ constexpr std::array<Unit, 56> kUnits{{
     {"cm/s^2", Dimension::acceleration, 1e-2, 0.0},
     {"Gal", Dimension::acceleration, 1e-2, 0.0},
     {"mGal", Dimension::acceleration, 1e-5, 0.0},
+    {"s/day", Dimension::daily_rate, 1.0, 0.0},
+    {"ms/day", Dimension::daily_rate, 1e-3, 0.0},
 }};
 
 /// Spellings people type for a unit of the table (issue 14), and the unit.
@@ -111,6 +116,7 @@ const char* si_unit(Dimension dimension) {
     case Dimension::rate: return "1/s";
     case Dimension::rate_per_angle: return "1/(s rad)";
     case Dimension::acceleration: return "m/s^2";
+    case Dimension::daily_rate: return "s/day";
   }
   return "";
 }
@@ -131,6 +137,7 @@ const char* dimension_name(Dimension dimension) {
     case Dimension::rate: return "a rate";
     case Dimension::rate_per_angle: return "a rate per angle";
     case Dimension::acceleration: return "an acceleration";
+    case Dimension::daily_rate: return "a daily rate";
   }
   return "";
 }

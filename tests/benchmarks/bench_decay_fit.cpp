@@ -19,7 +19,7 @@
 
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kDeg = pendulum::kPi / 180.0;
 constexpr int kSizes[] = {10, 100, 1000, 10000, 100000};
 
 pendulum::DecaySimulation simulation(int points) {

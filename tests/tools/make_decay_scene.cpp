@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
   text << in.rdbuf();
   auto scene = nlohmann::ordered_json::parse(text.str());
 
-  constexpr double kDeg = 3.14159265358979323846 / 180.0;
+  constexpr double kDeg = pendulum::kPi / 180.0;
   const pendulum::DecaySimulation sim{2.49e-4, 3.17e-3, 17.5 * kDeg, 0.3 * kDeg, 3600.0, 361, 1986};
   const pendulum::DecayData data = pendulum::simulate_decay(sim);
   nlohmann::ordered_json times = nlohmann::ordered_json::array(), amplitudes = times;

@@ -6,6 +6,8 @@
 
 #include <cmath>
 
+#include "pendulum/numeric.hpp"
+
 namespace pendulum {
 
 /// Molar gas constant (J/(mol K)), exact in the 2019 SI.
@@ -43,7 +45,7 @@ T air_viscosity(const T& t) {
 /// Volume of a sphere of radius a (m): (4/3) pi a^3 (m^3).
 template <class T>
 T sphere_volume(const T& a) {
-  return 4.0 / 3.0 * 3.14159265358979323846 * a * a * a;
+  return 4.0 / 3.0 * kPi * a * a * a;
 }
 
 /// Buoyancy: DeltaT/T0 = (1/2)(m_a/m).

@@ -50,6 +50,24 @@ T log1p_remainder(const T& x) {
 
 }  // namespace detail
 
+/// Eq. (25) with its exponential factors given: theta0(t) =
+/// theta0m u / (1 + beta theta0m t E), u = e^{-alpha t}, E = (1 - u)/(alpha t)
+/// (1 at alpha t = 0). The one implementation of Eq. (25): decayed_amplitude,
+/// amplitude_decay (Eq. 50b) and the decay fit's vectorised kernel
+/// (lib/src/decay_kernel.cpp, which forms E without expm1, so that it
+/// vectorises) call it.
+/// Always inlined: the kernel's file is compiled with -ffast-math, and an
+/// out-of-line copy from there must not serve the other files.
+/// \param theta0m initial amplitude (rad) > 0; \param beta (1/(s rad)) >= 0;
+/// \param t time (s) >= 0; \param u e^{-alpha t}; \param e E(alpha t).
+/// \return amplitude (rad). Reference: Nelson & Olsson (1986) Eq. (25).
+template <class T>
+[[gnu::always_inline]] inline T decayed_amplitude_from_factors(const T& theta0m, const T& beta,
+                                                               const T& t, const T& u,
+                                                               const T& e) {
+  return theta0m * u / (1.0 + beta * theta0m * t * e);  // Eq. (25)
+}
+
 /// Amplitude after time t under linear and quadratic damping:
 /// theta0(t) = alpha theta0m e^{-alpha t} / [beta theta0m (1 - e^{-alpha t}) + alpha],
 /// evaluated as theta0m e^{-alpha t} / (1 + beta theta0m t E(alpha t)) with
@@ -62,8 +80,8 @@ template <class T>
 T decayed_amplitude(const T& theta0m, const T& alpha, const T& beta,
                     const T& t) {
   using std::exp;
-  return theta0m * exp(-alpha * t) /
-         (1.0 + beta * theta0m * t * detail::one_minus_exp_over(alpha * t));
+  return decayed_amplitude_from_factors(theta0m, beta, t, exp(-alpha * t),
+                                        detail::one_minus_exp_over(alpha * t));
 }
 
 /// Linear damping: DeltaT/T0 = (1/2)(alpha/omega0)^2.
@@ -116,7 +134,7 @@ T amplitude_decay(const T& theta0m, const T& alpha, const T& beta,
   if (value_of(s) < 1e-8) return -theta0m * theta0m * s / 16.0;
   const T e = detail::one_minus_exp_over(alpha * t_f);
   const T growth = 1.0 + beta * theta0m * t_f * e;
-  const T theta0f = theta0m * exp(-alpha * t_f) / growth;          // Eq. (50b)
+  const T theta0f = decayed_amplitude_from_factors(theta0m, beta, t_f, exp(-alpha * t_f), e);  // Eq. (50b)
   const T d = theta0m * t_f * e * (alpha + beta * theta0m) / growth;  // theta0m - theta0f
   const T a = alpha + beta * theta0f;
   const T x = beta * d / a;

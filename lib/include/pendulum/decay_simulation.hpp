@@ -10,6 +10,7 @@
 
 #include "pendulum/damping.hpp"
 #include "pendulum/decay_fit.hpp"
+#include "pendulum/numeric.hpp"
 
 namespace pendulum {
 
@@ -38,9 +39,9 @@ class NormalDeviates {
     const double u1 = ((engine_() >> 11) + 1) * 0x1.0p-53;
     const double u2 = (engine_() >> 11) * 0x1.0p-53;
     const double r = std::sqrt(-2.0 * std::log(u1));
-    spare_ = r * std::sin(2.0 * 3.14159265358979323846 * u2);
+    spare_ = r * std::sin(2.0 * kPi * u2);
     has_spare_ = true;
-    return r * std::cos(2.0 * 3.14159265358979323846 * u2);
+    return r * std::cos(2.0 * kPi * u2);
   }
 
  private:

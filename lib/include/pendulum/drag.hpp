@@ -33,7 +33,7 @@ T sphere_drag_coefficient_beyond_stokes(const T& reynolds) {
 /// \return b (kg/s). Reference: Nelson & Olsson (1986) Eq. (64).
 template <class T>
 T sphere_linear_drag(const T& eta, const T& a, const T& c_h, const T& delta) {
-  return 6.0 * 3.14159265358979323846 * eta * a * (1.0 + c_h * a / delta);
+  return 6.0 * kPi * eta * a * (1.0 + c_h * a / delta);
 }
 
 /// Quadratic drag constant of the sphere: c = (1/2) C'_D pi a^2 rho.
@@ -41,7 +41,7 @@ T sphere_linear_drag(const T& eta, const T& a, const T& c_h, const T& delta) {
 /// density (kg/m^3). \return c (kg/m). Reference: Nelson & Olsson (1986) Eq. (64).
 template <class T>
 T sphere_quadratic_drag(const T& c_d_prime, const T& a, const T& rho) {
-  return 0.5 * c_d_prime * 3.14159265358979323846 * a * a * rho;
+  return 0.5 * c_d_prime * kPi * a * a * rho;
 }
 
 /// Linear drag constant of the wire, referred to the bob: b = (5/3) eta l,
@@ -74,7 +74,7 @@ T alpha_from_linear_drag(const T& b, const T& m) {
 /// \return beta (1/(s rad)). Reference: Nelson & Olsson (1986) Eq. (27).
 template <class T>
 T beta_from_quadratic_drag(const T& c, const T& omega0, const T& l, const T& m) {
-  return 4.0 / 3.0 * omega0 / 3.14159265358979323846 * c * l / m;
+  return 4.0 / 3.0 * omega0 / kPi * c * l / m;
 }
 
 /// The damping the air alone predicts for a scene (Nelson & Olsson 1986,

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "pendulum/analysis.hpp"
+#include "pendulum/clock_scene.hpp"
 
 namespace pendulum {
 
@@ -57,5 +58,10 @@ ClassSummary summarise_class(const std::vector<BatchLine>& lines);
 std::string batch_class_json(const ClassSummary& summary);
 /// ...or a CSV comment line "# class: ...", with its newline.
 std::string batch_class_csv(const ClassSummary& summary);
+
+/// The result of `pendulum-g clock` (docs/clock.md) as JSON and as a table;
+/// `input` names the scene file as the user gave it.
+std::string clock_json(const ClockScene& scene, const ClockAnalysis& analysis, const std::string& input);
+std::string clock_table(const ClockScene& scene, const ClockAnalysis& analysis);
 
 }  // namespace pendulum

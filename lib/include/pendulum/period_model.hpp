@@ -7,7 +7,10 @@
 ///   kParameters, kParameterInfo, kDefaults,
 ///   template <class T> PeriodPrediction<T> predict(const T* p,
 ///       const Observation<T>&, const Apparatus<T>&, const AmplitudeChoice&),
-///   template <class T> T period(same arguments): predict()'s period alone,
+///   template <class T> Swing<T> swing(const Observation<T>&): what of the
+///       swing no parameter changes, computed once per observation by a fit,
+///   template <class T> T period(const T* p, Swing<T>, apparatus, amplitude):
+///       predict()'s period alone, from swing(),
 ///   template <class T> T solve_g(const T* p, observation, apparatus, amplitude):
 ///       the closed form for one observation with g the only unknown,
 /// generic in the scalar so that the fit (period_fit.hpp) and the

@@ -25,6 +25,7 @@ enum class Dimension {
   rate,             ///< alpha: 1/time
   rate_per_angle,   ///< beta: 1/(time angle)
   acceleration,     ///< g
+  daily_rate,       ///< a clock's gain or loss; "SI" here is s/day
 };
 
 /// A unit: value_SI = factor * value + offset (offset only for temperatures;

@@ -7,8 +7,29 @@
 #include <nlohmann/json.hpp>
 
 #include "pendulum/output.hpp"
+#include "writer.hpp"
 
 namespace pendulum {
+
+namespace {
+/// Throws std::logic_error at a number that is not finite: the JSON library
+/// would print it as null, where the API promises a number.
+void require_finite(const nlohmann::ordered_json& j, const std::string& path) {
+  if (j.is_structured()) {
+    for (const auto& item : j.items()) require_finite(item.value(), path + "/" + item.key());
+  } else if (j.is_number_float() && !std::isfinite(j.get<double>())) {
+    throw std::logic_error("non-finite number in the output at " + path);
+  }
+}
+
+}  // namespace
+
+/// JSON text as every command prints it, after the check above. A file name
+/// that is not UTF-8 prints its bad bytes as U+FFFD instead of failing.
+std::string json_text(const nlohmann::ordered_json& j, int indent) {
+  require_finite(j, "");
+  return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+}
 
 namespace {
 
@@ -26,22 +47,6 @@ json measured(const Estimate& x, const char* unit) {
   return {{"value", x.value}, {"uncertainty", optional_number(x.uncertainty)}, {"unit", unit}};
 }
 
-/// Throws std::logic_error at a number that is not finite: the JSON library
-/// would print it as null, where the API promises a number.
-void require_finite(const json& j, const std::string& path) {
-  if (j.is_structured()) {
-    for (const auto& item : j.items()) require_finite(item.value(), path + "/" + item.key());
-  } else if (j.is_number_float() && !std::isfinite(j.get<double>())) {
-    throw std::logic_error("non-finite number in the output at " + path);
-  }
-}
-
-/// JSON text as every command prints it, after the check above. A file name
-/// that is not UTF-8 prints its bad bytes as U+FFFD instead of failing.
-std::string text(const json& j, int indent) {
-  require_finite(j, "");
-  return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
-}
 
 json parameter(const FittedParameter& q, const char* unit) {
   return {{"value", q.value},
@@ -207,7 +212,8 @@ json fit_json(const ParsedScene& scene, const Analysis& a) {
          {"negligible_threshold_delta_T_s", o.negligible_below},
          {"corrections", corrections_json(o)}});
   }
-  json textbook = {{"equation", "T^2 = (4 pi^2 / g) (L + length_offset), no corrections"},
+  json textbook = {{"equation", f.textbook.length_offset ? "T^2 = (4 pi^2 / g) (L + length_offset), no corrections"
+                                                          : "T^2 = (4 pi^2 / g) L, no corrections"},
                    {"g", measured(f.textbook.g, "m/s^2")}};
   if (f.textbook.length_offset) textbook["length_offset"] = measured(*f.textbook.length_offset, "m");
   return {{"model", "simple_pendulum"},
@@ -276,7 +282,7 @@ std::string result_json(const ParsedScene& scene, const Analysis& a, const Analy
                                            : *scene.apparatus.decay;
     out["drag_theory"] = drag_to_json(*a.drag, used);
   }
-  return text(out, indent);
+  return json_text(out, indent);
 }
 
 std::string decay_fit_json(const std::string& input, const ParsedScene& scene, const DecayFit& fit,
@@ -292,7 +298,7 @@ std::string decay_fit_json(const std::string& input, const ParsedScene& scene, c
     }
   }
   out["warnings"] = warnings;
-  return text(out, 2);
+  return json_text(out, 2);
 }
 
 BatchLine batch_line(const std::string& input, const ParsedScene& scene, const Analysis& a) {
@@ -308,7 +314,7 @@ BatchLine batch_line(const std::string& input, const ParsedScene& scene, const A
                      {"expected_g_m_s2", a.expected_g ? json(a.expected_g->value) : json(nullptr)},
                      {"z", optional_number(a.z_score)},
                      {"warnings", warnings_json(scene, a)}};
-  return {true, a.status, a.g.value, text(line, -1), csv_row(line)};
+  return {true, a.status, a.g.value, json_text(line, -1), csv_row(line)};
 }
 
 BatchLine batch_failure(const std::string& input, const std::string& error) {
@@ -317,7 +323,7 @@ BatchLine batch_failure(const std::string& input, const std::string& error) {
                      {"status", result_status_name(ResultStatus::failed)},
                      {"status_reasons", json::array()},
                      {"error", error}};
-  return {false, ResultStatus::failed, std::nullopt, text(line, -1), csv_row(line)};
+  return {false, ResultStatus::failed, std::nullopt, json_text(line, -1), csv_row(line)};
 }
 
 ClassSummary summarise_class(const std::vector<BatchLine>& lines) {
@@ -344,7 +350,7 @@ std::string batch_class_json(const ClassSummary& c) {
                       {{"count", c.ok_g_count},
                        {"mean_m_s2", optional_number(c.ok_g_mean)},
                        {"standard_deviation_m_s2", optional_number(c.ok_g_standard_deviation)}}}};
-  return text(line, -1);
+  return json_text(line, -1);
 }
 
 std::string batch_class_csv(const ClassSummary& c) {
@@ -507,8 +513,8 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
       os << line;
     }
     const TextbookFit& t = a.fit.textbook;
-    std::snprintf(line, sizeof line, "Textbook line T^2 = (4 pi^2/g)(L + offset), no corrections: g = %.5f %s m/s^2",
-                  t.g.value, plus_minus(t.g.uncertainty, "%.5f").c_str());
+    std::snprintf(line, sizeof line, "Textbook line T^2 = (4 pi^2/g)%s, no corrections: g = %.5f %s m/s^2",
+                  t.length_offset ? "(L + offset)" : " L", t.g.value, plus_minus(t.g.uncertainty, "%.5f").c_str());
     os << line;
     if (t.length_offset) {
       std::snprintf(line, sizeof line, ", offset = %.5f %s m", t.length_offset->value,

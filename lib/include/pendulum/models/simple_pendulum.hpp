@@ -38,10 +38,18 @@ struct SimplePendulum {
     return out;
   }
 
-  /// predict()'s period alone, without the rows: the fit's residuals.
+  /// The part of an observation's swing that no parameter changes (the
+  /// length as measured): a fit computes it once per observation.
   template <class T>
-  static T period(const T* p, const Observation<T>& o, const Apparatus<T>& app, const AmplitudeChoice& amplitude) {
-    const Swing<T> swing = Swing<T>::of(o, p[length_offset]);
+  static Swing<T> swing(const Observation<T>& o) {
+    return Swing<T>::of(o, T(0.0));
+  }
+
+  /// predict()'s period alone, without the rows, from swing(o): the fit's
+  /// residuals.
+  template <class T>
+  static T period(const T* p, Swing<T> swing, const Apparatus<T>& app, const AmplitudeChoice& amplitude) {
+    swing.length += p[length_offset];
     return ideal_period(p, swing) * (1.0 + compose(app, swing, amplitude).total);
   }
 

@@ -1,0 +1,265 @@
+#include "pendulum/report/html_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "pendulum/report/plots.hpp"
+#include "pendulum/report/svg_plot.hpp"
+
+namespace pendulum::report {
+
+namespace {
+
+std::string esc(const std::string& s) { return xml_escape(s); }
+
+// No url(), no @import, no font file: the page loads nothing.
+constexpr const char* kStyle = R"(body { font-family: "DejaVu Sans", Verdana, Arial, sans-serif; color: #111111;
+  max-width: 52rem; margin: 1.5rem auto; padding: 0 1rem; line-height: 1.45; }
+h1 { font-size: 1.6rem; margin-bottom: 0.3rem; }
+h2 { font-size: 1.35rem; border-bottom: 2px solid #0072B2; padding-bottom: 0.2rem; margin-top: 2.2rem; }
+h3 { font-size: 1.1rem; margin-top: 1.6rem; }
+p.meta { color: #333333; font-size: 0.92rem; }
+p.g { font-size: 1.35rem; font-weight: bold; margin: 0.6rem 0; }
+table { border-collapse: collapse; font-size: 0.88rem; margin: 0.5rem 0 1rem; }
+th, td { border-bottom: 1px solid #CCCCCC; padding: 0.22rem 0.5rem; text-align: left; vertical-align: baseline; }
+th { background: #F0F0F0; }
+td.method { overflow-wrap: anywhere; font-size: 0.8rem; }
+td.num, th.num { text-align: right; white-space: nowrap; font-variant-numeric: tabular-nums; }
+tr.negligible td { color: #444444; }
+tr.skipped td { color: #666666; font-style: italic; }
+tr.failed td { color: #8B2500; }
+figure { margin: 1rem 0 1.5rem; }
+svg { max-width: 100%; height: auto; display: block; }
+figcaption { font-size: 0.85rem; color: #333333; margin-top: 0.3rem; }
+ul.warnings li { color: #8B2500; }
+code { font-size: 0.9em; }
+@media print { body { max-width: none; } section.scene { break-before: page; } h1 + section.scene { break-before: auto; }
+  h2, h3 { break-after: avoid; } figure, table { break-inside: avoid; } }
+)";
+
+std::string signed_fixed(double v, int decimals) { return (v > 0.0 ? "+" : "") + format_fixed(v, decimals); }
+
+std::string optional_fixed(const std::optional<double>& v, double scale, int decimals, bool sign) {
+  if (!v) return "\u2014";
+  return sign ? signed_fixed(*v * scale, decimals) : format_fixed(*v * scale, decimals);
+}
+
+std::string figure_html(const std::string& svg, const std::string& caption) {
+  return "<figure>\n" + svg + "<figcaption>" + esc(caption) + "</figcaption>\n</figure>\n";
+}
+
+std::string page(const std::string& title, const std::string& body) {
+  return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\"/>\n"
+         "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\"/>\n"
+         "<meta name=\"generator\" content=\"pendulum-g report\"/>\n<title>" +
+         esc(title) + "</title>\n<style>\n" + kStyle + "</style>\n</head>\n<body>\n" + body +
+         "<footer><p class=\"meta\">Made by pendulum-g report from the numbers of pendulum-g reduce. "
+         "This page is one file: it needs no network, no other file and no script.</p></footer>\n"
+         "</body>\n</html>\n";
+}
+
+std::string g_comparison(const SceneReport& r) {
+  std::string s = "<table class=\"summary\">\n";
+  auto row = [&](const std::string& name, const std::string& value) {
+    s += "<tr><th scope=\"row\">" + esc(name) + "</th><td>" + esc(value) + "</td></tr>\n";
+  };
+  if (r.expected_g) {
+    std::string source = r.expected_source;
+    if (!r.expected_note.empty()) source += ": " + r.expected_note;
+    row("expected g", format_fixed(r.expected_g->value, 5) + " \u00B1 " + format_fixed(r.expected_g->uncertainty, 5) +
+                          " m/s\u00B2 (" + source + ")");
+    std::string difference = signed_fixed(r.g.value - r.expected_g->value, 5) + " m/s\u00B2";
+    if (r.z) difference += " = " + signed_fixed(*r.z, 2) + " combined standard uncertainties (z)";
+    row("difference", difference);
+  } else {
+    row("expected g", "the scene gives no site to compare with");
+  }
+  row(r.series ? "g of the textbook line (no corrections)" : "g uncorrected (Eq. 5)",
+      format_fixed(r.g_uncorrected.value, 5) + " \u00B1 " + format_fixed(r.g_uncorrected.uncertainty, 5) + " m/s\u00B2");
+  if (r.series) return s + "</table>\n";  // the periods are in the series' table
+  row("measured period T", format_fixed(r.period_measured.value, 6) + " \u00B1 " +
+                               format_fixed(r.period_measured.uncertainty, 6) + " s (" + std::to_string(r.trials) +
+                               " trials of " + std::to_string(r.oscillations_per_trial) + " oscillations)");
+  row("ideal period T\u2080", format_fixed(r.period_ideal.value, 6) + " \u00B1 " +
+                                  format_fixed(r.period_ideal.uncertainty, 6) + " s");
+  return s + "</table>\n";
+}
+
+// The equations are Nelson & Olsson's unless a row names another source.
+std::string short_equation(const std::string& equation) {
+  const std::string prefix = "Nelson & Olsson (1986) ";
+  return equation.compare(0, prefix.size(), prefix) == 0 ? equation.substr(prefix.size()) : equation;
+}
+
+std::string corrections_table(const SceneReport& r) {
+  std::string s = "<p>A correction smaller than " + format_significant(r.negligible_below * 1e6, 3) +
+                  " \u00B5s (a tenth of the period's uncertainty) is negligible; it is still applied.</p>\n"
+                  "<table class=\"corrections\">\n<thead><tr><th scope=\"col\">correction</th>"
+                  "<th scope=\"col\" class=\"num\">\u0394T (\u00B5s)</th><th scope=\"col\" class=\"num\">u(\u0394T) (\u00B5s)</th>"
+                  "<th scope=\"col\" class=\"num\">\u0394g (10\u207B\u2075 m/s\u00B2)</th><th scope=\"col\">status</th>"
+                  "<th scope=\"col\">method</th><th scope=\"col\">equation (Nelson &amp; Olsson 1986)</th></tr></thead>\n"
+                  "<tbody>\n";
+  for (const auto& c : r.corrections) {
+    const std::string status = c.status == "skipped" && !c.reason.empty() ? c.status + ": " + c.reason : c.status;
+    s += "<tr class=\"" + esc(c.status) + "\"><td>" + esc(c.title) + "</td><td class=\"num\">" +
+         optional_fixed(c.delta_T, 1e6, 4, true) + "</td><td class=\"num\">" +
+         optional_fixed(c.delta_T_uncertainty, 1e6, 4, false) + "</td><td class=\"num\">" +
+         optional_fixed(c.delta_g, 1e5, 4, true) + "</td><td>" + esc(status) + "</td><td class=\"method\">" +
+         (c.method.empty() ? "\u2014" : esc(c.method)) + "</td><td>" + esc(short_equation(c.equation)) + "</td></tr>\n";
+  }
+  return s + "</tbody>\n</table>\n";
+}
+
+std::string budget_table(const SceneReport& r) {
+  std::string s =
+      "<table class=\"budget\">\n<thead><tr><th scope=\"col\">input</th><th scope=\"col\" class=\"num\">value</th>"
+      "<th scope=\"col\" class=\"num\">uncertainty</th><th scope=\"col\">unit</th>"
+      "<th scope=\"col\" class=\"num\">contribution to u(g) (mm/s\u00B2)</th></tr></thead>\n<tbody>\n";
+  for (const auto& b : r.budget) {
+    s += "<tr><td><code>" + esc(b.input) + "</code></td><td class=\"num\">" + format_significant(b.value, 6) +
+         "</td><td class=\"num\">" + format_significant(b.uncertainty, 3) + "</td><td>" + esc(b.unit) +
+         "</td><td class=\"num\">" + format_fixed(b.contribution * 1e3, 6) + "</td></tr>\n";
+  }
+  s += "</tbody>\n</table>\n";
+  if (r.budget_correlation_variance) {
+    s += "<p>The fitted \u03B1 and \u03B2 are correlated; their cross term adds " +
+         format_significant(*r.budget_correlation_variance * 1e6, 3) + " (mm/s\u00B2)\u00B2 to u(g)\u00B2.</p>\n";
+  }
+  if (!r.inputs_without_uncertainty.empty()) {
+    std::string list;
+    for (const auto& i : r.inputs_without_uncertainty) list += (list.empty() ? "" : ", ") + i;
+    s += "<p class=\"meta\">Stated without an uncertainty, so not in the budget: " + esc(list) + ".</p>\n";
+  }
+  return s;
+}
+
+std::string decay_table(const DecayRecord& d) {
+  std::string s =
+      "<table class=\"decay\">\n<thead><tr><th scope=\"col\">parameter</th><th scope=\"col\" class=\"num\">value</th>"
+      "<th scope=\"col\">unit</th></tr></thead>\n<tbody>\n";
+  for (const auto& p : d.parameters) {
+    s += "<tr><td>" + esc(p.name) + "</td><td class=\"num\">" +
+         (p.uncertainty ? value_with_uncertainty(p.value, *p.uncertainty, false)
+                        : format_significant(p.value, 6) + " (held fixed)") +
+         "</td><td>" + esc(p.unit) + "</td></tr>\n";
+  }
+  s += "</tbody>\n</table>\n<p class=\"meta\">Model: " + esc(d.model) + ". \u03C7\u00B2 = " +
+       format_significant(d.chi2, 4) + " for " + std::to_string(d.dof) + " degrees of freedom; uncertainties " +
+       esc(d.uncertainty_scaling) + ".</p>\n";
+  return s;
+}
+
+std::string series_table(const SeriesRecord& d) {
+  std::string s =
+      "<table class=\"series\">\n<thead><tr><th scope=\"col\">parameter</th><th scope=\"col\" class=\"num\">value</th>"
+      "<th scope=\"col\">unit</th></tr></thead>\n<tbody>\n";
+  for (const auto& p : d.parameters) {
+    s += "<tr><td>" + esc(p.name) + "</td><td class=\"num\">" +
+         (p.uncertainty ? value_with_uncertainty(p.value, *p.uncertainty, false) : format_significant(p.value, 6)) +
+         "</td><td>" + esc(p.unit) + "</td></tr>\n";
+  }
+  s += "</tbody>\n</table>\n<table class=\"observations\">\n<thead><tr><th scope=\"col\" class=\"num\">L (m)</th>"
+       "<th scope=\"col\" class=\"num\">T measured (s)</th><th scope=\"col\" class=\"num\">\u03C3 (s)</th>"
+       "<th scope=\"col\" class=\"num\">T model (s)</th><th scope=\"col\" class=\"num\">residual (\u03C3)</th></tr></thead>\n<tbody>\n";
+  for (std::size_t k = 0; k < d.lengths.size(); ++k) {
+    const double sigma = d.period_uncertainties[k];
+    s += "<tr><td class=\"num\">" + format_fixed(d.lengths[k], 4) + "</td><td class=\"num\">" +
+         format_fixed(d.periods[k], 5) + "</td><td class=\"num\">" + format_fixed(sigma, 5) +
+         "</td><td class=\"num\">" + format_fixed(d.periods_model[k], 5) + "</td><td class=\"num\">" +
+         (sigma > 0.0 ? signed_fixed((d.periods_model[k] - d.periods[k]) / sigma, 2) : "\u2014") + "</td></tr>\n";
+  }
+  s += "</tbody>\n</table>\n<p class=\"meta\">\u03C7\u00B2 = " + format_significant(d.chi2, 4) + " for " +
+       std::to_string(d.dof) + " degrees of freedom" +
+       (d.probability ? ", P(\u03C7\u00B2 \u2265 this) = " + format_significant(*d.probability, 3) : "") +
+       ". The corrections above are those of the first observation.</p>\n";
+  return s;
+}
+
+/// One scene's section; `anchor` is its id in the page, and prefixes the ids
+/// of its plots.
+std::string scene_section(const SceneReport& r, const std::string& anchor) {
+  std::string s = "<section class=\"scene\" id=\"" + esc(anchor) + "\">\n<h2>" +
+                  esc(r.title.empty() ? r.input : r.title) + "</h2>\n<p class=\"meta\">Scene file: <code>" +
+                  esc(r.input) + "</code>";
+  if (!r.source.empty()) s += "<br/>Source: " + esc(r.source);
+  s += "</p>\n<p class=\"g\">g = " + format_fixed(r.g.value, 5) + " \u00B1 " + format_fixed(r.g.uncertainty, 5) +
+       " m/s\u00B2</p>\n";
+  s += g_comparison(r);
+  if (!r.warnings.empty()) {
+    s += "<h3>Warnings</h3>\n<ul class=\"warnings\">\n";
+    for (const auto& w : r.warnings) s += "<li>" + esc(w) + "</li>\n";
+    s += "</ul>\n";
+  }
+  s += r.series ? "<h3>Corrections of the first observation</h3>\n" : "<h3>Corrections</h3>\n";
+  if (auto c = corrections_chart(r, anchor + "-corrections")) {
+    s += figure_html(to_svg(*c, false), c->description);
+  }
+  s += corrections_table(r);
+  if (auto b = budget_chart(r, anchor + "-budget")) {
+    s += "<h3>Uncertainty budget of g</h3>\n" + figure_html(to_svg(*b, false), b->description) + budget_table(r);
+  }
+  if (auto f = series_figure(r, anchor + "-series")) {
+    s += "<h3>Series fit</h3>\n" + figure_html(to_svg(*f, false), f->description) + series_table(*r.series);
+  }
+  if (auto d = decay_figure(r, anchor + "-decay")) {
+    s += "<h3>Decay record</h3>\n" + figure_html(to_svg(*d, false), d->description) + decay_table(*r.decay);
+  }
+  return s + "</section>\n";
+}
+
+}  // namespace
+
+std::string scene_report_html(const SceneReport& r) {
+  return page(r.title.empty() ? r.input : r.title, "<h1>pendulum-g report</h1>\n" + scene_section(r, "scene"));
+}
+
+std::string class_report_html(const std::vector<ClassEntry>& entries) {
+  std::vector<ClassPoint> points;
+  std::size_t failed = 0;
+  std::vector<std::pair<double, std::string>> rows;  // by g, as the chart
+  std::string failures;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const ClassEntry& e = entries[i];
+    const std::string anchor = "scene-" + std::to_string(i + 1);
+    if (!e.report) {
+      ++failed;
+      failures += "<tr class=\"failed\"><td><code>" + esc(e.input) + "</code></td><td>" + esc(e.error) + "</td></tr>\n";
+      continue;
+    }
+    const SceneReport& r = *e.report;
+    const std::size_t slash = e.input.find_last_of('/');
+    points.push_back({slash == std::string::npos ? e.input : e.input.substr(slash + 1), "#" + anchor, r.g.value,
+                      r.g.uncertainty, r.expected_g, r.z});
+    rows.emplace_back(r.g.value, "<tr><td><a href=\"#" + anchor + "\"><code>" + esc(e.input) + "</code></a></td><td class=\"num\">" +
+            format_fixed(r.g.value, 5) + " \u00B1 " + format_fixed(r.g.uncertainty, 5) + "</td><td class=\"num\">" +
+            (r.expected_g ? format_fixed(r.expected_g->value, 5) : "\u2014") + "</td><td class=\"num\">" +
+            (r.z ? signed_fixed(*r.z, 2) : "\u2014") + "</td><td>" +
+            (r.budget.empty() ? "\u2014" : "<code>" + esc(r.budget.front().input) + "</code>") + "</td><td class=\"num\">" +
+            std::to_string(r.warnings.size()) + "</td></tr>\n");
+  }
+  std::string body = "<h1>pendulum-g class report</h1>\n<p class=\"meta\">" + std::to_string(entries.size()) +
+                     " scenes: " + std::to_string(entries.size() - failed) + " reduced, " + std::to_string(failed) +
+                     " failed. Each row links to the scene's own section below.</p>\n";
+  if (!points.empty()) {
+    const CategoryChart chart = class_chart(points, "class-g");
+    body += figure_html(to_svg(chart, false), chart.description);
+    body += "<table class=\"class\">\n<thead><tr><th scope=\"col\">scene</th><th scope=\"col\" class=\"num\">g (m/s\u00B2)"
+            "</th><th scope=\"col\" class=\"num\">expected g (m/s\u00B2)</th><th scope=\"col\" class=\"num\">z</th>"
+            "<th scope=\"col\">largest in the budget</th><th scope=\"col\" class=\"num\">warnings</th></tr></thead>\n"
+            "<tbody>\n";
+    std::stable_sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& row : rows) body += row.second;
+    body += "</tbody>\n</table>\n";
+  }
+  if (failed) {
+    body += "<h2>Files that failed</h2>\n<table class=\"failures\">\n<thead><tr><th scope=\"col\">file</th>"
+            "<th scope=\"col\">error</th></tr></thead>\n<tbody>\n" + failures + "</tbody>\n</table>\n";
+  }
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    if (entries[i].report) body += scene_section(*entries[i].report, "scene-" + std::to_string(i + 1));
+  }
+  return page("pendulum-g class report", body);
+}
+
+}  // namespace pendulum::report

@@ -1,0 +1,115 @@
+// The one place where the report code reads the analysis's own types.
+#include "pendulum/report/scene_report.hpp"
+
+#include <cmath>
+
+#include <ceres/jet.h>
+
+#include "pendulum/damping.hpp"
+
+namespace pendulum::report {
+
+namespace {
+
+constexpr int kDecayGridPoints = 241;
+
+/// theta0(t) of Eq. (25) at the fitted (alpha, beta, theta0m) and its
+/// standard uncertainty sqrt(J C J^T), J by automatic differentiation.
+Measured fitted_amplitude(const DecayFit& fit, double t) {
+  using Jet = ceres::Jet<double, 3>;
+  const Jet alpha(fit.alpha.value, 0), beta(fit.beta.value, 1), theta0m(fit.initial_amplitude.value, 2);
+  const Jet theta = decayed_amplitude(theta0m, alpha, beta, Jet(t));
+  double variance = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) variance += theta.v[i] * fit.covariance[3 * i + j] * theta.v[j];
+  }
+  return {theta.a, std::sqrt(std::max(variance, 0.0))};
+}
+
+DecayRecord decay_record(const DecayData& data, const DecayFit& fit) {
+  DecayRecord r;
+  r.times = data.times;
+  r.amplitudes = data.amplitudes;
+  r.sigmas = data.sigmas;
+  for (double t : data.times) r.fitted.push_back(fitted_amplitude(fit, t).value);
+  const double t0 = data.times.front(), t1 = data.times.back();
+  for (int i = 0; i < kDecayGridPoints; ++i) {
+    const double t = t0 + (t1 - t0) * i / (kDecayGridPoints - 1);
+    const Measured m = fitted_amplitude(fit, t);
+    r.grid.push_back(t);
+    r.grid_fit.push_back(m.value);
+    r.grid_uncertainty.push_back(m.uncertainty);
+  }
+  r.parameters = {{"alpha", "1/s", fit.alpha.value, fit.alpha.uncertainty},
+                  {"beta", "1/(s rad)", fit.beta.value, fit.beta.uncertainty},
+                  {"theta0m", "rad", fit.initial_amplitude.value, fit.initial_amplitude.uncertainty}};
+  switch (fit.model) {
+    case DecayModel::both: r.model = "Eq. (25), alpha and beta fitted"; break;
+    case DecayModel::linear_only: r.model = "Eq. (33), beta = 0"; break;
+    case DecayModel::quadratic_only: r.model = "Eq. (46), alpha = 0"; break;
+  }
+  if (!fit.model_reason.empty()) r.model += " (" + fit.model_reason + ")";
+  r.chi2 = fit.chi2;
+  r.dof = fit.dof;
+  r.uncertainty_scaling = fit.uncertainty_scaling == "sigma"
+                              ? "from the stated sigmas (chi2/dof tells the fit's quality)"
+                              : "scaled by the residual variance s^2 = SSR/dof (no sigmas stated)";
+  return r;
+}
+
+}  // namespace
+
+SceneReport make_scene_report(const std::string& input, const ParsedScene& scene, const Analysis& a) {
+  // An unknown uncertainty (a singular fit) is shown as 0 with a warning of
+  // the analysis beside it.
+  auto measured = [](const auto& x) { return Measured{x.value, x.uncertainty ? *x.uncertainty : 0.0}; };
+  const ObservationResult& first = a.observations.front();
+  SceneReport r;
+  r.input = input;
+  r.title = scene.title;
+  r.source = scene.source;
+  r.g = measured(a.g);
+  r.g_uncorrected = measured(a.fit.textbook.g);
+  r.period_measured = {first.period_measured.value, first.period_measured.uncertainty};
+  r.period_ideal = measured(first.period_ideal);
+  r.trials = first.trials;
+  r.oscillations_per_trial = first.oscillations_per_trial;
+  if (a.expected_g) {
+    r.expected_g = Measured{a.expected_g->value, a.expected_g->uncertainty};
+    r.expected_source = a.expected_g->source;
+    r.expected_note = a.expected_g->note;
+  }
+  r.z = a.z_score;
+  r.negligible_below = first.negligible_below;
+  for (const auto& row : first.corrections) {
+    r.corrections.push_back({row.info.id, row.info.title, status_name(row.status), row.method, row.reason,
+                             row.info.equation, row.delta_T, row.delta_T_uncertainty, row.delta_g});
+  }
+  for (const auto& b : a.budget) r.budget.push_back({b.input, b.unit, b.value, b.uncertainty, b.contribution});
+  if (a.budget_correlation) r.budget_correlation_variance = a.budget_correlation->variance;
+  r.inputs_without_uncertainty = a.inputs_without_uncertainty;
+  if (scene.decay_data && a.decay_fit) r.decay = decay_record(*scene.decay_data, *a.decay_fit);
+  if (scene.series) {
+    SeriesRecord s;
+    for (std::size_t k = 0; k < a.observations.size(); ++k) {
+      const ObservationResult& o = a.observations[k];
+      s.lengths.push_back(o.length);
+      s.length_uncertainties.push_back(scene.observation_uncertainties[k].length);
+      s.periods.push_back(o.period_measured.value);
+      s.period_uncertainties.push_back(o.period_measured.uncertainty);
+      s.periods_model.push_back(o.period_model);
+    }
+    for (const auto& p : a.fit.parameters) s.parameters.push_back({p.name, p.unit, p.value, p.uncertainty});
+    s.chi2 = a.fit.chi2;
+    s.dof = a.fit.dof;
+    s.probability = a.fit.probability;
+    s.textbook_g = a.fit.textbook.g.value;
+    if (a.fit.textbook.length_offset) s.textbook_length_offset = a.fit.textbook.length_offset->value;
+    r.series = s;
+  }
+  r.warnings = scene.warnings;
+  r.warnings.insert(r.warnings.end(), a.warnings.begin(), a.warnings.end());
+  return r;
+}
+
+}  // namespace pendulum::report

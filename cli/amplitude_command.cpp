@@ -22,7 +22,8 @@ Command add_amplitude_command(CLI::App& app) {
   cmd->add_option("--theta0-deg", o->theta0_deg, "Amplitude (deg), 0 <= X < 180")->required();
   cmd->add_option("--method", o->method,
                   "agm (exact, default), series (Eq. 8, --terms terms), small_angle (theta0^2/16)")
-      ->transform(CLI::CheckedTransformer(amplitude_methods(false), CLI::ignore_case));
+      ->transform(CLI::CheckedTransformer(amplitude_methods(false), CLI::ignore_case).description(""))
+      ->type_name("agm|series|small_angle");
   cmd->add_option("--terms", o->terms, "Terms of the Eq. (8) series (default 4)")
       ->check(CLI::Range(1, 1000));
 

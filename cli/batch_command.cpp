@@ -1,6 +1,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -27,6 +28,59 @@ struct Job {
   std::optional<std::string> text;  ///< set for standard input
 };
 
+/// ".json" in any case: CLARK.JSON is a scene too.
+bool json_extension(const std::filesystem::path& p) {
+  std::string e = p.extension().string();
+  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
+  return e == ".json";
+}
+
+/// The scenes on standard input, named "stdin:N" by the line each starts
+/// on: one a line (JSON lines), or pretty-printed over many (cat *.json).
+/// A scene ends where its outermost braces close, outside strings; text
+/// outside braces is a scene to the end of its line (and fails as such).
+std::vector<Job> split_documents(std::istream& in) {
+  std::vector<Job> documents;
+  std::string line, text;
+  int depth = 0, start = 0;
+  bool in_string = false, escaped = false;
+  for (int n = 1; std::getline(in, line); ++n) {
+    for (const char c : line) {
+      if (depth == 0 && text.empty()) {
+        if (c == ' ' || c == '\t' || c == '\r') continue;
+        start = n;
+      }
+      text += c;
+      if (in_string) {
+        if (escaped) {
+          escaped = false;
+        } else if (c == '\\') {
+          escaped = true;
+        } else if (c == '"') {
+          in_string = false;
+        }
+        continue;
+      }
+      if (c == '"') in_string = true;
+      if (c == '{' || c == '[') ++depth;
+      if ((c == '}' || c == ']') && depth > 0 && --depth == 0) {
+        documents.push_back({"stdin:" + std::to_string(start), text});
+        text.clear();
+      }
+    }
+    if (depth == 0 && !text.empty()) {  // not a JSON object: the line is one (bad) scene
+      documents.push_back({"stdin:" + std::to_string(start), text});
+      text.clear();
+    }
+    if (!text.empty()) text += '\n';
+  }
+  if (!text.empty()) documents.push_back({"stdin:" + std::to_string(start), text});
+  return documents;
+}
+
+/// The scenes to reduce, and a note on stderr for each entry of a folder
+/// that is not one (a subfolder, davis.json.txt), so that none is skipped
+/// without a word.
 std::vector<Job> gather(const std::vector<std::string>& paths, const std::string& list) {
   std::vector<Job> jobs;
   auto add_path = [&](const std::string& p) {
@@ -34,17 +88,25 @@ std::vector<Job> gather(const std::vector<std::string>& paths, const std::string
     std::error_code ec;
     if (fs::is_directory(p, ec)) {
       std::vector<std::string> files;
+      std::vector<std::pair<std::string, std::string>> skipped;
       for (const auto& entry : fs::directory_iterator(p, ec)) {
-        if (entry.path().extension() != ".json") continue;
-        // A named pipe would block the reader forever, a device feed it junk.
-        if (!entry.is_regular_file(ec)) {
-          std::cerr << "pendulum-g: note: skipping " << entry.path().string()
-                    << ": not a regular file (a named pipe, a device or a socket)\n";
-          continue;
+        const fs::path& f = entry.path();
+        if (entry.is_directory(ec)) {
+          skipped.push_back({f.string(), "a folder (batch reads one level; name it to reduce its scenes)"});
+        } else if (!json_extension(f)) {
+          skipped.push_back({f.string(), json_extension(f.stem()) ? "not a .json file; rename it to " +
+                                                                        f.stem().filename().string() + " to reduce it"
+                                                                  : std::string("not a .json file")});
+        } else if (!entry.is_regular_file(ec)) {
+          // A named pipe would block the reader forever, a device feed it junk.
+          skipped.push_back({f.string(), "not a regular file (a named pipe, a device or a socket)"});
+        } else {
+          files.push_back(f.string());
         }
-        files.push_back(entry.path().string());
       }
       std::sort(files.begin(), files.end());
+      std::sort(skipped.begin(), skipped.end());
+      for (const auto& [f, why] : skipped) std::cerr << "pendulum-g: note: skipped " << f << ": " << why << "\n";
       for (auto& f : files) jobs.push_back({std::move(f), std::nullopt});
     } else {
       jobs.push_back({p, std::nullopt});
@@ -55,18 +117,17 @@ std::vector<Job> gather(const std::vector<std::string>& paths, const std::string
       add_path(p);
       continue;
     }
-    std::string line;
-    for (int n = 1; std::getline(std::cin, line); ++n) {
-      if (line.find_first_not_of(" \t\r") != std::string::npos) jobs.push_back({"stdin:" + std::to_string(n), line});
-    }
+    for (auto& document : split_documents(std::cin)) jobs.push_back(std::move(document));
   }
   if (!list.empty()) {
     std::ifstream in(list);
     if (!in) throw InputError("", "cannot open the list " + list);
     std::string line;
     while (std::getline(in, line)) {
-      if (!line.empty() && line.back() == '\r') line.pop_back();
-      if (!line.empty() && line[0] != '#') add_path(line);
+      // Surrounding spaces (and a CR) are no part of a file name.
+      const auto first = line.find_first_not_of(" \t\r");
+      if (first == std::string::npos || line[first] == '#') continue;
+      add_path(line.substr(first, line.find_last_not_of(" \t\r") - first + 1));
     }
   }
   return jobs;
@@ -105,7 +166,17 @@ Command add_batch_command(CLI::App& app) {
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
       "batch", "Reduce many scenes (files, folders of *.json, a list, or JSON lines on stdin) to one summary");
-  cmd->add_option("scenes", o->paths, "Scene files, folders, or - for one scene per line of standard input");
+  cmd->add_option("scenes", o->paths,
+                  "Scene files, folders (their *.json, any case; other entries are skipped with a note), or - "
+                  "for scenes on standard input (one a line, or pretty-printed one after another)");
+  cmd->footer(
+      "Output: one line per scene, in the order given (folders: by file name), then a class line.\n"
+      "Columns (CSV; JSON lines have the same keys): input, ok (a result exists), g_m_s2,\n"
+      "g_uncertainty_m_s2, largest_budget_input and largest_budget_m_s2 (the input that dominates\n"
+      "g's uncertainty), expected_g_m_s2 and z (with a site), warnings (their texts), error,\n"
+      "status (ok, suspect or failed), status_reasons (the likely slip and the input to fix), title.\n"
+      "Class line: JSON {\"class\": true, \"counts\": ..., \"g_of_ok\": ...}; CSV \"# class: ...\".\n"
+      "Exit status 1 when any scene failed. docs/instructors.md has an example.");
   cmd->add_option("--list", o->list, "A file naming one scene file per line (# starts a comment)");
   cmd->add_option("--format", o->format, "Summary: jsonl (default, one JSON object per scene) or csv")
       ->check(CLI::IsMember({"jsonl", "csv"}));
@@ -139,6 +210,8 @@ Command add_batch_command(CLI::App& app) {
     const bool progress = isatty(STDERR_FILENO) && jobs.size() > 1;
     auto last_progress = std::chrono::steady_clock::now();
     std::size_t failed = 0;
+    std::vector<BatchLine> printed;
+    printed.reserve(jobs.size());
     if (o->format == "csv") std::cout << batch_csv_header();
     for (std::size_t i = 0; i < jobs.size(); ++i) {
       BatchLine line;
@@ -150,6 +223,7 @@ Command add_batch_command(CLI::App& app) {
       }
       failed += !line.ok;
       std::cout << (o->format == "csv" ? line.csv : line.json + "\n");
+      printed.push_back(std::move(line));
       const auto now = std::chrono::steady_clock::now();
       if (progress && (now - last_progress > std::chrono::milliseconds(100) || i + 1 == jobs.size())) {
         last_progress = now;
@@ -160,6 +234,8 @@ Command add_batch_command(CLI::App& app) {
     }
     for (auto& w : workers) w.join();
     if (progress) std::cerr << "\n";
+    const ClassSummary summary = summarise_class(printed);
+    std::cout << (o->format == "csv" ? batch_class_csv(summary) : batch_class_json(summary) + "\n");
     if (!o->report.empty()) write_output(o->report, report::class_report_html(entries));
     return failed ? 1 : 0;
   }};

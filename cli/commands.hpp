@@ -19,6 +19,9 @@ struct AnalysisOptions;
 
 namespace pendulum::cli {
 
+/// Exit status of `reduce --strict` on a suspect result (docs/output.md).
+inline constexpr int kExitSuspect = 4;
+
 /// A registered subcommand and the function that runs it.
 struct Command {
   CLI::App* app;
@@ -48,6 +51,9 @@ Command add_amplitude_command(CLI::App& app);
 
 /// `pendulum-g batch SCENES...`: many scenes -> one summary (cli/batch_command.cpp).
 Command add_batch_command(CLI::App& app);
+
+/// `pendulum-g template`: a starter scene on stdout (cli/template_command.cpp).
+Command add_template_command(CLI::App& app);
 
 /// `pendulum-g report SCENE -o report.html`: the reduction as one HTML page
 /// or one SVG plot (cli/report_command.cpp).

@@ -1,6 +1,6 @@
 // pendulum-g: reduce a pendulum experiment to g. Parses arguments, runs one
 // subcommand, reports errors. Exit status: 0 success, 1 bad input, 2 bad
-// usage, 3 internal error. Nothing reaches stdout unless a whole result does.
+// usage, 3 internal error, 4 a suspect result under reduce --strict. Nothing reaches stdout unless a whole result does.
 
 #include <cerrno>
 #include <cstdio>
@@ -52,7 +52,8 @@ void add_analysis_options(CLI::App& cmd, AnalysisOptions& options) {
   cmd.add_option("--amplitude-method", options.reduction.amplitude_method,
                  "Finite-amplitude method: auto (default: the cheapest whose error bound "
                  "is below 1% of the period's uncertainty), agm (exact), series, small_angle")
-      ->transform(CLI::CheckedTransformer(amplitude_methods(true), CLI::ignore_case));
+      ->transform(CLI::CheckedTransformer(amplitude_methods(true), CLI::ignore_case).description(""))
+      ->type_name("auto|agm|series|small_angle");
   cmd.add_option("--series-terms", options.reduction.series_terms,
                  "Terms of the Eq. (8) series for --amplitude-method series (default 4)")
       ->check(CLI::Range(1, 1000));
@@ -64,7 +65,13 @@ int main(int argc, char** argv) {
   constexpr int kExitInput = 1, kExitUsage = 2, kExitInternal = 3;
   // Ceres reports through glog; pendulum-g reports through its own messages.
   FLAGS_minloglevel = google::GLOG_FATAL;
-  CLI::App app{"pendulum-g: reduce a pendulum experiment to g (docs/ for the scene schema)"};
+  CLI::App app{
+      "pendulum-g: reduce a pendulum experiment to g.\n"
+      "Start with `pendulum-g template > my_pendulum.json`, put your numbers in, then run\n"
+      "`pendulum-g reduce --format table my_pendulum.json`. The scene (JSON) holds timing\n"
+      "(oscillations_per_trial, unit, resolution, trials), length (pivot to the bob's centre),\n"
+      "amplitude, and optionally bob, air, site, ...: docs/scene.md. An oscillation is a full\n"
+      "swing, there and back; count full oscillations, not half swings."};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("pendulum-g ") + PENDULUM_G_VERSION);
 
@@ -76,6 +83,7 @@ int main(int argc, char** argv) {
       pendulum::cli::add_import_command(app),
       pendulum::cli::add_report_command(app),
       pendulum::cli::add_clock_command(app),
+      pendulum::cli::add_template_command(app),
   };
 
   try {
@@ -84,6 +92,16 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     app.exit(e);
+    // Several scenes given to a command that takes one: batch takes many.
+    const std::string command = argc > 1 ? argv[1] : "";
+    if (dynamic_cast<const CLI::ExtrasError*>(&e) && (command == "reduce" || command == "fit-decay")) {
+      std::string scenes;
+      for (int i = 2; i < argc; ++i) {
+        if (argv[i][0] != '-') scenes += std::string(" ") + argv[i];
+      }
+      std::cerr << "pendulum-g: " << command << " takes one scene; for several, run: pendulum-g batch" << scenes
+                << "\n";
+    }
     return kExitUsage;
   }
 

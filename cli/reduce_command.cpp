@@ -13,6 +13,7 @@ Command add_reduce_command(CLI::App& app) {
   struct Options {
     std::string file;
     std::string format = "json";
+    bool strict = false;
     AnalysisOptions analysis;
   };
   auto o = std::make_shared<Options>();
@@ -21,6 +22,9 @@ Command add_reduce_command(CLI::App& app) {
   cmd->add_option("scene", o->file, "Scene file (JSON), or - for standard input")->required();
   cmd->add_option("--format", o->format, "Output: json (default) or table")
       ->check(CLI::IsMember({"json", "table"}));
+  cmd->add_flag("--strict", o->strict,
+               "Exit with status 4 when the result is suspect (g far from the expected value, or an input "
+               "that looks like a slip); the result is printed all the same");
   add_analysis_options(*cmd, o->analysis);
 
   return {cmd, [o] {
@@ -30,10 +34,14 @@ Command add_reduce_command(CLI::App& app) {
         o->format == "table"
             ? result_table(scene, analysis)
             : result_json(scene, analysis, o->analysis, o->file) + "\n";
-    print_warnings(scene.warnings);
-    print_warnings(analysis.warnings);
+    // The table holds the warnings and the status: not twice on a terminal.
+    if (o->format != "table") {
+      print_warnings(scene.warnings);
+      print_warnings(analysis.warnings);
+      for (const auto& r : analysis.status_reasons) std::cerr << "pendulum-g: suspect: " << r << "\n";
+    }
     std::cout << text;
-    return 0;
+    return o->strict && analysis.status == ResultStatus::suspect ? kExitSuspect : 0;
   }};
 }
 

@@ -159,14 +159,23 @@ TEST_CASE("Plausibility warnings start at their thresholds", "[scene][warnings]"
   REQUIRE(warnings(R"J({"amplitude": {"value": 20.1}})J").size() == 1);
   CHECK_THAT(warnings(R"J({"amplitude": {"value": 20.1}})J")[0],
              Contains("20.1 deg is over the 20 deg of a small-angle lab"));
-  // A trial is off when it lies over 5 x 1.4826 x MAD from the median: with
-  // the published trials but the last, median 347.865 s and MAD 0.035 s, so
-  // the limit is 0.2595 s.
-  const char* near = R"J({"timing": {"trials": [347.84, 347.87, 347.86, 347.91, 347.91, 347.94, 347.84, 347.81, 347.84, 348.11]}})J";
-  const char* far = R"J({"timing": {"trials": [347.84, 347.87, 347.86, 347.91, 347.91, 347.94, 347.84, 347.81, 347.84, 348.13]}})J";
+  // A trial is off when it lies over 5 x the largest of 1.4826 x MAD, the
+  // resolution, and, on a timer read to 0.01 s by hand, a reaction time of
+  // 0.1 s from the median. With the published trials but the last: median
+  // 347.865 s, MAD 0.035 s (1.4826 MAD = 0.0519 s), so the limit is 0.5 s
+  // by hand...
+  const char* near = R"J({"timing": {"trials": [347.84, 347.87, 347.86, 347.91, 347.91, 347.94, 347.84, 347.81, 347.84, 348.36]}})J";
+  const char* far = R"J({"timing": {"trials": [347.84, 347.87, 347.86, 347.91, 347.91, 347.94, 347.84, 347.81, 347.84, 348.37]}})J";
   CHECK(warnings(near).empty());
   REQUIRE(warnings(far).size() == 1);
-  CHECK_THAT(warnings(far)[0], Contains("timing.trials[9]: 348.13 s is 0.265 s from the median trial 347.865 s"));
+  CHECK_THAT(warnings(far)[0], Contains("timing.trials[9]: 348.37 s is 0.505 s from the median trial 347.865 s"));
+  CHECK_THAT(warnings(far)[0], Contains("a hand's reaction time (0.1 s)"));
+  // ...and 0.2595 s on a gate read to 1 ms.
+  const char* gate_near = R"J({"timing": {"resolution": 0.001, "trials": [347.84, 347.87, 347.86, 347.91, 347.91, 347.94, 347.84, 347.81, 347.84, 348.11]}})J";
+  const char* gate_far = R"J({"timing": {"resolution": 0.001, "trials": [347.84, 347.87, 347.86, 347.91, 347.91, 347.94, 347.84, 347.81, 347.84, 348.13]}})J";
+  CHECK(warnings(gate_near).empty());
+  REQUIRE(warnings(gate_far).size() == 1);
+  CHECK_THAT(warnings(gate_far)[0], Contains("timing.trials[9]: 348.13 s is 0.265 s from the median trial 347.865 s"));
   // The published trials scatter by 0.05333 s: a stated one-trial uncertainty
   // warns below a third of that.
   CHECK(warnings(R"J({"timing": {"uncertainty": 0.018}})J").empty());
@@ -178,4 +187,57 @@ TEST_CASE("A stated one-trial uncertainty is a floor, like the resolution", "[sc
   // so the period's uncertainty is 0.1 / sqrt(10) / 100.
   const ParsedScene s = parse_scene(patched(R"J({"timing": {"uncertainty": 0.1}})J"));
   CHECK_THAT(s.observation_uncertainties[0].period, WithinRel(0.1 / std::sqrt(10.0) / 100.0, 1e-12));
+}
+
+TEST_CASE("A UTF-16 scene (Notepad's \"Unicode\") reads as its UTF-8 text", "[scene][encoding]") {
+  // A title with a degree sign (U+00B0, one UTF-16 unit) and an astral
+  // character, U+1F30D (a globe: the surrogate pair D83C DF0D).
+  std::string utf8 = test::nelson_olsson_text();
+  const std::string title = "3\xc2\xb0 swing \xf0\x9f\x8c\x8d";
+  utf8.replace(utf8.find("Nelson & Olsson (1986): Leybold"), 31, title);
+  // UTF-16 code units of the text, each ASCII byte one unit.
+  std::vector<unsigned> units;
+  for (std::size_t i = 0; i < utf8.size();) {
+    const auto c = static_cast<unsigned char>(utf8[i]);
+    if (c < 0x80) {
+      units.push_back(c), i += 1;
+    } else if (c < 0xe0) {
+      units.push_back((c & 0x1f) << 6 | (utf8[i + 1] & 0x3f)), i += 2;
+    } else {  // the four-byte emoji: U+1F30D
+      units.push_back(0xd83c), units.push_back(0xdf0d), i += 4;
+    }
+  }
+  auto encode = [&](bool little) {
+    std::string out = little ? "\xff\xfe" : "\xfe\xff";
+    for (unsigned u : units) {
+      const char lo = static_cast<char>(u & 0xff), hi = static_cast<char>(u >> 8);
+      out += little ? std::string{lo, hi} : std::string{hi, lo};
+    }
+    return out;
+  };
+  const ParsedScene expected = parse_scene(utf8);
+  for (bool little : {true, false}) {
+    const ParsedScene s = parse_scene(encode(little));
+    CHECK(s.title.rfind(title, 0) == 0);
+    CHECK(s.title == expected.title);
+    CHECK(s.observations[0].period == expected.observations[0].period);
+  }
+  // A lone surrogate, or an odd byte count, is refused with the fix.
+  std::string broken = encode(true);
+  broken[2] = '\x00', broken[3] = '\xdc';
+  CHECK_THROWS_WITH(parse_scene(broken), Contains("UTF-16 text with a lone low surrogate at byte 2") &&
+                                             Contains("save it as UTF-8"));
+  CHECK_THROWS_WITH(parse_scene(encode(true) + "x"), Contains("an odd number of bytes"));
+}
+
+TEST_CASE("A length measured to the top or bottom of the bob is referred to its centre", "[scene]") {
+  // N&O's bob: 6.10 +- 0.01 cm, so the radius is 3.05 cm +- 0.005 cm.
+  const ParsedScene centre = parse_scene(test::nelson_olsson_text());
+  const ParsedScene top = parse_scene(patched(R"J({"length": {"value": 2.9739, "measured_to": "top_of_bob"}})J"));
+  const ParsedScene bottom = parse_scene(patched(R"J({"length": {"value": 3.0349, "measured_to": "bottom_of_bob"}})J"));
+  CHECK_THAT(top.observations[0].length, WithinAbs(3.0044, 1e-15));
+  CHECK_THAT(bottom.observations[0].length, WithinAbs(3.0044, 1e-15));
+  // sqrt(0.0003^2 + 0.00005^2) m.
+  CHECK_THAT(top.observation_uncertainties[0].length, WithinRel(std::hypot(0.0003, 0.00005), 1e-12));
+  CHECK(centre.observation_uncertainties[0].length == 0.0003);
 }

@@ -626,6 +626,9 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
       if (row.delta_T) check(*row.delta_T, row.info.id);
     }
   }
+  Verdict verdict = judge(scene, out);
+  out.status = verdict.status;
+  out.status_reasons = std::move(verdict.reasons);
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include "pendulum/air.hpp"
 #include "pendulum/input_error.hpp"
 #include "pendulum/reduction.hpp"
+#include "pendulum/status.hpp"
 #include "pendulum/units.hpp"
 #include "text.hpp"
 
@@ -30,7 +31,7 @@ double expected_period(const Apparatus<double>& app, const Observation<double>& 
 
 /// "5.3% longer"
 std::string off_by(double ratio) {
-  return format_number(100.0 * std::abs(ratio - 1.0), 2) + "% " + (ratio > 1.0 ? "longer" : "shorter");
+  return format_percent(std::abs(ratio - 1.0)) + " " + (ratio > 1.0 ? "longer" : "shorter");
 }
 
 void check_first_order(const Apparatus<double>& app, const Observation<double>& o) {
@@ -39,9 +40,12 @@ void check_first_order(const Apparatus<double>& app, const Observation<double>& 
     const std::optional<double>& x = r.terms[i].ratio;
     const CorrectionInfo& info = kCorrections[i];
     if (!x || std::abs(*x) < info.max_ratio) continue;
+    // A bob light as a balloon is most often a unit slip: say which.
+    const auto bob = bob_density_slip(app);
     throw InputError(info.part, "got DeltaT/T0 = " + format_number(*x) + " for \"" + info.title + "\" (" +
                                     info.equation + "); expected |DeltaT/T0| below " +
-                                    format_number(info.max_ratio) + ", where its first-order formula holds");
+                                    format_number(info.max_ratio) + ", where its first-order formula holds" +
+                                    (bob ? "; " + *bob : ""));
   }
 }
 
@@ -76,10 +80,13 @@ void check_observation(ParsedScene& scene, std::size_t k) {
   const double swing =
       2.0 * kPi * std::sqrt(o.length / kStandardGravity) * (1.0 + finite_amplitude_agm(o.amplitude));
   if (!(o.period / swing > 1.0 / kPeriodFactor && o.period / swing < kPeriodFactor)) {
+    // g = 4 pi^2 l / T^2 would be (swing / period)^2 times standard gravity.
+    const auto slip = name_slip((swing / o.period) * (swing / o.period));
     throw InputError(at + "timing.trials",
                      "got a period of " + format_number(o.period, 5) + " s, but this pendulum swings in " +
                          format_number(swing, 5) + " s at " + standard + "; expected them within a factor of " +
-                         format_number(kPeriodFactor) + " (is a unit or oscillations_per_trial wrong?)");
+                         format_number(kPeriodFactor) +
+                         (slip ? ": " + *slip : " (is a unit or oscillations_per_trial wrong?)"));
   }
 
   check_first_order(app, o);
@@ -87,7 +94,8 @@ void check_observation(ParsedScene& scene, std::size_t k) {
   if (std::abs(ratio - 1.0) > kPeriodWarning) {
     scene.warnings.push_back(at + "timing.trials: the measured period " + format_number(o.period, 5) + " s is " +
                              off_by(ratio) + " than the " + format_number(expected, 5) + " s " + at_g +
-                             "; check the length's unit and oscillations_per_trial");
+                             (bob_density_slip(app) ? "; check bob.mass and its unit: the bob's density is implausible"
+                                                    : "; check the length's unit and oscillations_per_trial"));
   }
   const double degrees = o.amplitude * 180.0 / kPi;
   // A series may sweep the amplitude on purpose.

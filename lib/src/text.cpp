@@ -1,5 +1,6 @@
 #include "text.hpp"
 
+#include <cmath>
 #include <sstream>
 
 namespace pendulum {
@@ -21,6 +22,16 @@ std::string format_number(double x, int digits) {
   std::ostringstream os;
   os.precision(digits);
   os << x;
+  return os.str();
+}
+
+std::string format_percent(double fraction) {
+  const double percent = 100.0 * fraction;
+  if (std::abs(percent) < 10.0) return format_number(percent, 2) + "%";
+  std::ostringstream os;
+  os << std::fixed;
+  os.precision(0);
+  os << percent << "%";
   return os.str();
 }
 

@@ -13,4 +13,8 @@ std::string one_line(const std::string& s, std::size_t max);
 /// `x` with `digits` significant digits.
 std::string format_number(double x, int digits = 10);
 
+/// A fraction as a percentage for a message: "5.3%", "8%", "120%" (two
+/// significant digits below 10%, whole percents above, never "1e+02%").
+std::string format_percent(double fraction);
+
 }  // namespace pendulum

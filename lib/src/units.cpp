@@ -73,11 +73,29 @@ constexpr std::array<Unit, 60> kUnits{{
     {"ms/day", Dimension::daily_rate, 1e-3, 0.0},
 }};
 
+/// Spellings people type for a unit of the table (issue 14), and the unit.
+struct Alias {
+  const char* spelling;
+  const char* name;
+  Dimension dimension;
+};
+constexpr Alias kAliases[] = {
+    {"sec", "s", Dimension::time},          {"secs", "s", Dimension::time},
+    {"degree", "deg", Dimension::angle},    {"degrees", "deg", Dimension::angle},
+    {"\xc2\xb0", "deg", Dimension::angle},  // the degree sign
+    {"C", "degC", Dimension::temperature},  {"\xc2\xb0" "C", "degC", Dimension::temperature},
+    {"F", "degF", Dimension::temperature},  {"\xc2\xb0" "F", "degF", Dimension::temperature},
+};
+
 }  // namespace
 
 std::optional<Unit> find_unit(const std::string& name, Dimension dimension) {
+  std::string canonical = name;
+  for (const auto& a : kAliases) {
+    if (a.dimension == dimension && name == a.spelling) canonical = a.name;
+  }
   for (const auto& u : kUnits) {
-    if (u.dimension == dimension && name == u.name) return u;
+    if (u.dimension == dimension && canonical == u.name) return u;
   }
   return std::nullopt;
 }

@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
     for (const auto& entry : catalogue.at("cases")) {
       std::ofstream(std::string(argv[1]) + "/seed-" + std::to_string(n++) + ".json",
                     std::ios::binary)
-          << pendulum::test::catalogue_text(entry, base);
+          << pendulum::test::catalogue_text(entry, catalogue.value("base", base));  // student_slips has its own
     }
   }
   return 0;

@@ -13,6 +13,7 @@
 #include "pendulum/drag.hpp"
 #include "pendulum/parsed_scene.hpp"
 #include "pendulum/reduction.hpp"
+#include "pendulum/status.hpp"
 
 namespace pendulum {
 
@@ -159,6 +160,10 @@ struct Analysis {
   /// among them the corrections skipped for a part not described that
   /// typical values would not leave negligible.
   std::vector<std::string> warnings;
+  /// ok or suspect, and why suspect: the likely slip and the input to fix
+  /// (status.hpp).
+  ResultStatus status = ResultStatus::ok;
+  std::vector<std::string> status_reasons;
 };
 
 /// What a decay fit's user should know: non-convergence, a chi2/dof that

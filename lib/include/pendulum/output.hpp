@@ -5,6 +5,7 @@
 /// and a batch's summary lines. JSON text in, so that no header below the
 /// CLI includes the JSON parser.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,7 +19,8 @@ namespace pendulum {
 std::string result_json(const ParsedScene& scene, const Analysis& analysis, const AnalysisOptions& options,
                         const std::string& input, int indent = 2);
 
-/// The same result as an aligned text table (microseconds, 1e-5 m/s^2).
+/// The same result as an aligned text table for people: corrections in
+/// microseconds and mGal, g rounded to its uncertainty, the status.
 std::string result_table(const ParsedScene& scene, const Analysis& analysis);
 
 /// The document of `pendulum-g fit-decay`: the fit of the scene's decay
@@ -26,17 +28,36 @@ std::string result_table(const ParsedScene& scene, const Analysis& analysis);
 std::string decay_fit_json(const std::string& input, const ParsedScene& scene, const DecayFit& fit,
                            const std::vector<std::string>& warnings);
 
+/// The same fit as a text table for people (`fit-decay --format table`).
+std::string decay_fit_table(const ParsedScene& scene, const DecayFit& fit, const std::vector<std::string>& warnings);
+
 /// One scene's line in a batch summary (`pendulum-g batch`), as a JSON line
 /// and as a CSV row.
 struct BatchLine {
-  bool ok;
-  std::string json;  ///< one line, no newline
-  std::string csv;   ///< one row, with its newline
+  bool ok;               ///< a result exists (status ok or suspect)
+  ResultStatus status;
+  std::optional<double> g;  ///< (m/s^2), when ok
+  std::string json;      ///< one line, no newline
+  std::string csv;       ///< one row, with its newline
 };
 BatchLine batch_line(const std::string& input, const ParsedScene& scene, const Analysis& analysis);
 /// The line of a scene that failed: its input and the error.
 BatchLine batch_failure(const std::string& input, const std::string& error);
 std::string batch_csv_header();
+
+/// The class at a glance: scenes by status, and the mean and sample
+/// standard deviation of g over the scenes whose status is ok.
+struct ClassSummary {
+  int count[3] = {0, 0, 0};  ///< by ResultStatus: ok, suspect, failed
+  int ok_g_count = 0;
+  std::optional<double> ok_g_mean;                ///< (m/s^2), with one ok scene or more
+  std::optional<double> ok_g_standard_deviation;  ///< (m/s^2), with two or more
+};
+ClassSummary summarise_class(const std::vector<BatchLine>& lines);
+/// The summary's last line: a JSON line with "class": true...
+std::string batch_class_json(const ClassSummary& summary);
+/// ...or a CSV comment line "# class: ...", with its newline.
+std::string batch_class_csv(const ClassSummary& summary);
 
 /// The result of `pendulum-g clock` (docs/clock.md) as JSON and as a table;
 /// `input` names the scene file as the user gave it.

@@ -23,6 +23,9 @@ struct ObservationSource {
   /// The amplitude as written, for the degrees-and-radians check.
   double amplitude_raw = 0.0;
   std::string amplitude_unit;
+  /// What the length was measured to: "center" (the default), "top_of_bob"
+  /// or "bottom_of_bob"; the reader adds or subtracts the bob's radius.
+  std::string measured_to = "center";
 };
 
 struct ParsedScene {
@@ -51,6 +54,9 @@ struct ParsedScene {
   std::vector<Covariance> input_covariances;
   std::vector<std::string> assumptions;  ///< defaults the reduction used
   std::vector<std::string> warnings;     ///< legal but suspicious input
+  /// Findings of the reader that make the result suspect (status.hpp): a
+  /// trial far from the others. Each names the input to fix.
+  std::vector<std::string> suspicions;
 };
 
 }  // namespace pendulum

@@ -20,4 +20,9 @@ inline constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 20;
 /// Parses and validates scene JSON text. Throws InputError.
 ParsedScene parse_scene(const std::string& text);
 
+/// A whole scene, or a document holding only a decay record: `decay` (with
+/// `data`) and the free-text keys (schema, title, source, notes), what
+/// `fit-decay` reads. The latter has no observations. Throws InputError.
+ParsedScene parse_decay_document(const std::string& text);
+
 }  // namespace pendulum

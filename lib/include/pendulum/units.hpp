@@ -37,7 +37,9 @@ struct Unit {
   double offset;
 };
 
-/// The unit called `name` if it measures `dimension`.
+/// The unit called `name` if it measures `dimension`; `name` may also be a
+/// spelling people type: "sec", "degree(s)", the degree sign, "C" or "\u00b0C"
+/// for degC, "F" or "\u00b0F" for degF. The unit returned has the table's name.
 std::optional<Unit> find_unit(const std::string& name, Dimension dimension);
 
 /// The SI unit of a dimension, as printed in the output ("m", "kg", "1/(s rad)").

@@ -59,13 +59,23 @@ void read_air(const json& air, ParsedScene& out) {
   }
 }
 
-/// Warns about trials (in `unit`) that disagree more than they should: one
-/// far from the others (a miscounted oscillation, a typo), or a scatter far
-/// beyond the stated one-trial uncertainty. A scatter beyond the resolution
-/// alone is normal: a hand on a stopwatch scatters more than its last digit.
+/// A person starting and stopping a stopwatch scatters a trial by about this
+/// much (s, standard deviation; reaction times of about 0.07 s at each end)...
+constexpr double kReactionTime = 0.1;
+/// ...on a timer read to this resolution (s) or coarser, or of no stated
+/// resolution: a phone's or a stopwatch's 0.01 s. A finer one is a gate's.
+constexpr double kHandTimerResolution = 0.01;
+
+/// Warns about trials (in `unit`, of `seconds` s) that disagree more than
+/// they should: one far from the others (a miscounted oscillation, a typo),
+/// or a scatter far beyond the stated one-trial uncertainty. A scatter beyond
+/// the resolution alone is normal: a hand on a stopwatch scatters more than
+/// its last digit, and with five trials the median deviation alone is no
+/// measure of it (issue 14: 33 of 300 clean hand-timed scenes drew this
+/// warning), so a hand-read timer's trials may stray by 5 reaction times.
 void warn_about_trials(const std::string& path, const std::vector<double>& times, double spread, std::optional<double> resolution,
-                       std::optional<double> trial_sigma, const std::string& unit,
-                       std::vector<std::string>& warnings) {
+                       std::optional<double> trial_sigma, const std::string& unit, double seconds,
+                       std::vector<std::string>& warnings, std::vector<std::string>& suspicions) {
   auto in_unit = [&](double x) { return format_number(x, 4) + " " + unit; };
   if (trial_sigma && spread > 3.0 * *trial_sigma) {
     warnings.push_back(path + ".uncertainty: the trials scatter by " + in_unit(spread) +
@@ -86,18 +96,24 @@ void warn_about_trials(const std::string& path, const std::vector<double>& times
   std::vector<double> deviation(times.size());
   for (std::size_t i = 0; i < times.size(); ++i) deviation[i] = std::abs(times[i] - centre);
   const double scatter = 1.4826 * median(deviation);
+  const bool by_hand = !resolution || *resolution * seconds >= kHandTimerResolution * (1.0 - 1e-9);
+  const double reaction = by_hand ? kReactionTime / seconds : 0.0;
   const double allowed =
-      5.0 * std::max({scatter, resolution.value_or(0.0), trial_sigma.value_or(0.0)});
+      5.0 * std::max({scatter, resolution.value_or(0.0), trial_sigma.value_or(0.0), reaction});
   const auto worst = std::max_element(deviation.begin(), deviation.end());
   if (allowed == 0.0 || *worst <= allowed) return;
   std::vector<std::string> allowance{"the trials' scatter (" + in_unit(scatter) + ")"};
   if (resolution) allowance.push_back("the resolution (" + in_unit(*resolution) + ")");
   if (trial_sigma) allowance.push_back("the stated uncertainty (" + in_unit(*trial_sigma) + ")");
+  if (by_hand) allowance.push_back("a hand's reaction time (" + in_unit(reaction) + ")");
   std::string largest = allowance.size() > 1 ? "the largest of " : "";
   for (std::size_t k = 0; k < allowance.size(); ++k) {
     largest += (k == 0 ? "" : k + 1 == allowance.size() ? " and " : ", ") + allowance[k];
   }
   const auto i = static_cast<std::size_t>(worst - deviation.begin());
+  suspicions.push_back(path + ".trials[" + std::to_string(i) + "]: " + format_number(times[i]) + " " + unit +
+                       ", far from the other trials (warnings): a miscounted oscillation? Count again, or drop "
+                       "the trial");
   warnings.push_back(path + ".trials[" + std::to_string(i) + "]: " + format_number(times[i]) + " " +
                      unit + " is " + in_unit(*worst) + " from the median trial " +
                      format_number(centre) + " " + unit + ", over 5 times " + largest +
@@ -110,12 +126,14 @@ void read_timing(Object& parent, const std::string& prefix, Observation<double>&
                  ObservationSource& source, ParsedScene& out) {
   Object t(parent.at("timing"), prefix + "timing");
   const json& n_json = t.at("oscillations_per_trial");
-  if (!n_json.is_number_integer() || n_json.get<long long>() < 1 ||
-      n_json.get<long long>() > 1000000000) {
+  // 10.0 is the whole number 10, as a spreadsheet writes it.
+  const double n_value = n_json.is_number() ? n_json.get<double>() : 0.0;
+  if (!(n_value >= 1.0 && n_value <= 1e9 && n_value == std::floor(n_value))) {
     throw InputError(t.path("oscillations_per_trial"),
-                     "got " + shown(n_json) + "; expected a positive whole number");
+                     "got " + shown(n_json) + "; expected a positive whole number of oscillations (an "
+                     "oscillation is a full swing, there and back)");
   }
-  const int n_osc = static_cast<int>(n_json.get<long long>());
+  const int n_osc = static_cast<int>(n_value);
   const std::string unit_name = t.text("unit");
   const auto unit = find_unit(unit_name, Dimension::time);
   if (!unit) {
@@ -137,9 +155,12 @@ void read_timing(Object& parent, const std::string& prefix, Observation<double>&
     }
     times.push_back(x);
   }
+  // A bare number in the trials' unit, or a quantity like any other.
   auto optional_time = [&](const char* key) -> std::optional<double> {
     if (!t.has(key)) return std::nullopt;
-    const double x = finite_number(t.at(key), [&] { return t.path(key); }, "a number");
+    const double x = t.at(key).is_object()
+                         ? quantity(t, key, Dimension::time, Range::any).value / unit->factor
+                         : finite_number(t.at(key), [&] { return t.path(key); }, "a number or a quantity");
     if (x <= 0.0) {
       throw InputError(t.path(key), "got " + format_number(x) + " " + unit_name +
                                         "; expected a positive time");
@@ -185,7 +206,8 @@ void read_timing(Object& parent, const std::string& prefix, Observation<double>&
           t.path("trials") + ": all trials are equal and no resolution is given, so "
           "the period's uncertainty is 0; state timing.resolution");
     }
-    warn_about_trials(t.path(), times, spread, resolution, trial_sigma, unit_name, out.warnings);
+    warn_about_trials(t.path(), times, spread, resolution, trial_sigma, unit_name, unit->factor, out.warnings,
+                      out.suspicions);
   } else if (trial_sigma) {
     sigma_trial = *trial_sigma;
     out.assumptions.push_back(
@@ -335,7 +357,11 @@ void read_decay(Object& top, ParsedScene& out) {
     PENDULUM_FAIL_IF(d.has("sigma") && d.has("sigmas"), d.path("sigmas"),
             "got both sigma and sigmas; expected one of them");
     if (d.has("sigma")) {
-      const double sigma = finite_number(d.at("sigma"), [&] { return d.path("sigma"); }, "a number");
+      // A bare number in amplitude_unit, or a quantity like any other.
+      const double sigma = d.at("sigma").is_object()
+                               ? quantity(d, "sigma", Dimension::angle, Range::any).value / angle_unit.factor
+                               : finite_number(d.at("sigma"), [&] { return d.path("sigma"); },
+                                               "a number or a quantity");
       PENDULUM_FAIL_IF(!(sigma > 0.0), d.path("sigma"),
               "got " + format_number(sigma) + "; expected a positive uncertainty");
       data.sigmas.assign(data.times.size(), sigma * angle_unit.factor);

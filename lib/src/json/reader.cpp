@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <set>
 
 namespace pendulum {
@@ -38,7 +39,81 @@ std::string join_path(const std::string& path, const std::string& key) {
 /// value being read, to name it in syntax errors, refuses values nested too
 /// deep, and refuses a key given twice in one object, which the JSON library
 /// would silently resolve by keeping the last.
-json parse_json(const std::string& text, std::size_t max_bytes) {
+namespace {
+
+/// UTF-16 text (after its byte order mark) as UTF-8: what Windows Notepad
+/// saves as "Unicode".
+std::string utf16_to_utf8(const std::string& bytes, bool little_endian) {
+  auto fail = [](std::size_t at, const char* what) {
+    throw InputError("", std::string("got UTF-16 text with ") + what + " at byte " + std::to_string(at) +
+                             "; expected a scene file in UTF-8: save it as UTF-8");
+  };
+  if (bytes.size() % 2) fail(bytes.size() - 1, "an odd number of bytes");
+  auto unit = [&](std::size_t i) {
+    const auto lo = static_cast<unsigned char>(bytes[i + (little_endian ? 0 : 1)]);
+    const auto hi = static_cast<unsigned char>(bytes[i + (little_endian ? 1 : 0)]);
+    return static_cast<std::uint32_t>(hi << 8 | lo);
+  };
+  std::string out;
+  for (std::size_t i = 2; i < bytes.size(); i += 2) {
+    std::uint32_t c = unit(i);
+    if (c >= 0xdc00 && c < 0xe000) fail(i, "a lone low surrogate");
+    if (c >= 0xd800 && c < 0xdc00) {
+      if (i + 3 >= bytes.size() || unit(i + 2) < 0xdc00 || unit(i + 2) >= 0xe000) fail(i, "a lone high surrogate");
+      c = 0x10000 + ((c - 0xd800) << 10) + (unit(i + 2) - 0xdc00);
+      i += 2;
+    }
+    if (c < 0x80) {
+      out += static_cast<char>(c);
+    } else if (c < 0x800) {
+      out += {static_cast<char>(0xc0 | c >> 6), static_cast<char>(0x80 | (c & 0x3f))};
+    } else if (c < 0x10000) {
+      out += {static_cast<char>(0xe0 | c >> 12), static_cast<char>(0x80 | (c >> 6 & 0x3f)),
+              static_cast<char>(0x80 | (c & 0x3f))};
+    } else {
+      out += {static_cast<char>(0xf0 | c >> 18), static_cast<char>(0x80 | (c >> 12 & 0x3f)),
+              static_cast<char>(0x80 | (c >> 6 & 0x3f)), static_cast<char>(0x80 | (c & 0x3f))};
+    }
+  }
+  return out;
+}
+
+/// "line 3, column 20" of the first comma that only white space separates
+/// from a closing } or ], outside strings; empty when there is none.
+std::optional<std::string> trailing_comma(const std::string& text) {
+  bool in_string = false, escaped = false;
+  std::size_t line = 1, column = 0, comma_line = 0, comma_column = 0;
+  bool comma = false;
+  for (const char c : text) {
+    ++column;
+    if (c == '\n') ++line, column = 0;
+    if (in_string) {
+      if (escaped) {
+        escaped = false;
+      } else if (c == '\\') {
+        escaped = true;
+      } else if (c == '"') {
+        in_string = false;
+      }
+      continue;
+    }
+    if (c == ' ' || c == '\t' || c == '\n' || c == '\r') continue;
+    if (comma && (c == '}' || c == ']')) {
+      return "line " + std::to_string(comma_line) + ", column " + std::to_string(comma_column);
+    }
+    comma = c == ',';
+    if (comma) comma_line = line, comma_column = column;
+    if (c == '"') in_string = true;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+json parse_json(const std::string& given, std::size_t max_bytes) {
+  const bool utf16_le = given.size() >= 2 && given[0] == '\xff' && given[1] == '\xfe';
+  const bool utf16_be = given.size() >= 2 && given[0] == '\xfe' && given[1] == '\xff';
+  const std::string text = utf16_le || utf16_be ? utf16_to_utf8(given, utf16_le) : given;
   if (text.size() > max_bytes) {
     throw InputError("", "got more than " + std::to_string(max_bytes) +
                              " bytes; expected a scene file of at most " + std::to_string(max_bytes >> 20) + " MiB");
@@ -97,6 +172,10 @@ json parse_json(const std::string& text, std::size_t max_bytes) {
   try {
     return json::parse(text, callback);
   } catch (const json::exception& e) {
+    if (const auto at = trailing_comma(text)) {
+      throw InputError(path(), "not valid JSON: a trailing comma at " + *at +
+                               " (JSON allows no comma before } or ]): remove it");
+    }
     const std::string why = e.what();  // "[json.exception.parse_error.101] parse error at ..."
     const auto bracket = why.find("] ");
     throw InputError(path(), "not valid JSON: " +
@@ -110,10 +189,73 @@ Object::Object(const json& j, std::string path, const char* what) : j_(j), path_
   }
 }
 
+namespace {
+
+/// Optimal string alignment distance: insertions, deletions, substitutions
+/// and transpositions of neighbours ("lenght" is 1 from "length").
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  const std::size_t n = a.size(), m = b.size();
+  std::vector<std::vector<std::size_t>> d(n + 1, std::vector<std::size_t>(m + 1));
+  for (std::size_t i = 0; i <= n; ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= m; ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= n; ++i) {
+    for (std::size_t j = 1; j <= m; ++j) {
+      const std::size_t cost = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
+                                       std::tolower(static_cast<unsigned char>(b[j - 1]))
+                                   ? 0
+                                   : 1;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  }
+  return d[n][m];
+}
+
+/// Keys longer than this are no misspelling of a scene's keys.
+constexpr std::size_t kLongestKey = 64;
+
+}  // namespace
+
+std::optional<std::string> Object::misspelt(const std::string& unknown) const {
+  if (unknown.size() > kLongestKey) return std::nullopt;
+  std::optional<std::string> best;
+  std::size_t best_distance = 0;
+  for (const auto& k : known_) {
+    if (j_.contains(k)) continue;
+    // Two edits, and fewer than half the key's letters: "mass" is no
+    // misspelling of "unit".
+    const std::size_t d = edit_distance(unknown, k);
+    if (d > 2 || 2 * d >= k.size()) continue;
+    if (!best || d < best_distance) best = k, best_distance = d;
+  }
+  return best;
+}
+
+void Object::finish() const {
+  for (const auto& item : j_.items()) {
+    if (std::find(known_.begin(), known_.end(), item.key()) != known_.end()) continue;
+    if (const auto key = misspelt(item.key())) {
+      throw InputError(path(item.key()), "unknown key; did you mean " + *key + "?");
+    }
+    std::vector<std::string> keys = known_;
+    std::sort(keys.begin(), keys.end());
+    std::string list;
+    for (const auto& k : keys) list += (list.empty() ? "" : ", ") + k;
+    throw InputError(path(item.key()), "unknown key; this object takes: " + list);
+  }
+}
+
 const json& Object::at(const std::string& key) {
   remember(key);
   const auto it = j_.find(key);
-  if (it == j_.end()) throw InputError(path(key), "missing; it is required here");
+  if (it == j_.end()) {
+    // A misspelt required key is reported as such, not as a missing one.
+    for (const auto& item : j_.items()) {
+      if (std::find(known_.begin(), known_.end(), item.key()) != known_.end()) continue;
+      if (misspelt(item.key()) == key) throw InputError(path(item.key()), "unknown key; did you mean " + key + "?");
+    }
+    throw InputError(path(key), "missing; it is required here");
+  }
   return *it;
 }
 
@@ -131,7 +273,7 @@ void within(double x, double lo, double hi, const std::string& path, const char*
   PENDULUM_FAIL_IF(!(x >= lo && x <= hi), path, "got " + format_number(x) + " " + unit + "; expected " + what);
 }
 
-Measured quantity(Object& parent, const std::string& key, Dimension dim, Range range) {
+Measured quantity(Object& parent, const std::string& key, Dimension dim, Range range, std::string* measured_to) {
   Object q(parent.at(key), parent.path(key),
            "an object {\"value\": ..., \"unit\": ...}");
   const double raw = finite_number(q.at("value"), [&] { return q.path("value"); }, "a number");
@@ -148,6 +290,7 @@ Measured quantity(Object& parent, const std::string& key, Dimension dim, Range r
           "got " + format_number(u) + "; expected a non-negative uncertainty");
   const double sigma = u * unit->factor;
   if (q.has("source")) q.text("source");
+  if (measured_to && q.has("measured_to")) *measured_to = q.text("measured_to");
   q.finish();
   const double si = raw * unit->factor + unit->offset;
   const bool ok = range == Range::any || (range == Range::positive ? si > 0.0 : si >= 0.0);

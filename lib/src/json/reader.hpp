@@ -49,20 +49,14 @@ class Object {
 
   std::string text(const std::string& key);
 
-  /// Refuses every key that was not asked for.
-  void finish() const {
-    for (const auto& item : j_.items()) {
-      if (std::find(known_.begin(), known_.end(), item.key()) != known_.end()) continue;
-      std::vector<std::string> keys = known_;
-      std::sort(keys.begin(), keys.end());
-      std::string list;
-      for (const auto& k : keys) list += (list.empty() ? "" : ", ") + k;
-      throw InputError(path(item.key()),
-                       "unknown key; this object takes: " + list);
-    }
-  }
+  /// Refuses every key that was not asked for, suggesting the key it is a
+  /// misspelling of when one is near (issue 14: "lenght").
+  void finish() const;
 
  private:
+  /// The key asked for but absent that `unknown` misspells, if any.
+  std::optional<std::string> misspelt(const std::string& unknown) const;
+
   // A handful of keys an object: a vector beats a set here.
   void remember(const std::string& key) {
     if (std::find(known_.begin(), known_.end(), key) == known_.end()) known_.push_back(key);
@@ -108,7 +102,10 @@ struct Measured {
 };
 
 /// {"value": x, "unit": "cm", "uncertainty": u, "source": "..."} under `key`.
-Measured quantity(Object& parent, const std::string& key, Dimension dim, Range range);
+/// With `measured_to`, the quantity may also hold "measured_to" (a length's
+/// reference point, read as text into it).
+Measured quantity(Object& parent, const std::string& key, Dimension dim, Range range,
+                  std::string* measured_to = nullptr);
 
 /// A required quantity into a field and its uncertainty.
 void put(Object& parent, const std::string& key, Dimension dim, Range range, double& value, double& sigma);

@@ -24,7 +24,9 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out) {
   ObservationSource source;
   source.path = prefix;
   read_timing(o, prefix, v, u, source, out);
-  put(o, "length", Dimension::length, Range::positive, v.length, u.length);
+  const Measured length = quantity(o, "length", Dimension::length, Range::positive, &source.measured_to);
+  v.length = length.value;
+  u.length = length.sigma;
   within(v.length, 1e-3, 1e3, prefix + "length.value", "m", "a laboratory pendulum, 1 mm to 1 km long");
   put(o, "amplitude", Dimension::angle, Range::positive, v.amplitude, u.amplitude);
   PENDULUM_FAIL_IF(v.amplitude >= kPi, prefix + "amplitude.value",
@@ -33,7 +35,7 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out) {
                        "the pendulum goes over the top)");
   const json& amplitude = o.at("amplitude");
   source.amplitude_raw = amplitude.at("value").get<double>();
-  source.amplitude_unit = amplitude.at("unit").get<std::string>();
+  source.amplitude_unit = find_unit(amplitude.at("unit").get<std::string>(), Dimension::angle)->name;
   out.observations.push_back(v);
   out.observation_uncertainties.push_back(u);
   out.sources.push_back(std::move(source));
@@ -82,6 +84,32 @@ void read_fit(Object& top, ParsedScene& out) {
   }
 }
 
+/// Each length to the bob's centre: the radius added to a length measured
+/// to the top of the bob, subtracted from one to its bottom. The radius's
+/// uncertainty (half the diameter's) adds to the length's in quadrature;
+/// its correlation with bob.diameter's own small corrections is neglected.
+void refer_lengths_to_centre(ParsedScene& out) {
+  for (std::size_t k = 0; k < out.observations.size(); ++k) {
+    const std::string& to = out.sources[k].measured_to;
+    const std::string path = out.sources[k].path + "length.measured_to";
+    const double sign = to == "top_of_bob" ? 1.0 : to == "bottom_of_bob" ? -1.0 : 0.0;
+    PENDULUM_FAIL_IF(sign == 0.0 && to != "center" && to != "centre", path,
+                     "got \"" + to + "\"; expected \"center\", \"top_of_bob\" or \"bottom_of_bob\"");
+    if (sign == 0.0) continue;
+    const auto& bob = out.apparatus.bob;
+    PENDULUM_FAIL_IF(!bob, path,
+                     "got \"" + to + "\" but no bob; expected bob.diameter, whose half is " +
+                         (sign > 0 ? "added to" : "subtracted from") + " the length");
+    const double radius = bob->diameter / 2.0, sigma = out.apparatus_uncertainty.bob->diameter / 2.0;
+    out.observations[k].length += sign * radius;
+    double& u = out.observation_uncertainties[k].length;
+    u = std::hypot(u, sigma);
+    out.assumptions.push_back(out.sources[k].path + "length: measured to the " +
+                              (sign > 0 ? "top" : "bottom") + " of the bob; its radius " +
+                              format_number(radius * 1e3, 4) + " mm is " + (sign > 0 ? "added" : "subtracted"));
+  }
+}
+
 /// The parts against every observation's length.
 void check_geometry(const ParsedScene& out) {
   const Apparatus<double>& v = out.apparatus;
@@ -107,13 +135,8 @@ void check_geometry(const ParsedScene& out) {
   }
 }
 
-}  // namespace
-
-ParsedScene parse_scene(const std::string& text) {
-  const json doc = parse_json(text, kMaxSceneBytes);
-  ParsedScene out;
-  Object top(doc, "", "a JSON object (the scene)");
-
+/// schema, title, source, notes: what every document may say about itself.
+void read_header(Object& top, ParsedScene& out) {
   if (top.has("schema")) {
     PENDULUM_FAIL_IF(top.text("schema") != kSceneSchema, "schema",
                      "got " + shown(top.at("schema")) + "; expected \"" + kSceneSchema + "\"");
@@ -127,6 +150,15 @@ ParsedScene parse_scene(const std::string& text) {
   }
   if (top.has("source")) out.source = top.text("source");
   if (top.has("notes")) top.text("notes");
+}
+
+}  // namespace
+
+ParsedScene parse_scene(const std::string& text) {
+  const json doc = parse_json(text, kMaxSceneBytes);
+  ParsedScene out;
+  Object top(doc, "", "a JSON object (the scene)");
+  read_header(top, out);
 
   if (top.has("observations")) {
     read_series(top, out);
@@ -144,8 +176,24 @@ ParsedScene parse_scene(const std::string& text) {
                        (out.observations.size() == 1 ? "" : "s") + " for " + std::to_string(unknowns) +
                        " unknowns (g and " + out.fit.front() + "); expected at least as many observations "
                        "as unknowns");
+  refer_lengths_to_centre(out);
   check_geometry(out);
   check_plausibility(out);
+  return out;
+}
+
+ParsedScene parse_decay_document(const std::string& text) {
+  const json doc = parse_json(text, kMaxSceneBytes);
+  Object top(doc, "", "a JSON object (the scene)");
+  for (const char* key : {"observations", "timing", "length", "amplitude"}) {
+    if (top.has(key)) return parse_scene(text);
+  }
+  ParsedScene out;
+  read_header(top, out);
+  PENDULUM_FAIL_IF(!top.has("decay"), "decay",
+                   "missing; expected a decay record (decay.data), alone or in a whole scene");
+  read_decay(top, out);
+  top.finish();
   return out;
 }
 

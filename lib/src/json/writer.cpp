@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -68,6 +69,7 @@ json decay_fit_to_json(const DecayFit& f, const std::optional<Decay<double>>& gi
               {"dof", f.dof},
               {"reduced_chi2", f.dof > 0 ? json(f.chi2 / f.dof) : json(nullptr)},
               {"residual_standard_error_rad", f.residual_standard_error},
+              {"residual_variance_rad2", f.residual_standard_error * f.residual_standard_error},
               {"uncertainty_scaling", f.uncertainty_scaling},
               {"points", f.points},
               {"converged", f.converged},
@@ -102,8 +104,18 @@ std::string csv_field(const json& v) {
   }
   return quoted + "\"";
 }
+// New columns go at the end: scripts may read the columns by position.
 constexpr const char* kCsvColumns[] = {"input", "ok", "g_m_s2", "g_uncertainty_m_s2", "largest_budget_input",
-                                       "largest_budget_m_s2", "expected_g_m_s2", "z", "warnings", "error"};
+                                       "largest_budget_m_s2", "expected_g_m_s2", "z", "warnings", "error",
+                                       "status", "status_reasons", "title"};
+/// A list of messages in one CSV field.
+constexpr const char* kCsvSeparator = "; ";
+
+json joined(const json& messages) {
+  std::string text;
+  for (const auto& m : messages) text += (text.empty() ? "" : kCsvSeparator) + m.get<std::string>();
+  return text;
+}
 
 std::string csv_row(const json& summary) {
   std::string line;
@@ -111,7 +123,9 @@ std::string csv_row(const json& summary) {
   for (const char* c : kCsvColumns) {
     if (!first) line += ",";
     first = false;
-    if (summary.contains(c)) line += csv_field(summary.at(c));
+    if (!summary.contains(c)) continue;
+    const json& v = summary.at(c);
+    line += csv_field(v.is_array() ? joined(v) : v);
   }
   return line + "\n";
 }
@@ -227,7 +241,11 @@ json warnings_json(const ParsedScene& scene, const Analysis& a) {
 
 std::string result_json(const ParsedScene& scene, const Analysis& a, const AnalysisOptions& options,
                         const std::string& input, int indent) {
-  json out = {{"schema", kResultSchema}, {"input", input}, {"title", scene.title}};
+  json out = {{"schema", kResultSchema},
+              {"input", input},
+              {"title", scene.title},
+              {"status", result_status_name(a.status)},
+              {"status_reasons", a.status_reasons}};
   if (scene.series) {
     out["kind"] = "series";
     out["g"] = g_json(a);
@@ -273,8 +291,11 @@ std::string decay_fit_json(const std::string& input, const ParsedScene& scene, c
   out.update(decay_fit_to_json(fit, scene.apparatus.decay));
   ParsedScene fitted = scene;
   use_fitted_decay(fitted, fit);
-  if (const auto drag = predict_drag(fitted.apparatus, fitted.observations.front())) {
-    out["drag_theory"] = drag_to_json(*drag, *fitted.apparatus.decay);
+  // A decay-only document has no pendulum to predict the air's damping of.
+  if (!fitted.observations.empty()) {
+    if (const auto drag = predict_drag(fitted.apparatus, fitted.observations.front())) {
+      out["drag_theory"] = drag_to_json(*drag, *fitted.apparatus.decay);
+    }
   }
   out["warnings"] = warnings;
   return json_text(out, 2);
@@ -283,6 +304,8 @@ std::string decay_fit_json(const std::string& input, const ParsedScene& scene, c
 BatchLine batch_line(const std::string& input, const ParsedScene& scene, const Analysis& a) {
   const json line = {{"input", input},
                      {"ok", true},
+                     {"status", result_status_name(a.status)},
+                     {"status_reasons", a.status_reasons},
                      {"title", scene.title},
                      {"g_m_s2", a.g.value},
                      {"g_uncertainty_m_s2", optional_number(a.g.uncertainty)},
@@ -290,13 +313,58 @@ BatchLine batch_line(const std::string& input, const ParsedScene& scene, const A
                      {"largest_budget_m_s2", a.budget.empty() ? json(nullptr) : json(a.budget.front().contribution)},
                      {"expected_g_m_s2", a.expected_g ? json(a.expected_g->value) : json(nullptr)},
                      {"z", optional_number(a.z_score)},
-                     {"warnings", scene.warnings.size() + a.warnings.size()}};
-  return {true, json_text(line, -1), csv_row(line)};
+                     {"warnings", warnings_json(scene, a)}};
+  return {true, a.status, a.g.value, json_text(line, -1), csv_row(line)};
 }
 
 BatchLine batch_failure(const std::string& input, const std::string& error) {
-  const json line = {{"input", input}, {"ok", false}, {"error", error}};
-  return {false, json_text(line, -1), csv_row(line)};
+  const json line = {{"input", input},
+                     {"ok", false},
+                     {"status", result_status_name(ResultStatus::failed)},
+                     {"status_reasons", json::array()},
+                     {"error", error}};
+  return {false, ResultStatus::failed, std::nullopt, json_text(line, -1), csv_row(line)};
+}
+
+ClassSummary summarise_class(const std::vector<BatchLine>& lines) {
+  ClassSummary c;
+  double mean = 0.0, m2 = 0.0;  // Welford's running mean and sum of squares
+  for (const BatchLine& l : lines) {
+    ++c.count[static_cast<int>(l.status)];
+    if (l.status != ResultStatus::ok || !l.g) continue;
+    ++c.ok_g_count;
+    const double d = *l.g - mean;
+    mean += d / c.ok_g_count;
+    m2 += d * (*l.g - mean);
+  }
+  if (c.ok_g_count > 0) c.ok_g_mean = mean;
+  if (c.ok_g_count > 1) c.ok_g_standard_deviation = std::sqrt(m2 / (c.ok_g_count - 1));
+  return c;
+}
+
+std::string batch_class_json(const ClassSummary& c) {
+  const json line = {{"class", true},
+                     {"scenes", c.count[0] + c.count[1] + c.count[2]},
+                     {"counts", {{"ok", c.count[0]}, {"suspect", c.count[1]}, {"failed", c.count[2]}}},
+                     {"g_of_ok",
+                      {{"count", c.ok_g_count},
+                       {"mean_m_s2", optional_number(c.ok_g_mean)},
+                       {"standard_deviation_m_s2", optional_number(c.ok_g_standard_deviation)}}}};
+  return json_text(line, -1);
+}
+
+std::string batch_class_csv(const ClassSummary& c) {
+  std::string line = "# class: " + std::to_string(c.count[0]) + " ok, " + std::to_string(c.count[1]) +
+                     " suspect, " + std::to_string(c.count[2]) + " failed; g of the ok scenes: ";
+  if (!c.ok_g_mean) return line + "none\n";
+  char numbers[160];
+  std::snprintf(numbers, sizeof numbers, "mean %.5f m/s^2", *c.ok_g_mean);
+  line += numbers;
+  if (c.ok_g_standard_deviation) {
+    std::snprintf(numbers, sizeof numbers, ", standard deviation %.5f m/s^2", *c.ok_g_standard_deviation);
+    line += numbers;
+  }
+  return line + " (" + std::to_string(c.ok_g_count) + (c.ok_g_count == 1 ? " scene)\n" : " scenes)\n");
 }
 
 std::string batch_csv_header() {
@@ -307,6 +375,12 @@ std::string batch_csv_header() {
 
 namespace {
 
+std::string format_fixed(double x, int decimals) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, x);
+  return text;
+}
+
 /// "+- 0.00148" or "(no uncertainty: singular fit)"
 std::string plus_minus(const std::optional<double>& u, const char* format) {
   if (!u) return "+- ? (singular fit)";
@@ -315,10 +389,24 @@ std::string plus_minus(const std::optional<double>& u, const char* format) {
   return std::string("+- ") + text;
 }
 
+/// Decimals that show `u` to two significant digits, as a lab report
+/// rounds a value to its uncertainty.
+int decimals_of(double u) {
+  if (!(u > 0.0) || !std::isfinite(u)) return 5;
+  return std::clamp(1 - static_cast<int>(std::floor(std::log10(u))), 0, 12);
+}
+
+/// "9.8034 +- 0.0015": the value rounded to its uncertainty.
+std::string rounded(double value, const std::optional<double>& u) {
+  if (!u) return plus_minus(u, "%.5f").insert(0, format_fixed(value, 5) + " ");
+  const int d = decimals_of(*u);
+  return format_fixed(value, d) + " +- " + format_fixed(*u, d);
+}
+
 void correction_table(std::ostringstream& os, const ObservationResult& o) {
   char line[320];
   std::snprintf(line, sizeof line, "%-26s %12s %10s %16s  %-10s %s\n", "Correction", "dT (us)", "+- (us)",
-                "dg (1e-5 m/s^2)", "status", "method");
+                "dg (mGal)", "status", "method");
   os << line;
   for (const auto& row : o.corrections) {
     if (row.delta_T) {
@@ -334,10 +422,57 @@ void correction_table(std::ostringstream& os, const ObservationResult& o) {
   }
   std::snprintf(line, sizeof line, "%-26s %+12.4f %10s %+16.4f\n", "Total", o.total_delta_T * 1e6, "",
                 o.total_delta_g * 1e5);
+  os << line << "(dT: the correction to the period, in microseconds; dg: to g, in mGal, 1 mGal = 1e-5 m/s^2)\n";
+}
+
+/// "alpha = 2.49e-04 +- 1.1e-05 1/s (fitted)" for the tables.
+std::string decay_parameter_line(const char* name, const FittedParameter& q, const char* unit) {
+  char line[200];
+  if (!q.fitted) {
+    std::snprintf(line, sizeof line, "  %-17s = %.4g %s (held%s)\n", name, q.value, unit,
+                  q.value == 0.0 ? ": not in the model" : "");
+  } else if (!q.uncertainty) {
+    std::snprintf(line, sizeof line, "  %-17s = %.4g +- ? %s (singular fit)\n", name, q.value, unit);
+  } else {
+    std::snprintf(line, sizeof line, "  %-17s = %.4g +- %.2g %s%s\n", name, q.value, *q.uncertainty, unit,
+                  q.at_bound ? " (at its bound 0)" : q.significant ? "" : " (not significant)");
+  }
+  return line;
+}
+
+std::string decay_fit_lines(const DecayFit& f) {
+  std::ostringstream os;
+  os << "Decay fit, Nelson & Olsson (1986) Eq. (25): model " << decay_model_name(f.model);
+  if (!f.model_reason.empty()) os << " (" << f.model_reason << ")";
+  os << "\n" << decay_parameter_line("alpha", f.alpha, "1/s") << decay_parameter_line("beta", f.beta, "1/(s rad)")
+     << decay_parameter_line("initial amplitude", f.initial_amplitude, "rad");
+  char line[200];
+  if (f.alpha.fitted && f.beta.fitted) {
+    std::snprintf(line, sizeof line, "  correlation(alpha, beta) = %+.3f\n", f.correlation_alpha_beta);
+    os << line;
+  }
+  if (f.uncertainty_scaling == "sigma") {
+    std::snprintf(line, sizeof line, "  chi2/dof = %.4g (%d points, %d degrees of freedom)\n",
+                  f.dof > 0 ? f.chi2 / f.dof : 0.0, f.points, f.dof);
+  } else {
+    std::snprintf(line, sizeof line,
+                  "  no sigma given: uncertainties scaled by the residual variance %.3g rad^2 "
+                  "(residual standard error %.3g rad; %d points)\n",
+                  f.residual_standard_error * f.residual_standard_error, f.residual_standard_error, f.points);
+  }
   os << line;
+  return os.str();
 }
 
 }  // namespace
+
+std::string decay_fit_table(const ParsedScene& scene, const DecayFit& fit, const std::vector<std::string>& warnings) {
+  std::ostringstream os;
+  if (!scene.title.empty()) os << scene.title << "\n\n";
+  os << decay_fit_lines(fit);
+  for (const auto& w : warnings) os << "warning: " << w << "\n";
+  return os.str();
+}
 
 std::string result_table(const ParsedScene& scene, const Analysis& a) {
   std::ostringstream os;
@@ -353,9 +488,7 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     std::snprintf(line, sizeof line, "Ideal period T0     = %.6f %s s\n", o.period_ideal.value,
                   plus_minus(o.period_ideal.uncertainty, "%.6f").c_str());
     os << line;
-    std::snprintf(line, sizeof line, "g (uncorrected)     = %.5f %s m/s^2\n", a.fit.textbook.g.value,
-                  plus_minus(a.fit.textbook.g.uncertainty, "%.5f").c_str());
-    os << line;
+    os << "g (uncorrected)     = " << rounded(a.fit.textbook.g.value, a.fit.textbook.g.uncertainty) << " m/s^2\n";
   } else {
     std::snprintf(line, sizeof line, "%5s %9s %12s %12s %10s %12s %9s %12s\n", "obs", "L (m)", "theta0 (deg)",
                   "T meas (s)", "+- (s)", "T model (s)", "resid (sd)", "T-T0 (us)");
@@ -390,12 +523,10 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     }
     os << "\n";
   }
-  std::snprintf(line, sizeof line, "g                   = %.5f %s m/s^2", a.g.value,
-                plus_minus(a.g.uncertainty, "%.5f").c_str());
-  os << line;
+  os << "g                   = " << rounded(a.g.value, a.g.uncertainty) << " m/s^2";
   if (a.g_period_and_length_uncertainty) {
-    std::snprintf(line, sizeof line, " (period and length alone: +- %.5f)", *a.g_period_and_length_uncertainty);
-    os << line;
+    os << " (period and length alone: +- "
+       << format_fixed(*a.g_period_and_length_uncertainty, a.g.uncertainty ? decimals_of(*a.g.uncertainty) : 5) << ")";
   }
   os << "\n";
   if (a.expected_g) {
@@ -405,9 +536,15 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     if (a.z_score) {
       std::snprintf(line, sizeof line, "difference          = %+.5f m/s^2 = %+.2f combined sigma\n",
                     a.g.value - a.expected_g->value, *a.z_score);
-      os << line;
+    } else {
+      std::snprintf(line, sizeof line, "difference          = %+.5f m/s^2 (no z: neither g nor the expected g has an "
+                    "uncertainty)\n", a.g.value - a.expected_g->value);
     }
+    os << line;
   }
+  os << "status              = " << result_status_name(a.status) << "\n";
+  for (const auto& r : a.status_reasons) os << "  " << r << "\n";
+  if (a.decay_fit) os << "\n" << decay_fit_lines(*a.decay_fit);
   if (!a.budget.empty()) {
     // A series lists every observation's inputs: the table shows the largest.
     constexpr std::size_t kShown = 12;
@@ -418,6 +555,12 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     }
     if (a.budget.size() > kShown) os << "  ... and " << a.budget.size() - kShown << " more (JSON: g.budget)\n";
   }
+  if (!a.inputs_without_uncertainty.empty()) {
+    os << "Inputs without an uncertainty (they add nothing to the budget):";
+    for (const auto& in : a.inputs_without_uncertainty) os << " " << in;
+    os << "\n";
+  }
+  for (const auto& assumption : scene.assumptions) os << "assumption: " << assumption << "\n";
   for (const auto& w : scene.warnings) os << "warning: " << w << "\n";
   for (const auto& w : a.warnings) os << "warning: " << w << "\n";
   return os.str();

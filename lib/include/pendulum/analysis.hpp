@@ -115,8 +115,33 @@ struct TextbookFit {
   std::optional<Estimate> length_offset; ///< intercept / slope (m)
 };
 
+/// What the fit of a physical pendulum adds (docs/physical.md): the fitted
+/// curve T(h)'s minimum, each pivot's conjugate of equal period, and for
+/// Kater's reversible pendulum Bessel's closed form. Uncertainties from the
+/// fitted parameters' covariance; a k or a centre taken from the body's
+/// parts counts as exact.
+struct PivotScan {
+  Estimate minimum_period;          ///< 2 pi sqrt(2k/g) (s), the ideal period at h = k
+  Estimate minimum_pivot_distance;  ///< h = k (m)
+  /// x_c - k and x_c + k (m), in the frame of pivot_position, when the centre is known.
+  std::vector<Estimate> minimum_pivot_positions;
+  struct Conjugate {
+    Estimate equivalent_length;      ///< l = (k^2 + h^2)/h (m)
+    Estimate pivot_distance;         ///< h' = k^2/h (m), of the same period
+    std::optional<Estimate> pivot_position;  ///< h' on the other side of the centre (m): Kater's pair
+  };
+  std::vector<Conjugate> conjugates;  ///< one per observation
+  /// Kater's reversible pendulum (two pivot positions on opposite sides of
+  /// a measured centre): Bessel's formula on the ideal periods (m/s^2).
+  std::optional<double> bessel_g;
+  /// k and the centre (m) as the body's parts give them, where the fit
+  /// replaces them: its check (a warning beyond 3 standard uncertainties).
+  std::optional<double> parts_radius_of_gyration, parts_center_of_mass_position;
+};
+
 /// What the fit of a series adds.
 struct FitReport {
+  const char* model = "simple_pendulum";  ///< the period model's name (models/)
   std::vector<ParameterResult> parameters;
   /// Correlations of the fitted parameters (row-major, in `parameters`'
   /// order among those fitted); empty when singular.
@@ -129,7 +154,8 @@ struct FitReport {
   std::string method;  ///< "closed_form" or "ceres_levenberg_marquardt"
   std::string termination;
   int iterations = 0;
-  TextbookFit textbook;
+  TextbookFit textbook;                 ///< the simple pendulum's
+  std::optional<PivotScan> pivot_scan;  ///< the physical pendulum's
 };
 
 struct Analysis {

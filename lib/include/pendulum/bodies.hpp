@@ -173,4 +173,19 @@ T thermal_length(const T& length0, const T& w, const T& celsius) {
   return length0 * (1.0 + w * celsius);  // Eq. (41)
 }
 
+/// A material's linear expansion coefficient w (1/K), Eq. (41).
+struct ExpansionCoefficient {
+  const char* material;
+  double w;  ///< (1/K = 1/degC)
+};
+
+/// Kelley (1993) Sec. V a, the table after Eq. (41) (his Ref. 7): averages
+/// over grades and alloys, for 10-90 degC. Typical steels range from 9.07e-6
+/// to 1.21e-5; wood along the grain from 2.6e-6 (beech) to 9.5e-6 (ash),
+/// across it 3.4e-5 (pine). Mercury's is a third of its cubical 1.8e-4.
+inline constexpr ExpansionCoefficient kExpansionCoefficients[] = {
+    {"aluminum", 2.3e-5}, {"brass", 1.9e-5}, {"copper", 1.7e-5}, {"glass", 8.3e-6}, {"invar", 7e-7},
+    {"iron", 1.1e-5},     {"mercury", 6e-5}, {"steel", 1.1e-5},  {"wood", 6e-6},
+};
+
 }  // namespace pendulum

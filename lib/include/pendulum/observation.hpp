@@ -10,29 +10,54 @@
 
 namespace pendulum {
 
+/// Which distance an observation's setting is (its `length`). A ball on a
+/// wire is set by its length; a rigid body by where it hangs from, given
+/// either way (docs/physical.md).
+enum class Setting {
+  length,          ///< pivot to the bob's centre, or to the mark of length_offset
+  pivot_distance,  ///< pivot to the body's centre of mass
+  pivot_position,  ///< the pivot's place along the body, from a mark on it
+};
+
+/// The scene's key of a setting, which is also its JSON path.
+inline const char* setting_key(Setting s) {
+  switch (s) {
+    case Setting::length: return "length";
+    case Setting::pivot_distance: return "pivot_distance";
+    case Setting::pivot_position: return "pivot_position";
+  }
+  return "length";
+}
+
 /// One timed setting of the pendulum, in SI units.
 template <class T>
 struct Observation {
   T period;     ///< mean measured period (s)
-  T length;     ///< measured length (m): pivot to the bob's centre, or to
-                ///< the mark measured to when the scene fits length_offset
+  /// The setting's distance (m), named by `setting`: the length from the
+  /// pivot to the bob's centre (or to the mark measured to when the scene
+  /// fits length_offset), or a rigid body's pivot distance or position.
+  T length;
   T amplitude;  ///< amplitude at the start of each timing (rad)
   int oscillations_per_trial = 1;  ///< oscillations in one timing
+  Setting setting = Setting::length;
 
   template <class A, class B, class F>
   static void zip(A& a, B& b, F& f) {
     f(Field{"timing.period", "s", FieldRole::period}, a.period, b.period);
-    f(Field{"length", "m", FieldRole::length}, a.length, b.length);
+    f(Field{setting_key(a.setting), "m", FieldRole::length}, a.length, b.length);
     f(Field{"amplitude", "rad"}, a.amplitude, b.amplitude);
   }
 };
 
 /// Visits the observation's scalar fields: f(Field, a_field, b_field); the
-/// oscillation count is copied along.
+/// oscillation count and the setting are copied along.
 template <class A, class B, class F>
 void zip_observation(A& a, B& b, F&& f) {
   detail::FieldZipper<F> z{f};
-  if constexpr (!std::is_const_v<B>) b.oscillations_per_trial = a.oscillations_per_trial;
+  if constexpr (!std::is_const_v<B>) {
+    b.oscillations_per_trial = a.oscillations_per_trial;
+    b.setting = a.setting;
+  }
   std::decay_t<A>::zip(a, b, z);
 }
 

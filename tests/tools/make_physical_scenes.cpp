@@ -11,9 +11,9 @@
 //     the stick: true + N(0, 0.3 mm) rounded to 0.5 mm. Seed 1010.
 //   kater        data/kater_reversible_pendulum.json: knife edges 0.994 m
 //     apart about a centre found by balancing on an edge (true + N(0, 1 mm),
-//     stated +-1 mm), tuned until the periods agree within 0.1 ms; a
-//     photogate timing 50 oscillations, three trials of 50 T + N(0, 0.3 ms)
-//     rounded to 0.1 ms; amplitudes 1 deg + N(0, 0.1 deg) read on a scale
+//     stated +-1 mm), the second 0.5 mm from the first one's conjugate (the
+//     periods 1.3 ms apart); a photogate timing 50 oscillations, three
+//     trials of 50 T + N(0, 0.3 ms) rounded to 0.1 ms; amplitudes 1 deg + N(0, 0.1 deg) read on a scale
 //     (stated +-0.2 deg); steel at 23.0 degC, measured at 20 degC. Seed 1011.
 //
 // Noise: Box-Muller on std::mt19937_64 (NormalDeviates), drawn per
@@ -66,15 +66,20 @@ void observe(json& scene, const double* p, const std::vector<double>& positions,
   json observations = json::array();
   for (const double x : positions) {
     const double amplitude = amplitude_deg * (1.0 + 0.1 * noise.next()) * kDeg;
-    const double read = std::round((x + position_sigma * noise.next()) / position_step) * position_step;
+    // Rounded by dividing by the integer 1/step, so that the file prints the decimal.
+    const double read = std::round((x + position_sigma * noise.next()) / position_step) / std::round(1.0 / position_step);
     pendulum::Observation<double> truth{0.0, x, amplitude, oscillations, pendulum::Setting::pivot_position};
     const double period =
         pendulum::physical_model_period(p, truth, app, pendulum::cheapest_amplitude_method(amplitude, 0.0));
     json times = json::array();
     for (int i = 0; i < trials; ++i) {
-      times.push_back(std::round((oscillations * period + trial_sigma * noise.next()) / resolution) * resolution);
+      times.push_back(std::round((oscillations * period + trial_sigma * noise.next()) / resolution) /
+                      std::round(1.0 / resolution));
     }
-    observations.push_back({{"pivot_position", q(read, position_sigma, "m")},
+    // The stated uncertainty holds the reading's noise and its rounding (to 1 um, up).
+    const double stated =
+        std::ceil(std::sqrt(position_sigma * position_sigma + position_step * position_step / 12.0) * 1e6) / 1e6;
+    observations.push_back({{"pivot_position", q(read, stated, "m")},
                             {"amplitude", q(amplitude_deg, 0.2 * amplitude_deg, "deg")},
                             {"timing",
                              {{"oscillations_per_trial", oscillations},

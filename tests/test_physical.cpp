@@ -201,3 +201,62 @@ TEST_CASE("The bundled physical scenes are what their generator writes, and give
     }
   }
 }
+
+namespace {
+
+/// A brass-weighted steel rod as a scene of one pivot: the body in parts,
+/// k and the centre from them, the closed form of one observation.
+std::string rod_scene(const std::string& extra) {
+  return R"({
+    "pivot_position": {"value": 0.05, "uncertainty": 0.0002, "unit": "m"},
+    "amplitude": {"value": 3, "uncertainty": 0.5, "unit": "deg"},
+    "timing": {"oscillations_per_trial": 20, "unit": "s", "resolution": 0.01, "trials": [31.12, 31.14, 31.13]},
+    "body": {"parts": [
+      {"shape": "cylinder", "radius": {"value": 6, "unit": "mm"}, "length": {"value": 1.2, "unit": "m"},
+       "axis": "body", "density": {"value": 7850, "unit": "kg/m^3"}, "position": {"value": 0.6, "unit": "m"}},
+      {"shape": "cylinder", "radius": {"value": 30, "unit": "mm"}, "inner_radius": {"value": 6, "unit": "mm"},
+       "length": {"value": 40, "unit": "mm"}, "axis": "body", "density": {"value": 8.5, "unit": "g/cm^3"},
+       "position": {"value": 1.0, "unit": "m"}}]})" +
+         extra + "}";
+}
+
+}  // namespace
+
+TEST_CASE("One pivot of a body in parts: the closed form is Eq. (56) solved for g", "[physical]") {
+  const ParsedScene scene = parse_scene(rod_scene(""));
+  CHECK(scene.model == PeriodModelKind::physical_pendulum);
+  const Analysis a = analyse(scene, exact());
+  CHECK(a.fit.method == "closed_form");
+  // Independently: the body's k and centre (bodies.hpp), then
+  // g = 4 pi^2 l (2K/pi)^2 / T^2 with K from std::comp_ellint_1.
+  const double steel = 7850 * kPi * 0.006 * 0.006 * 1.2, brass = 8500 * kPi * (0.03 * 0.03 - 0.006 * 0.006) * 0.04;
+  const auto b = body_properties(std::vector<Part<double>>{
+      make_part(cylinder(0.006, 0.0, 1.2, CylinderAxis::body_axis), steel, 0.6),
+      make_part(cylinder(0.03, 0.006, 0.04, CylinderAxis::body_axis), brass, 1.0)});
+  const double T = (31.12 + 31.14 + 31.13) / 3 / 20, A = 3 * test::kDegree;
+  const double factor = 2 * std::comp_ellint_1(std::sin(A / 2)) / kPi;
+  const double l = equivalent_length(b.radius_of_gyration, b.center - 0.05);
+  CHECK_THAT(a.g.value, WithinRel(4 * kPi * kPi * l * factor * factor / (T * T), 1e-13));
+}
+
+TEST_CASE("Temperature: every length of the body scales by (1 + w C)/(1 + w C_ref), Eq. (41)", "[physical]") {
+  // The same swing read at 20 degC and at 35 degC of a steel body (Kelley's
+  // table, 1.1e-5 /K): l and so g grow by (1 + 35 w)/(1 + 20 w).
+  const Analysis cold = analyse(parse_scene(rod_scene(
+      R"(, "temperature": {"value": 20, "unit": "degC"}, "reference_temperature": {"value": 20, "unit": "degC"},
+          "material": "steel")")), exact());
+  const Analysis warm = analyse(parse_scene(rod_scene(
+      R"(, "temperature": {"value": 35, "uncertainty": 0.5, "unit": "degC"},
+          "reference_temperature": {"value": 20, "unit": "degC"}, "material": "steel")")), exact());
+  const double w = 1.1e-5;
+  CHECK_THAT(warm.g.value / cold.g.value, WithinRel((1 + 35 * w) / (1 + 20 * w), 1e-14));
+  // The temperature's share of g: dg/dC = g w/(1 + w C) (K = degC steps).
+  bool found = false;
+  for (const auto& e : warm.budget) {
+    if (e.input != "temperature") continue;
+    found = true;
+    CHECK_THAT(e.sensitivity, WithinRel(warm.g.value * w / (1 + 35 * w), 1e-9));
+    CHECK(e.uncertainty == 0.5);
+  }
+  CHECK(found);
+}

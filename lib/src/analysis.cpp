@@ -63,6 +63,51 @@ void use_fitted_decay(ParsedScene& scene, const DecayFit& fit) {
   }
 }
 
+static_assert(PhysicalPendulum::kParameters == 3, "physical_start (analysis.hpp) takes three parameters");
+
+std::array<double, 3> physical_start(const ParsedScene& scene, const std::array<bool, 3>& fitted) {
+  using M = PhysicalPendulum;
+  std::array<double, M::kParameters> p = M::kDefaults;
+  const auto& obs = scene.observations;
+  const auto& body = scene.apparatus.body;
+  auto line_through = [&](double center, double& ssr) {
+    std::vector<double> x, y, zero(obs.size(), 0.0);
+    for (const auto& o : obs) {
+      const double h = o.setting == Setting::pivot_position ? std::abs(o.length - center) : o.length;
+      x.push_back(h * h);
+      y.push_back(o.period * o.period * h);
+    }
+    const StraightLine line = fit_straight_line(x, y, zero, zero, obs.size() > 1 && fitted[M::radius_of_gyration]);
+    ssr = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const double r = (line.slope * x[i] + line.intercept - y[i]) / y[i];
+      ssr += r * r;
+    }
+    return line;
+  };
+  double center = body && body->center_of_mass_position ? *body->center_of_mass_position : 0.0;
+  const bool positions = std::any_of(obs.begin(), obs.end(), [](const auto& o) { return o.setting == Setting::pivot_position; });
+  if (positions && fitted[M::center_of_mass_position]) {
+    const auto [lo, hi] = std::minmax_element(obs.begin(), obs.end(), [](const auto& a, const auto& b) { return a.length < b.length; });
+    const double span = std::max(hi->length - lo->length, 1e-3);
+    double best = HUGE_VAL;
+    constexpr int kGrid = 600;
+    for (int i = 0; i <= kGrid; ++i) {
+      const double c = lo->length - span + 3.0 * span * i / kGrid;
+      if (std::any_of(obs.begin(), obs.end(), [&](const auto& o) { return std::abs(o.length - c) < 1e-6 * span; })) continue;
+      double ssr;
+      line_through(c, ssr);
+      if (ssr < best) best = ssr, center = c;
+    }
+  }
+  double ssr;
+  const StraightLine line = line_through(center, ssr);
+  p[M::g] = 4.0 * kPi * kPi / line.slope;
+  if (line.intercept > 0.0) p[M::radius_of_gyration] = std::sqrt(line.intercept / line.slope);
+  p[M::center_of_mass_position] = center;
+  return p;
+}
+
 namespace {
 
 /// One input: a scalar of the apparatus or of one observation.
@@ -107,54 +152,6 @@ std::string format(double x, int digits = 4) {
   os.precision(digits);
   os << x;
   return os.str();
-}
-
-/// A physical pendulum's start: T^2 h = (4 pi^2/g)(k^2 + h^2) is a straight
-/// line in h^2 (Kelley Eq. 55), whose slope gives g and intercept k^2; an
-/// unknown centre is the one, on a grid across the pivots and a span
-/// beyond, whose line fits best (relative residuals).
-std::array<double, PhysicalPendulum::kParameters> physical_start(const ParsedScene& scene,
-                                                                 const std::array<bool, PhysicalPendulum::kParameters>& fitted) {
-  using M = PhysicalPendulum;
-  std::array<double, M::kParameters> p = M::kDefaults;
-  const auto& obs = scene.observations;
-  const auto& body = scene.apparatus.body;
-  auto line_through = [&](double center, double& ssr) {
-    std::vector<double> x, y, zero(obs.size(), 0.0);
-    for (const auto& o : obs) {
-      const double h = o.setting == Setting::pivot_position ? std::abs(o.length - center) : o.length;
-      x.push_back(h * h);
-      y.push_back(o.period * o.period * h);
-    }
-    const StraightLine line = fit_straight_line(x, y, zero, zero, obs.size() > 1 && fitted[M::radius_of_gyration]);
-    ssr = 0.0;
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      const double r = (line.slope * x[i] + line.intercept - y[i]) / y[i];
-      ssr += r * r;
-    }
-    return line;
-  };
-  double center = body && body->center_of_mass_position ? *body->center_of_mass_position : 0.0;
-  const bool positions = std::any_of(obs.begin(), obs.end(), [](const auto& o) { return o.setting == Setting::pivot_position; });
-  if (positions && fitted[M::center_of_mass_position]) {
-    const auto [lo, hi] = std::minmax_element(obs.begin(), obs.end(), [](const auto& a, const auto& b) { return a.length < b.length; });
-    const double span = std::max(hi->length - lo->length, 1e-3);
-    double best = HUGE_VAL;
-    constexpr int kGrid = 600;
-    for (int i = 0; i <= kGrid; ++i) {
-      const double c = lo->length - span + 3.0 * span * i / kGrid;
-      if (std::any_of(obs.begin(), obs.end(), [&](const auto& o) { return std::abs(o.length - c) < 1e-6 * span; })) continue;
-      double ssr;
-      line_through(c, ssr);
-      if (ssr < best) best = ssr, center = c;
-    }
-  }
-  double ssr;
-  const StraightLine line = line_through(center, ssr);
-  p[M::g] = 4.0 * kPi * kPi / line.slope;
-  if (line.intercept > 0.0) p[M::radius_of_gyration] = std::sqrt(line.intercept / line.slope);
-  p[M::center_of_mass_position] = center;
-  return p;
 }
 
 /// The period model fitted to the observations and every input propagated

@@ -5,6 +5,7 @@
 /// uncertainty propagated to the parameters and to each correction, and the
 /// status of every correction: what `pendulum-g reduce` prints.
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -194,6 +195,13 @@ std::vector<std::string> review_decay_fit(const DecayFit& fit);
 /// The apparatus with alpha and beta taken from the fit of the decay
 /// record (their uncertainties from the fit's covariance).
 void use_fitted_decay(ParsedScene& scene, const DecayFit& fit);
+
+/// A physical pendulum's starting parameters (g, k, centre) for the fit:
+/// T^2 h = (4 pi^2/g)(k^2 + h^2) is a straight line in h^2 (Kelley Eq. 55),
+/// whose slope gives g and intercept k^2; an unknown centre is the one, on a
+/// grid of 600 across the pivots and a span beyond, whose line fits best
+/// (relative residuals). `fitted` in PhysicalPendulum's parameter order.
+std::array<double, 3> physical_start(const ParsedScene& scene, const std::array<bool, 3>& fitted);
 
 /// Fits the scene's period model to its observations and propagates every
 /// input's uncertainty (and the decay fit's alpha-beta covariance) by

@@ -172,10 +172,8 @@ ParsedScene parse_scene(const std::string& text) {
                        (out.observations.size() == 1 ? "" : "s") + " for " + std::to_string(unknowns) +
                        " unknowns (g" + unknown_names(out.fit) + "); expected at least as many observations "
                        "as unknowns");
-  if (!physical) {
-    check_geometry(out);
-    check_plausibility(out);  // a simple pendulum's expected period; a body's needs its fit
-  }
+  if (!physical) check_geometry(out);
+  check_plausibility(out);
   return out;
 }
 

@@ -260,3 +260,20 @@ TEST_CASE("Temperature: every length of the body scales by (1 + w C)/(1 + w C_re
   }
   CHECK(found);
 }
+
+TEST_CASE("Pivot scan of a body in parts, k held and the centre fitted, gives back g", "[physical]") {
+  // The metre stick's k as its parts give it (held), its centre fitted; the
+  // start's line then runs through the origin in k^2 + h^2.
+  PivotScanSimulation sim = metre_stick(5);
+  sim.noise = false;
+  Apparatus<double> app;
+  app.body.emplace().radius_of_gyration = sim.radius_of_gyration;
+  ParsedScene scene = simulate_pivot_scan(app, sim);
+  scene.apparatus_uncertainty.body->radius_of_gyration = 0.0;
+  scene.fit = {"center_of_mass_position"};
+  const Analysis a = analyse(scene, exact());
+  CHECK(a.fit.converged);
+  CHECK_THAT(a.g.value, WithinRel(sim.g, 1e-12));
+  CHECK_THAT(parameter(a, "center_of_mass_position").value, WithinAbs(sim.center_of_mass_position, 1e-12));
+  CHECK_FALSE(parameter(a, "radius_of_gyration").fitted);
+}

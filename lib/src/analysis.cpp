@@ -70,14 +70,18 @@ std::array<double, 3> physical_start(const ParsedScene& scene, const std::array<
   std::array<double, M::kParameters> p = M::kDefaults;
   const auto& obs = scene.observations;
   const auto& body = scene.apparatus.body;
+  // A k the body gives is held: the line is then T^2 h = (4 pi^2/g)(k^2 + h^2), through the origin.
+  const bool known_k = body && body->radius_of_gyration;
+  const double known_k2 = known_k ? *body->radius_of_gyration * *body->radius_of_gyration : 0.0;
   auto line_through = [&](double center, double& ssr) {
     std::vector<double> x, y, zero(obs.size(), 0.0);
     for (const auto& o : obs) {
       const double h = o.setting == Setting::pivot_position ? std::abs(o.length - center) : o.length;
-      x.push_back(h * h);
+      x.push_back(h * h + known_k2);
       y.push_back(o.period * o.period * h);
     }
-    const StraightLine line = fit_straight_line(x, y, zero, zero, obs.size() > 1 && fitted[M::radius_of_gyration]);
+    const StraightLine line =
+        fit_straight_line(x, y, zero, zero, !known_k && obs.size() > 1 && fitted[M::radius_of_gyration]);
     ssr = 0.0;
     for (std::size_t i = 0; i < x.size(); ++i) {
       const double r = (line.slope * x[i] + line.intercept - y[i]) / y[i];
@@ -103,7 +107,7 @@ std::array<double, 3> physical_start(const ParsedScene& scene, const std::array<
   double ssr;
   const StraightLine line = line_through(center, ssr);
   p[M::g] = 4.0 * kPi * kPi / line.slope;
-  if (line.intercept > 0.0) p[M::radius_of_gyration] = std::sqrt(line.intercept / line.slope);
+  if (!known_k && line.intercept > 0.0) p[M::radius_of_gyration] = std::sqrt(line.intercept / line.slope);
   p[M::center_of_mass_position] = center;
   return p;
 }

@@ -103,6 +103,24 @@ std::array<double, 3> physical_start(const ParsedScene& scene, const std::array<
       line_through(c, ssr);
       if (ssr < best) best = ssr, center = c;
     }
+    // Then golden-section search within a grid step either side, to 1e-9 of
+    // the span: Levenberg-Marquardt then starts next to the optimum.
+    const double step = 3.0 * span / kGrid, ratio = (std::sqrt(5.0) - 1.0) / 2.0;
+    double a = center - step, b = center + step;
+    auto cost = [&](double c) {
+      double ssr;
+      line_through(c, ssr);
+      return ssr;
+    };
+    double c1 = b - ratio * (b - a), c2 = a + ratio * (b - a), f1 = cost(c1), f2 = cost(c2);
+    while (b - a > 1e-9 * span) {
+      if (f1 < f2) {
+        b = c2, c2 = c1, f2 = f1, c1 = b - ratio * (b - a), f1 = cost(c1);
+      } else {
+        a = c1, c1 = c2, f1 = f2, c2 = a + ratio * (b - a), f2 = cost(c2);
+      }
+    }
+    if (std::min(f1, f2) < best) center = f1 < f2 ? c1 : c2;
   }
   double ssr;
   const StraightLine line = line_through(center, ssr);

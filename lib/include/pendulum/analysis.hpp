@@ -200,7 +200,9 @@ void use_fitted_decay(ParsedScene& scene, const DecayFit& fit);
 /// T^2 h = (4 pi^2/g)(k^2 + h^2) is a straight line in h^2 (Kelley Eq. 55),
 /// whose slope gives g and intercept k^2; an unknown centre is the one, on a
 /// grid of 600 across the pivots and a span beyond, whose line fits best
-/// (relative residuals). `fitted` in PhysicalPendulum's parameter order.
+/// (relative residuals), refined by golden-section search within a grid
+/// step. A k the body gives holds the line through the origin in k^2 + h^2.
+/// `fitted` in PhysicalPendulum's parameter order.
 std::array<double, 3> physical_start(const ParsedScene& scene, const std::array<bool, 3>& fitted);
 
 /// Fits the scene's period model to its observations and propagates every

@@ -77,15 +77,18 @@ Observation<U> convert_observation(const Observation<T>& o, F&& f) {
 /// the difference from T0 changes them by about DeltaT/T (1e-4 of their size).
 template <class T>
 struct Swing {
-  T length;          ///< pivot to the bob's centre (m)
+  T length;          ///< pivot to the bob's centre (m); a rigid body's setting before its model's turn
   T amplitude;       ///< theta0 (rad)
   T omega;           ///< working angular frequency 2 pi / T (rad/s)
   T trial_duration;  ///< duration of one timing, t_f (s)
+  /// What `length` is until a model makes it a pendulum's length (a rigid
+  /// body's pivot position or distance, models/physical_pendulum.hpp).
+  Setting setting = Setting::length;
 
   /// The swing of an observation whose length is off by `length_offset` (m).
   static Swing of(const Observation<T>& o, const T& length_offset) {
     return {o.length + length_offset, o.amplitude, 2.0 * kPi / o.period,
-            double(o.oscillations_per_trial) * o.period};
+            double(o.oscillations_per_trial) * o.period, o.setting};
   }
   /// g from the working frequency, omega^2 l (m/s^2).
   T working_g() const { return omega * omega * length; }

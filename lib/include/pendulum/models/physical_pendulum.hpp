@@ -70,8 +70,8 @@ struct PhysicalPendulum {
   /// h (m), the pivot to the centre of mass: the observation's pivot
   /// distance, or its pivot position's distance from the centre (the
   /// measured one when the scene gives it, else the parameter).
-  template <class T>
-  static T pivot_distance(const T* p, const Observation<T>& o, const Apparatus<T>& app) {
+  template <class T, class Set>
+  static T pivot_distance(const T* p, const Set& o, const Apparatus<T>& app) {
     using std::abs;
     if (o.setting != Setting::pivot_position) return o.length;
     const T& center = app.body && app.body->center_of_mass_position ? *app.body->center_of_mass_position
@@ -91,9 +91,10 @@ struct PhysicalPendulum {
            thermal_length(T(1.0), *b.expansion_coefficient, reference);  // Eq. (41)
   }
 
-  /// l = (k^2 + h^2)/h (Kelley Eq. 55) at the body's temperature (m).
-  template <class T>
-  static T equivalent(const T* p, const Observation<T>& o, const Apparatus<T>& app) {
+  /// l = (k^2 + h^2)/h (Kelley Eq. 55) at the body's temperature (m), for
+  /// an observation or its swing (whatever has `length` and `setting`).
+  template <class T, class Set>
+  static T equivalent(const T* p, const Set& o, const Apparatus<T>& app) {
     return thermal_scale(app) * equivalent_length(gyration(p, app), pivot_distance(p, o, app));  // Eq. (55)
   }
 
@@ -109,9 +110,9 @@ struct PhysicalPendulum {
   template <class T>
   static PeriodPrediction<T> predict(const T* p, const Observation<T>& o, const Apparatus<T>& app,
                                      const AmplitudeChoice& amplitude) {
-    const Swing<T> swing = swing_of(p, o, app);
+    const Swing<T> s = swing_of(p, swing(o), app);
     PeriodPrediction<T> out;
-    out.terms = correction_terms(app, swing, amplitude);
+    out.terms = correction_terms(app, s, amplitude);
     auto& buoyancy_term = out.terms[static_cast<int>(CorrectionId::buoyancy)];
     auto& added_mass_term = out.terms[static_cast<int>(CorrectionId::added_mass)];
     if (const auto r = body_buoyancy(app)) {
@@ -129,10 +130,27 @@ struct PhysicalPendulum {
     return out;
   }
 
-  /// predict()'s period alone, without the rows: the fit's residuals.
+  /// The part of an observation's swing that no parameter changes (the
+  /// setting as measured, the working frequency, the timing's duration):
+  /// a fit may compute it once per observation.
+  template <class T>
+  static Swing<T> swing(const Observation<T>& o) {
+    return Swing<T>::of(o, T(0.0));
+  }
+
+  /// predict()'s period alone, without the rows: the fit's residuals, from
+  /// the observation or from its swing().
   template <class T>
   static T period(const T* p, const Observation<T>& o, const Apparatus<T>& app, const AmplitudeChoice& amplitude) {
-    return ideal_period(p, o, app) * (1.0 + total_ratio(p, o, app, amplitude));
+    return period(p, swing(o), app, amplitude);
+  }
+  template <class T>
+  static T period(const T* p, const Swing<T>& measured, const Apparatus<T>& app, const AmplitudeChoice& amplitude) {
+    using std::sqrt;
+    const Swing<T> s = swing_of(p, measured, app);
+    Composition<T> c = compose(app, s, amplitude);
+    if (const auto r = body_buoyancy(app)) c.others += *r;
+    return 2.0 * kPi * sqrt(s.length / p[g]) * (1.0 + c.amplitude + c.others + c.amplitude * c.others);  // Eq. (56)
   }
 
   /// T0 = 2 pi sqrt(l/g) (Eq. 56 without K).
@@ -143,19 +161,26 @@ struct PhysicalPendulum {
   }
 
   /// The closed form for one observation with g the only unknown:
-  /// g = 4 pi^2 l (T/T0)^2 / T^2, the corrections being independent of g.
+  /// g = 4 pi^2 l (T/T0)^2 / T^2. The corrections do not depend on g, so T
+  /// is g^(-1/2) times the rest, and g = (T at g = 1 / T)^2.
   template <class T>
   static T solve_g(const T* p, const Observation<T>& o, const Apparatus<T>& app, const AmplitudeChoice& amplitude) {
-    const T ratio = 1.0 + total_ratio(p, o, app, amplitude);
-    return 4.0 * kPi * kPi * equivalent(p, o, app) * ratio * ratio / (o.period * o.period);
+    T unit[kParameters] = {T(1.0), p[radius_of_gyration], p[center_of_mass_position]};
+    const T ratio = period(unit, o, app, amplitude) / o.period;
+    return ratio * ratio;
   }
 
  private:
   static constexpr double kZeroCelsius = 273.15;  // K
 
+  /// The swing the corrections act on: the measured one with its setting
+  /// made the equivalent length.
   template <class T>
-  static Swing<T> swing_of(const T* p, const Observation<T>& o, const Apparatus<T>& app) {
-    return {equivalent(p, o, app), o.amplitude, 2.0 * kPi / o.period, double(o.oscillations_per_trial) * o.period};
+  static Swing<T> swing_of(const T* p, const Swing<T>& measured, const Apparatus<T>& app) {
+    Swing<T> s = measured;
+    s.length = equivalent(p, measured, app);
+    s.setting = Setting::length;
+    return s;
   }
 
   /// m_air/(2M) for a body of known mass and volume in air (Eq. 16).
@@ -164,13 +189,6 @@ struct PhysicalPendulum {
     if (!app.air || !app.body || !app.body->mass || !app.body->volume) return std::nullopt;
     const T rho = air_density(app.air->pressure, app.air->temperature, app.air->molar_mass);
     return buoyancy(T(rho * *app.body->volume), *app.body->mass);  // Eq. (16)
-  }
-
-  template <class T>
-  static T total_ratio(const T* p, const Observation<T>& o, const Apparatus<T>& app, const AmplitudeChoice& amplitude) {
-    Composition<T> c = compose(app, swing_of(p, o, app), amplitude);
-    if (const auto r = body_buoyancy(app)) c.others += *r;
-    return c.amplitude + c.others + c.amplitude * c.others;
   }
 };
 

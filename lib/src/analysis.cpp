@@ -15,6 +15,7 @@
 #include "pendulum/models/simple_pendulum.hpp"
 #include "pendulum/period_fit.hpp"
 #include "plausibility.hpp"
+#include "text.hpp"
 
 namespace pendulum {
 
@@ -683,7 +684,7 @@ class Fit {
     if (out_.g.uncertainty && shift < options_.negligible_fraction * *out_.g.uncertainty) return;
     out_.warnings.push_back("air: the body's mass and volume are not known (give the body in parts with their "
                             "densities), so buoyancy is skipped; a steel body's would raise g by " +
-                            format(shift, 3) + " m/s^2");
+                            format_number(shift, 3) + " m/s^2");
   }
 
   /// A fitted k or centre against what the body's parts give.
@@ -701,8 +702,8 @@ class Fit {
       const std::optional<double> sigma = deviation(covariance_(i, i));
       if (!sigma || std::abs(p_[i] - from_parts) <= 3.0 * *sigma) continue;
       out_.warnings.push_back(std::string("fit: ") + PhysicalPendulum::kParameterInfo[i].name + " = " +
-                              format(p_[i], 6) + " +- " + format(*sigma, 2) + " m, but the body's parts give " +
-                              format(from_parts, 6) + " m (" + format(std::abs(p_[i] - from_parts) / *sigma, 3) +
+                              format_number(p_[i], 6) + " +- " + format_number(*sigma, 2) + " m, but the body's parts give " +
+                              format_number(from_parts, 6) + " m (" + format_number(std::abs(p_[i] - from_parts) / *sigma, 3) +
                               " standard uncertainties away): a part missing, misplaced or of the wrong mass?");
     }
   }
@@ -733,11 +734,11 @@ class Fit {
     if (center_share > others && center_share > 0.0) {
       const double apart = std::abs(o1.period - o2.period);
       out_.warnings.push_back(
-          "kater: the periods differ by " + format(apart, 3) + " s, so the roughly located centre of mass "
-          "(center_of_mass_position) contributes " + format(center_share, 3) + " m/s^2 to g's uncertainty, more "
-          "than any other input (" + format(others, 3) + " m/s^2); Bessel's method needs T1 and T2 close, since the "
+          "kater: the periods differ by " + format_number(apart, 3) + " s, so the roughly located centre of mass "
+          "(center_of_mass_position) contributes " + format_number(center_share, 3) + " m/s^2 to g's uncertainty, more "
+          "than any other input (" + format_number(others, 3) + " m/s^2); Bessel's method needs T1 and T2 close, since the "
           "centre enters only through T1^2 - T2^2: move the adjustable mass until they agree within " +
-          format(apart * others / center_share, 2) + " s, or locate the centre better");
+          format_number(apart * others / center_share, 2) + " s, or locate the centre better");
     }
   }
 

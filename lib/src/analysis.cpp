@@ -4,12 +4,14 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 #include <Eigen/Dense>
 #include <boost/math/special_functions/gamma.hpp>
 #include <ceres/jet.h>
 
 #include "pendulum/input_error.hpp"
+#include "pendulum/models/physical_pendulum.hpp"
 #include "pendulum/models/simple_pendulum.hpp"
 #include "pendulum/period_fit.hpp"
 #include "plausibility.hpp"
@@ -62,6 +64,73 @@ void use_fitted_decay(ParsedScene& scene, const DecayFit& fit) {
   }
 }
 
+static_assert(PhysicalPendulum::kParameters == 3, "physical_start (analysis.hpp) takes three parameters");
+
+std::array<double, 3> physical_start(const ParsedScene& scene, const std::array<bool, 3>& fitted) {
+  using M = PhysicalPendulum;
+  std::array<double, M::kParameters> p = M::kDefaults;
+  const auto& obs = scene.observations;
+  const auto& body = scene.apparatus.body;
+  // A k the body gives is held: the line is then T^2 h = (4 pi^2/g)(k^2 + h^2), through the origin.
+  const bool known_k = body && body->radius_of_gyration;
+  const double known_k2 = known_k ? *body->radius_of_gyration * *body->radius_of_gyration : 0.0;
+  auto line_through = [&](double center, double& ssr) {
+    std::vector<double> x, y, zero(obs.size(), 0.0);
+    for (const auto& o : obs) {
+      const double h = o.setting == Setting::pivot_position ? std::abs(o.length - center) : o.length;
+      x.push_back(h * h + known_k2);
+      y.push_back(o.period * o.period * h);
+    }
+    const StraightLine line =
+        fit_straight_line(x, y, zero, zero, !known_k && obs.size() > 1 && fitted[M::radius_of_gyration]);
+    ssr = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const double r = (line.slope * x[i] + line.intercept - y[i]) / y[i];
+      ssr += r * r;
+    }
+    return line;
+  };
+  double center = body && body->center_of_mass_position ? *body->center_of_mass_position : 0.0;
+  const bool positions = std::any_of(obs.begin(), obs.end(), [](const auto& o) { return o.setting == Setting::pivot_position; });
+  if (positions && fitted[M::center_of_mass_position]) {
+    const auto [lo, hi] = std::minmax_element(obs.begin(), obs.end(), [](const auto& a, const auto& b) { return a.length < b.length; });
+    const double span = std::max(hi->length - lo->length, 1e-3);
+    double best = HUGE_VAL;
+    constexpr int kGrid = 600;
+    for (int i = 0; i <= kGrid; ++i) {
+      const double c = lo->length - span + 3.0 * span * i / kGrid;
+      if (std::any_of(obs.begin(), obs.end(), [&](const auto& o) { return std::abs(o.length - c) < 1e-6 * span; })) continue;
+      double ssr;
+      line_through(c, ssr);
+      if (ssr < best) best = ssr, center = c;
+    }
+    // Then golden-section search within a grid step either side, to 1e-9 of
+    // the span: Levenberg-Marquardt then starts next to the optimum.
+    const double step = 3.0 * span / kGrid, ratio = (std::sqrt(5.0) - 1.0) / 2.0;
+    double a = center - step, b = center + step;
+    auto cost = [&](double c) {
+      double ssr;
+      line_through(c, ssr);
+      return ssr;
+    };
+    double c1 = b - ratio * (b - a), c2 = a + ratio * (b - a), f1 = cost(c1), f2 = cost(c2);
+    while (b - a > 1e-9 * span) {
+      if (f1 < f2) {
+        b = c2, c2 = c1, f2 = f1, c1 = b - ratio * (b - a), f1 = cost(c1);
+      } else {
+        a = c1, c1 = c2, f1 = f2, c2 = a + ratio * (b - a), f2 = cost(c2);
+      }
+    }
+    if (std::min(f1, f2) < best) center = f1 < f2 ? c1 : c2;
+  }
+  double ssr;
+  const StraightLine line = line_through(center, ssr);
+  p[M::g] = 4.0 * kPi * kPi / line.slope;
+  if (!known_k && line.intercept > 0.0) p[M::radius_of_gyration] = std::sqrt(line.intercept / line.slope);
+  p[M::center_of_mass_position] = center;
+  return p;
+}
+
 namespace {
 
 /// One input: a scalar of the apparatus or of one observation.
@@ -107,6 +176,7 @@ template <class Model>
 class Fit {
  public:
   static constexpr int P = Model::kParameters;
+  static constexpr bool kSimple = std::is_same_v<Model, SimplePendulum>;
   using Vector = Eigen::Matrix<double, P, 1>;
   using Matrix = Eigen::Matrix<double, P, P>;
 
@@ -145,7 +215,7 @@ class Fit {
 
   void solve() {
     std::copy(Model::kDefaults.begin(), Model::kDefaults.end(), p_.begin());
-    textbook_ = textbook_line();
+    if constexpr (kSimple) textbook_ = textbook_line();
     if (k_ == 1 && free_count_ == 1) {
       p_[0] = Model::solve_g(p_.data(), scene_.observations[0], scene_.apparatus, amplitude_[0]);
       out_.fit.method = "closed_form";
@@ -155,12 +225,16 @@ class Fit {
     // From the textbook line through the origin, the offset at 0: close
     // enough at any amplitude for Levenberg-Marquardt, and finite however
     // close the lengths (the line with an intercept is not).
-    std::vector<double> x(k_), y(k_), zero(k_, 0.0);
-    for (std::size_t k = 0; k < k_; ++k) {
-      x[k] = scene_.observations[k].length;
-      y[k] = scene_.observations[k].period * scene_.observations[k].period;
+    if constexpr (kSimple) {
+      std::vector<double> x(k_), y(k_), zero(k_, 0.0);
+      for (std::size_t k = 0; k < k_; ++k) {
+        x[k] = scene_.observations[k].length;
+        y[k] = scene_.observations[k].period * scene_.observations[k].period;
+      }
+      p_[0] = 4.0 * kPi * kPi / fit_straight_line(x, y, zero, zero, false).slope;
+    } else {
+      p_ = physical_start(scene_, fitted_);
     }
-    p_[0] = 4.0 * kPi * kPi / fit_straight_line(x, y, zero, zero, false).slope;
     // Effective variance: weights from each observation's own uncertainties
     // (period, length, amplitude) carried to its period at the textbook
     // start, then once more at the optimum.
@@ -377,7 +451,12 @@ class Fit {
     report_parameters();
     report_observations(g);
     report_budget();
-    report_textbook();
+    out_.fit.model = Model::kName;
+    if constexpr (kSimple) {
+      report_textbook();
+    } else {
+      report_pivot_scan();
+    }
     if (singular_) {
       out_.warnings.push_back(
           "fit: the observations cannot separate the unknowns (their covariance is singular), so no "
@@ -534,6 +613,128 @@ class Fit {
     }
   }
 
+  /// A function of the parameters with its uncertainty from their covariance.
+  template <class F>
+  Estimate derived_estimate(F&& f) const {
+    using JetP = ceres::Jet<double, P>;
+    std::array<JetP, P> p;
+    for (int i = 0; i < P; ++i) p[i] = JetP(p_[i], i);
+    const JetP q = f(p.data());
+    return {q.a, deviation(q.v.dot(covariance_ * q.v))};
+  }
+
+  void report_pivot_scan() {
+    using M = PhysicalPendulum;
+    using JetP = ceres::Jet<double, P>;
+    const Apparatus<JetP> app = convert_apparatus<JetP>(scene_.apparatus, [](const Field&, double x) { return JetP(x); });
+    PivotScan scan;
+    auto k_of = [&](const JetP* p) { return M::thermal_scale(app) * M::gyration(p, app); };
+    scan.minimum_period = derived_estimate([&](const JetP* p) { return minimum_period(p[M::g], k_of(p)); });
+    scan.minimum_pivot_distance = derived_estimate(k_of);
+    const auto& body = scene_.apparatus.body;
+    const bool held_center = body && body->center_of_mass_position;
+    const bool positions = std::any_of(scene_.observations.begin(), scene_.observations.end(),
+                                       [](const auto& o) { return o.setting == Setting::pivot_position; });
+    auto center_of = [&](const JetP* p) {
+      return held_center ? JetP(*body->center_of_mass_position) : p[M::center_of_mass_position];
+    };
+    if (positions) {
+      for (const double side : {-1.0, 1.0}) {
+        scan.minimum_pivot_positions.push_back(
+            derived_estimate([&](const JetP* p) { return center_of(p) + side * M::gyration(p, app); }));
+      }
+    }
+    for (std::size_t k = 0; k < k_; ++k) {
+      const Observation<JetP> o =
+          convert_observation<JetP>(scene_.observations[k], [](const Field&, double x) { return JetP(x); });
+      PivotScan::Conjugate c;
+      c.equivalent_length = derived_estimate([&](const JetP* p) { return M::equivalent(p, o, app); });
+      c.pivot_distance = derived_estimate([&](const JetP* p) {
+        return conjugate_pivot_distance(M::gyration(p, app), M::pivot_distance(p, o, app));
+      });
+      if (o.setting == Setting::pivot_position) {
+        c.pivot_position = derived_estimate([&](const JetP* p) {
+          const JetP center = center_of(p);
+          const JetP h = conjugate_pivot_distance(M::gyration(p, app), M::pivot_distance(p, o, app));
+          return o.length < center ? center + h : center - h;
+        });
+      }
+      scan.conjugates.push_back(c);
+    }
+    review_kater(scan);
+    check_against_parts(scan);
+    warn_about_buoyancy();
+    out_.fit.pivot_scan = scan;
+  }
+
+  /// Air given but not the body's mass and volume: buoyancy is skipped; say
+  /// what a steel body's would be (g rises by rho_air/rho, Eq. 16 twice).
+  void warn_about_buoyancy() {
+    const Apparatus<double>& app = scene_.apparatus;
+    if (!app.air || (app.body && app.body->mass && app.body->volume)) return;
+    constexpr double kSteel = 7850.0;  // kg/m^3, a carbon steel
+    const double shift = p_[0] * air_density(app.air->pressure, app.air->temperature, app.air->molar_mass) / kSteel;
+    if (out_.g.uncertainty && shift < options_.negligible_fraction * *out_.g.uncertainty) return;
+    out_.warnings.push_back("air: the body's mass and volume are not known (give the body in parts with their "
+                            "densities), so buoyancy is skipped; a steel body's would raise g by " +
+                            format_number(shift, 3) + " m/s^2");
+  }
+
+  /// A fitted k or centre against what the body's parts give.
+  void check_against_parts(PivotScan& scan) {
+    if (!scene_.body_from_parts) return;
+    const RigidBody<double>& parts = *scene_.body_from_parts;
+    const std::pair<int, std::optional<double>*> checks[] = {
+        {PhysicalPendulum::radius_of_gyration, &scan.parts_radius_of_gyration},
+        {PhysicalPendulum::center_of_mass_position, &scan.parts_center_of_mass_position}};
+    for (const auto& [i, field] : checks) {
+      if (!fitted_[i]) continue;
+      const double from_parts = i == PhysicalPendulum::radius_of_gyration ? *parts.radius_of_gyration
+                                                                          : *parts.center_of_mass_position;
+      *field = from_parts;
+      const std::optional<double> sigma = deviation(covariance_(i, i));
+      if (!sigma || std::abs(p_[i] - from_parts) <= 3.0 * *sigma) continue;
+      out_.warnings.push_back(std::string("fit: ") + PhysicalPendulum::kParameterInfo[i].name + " = " +
+                              format_number(p_[i], 6) + " +- " + format_number(*sigma, 2) + " m, but the body's parts give " +
+                              format_number(from_parts, 6) + " m (" + format_number(std::abs(p_[i] - from_parts) / *sigma, 3) +
+                              " standard uncertainties away): a part missing, misplaced or of the wrong mass?");
+    }
+  }
+
+  /// Kater's reversible pendulum: two pivot positions on opposite sides of
+  /// a measured centre. Bessel's formula on the ideal periods checks the fit;
+  /// the rough centre enters g only through T1^2 - T2^2, and a warning says
+  /// when the periods are too far apart for that.
+  void review_kater(PivotScan& scan) {
+    const auto& body = scene_.apparatus.body;
+    if (k_ != 2 || !body || !body->center_of_mass_position) return;
+    const auto& o1 = scene_.observations[0];
+    const auto& o2 = scene_.observations[1];
+    if (o1.setting != Setting::pivot_position || o2.setting != Setting::pivot_position) return;
+    const double center = *body->center_of_mass_position;
+    const double scale = PhysicalPendulum::thermal_scale(scene_.apparatus);
+    const double h1 = scale * std::abs(o1.length - center), h2 = scale * std::abs(o2.length - center);
+    auto ideal = [&](std::size_t k) { return base_[k].value[kIdealPeriod] / base_[k].value[kModelPeriod] * scene_.observations[k].period; };
+    scan.bessel_g = bessel_g(ideal(0), ideal(1), h1, h2);
+    double center_share = 0.0, others = 0.0;
+    for (const auto& b : out_.budget) {
+      if (b.input == "center_of_mass_position") {
+        center_share = b.contribution;
+      } else {
+        others = std::max(others, b.contribution);
+      }
+    }
+    if (center_share > others && center_share > 0.0) {
+      const double apart = std::abs(o1.period - o2.period);
+      out_.warnings.push_back(
+          "kater: the periods differ by " + format_number(apart, 3) + " s, so the roughly located centre of mass "
+          "(center_of_mass_position) contributes " + format_number(center_share, 3) + " m/s^2 to g's uncertainty, more "
+          "than any other input (" + format_number(others, 3) + " m/s^2); Bessel's method needs T1 and T2 close, since the "
+          "centre enters only through T1^2 - T2^2: move the adjustable mass until they agree within " +
+          format_number(apart * others / center_share, 2) + " s, or locate the centre better");
+    }
+  }
+
   struct Base {
     std::array<double, kQuantities> value;
     std::array<Vector, kQuantities> gradient;  ///< with respect to the parameters
@@ -585,7 +786,10 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
   if (scene.apparatus.decay && scene.observations.size() == 1) {
     out.drag = predict_drag(scene.apparatus, scene.observations[0]);
   }
-  Fit<SimplePendulum>(scene, options, out).run();
+  switch (scene.model) {
+    case PeriodModelKind::simple_pendulum: Fit<SimplePendulum>(scene, options, out).run(); break;
+    case PeriodModelKind::physical_pendulum: Fit<PhysicalPendulum>(scene, options, out).run(); break;
+  }
   for (auto& w : warn_about_skipped_parts(scene, options.negligible_fraction)) out.warnings.push_back(std::move(w));
 
   if (scene.site) out.expected_g = expected_gravity(*scene.site);

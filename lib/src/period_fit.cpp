@@ -8,6 +8,7 @@
 #include <ceres/ceres.h>
 
 #include "newton_decrement.hpp"
+#include "pendulum/models/physical_pendulum.hpp"
 #include "pendulum/models/simple_pendulum.hpp"
 
 namespace pendulum {
@@ -260,6 +261,8 @@ PeriodFitSolution fit_periods(const PeriodFitProblem<Model>& problem,
 
 template PeriodFitSolution fit_periods<SimplePendulum>(const PeriodFitProblem<SimplePendulum>&,
                                                         const std::array<double, 2>&);
+template PeriodFitSolution fit_periods<PhysicalPendulum>(const PeriodFitProblem<PhysicalPendulum>&,
+                                                          const std::array<double, 3>&);
 
 StraightLine fit_straight_line(const std::vector<double>& x, const std::vector<double>& y,
                                const std::vector<double>& sigma_x, const std::vector<double>& sigma_y,

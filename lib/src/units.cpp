@@ -10,7 +10,7 @@ namespace {
 constexpr double kDegree = kPi / 180.0;
 constexpr double kMmHg = 133.322387415;  // Pa, conventional (13.5951 g/cm^3, 9.80665 m/s^2)
 
-constexpr std::array<Unit, 60> kUnits{{
+constexpr std::array<Unit, 64> kUnits{{
     {"m", Dimension::length, 1.0, 0.0},
     {"cm", Dimension::length, 1e-2, 0.0},
     {"mm", Dimension::length, 1e-3, 0.0},
@@ -71,6 +71,10 @@ constexpr std::array<Unit, 60> kUnits{{
     {"mGal", Dimension::acceleration, 1e-5, 0.0},
     {"s/day", Dimension::daily_rate, 1.0, 0.0},
     {"ms/day", Dimension::daily_rate, 1e-3, 0.0},
+    {"kg/m^3", Dimension::density, 1.0, 0.0},
+    {"g/cm^3", Dimension::density, 1e3, 0.0},
+    {"1/K", Dimension::expansion, 1.0, 0.0},
+    {"1/degC", Dimension::expansion, 1.0, 0.0},
 }};
 
 /// Spellings people type for a unit of the table (issue 14), and the unit.
@@ -117,6 +121,8 @@ const char* si_unit(Dimension dimension) {
     case Dimension::rate_per_angle: return "1/(s rad)";
     case Dimension::acceleration: return "m/s^2";
     case Dimension::daily_rate: return "s/day";
+    case Dimension::density: return "kg/m^3";
+    case Dimension::expansion: return "1/K";
   }
   return "";
 }
@@ -138,6 +144,8 @@ const char* dimension_name(Dimension dimension) {
     case Dimension::rate_per_angle: return "a rate per angle";
     case Dimension::acceleration: return "an acceleration";
     case Dimension::daily_rate: return "a daily rate";
+    case Dimension::density: return "a density";
+    case Dimension::expansion: return "a linear expansion coefficient";
   }
   return "";
 }

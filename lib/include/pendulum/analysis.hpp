@@ -5,6 +5,7 @@
 /// uncertainty propagated to the parameters and to each correction, and the
 /// status of every correction: what `pendulum-g reduce` prints.
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -116,8 +117,33 @@ struct TextbookFit {
   std::optional<Estimate> length_offset; ///< intercept / slope (m)
 };
 
+/// What the fit of a physical pendulum adds (docs/physical.md): the fitted
+/// curve T(h)'s minimum, each pivot's conjugate of equal period, and for
+/// Kater's reversible pendulum Bessel's closed form. Uncertainties from the
+/// fitted parameters' covariance; a k or a centre taken from the body's
+/// parts counts as exact.
+struct PivotScan {
+  Estimate minimum_period;          ///< 2 pi sqrt(2k/g) (s), the ideal period at h = k
+  Estimate minimum_pivot_distance;  ///< h = k (m)
+  /// x_c - k and x_c + k (m), in the frame of pivot_position, when the centre is known.
+  std::vector<Estimate> minimum_pivot_positions;
+  struct Conjugate {
+    Estimate equivalent_length;      ///< l = (k^2 + h^2)/h (m)
+    Estimate pivot_distance;         ///< h' = k^2/h (m), of the same period
+    std::optional<Estimate> pivot_position;  ///< h' on the other side of the centre (m): Kater's pair
+  };
+  std::vector<Conjugate> conjugates;  ///< one per observation
+  /// Kater's reversible pendulum (two pivot positions on opposite sides of
+  /// a measured centre): Bessel's formula on the ideal periods (m/s^2).
+  std::optional<double> bessel_g;
+  /// k and the centre (m) as the body's parts give them, where the fit
+  /// replaces them: its check (a warning beyond 3 standard uncertainties).
+  std::optional<double> parts_radius_of_gyration, parts_center_of_mass_position;
+};
+
 /// What the fit of a series adds.
 struct FitReport {
+  const char* model = "simple_pendulum";  ///< the period model's name (models/)
   std::vector<ParameterResult> parameters;
   /// Correlations of the fitted parameters (row-major, in `parameters`'
   /// order among those fitted); empty when singular.
@@ -130,7 +156,8 @@ struct FitReport {
   std::string method;  ///< "closed_form" or "ceres_levenberg_marquardt"
   std::string termination;
   int iterations = 0;
-  TextbookFit textbook;
+  TextbookFit textbook;                 ///< the simple pendulum's
+  std::optional<PivotScan> pivot_scan;  ///< the physical pendulum's
 };
 
 struct Analysis {
@@ -173,6 +200,15 @@ std::vector<std::string> review_decay_fit(const DecayFit& fit);
 /// The apparatus with alpha and beta taken from the fit of the decay
 /// record (their uncertainties from the fit's covariance).
 void use_fitted_decay(ParsedScene& scene, const DecayFit& fit);
+
+/// A physical pendulum's starting parameters (g, k, centre) for the fit:
+/// T^2 h = (4 pi^2/g)(k^2 + h^2) is a straight line in h^2 (Kelley Eq. 55),
+/// whose slope gives g and intercept k^2; an unknown centre is the one, on a
+/// grid of 600 across the pivots and a span beyond, whose line fits best
+/// (relative residuals), refined by golden-section search within a grid
+/// step. A k the body gives holds the line through the origin in k^2 + h^2.
+/// `fitted` in PhysicalPendulum's parameter order.
+std::array<double, 3> physical_start(const ParsedScene& scene, const std::array<bool, 3>& fitted);
 
 /// Fits the scene's period model to its observations and propagates every
 /// input's uncertainty (and the decay fit's alpha-beta covariance) by

@@ -127,6 +127,31 @@ struct Decay {
   }
 };
 
+/// A rigid body swinging about pivots along its axis (a physical pendulum,
+/// models/physical_pendulum.hpp): what the scene states or its parts give
+/// (bodies.hpp), each held in the fit. Positions are in the frame of the
+/// observations' pivot_position: along the body from a mark on it.
+template <class T>
+struct RigidBody {
+  std::optional<T> center_of_mass_position;  ///< measured (balanced on an edge) or from the parts (m)
+  std::optional<T> radius_of_gyration;       ///< about the centre of mass, from the parts (m)
+  std::optional<T> mass;                     ///< from the parts (kg); buoyancy needs it
+  std::optional<T> volume;                   ///< from the parts (m^3); buoyancy needs it
+  std::optional<T> temperature;              ///< of the body during the swings (K)
+  std::optional<T> reference_temperature;    ///< at which its lengths were measured (K)
+  std::optional<T> expansion_coefficient;    ///< linear, w of Kelley Eq. (41) (1/K)
+  template <class A, class B, class F>
+  static void zip(A& a, B& b, F& f) {
+    f({"center_of_mass_position", "m"}, a.center_of_mass_position, b.center_of_mass_position);
+    f({"body.radius_of_gyration", "m"}, a.radius_of_gyration, b.radius_of_gyration);
+    f({"body.mass", "kg"}, a.mass, b.mass);
+    f({"body.volume", "m^3"}, a.volume, b.volume);
+    f({"temperature", "K"}, a.temperature, b.temperature);
+    f({"reference_temperature", "K"}, a.reference_temperature, b.reference_temperature);
+    f({"expansion_coefficient", "1/K"}, a.expansion_coefficient, b.expansion_coefficient);
+  }
+};
+
 /// The apparatus of one experiment: the parts it has.
 template <class T>
 struct Apparatus {
@@ -140,6 +165,8 @@ struct Apparatus {
   /// Shared by every observation: what the file states, or the fit of its
   /// decay record.
   std::optional<Decay<T>> decay;
+  /// A physical pendulum's body (models/physical_pendulum.hpp).
+  std::optional<RigidBody<T>> body;
   /// No air by statement ("air": "vacuum"), as opposed to air not described.
   bool vacuum = false;
 };
@@ -160,6 +187,7 @@ void zip_apparatus(A& a, B& b, F&& f) {
   detail::zip_part(a.air, b.air, z);
   detail::zip_part(a.support, b.support, z);
   detail::zip_part(a.decay, b.decay, z);
+  detail::zip_part(a.body, b.body, z);
 }
 
 /// The same apparatus with every scalar mapped by f(field, value) -> U.

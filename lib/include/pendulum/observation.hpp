@@ -10,29 +10,54 @@
 
 namespace pendulum {
 
+/// Which distance an observation's setting is (its `length`). A ball on a
+/// wire is set by its length; a rigid body by where it hangs from, given
+/// either way (docs/physical.md).
+enum class Setting {
+  length,          ///< pivot to the bob's centre, or to the mark of length_offset
+  pivot_distance,  ///< pivot to the body's centre of mass
+  pivot_position,  ///< the pivot's place along the body, from a mark on it
+};
+
+/// The scene's key of a setting, which is also its JSON path.
+inline const char* setting_key(Setting s) {
+  switch (s) {
+    case Setting::length: return "length";
+    case Setting::pivot_distance: return "pivot_distance";
+    case Setting::pivot_position: return "pivot_position";
+  }
+  return "length";
+}
+
 /// One timed setting of the pendulum, in SI units.
 template <class T>
 struct Observation {
   T period;     ///< mean measured period (s)
-  T length;     ///< measured length (m): pivot to the bob's centre, or to
-                ///< the mark measured to when the scene fits length_offset
+  /// The setting's distance (m), named by `setting`: the length from the
+  /// pivot to the bob's centre (or to the mark measured to when the scene
+  /// fits length_offset), or a rigid body's pivot distance or position.
+  T length;
   T amplitude;  ///< amplitude at the start of each timing (rad)
   int oscillations_per_trial = 1;  ///< oscillations in one timing
+  Setting setting = Setting::length;
 
   template <class A, class B, class F>
   static void zip(A& a, B& b, F& f) {
     f(Field{"timing.period", "s", FieldRole::period}, a.period, b.period);
-    f(Field{"length", "m", FieldRole::length}, a.length, b.length);
+    f(Field{setting_key(a.setting), "m", FieldRole::length}, a.length, b.length);
     f(Field{"amplitude", "rad"}, a.amplitude, b.amplitude);
   }
 };
 
 /// Visits the observation's scalar fields: f(Field, a_field, b_field); the
-/// oscillation count is copied along.
+/// oscillation count and the setting are copied along.
 template <class A, class B, class F>
 void zip_observation(A& a, B& b, F&& f) {
   detail::FieldZipper<F> z{f};
-  if constexpr (!std::is_const_v<B>) b.oscillations_per_trial = a.oscillations_per_trial;
+  if constexpr (!std::is_const_v<B>) {
+    b.oscillations_per_trial = a.oscillations_per_trial;
+    b.setting = a.setting;
+  }
   std::decay_t<A>::zip(a, b, z);
 }
 
@@ -52,15 +77,18 @@ Observation<U> convert_observation(const Observation<T>& o, F&& f) {
 /// the difference from T0 changes them by about DeltaT/T (1e-4 of their size).
 template <class T>
 struct Swing {
-  T length;          ///< pivot to the bob's centre (m)
+  T length;          ///< pivot to the bob's centre (m); a rigid body's setting before its model's turn
   T amplitude;       ///< theta0 (rad)
   T omega;           ///< working angular frequency 2 pi / T (rad/s)
   T trial_duration;  ///< duration of one timing, t_f (s)
+  /// What `length` is until a model makes it a pendulum's length (a rigid
+  /// body's pivot position or distance, models/physical_pendulum.hpp).
+  Setting setting = Setting::length;
 
   /// The swing of an observation whose length is off by `length_offset` (m).
   static Swing of(const Observation<T>& o, const T& length_offset) {
     return {o.length + length_offset, o.amplitude, 2.0 * kPi / o.period,
-            double(o.oscillations_per_trial) * o.period};
+            double(o.oscillations_per_trial) * o.period, o.setting};
   }
   /// g from the working frequency, omega^2 l (m/s^2).
   T working_g() const { return omega * omega * length; }

@@ -28,7 +28,11 @@ struct ObservationSource {
   std::string measured_to = "center";
 };
 
+/// The period model a scene is reduced with (models/).
+enum class PeriodModelKind { simple_pendulum, physical_pendulum };
+
 struct ParsedScene {
+  PeriodModelKind model = PeriodModelKind::simple_pendulum;
   Apparatus<double> apparatus;              ///< SI values
   Apparatus<double> apparatus_uncertainty;  ///< same shape; 0 where the file states none
   std::vector<Observation<double>> observations;  ///< one, or a series
@@ -52,6 +56,9 @@ struct ParsedScene {
     double covariance;
   };
   std::vector<Covariance> input_covariances;
+  /// A physical pendulum's body as its parts give it (docs/physical.md),
+  /// also where the fit replaces k or the centre: the fit is checked against it.
+  std::optional<RigidBody<double>> body_from_parts;
   std::vector<std::string> assumptions;  ///< defaults the reduction used
   std::vector<std::string> warnings;     ///< legal but suspicious input
   /// Findings of the reader that make the result suspect (status.hpp): a

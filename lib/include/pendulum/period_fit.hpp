@@ -12,6 +12,7 @@
 
 #include "pendulum/amplitude.hpp"
 #include "pendulum/apparatus.hpp"
+#include "pendulum/models/physical_pendulum.hpp"
 #include "pendulum/models/simple_pendulum.hpp"
 #include "pendulum/observation.hpp"
 
@@ -48,6 +49,8 @@ PeriodFitSolution fit_periods(const PeriodFitProblem<Model>& problem,
 
 extern template PeriodFitSolution fit_periods<SimplePendulum>(const PeriodFitProblem<SimplePendulum>&,
                                                                const std::array<double, 2>&);
+extern template PeriodFitSolution fit_periods<PhysicalPendulum>(const PeriodFitProblem<PhysicalPendulum>&,
+                                                                 const std::array<double, 3>&);
 
 /// A weighted straight line y = slope x + intercept (intercept 0 when
 /// `with_intercept` is false) with the effective-variance weights

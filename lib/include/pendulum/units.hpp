@@ -26,6 +26,8 @@ enum class Dimension {
   rate_per_angle,   ///< beta: 1/(time angle)
   acceleration,     ///< g
   daily_rate,       ///< a clock's gain or loss; "SI" here is s/day
+  density,          ///< a body's parts: kg/m^3
+  expansion,        ///< linear thermal expansion: 1/K
 };
 
 /// A unit: value_SI = factor * value + offset (offset only for temperatures;

@@ -6,6 +6,7 @@
 
 #include "../plausibility.hpp"
 #include "parts.hpp"
+#include "pendulum/models/physical_pendulum.hpp"
 #include "pendulum/models/simple_pendulum.hpp"
 #include "pendulum/scene_json.hpp"
 
@@ -24,10 +25,28 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out) {
   ObservationSource source;
   source.path = prefix;
   read_timing(o, prefix, v, u, source, out);
-  const Measured length = quantity(o, "length", Dimension::length, Range::positive, &source.measured_to);
-  v.length = length.value;
-  u.length = length.sigma;
-  within(v.length, 1e-3, 1e3, prefix + "length.value", "m", "a laboratory pendulum, 1 mm to 1 km long");
+  // A rigid body is set by its pivot (docs/physical.md), a ball by its length.
+  const bool distance = o.has("pivot_distance"), position = o.has("pivot_position");
+  PENDULUM_FAIL_IF(distance && position, prefix + "pivot_position",
+                   "got both pivot_distance and pivot_position; expected one");
+  v.setting = u.setting = distance ? Setting::pivot_distance : position ? Setting::pivot_position : Setting::length;
+  const char* key = setting_key(v.setting);
+  PENDULUM_FAIL_IF(v.setting != Setting::length && o.has("length"), prefix + "length",
+                   std::string("got both length and ") + key + "; expected one");
+  const bool physical = v.setting != Setting::length;
+  PENDULUM_FAIL_IF(!out.observations.empty() && physical != (out.model == PeriodModelKind::physical_pendulum),
+                   prefix + key, "got a mix of length and pivot keys; expected every observation to give length "
+                   "(a ball on a wire) or every one pivot_distance or pivot_position (a rigid body)");
+  if (physical) {
+    out.model = PeriodModelKind::physical_pendulum;
+    put(o, key, Dimension::length, position ? Range::any : Range::non_negative, v.length, u.length);
+    within(std::abs(v.length), 0.0, 1e3, prefix + key + ".value", "m", "a laboratory body's pivot, within 1 km");
+  } else {
+    const Measured length = quantity(o, "length", Dimension::length, Range::positive, &source.measured_to);
+    v.length = length.value;
+    u.length = length.sigma;
+    within(v.length, 1e-3, 1e3, prefix + "length.value", "m", "a laboratory pendulum, 1 mm to 1 km long");
+  }
   put(o, "amplitude", Dimension::angle, Range::positive, v.amplitude, u.amplitude);
   PENDULUM_FAIL_IF(v.amplitude >= kPi, prefix + "amplitude.value",
                    "got " + format_number(v.amplitude * 180.0 / kPi) +
@@ -43,7 +62,7 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out) {
 
 /// "observations": a non-empty array of objects with length, amplitude, timing.
 void read_series(Object& top, ParsedScene& out) {
-  for (const char* key : {"length", "amplitude", "timing"}) {
+  for (const char* key : {"length", "pivot_distance", "pivot_position", "amplitude", "timing"}) {
     PENDULUM_FAIL_IF(top.has(key), key,
                      "got both observations and a top-level " + std::string(key) +
                          "; expected the observations to hold every length, amplitude and timing");
@@ -66,16 +85,16 @@ void read_series(Object& top, ParsedScene& out) {
 }
 
 /// "fit": the unknowns besides g, by the period model's parameter names.
+template <class Model>
 void read_fit(Object& top, ParsedScene& out) {
   const json& list = top.at("fit");
   std::string names;
-  for (const auto& p : SimplePendulum::kParameterInfo) names += (names.empty() ? "" : ", ") + std::string(p.name);
+  for (const auto& p : Model::kParameterInfo) names += (names.empty() ? "" : ", ") + std::string(p.name);
   PENDULUM_FAIL_IF(!list.is_array(), "fit", "got " + shown(list) + "; expected an array of unknowns from: " + names);
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string path = "fit[" + std::to_string(i) + "]";
     const json& name = list[i];
-    const bool known = name.is_string() && std::any_of(SimplePendulum::kParameterInfo.begin(),
-                                                       SimplePendulum::kParameterInfo.end(),
+    const bool known = name.is_string() && std::any_of(Model::kParameterInfo.begin(), Model::kParameterInfo.end(),
                                                        [&](const ParameterInfo& p) { return name == p.name; });
     PENDULUM_FAIL_IF(!known, path, "got " + shown(name) + "; expected one of the unknowns: " + names);
     PENDULUM_FAIL_IF(std::find(out.fit.begin(), out.fit.end(), name.get<std::string>()) != out.fit.end(), path,
@@ -108,6 +127,13 @@ void refer_lengths_to_centre(ParsedScene& out) {
                               (sign > 0 ? "top" : "bottom") + " of the bob; its radius " +
                               format_number(radius * 1e3, 4) + " mm is " + (sign > 0 ? "added" : "subtracted"));
   }
+}
+
+/// ", a and b" or " and a": the unknowns besides g, for a message.
+std::string unknown_names(const std::vector<std::string>& fit) {
+  std::string out;
+  for (std::size_t i = 0; i < fit.size(); ++i) out += (i + 1 == fit.size() ? " and " : ", ") + fit[i];
+  return out;
 }
 
 /// The parts against every observation's length.
@@ -168,16 +194,18 @@ ParsedScene parse_scene(const std::string& text) {
   read_parts(top, out);
   if (top.has("decay")) read_decay(top, out);
   if (top.has("site")) read_site(top, out);
-  if (top.has("fit")) read_fit(top, out);
+  const bool physical = out.model == PeriodModelKind::physical_pendulum;
+  if (top.has("fit")) physical ? read_fit<PhysicalPendulum>(top, out) : read_fit<SimplePendulum>(top, out);
+  if (physical) read_physical(top, out);
   top.finish();
   const std::size_t unknowns = out.fit.size() + 1;
   PENDULUM_FAIL_IF(out.observations.size() < unknowns, out.series ? "observations" : "fit",
                    "got " + std::to_string(out.observations.size()) + " observation" +
                        (out.observations.size() == 1 ? "" : "s") + " for " + std::to_string(unknowns) +
-                       " unknowns (g and " + out.fit.front() + "); expected at least as many observations "
+                       " unknowns (g" + unknown_names(out.fit) + "); expected at least as many observations "
                        "as unknowns");
   refer_lengths_to_centre(out);
-  check_geometry(out);
+  if (!physical) check_geometry(out);
   check_plausibility(out);
   return out;
 }

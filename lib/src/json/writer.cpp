@@ -198,7 +198,7 @@ json fit_json(const ParsedScene& scene, const Analysis& a) {
     const auto& u = scene.observation_uncertainties[k];
     observations.push_back(
         {{"index", k},
-         {"length", measured(ValueWithUncertainty{o.length, u.length}, "m")},
+         {setting_key(scene.observations[k].setting), measured(ValueWithUncertainty{o.length, u.length}, "m")},
          {"amplitude", measured(ValueWithUncertainty{o.amplitude, u.amplitude}, "rad")},
          {"period",
           {{"measured", measured(o.period_measured, "s")},
@@ -216,19 +216,43 @@ json fit_json(const ParsedScene& scene, const Analysis& a) {
                                                           : "T^2 = (4 pi^2 / g) L, no corrections"},
                    {"g", measured(f.textbook.g, "m/s^2")}};
   if (f.textbook.length_offset) textbook["length_offset"] = measured(*f.textbook.length_offset, "m");
-  return {{"model", "simple_pendulum"},
-          {"method", f.method},
-          {"parameters", parameters},
-          {"correlation", {{"parameters", names}, {"matrix", matrix.empty() ? json(nullptr) : matrix}}},
-          {"chi2", f.chi2},
-          {"dof", f.dof},
-          {"reduced_chi2", f.dof > 0 ? json(f.chi2 / f.dof) : json(nullptr)},
-          {"probability", optional_number(f.probability)},
-          {"converged", f.converged},
-          {"termination", f.termination},
-          {"iterations", f.iterations},
-          {"observations", observations},
-          {"textbook", textbook}};
+  if (f.pivot_scan) {
+    for (std::size_t k = 0; k < observations.size(); ++k) {
+      const PivotScan::Conjugate& c = f.pivot_scan->conjugates[k];
+      json conjugate = {{"equivalent_length", measured(c.equivalent_length, "m")},
+                        {"pivot_distance", measured(c.pivot_distance, "m")}};
+      if (c.pivot_position) conjugate["pivot_position"] = measured(*c.pivot_position, "m");
+      observations[k]["conjugate_pivot"] = conjugate;
+    }
+  }
+  json out = {{"model", f.model},
+              {"method", f.method},
+              {"parameters", parameters},
+              {"correlation", {{"parameters", names}, {"matrix", matrix.empty() ? json(nullptr) : matrix}}},
+              {"chi2", f.chi2},
+              {"dof", f.dof},
+              {"reduced_chi2", f.dof > 0 ? json(f.chi2 / f.dof) : json(nullptr)},
+              {"probability", optional_number(f.probability)},
+              {"converged", f.converged},
+              {"termination", f.termination},
+              {"iterations", f.iterations},
+              {"observations", observations}};
+  if (!f.pivot_scan) {
+    out["textbook"] = textbook;
+    return out;
+  }
+  const PivotScan& scan = *f.pivot_scan;
+  json positions = json::array();
+  for (const auto& x : scan.minimum_pivot_positions) positions.push_back(measured(x, "m"));
+  out["pivot_scan"] = {{"equation", "T0 = 2 pi sqrt((k^2 + h^2)/(g h)), Kelley (1993) Eqs. (55)-(56)"},
+                       {"minimum", {{"period", measured(scan.minimum_period, "s")},
+                                    {"pivot_distance", measured(scan.minimum_pivot_distance, "m")},
+                                    {"pivot_positions", positions}}},
+                       {"bessel_g_m_s2", optional_number(scan.bessel_g)},
+                       {"from_parts", {{"radius_of_gyration_m", optional_number(scan.parts_radius_of_gyration)},
+                                       {"center_of_mass_position_m",
+                                        optional_number(scan.parts_center_of_mass_position)}}}};
+  return out;
 }
 
 json warnings_json(const ParsedScene& scene, const Analysis& a) {
@@ -254,7 +278,7 @@ std::string result_json(const ParsedScene& scene, const Analysis& a, const Analy
   } else {
     const ObservationResult& o = a.observations.front();
     out["g"] = g_json(a);
-    out["g_uncorrected"] = measured(a.fit.textbook.g, "m/s^2");
+    if (!a.fit.pivot_scan) out["g_uncorrected"] = measured(a.fit.textbook.g, "m/s^2");
     out["period"] = {{"measured", measured(o.period_measured, "s")},
                      {"ideal", measured(o.period_ideal, "s")},
                      {"trials", o.trials},
@@ -488,7 +512,9 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     std::snprintf(line, sizeof line, "Ideal period T0     = %.6f %s s\n", o.period_ideal.value,
                   plus_minus(o.period_ideal.uncertainty, "%.6f").c_str());
     os << line;
-    os << "g (uncorrected)     = " << rounded(a.fit.textbook.g.value, a.fit.textbook.g.uncertainty) << " m/s^2\n";
+    if (!a.fit.pivot_scan) {
+      os << "g (uncorrected)     = " << rounded(a.fit.textbook.g.value, a.fit.textbook.g.uncertainty) << " m/s^2\n";
+    }
   } else {
     std::snprintf(line, sizeof line, "%5s %9s %12s %12s %10s %12s %9s %12s\n", "obs", "L (m)", "theta0 (deg)",
                   "T meas (s)", "+- (s)", "T model (s)", "resid (sd)", "T-T0 (us)");
@@ -512,16 +538,27 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
                     a.fit.chi2 / a.fit.dof, a.fit.probability.value_or(0.0));
       os << line;
     }
-    const TextbookFit& t = a.fit.textbook;
-    std::snprintf(line, sizeof line, "Textbook line T^2 = (4 pi^2/g)%s, no corrections: g = %.5f %s m/s^2",
-                  t.length_offset ? "(L + offset)" : " L", t.g.value, plus_minus(t.g.uncertainty, "%.5f").c_str());
-    os << line;
-    if (t.length_offset) {
-      std::snprintf(line, sizeof line, ", offset = %.5f %s m", t.length_offset->value,
-                    plus_minus(t.length_offset->uncertainty, "%.5f").c_str());
+    if (a.fit.pivot_scan) {
+      const PivotScan& scan = *a.fit.pivot_scan;
+      std::snprintf(line, sizeof line, "Minimum period T0   = %.6f %s s at h = k = %.5f m\n", scan.minimum_period.value,
+                    plus_minus(scan.minimum_period.uncertainty, "%.6f").c_str(), scan.minimum_pivot_distance.value);
       os << line;
+      if (scan.bessel_g) {
+        std::snprintf(line, sizeof line, "Bessel's formula    : g = %.8f m/s^2\n", *scan.bessel_g);
+        os << line;
+      }
+    } else {
+      const TextbookFit& t = a.fit.textbook;
+      std::snprintf(line, sizeof line, "Textbook line T^2 = (4 pi^2/g)%s, no corrections: g = %.5f %s m/s^2",
+                    t.length_offset ? "(L + offset)" : " L", t.g.value, plus_minus(t.g.uncertainty, "%.5f").c_str());
+      os << line;
+      if (t.length_offset) {
+        std::snprintf(line, sizeof line, ", offset = %.5f %s m", t.length_offset->value,
+                      plus_minus(t.length_offset->uncertainty, "%.5f").c_str());
+        os << line;
+      }
+      os << "\n";
     }
-    os << "\n";
   }
   os << "g                   = " << rounded(a.g.value, a.g.uncertainty) << " m/s^2";
   if (a.g_period_and_length_uncertainty) {

@@ -13,6 +13,7 @@
 namespace pendulum {
 
 struct SimplePendulum {
+  static constexpr const char* kName = "simple_pendulum";
   static constexpr int kParameters = 2;
   enum Parameter { g, length_offset };
   static constexpr std::array<ParameterInfo, kParameters> kParameterInfo{{

@@ -1,0 +1,195 @@
+#pragma once
+/// \file models/physical_pendulum.hpp
+/// \brief The period model of a rigid body swinging about pivots along its
+/// axis (a metre stick, a bar with holes, Kater's reversible pendulum):
+/// T0 = 2 pi sqrt((k^2 + h^2)/(g h)) (Kelley 1993, Eqs. 55-56), times the
+/// finite-amplitude factor, the air's buoyancy and the damping rows, with
+/// g, the radius of gyration k and the centre of mass's position as its
+/// parameters (docs/physical.md).
+
+#include <array>
+#include <cmath>
+
+#include "pendulum/air.hpp"
+#include "pendulum/bodies.hpp"
+#include "pendulum/corrections.hpp"
+#include "pendulum/period_model.hpp"
+
+namespace pendulum {
+
+/// The lowest period of a body of radius of gyration k (m) in gravity g
+/// (m/s^2): T0 = 2 pi sqrt(2k/g) (s), at the pivot distance h = k, where
+/// d/dh (k^2 + h^2)/h = 0 (Kelley Eq. 55).
+template <class T>
+T minimum_period(const T& g, const T& k) {
+  using std::sqrt;
+  return 2.0 * kPi * sqrt(2.0 * k / g);
+}
+
+/// The pivot distance (m) with the same period as h (m), k the radius of
+/// gyration (m): h' = k^2/h, since (k^2 + h^2)/h is symmetric under
+/// h -> k^2/h; hung on the other side of the centre at h', the body is
+/// Kater's reversible pendulum, the pivots l = h + h' apart.
+template <class T>
+T conjugate_pivot_distance(const T& k, const T& h) {
+  return k * k / h;
+}
+
+/// Bessel's formula for Kater's reversible pendulum: g (m/s^2) from the
+/// periods T1, T2 (s) about two pivots on opposite sides of the centre of
+/// mass at distances h1, h2 (m) from it:
+///   g = 8 pi^2 / [(T1^2 + T2^2)/(h1 + h2) + (T1^2 - T2^2)/(h1 - h2)].
+/// h1 + h2 is the pivots' separation, measured precisely; h1 - h2 needs the
+/// centre only roughly, because T1^2 - T2^2 is small. Exact for the ideal
+/// periods (T^2 h = (4 pi^2/g)(k^2 + h^2) at each pivot); h1 != h2.
+/// Reference: F. W. Bessel (1828); Nelson & Olsson (1986) Sec. V.
+template <class T>
+T bessel_g(const T& t1, const T& t2, const T& h1, const T& h2) {
+  return 8.0 * kPi * kPi / ((t1 * t1 + t2 * t2) / (h1 + h2) + (t1 * t1 - t2 * t2) / (h1 - h2));
+}
+
+struct PhysicalPendulum {
+  static constexpr const char* kName = "physical_pendulum";
+  static constexpr int kParameters = 3;
+  enum Parameter { g, radius_of_gyration, center_of_mass_position };
+  static constexpr std::array<ParameterInfo, kParameters> kParameterInfo{{
+      {"g", "m/s^2", "local acceleration of gravity"},
+      {"radius_of_gyration", "m", "the body's radius of gyration about its centre of mass, k = sqrt(I_c/M)"},
+      {"center_of_mass_position", "m", "where the centre of mass is along the body, in the frame of pivot_position"},
+  }};
+  /// Starting values where the data give none (SI); the analysis starts a
+  /// scan from a linear fit instead.
+  static constexpr std::array<double, kParameters> kDefaults{{kStandardGravity, 0.1, 0.0}};
+
+  /// k (m): the body's (from its parts) when it has one, else the parameter.
+  template <class T>
+  static T gyration(const T* p, const Apparatus<T>& app) {
+    return app.body && app.body->radius_of_gyration ? *app.body->radius_of_gyration : p[radius_of_gyration];
+  }
+
+  /// h (m), the pivot to the centre of mass: the observation's pivot
+  /// distance, or its pivot position's distance from the centre (the
+  /// measured one when the scene gives it, else the parameter).
+  template <class T, class Set>
+  static T pivot_distance(const T* p, const Set& o, const Apparatus<T>& app) {
+    using std::abs;
+    if (o.setting != Setting::pivot_position) return o.length;
+    const T& center = app.body && app.body->center_of_mass_position ? *app.body->center_of_mass_position
+                                                                     : p[center_of_mass_position];
+    return abs(o.length - center);
+  }
+
+  /// Every length of the body at its temperature over the same length at the
+  /// temperature it was measured at: (1 + w C)/(1 + w C_ref), C in degC
+  /// (Kelley Eq. 41 at both); 1 without a temperature.
+  template <class T>
+  static T thermal_scale(const Apparatus<T>& app) {
+    if (!app.body || !app.body->temperature) return T(1.0);
+    const auto& b = *app.body;
+    const T celsius = *b.temperature - kZeroCelsius, reference = *b.reference_temperature - kZeroCelsius;
+    return thermal_length(T(1.0), *b.expansion_coefficient, celsius) /
+           thermal_length(T(1.0), *b.expansion_coefficient, reference);  // Eq. (41)
+  }
+
+  /// l = (k^2 + h^2)/h (Kelley Eq. 55) at the body's temperature (m), for
+  /// an observation or its swing (whatever has `length` and `setting`).
+  template <class T, class Set>
+  static T equivalent(const T* p, const Set& o, const Apparatus<T>& app) {
+    return thermal_scale(app) * equivalent_length(gyration(p, app), pivot_distance(p, o, app));  // Eq. (55)
+  }
+
+  /// The period at parameters p = (g (m/s^2), k (m), x_c (m)):
+  /// T0 = 2 pi sqrt(l/g) with l = (k^2 + h^2)/h (Eqs. 55-56), times T/T0 of
+  /// the corrections that hold for any rigid body: the finite amplitude
+  /// (Eq. 56's K), the damping rows (a decay record), and the buoyancy of
+  /// a body whose mass and volume are known, m_air/(2M) (Nelson & Olsson
+  /// Eq. 16, exact for a uniform body, whose centre of buoyancy is its centre
+  /// of mass). The ball pendulum's rows (bob, ring, cap, wire, added mass of
+  /// a sphere, support) are skipped: the body's moment of inertia holds its
+  /// mass distribution.
+  template <class T>
+  static PeriodPrediction<T> predict(const T* p, const Observation<T>& o, const Apparatus<T>& app,
+                                     const AmplitudeChoice& amplitude) {
+    const Swing<T> s = swing_of(p, swing(o), app);
+    PeriodPrediction<T> out;
+    out.terms = correction_terms(app, s, amplitude);
+    auto& buoyancy_term = out.terms[static_cast<int>(CorrectionId::buoyancy)];
+    auto& added_mass_term = out.terms[static_cast<int>(CorrectionId::added_mass)];
+    if (const auto r = body_buoyancy(app)) {
+      buoyancy_term.ratio = *r;
+      buoyancy_term.method = "eq16_body";
+      buoyancy_term.skip_reason = "";
+      added_mass_term.skip_reason = "Eqs. (54)-(62) are for a sphere; the body's added mass is not modelled";
+    } else if (app.air) {
+      buoyancy_term.skip_reason = added_mass_term.skip_reason =
+          "needs the body's mass and volume (a body given in parts with densities)";
+    }
+    out.composition = compose(out.terms);
+    out.ideal = ideal_period(p, o, app);
+    out.period = out.ideal * (1.0 + out.composition.total);
+    return out;
+  }
+
+  /// The part of an observation's swing that no parameter changes (the
+  /// setting as measured, the working frequency, the timing's duration):
+  /// a fit may compute it once per observation.
+  template <class T>
+  static Swing<T> swing(const Observation<T>& o) {
+    return Swing<T>::of(o, T(0.0));
+  }
+
+  /// predict()'s period alone, without the rows: the fit's residuals, from
+  /// the observation or from its swing().
+  template <class T>
+  static T period(const T* p, const Observation<T>& o, const Apparatus<T>& app, const AmplitudeChoice& amplitude) {
+    return period(p, swing(o), app, amplitude);
+  }
+  template <class T>
+  static T period(const T* p, const Swing<T>& measured, const Apparatus<T>& app, const AmplitudeChoice& amplitude) {
+    using std::sqrt;
+    const Swing<T> s = swing_of(p, measured, app);
+    Composition<T> c = compose(app, s, amplitude);
+    if (const auto r = body_buoyancy(app)) c.others += *r;
+    return 2.0 * kPi * sqrt(s.length / p[g]) * (1.0 + c.amplitude + c.others + c.amplitude * c.others);  // Eq. (56)
+  }
+
+  /// T0 = 2 pi sqrt(l/g) (Eq. 56 without K).
+  template <class T>
+  static T ideal_period(const T* p, const Observation<T>& o, const Apparatus<T>& app) {
+    using std::sqrt;
+    return 2.0 * kPi * sqrt(equivalent(p, o, app) / p[g]);  // Eq. (56)
+  }
+
+  /// The closed form for one observation with g the only unknown:
+  /// g = 4 pi^2 l (T/T0)^2 / T^2. The corrections do not depend on g, so T
+  /// is g^(-1/2) times the rest, and g = (T at g = 1 / T)^2.
+  template <class T>
+  static T solve_g(const T* p, const Observation<T>& o, const Apparatus<T>& app, const AmplitudeChoice& amplitude) {
+    T unit[kParameters] = {T(1.0), p[radius_of_gyration], p[center_of_mass_position]};
+    const T ratio = period(unit, o, app, amplitude) / o.period;
+    return ratio * ratio;
+  }
+
+ private:
+  static constexpr double kZeroCelsius = 273.15;  // K
+
+  /// The swing the corrections act on: the measured one with its setting
+  /// made the equivalent length.
+  template <class T>
+  static Swing<T> swing_of(const T* p, const Swing<T>& measured, const Apparatus<T>& app) {
+    Swing<T> s = measured;
+    s.length = equivalent(p, measured, app);
+    s.setting = Setting::length;
+    return s;
+  }
+
+  /// m_air/(2M) for a body of known mass and volume in air (Eq. 16).
+  template <class T>
+  static std::optional<T> body_buoyancy(const Apparatus<T>& app) {
+    if (!app.air || !app.body || !app.body->mass || !app.body->volume) return std::nullopt;
+    const T rho = air_density(app.air->pressure, app.air->temperature, app.air->molar_mass);
+    return buoyancy(T(rho * *app.body->volume), *app.body->mass);  // Eq. (16)
+  }
+};
+
+}  // namespace pendulum

@@ -1,0 +1,279 @@
+// The physical pendulum's period model (models/physical_pendulum.hpp) through
+// the core's fit: pivot scans and Kater's reversible pendulum, on synthetic
+// scenes drawn from the model (pivot_scan_simulation.hpp).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+
+#include "pendulum/analysis.hpp"
+#include "pendulum/pivot_scan_simulation.hpp"
+#include "pendulum/scene_json.hpp"
+#include "reference.hpp"
+#include "scene_files.hpp"
+
+using namespace pendulum;
+using Catch::Matchers::Contains;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+namespace {
+
+const ParameterResult& parameter(const Analysis& a, const std::string& name) {
+  for (const auto& p : a.fit.parameters) {
+    if (name == p.name) return p;
+  }
+  throw std::logic_error("no parameter " + name);
+}
+
+AnalysisOptions exact() {
+  AnalysisOptions options;
+  options.reduction.amplitude_method = AmplitudeMethod::agm;
+  return options;
+}
+
+/// A metre stick (1 m by 28 mm, k = sqrt((L^2 + w^2)/12) = 0.28890 m) hung
+/// at 18 holes 5 cm apart, 5 deg, a stopwatch's 0.5 ms on each mean period,
+/// 0.5 mm on each position, 0.5 deg on each amplitude.
+PivotScanSimulation metre_stick(std::uint64_t seed) {
+  PivotScanSimulation sim;
+  sim.g = 9.8034;
+  sim.radius_of_gyration = std::sqrt(box(1.0, 0.028, 0.006).gyration_squared);
+  sim.center_of_mass_position = 0.5003;
+  for (int i = 1; i <= 19; ++i) {
+    if (i != 10) sim.pivot_positions.push_back(0.05 * i);
+  }
+  sim.amplitudes.assign(sim.pivot_positions.size(), 5.0 * test::kDegree);
+  sim.period_sigma = 5e-4;
+  sim.position_sigma = 5e-4;
+  sim.amplitude_sigma = 0.5 * test::kDegree;
+  sim.seed = seed;
+  return sim;
+}
+
+/// Kater's pendulum: k = 0.28 m, one pivot 0.25 m above the centre, the
+/// other below it; the centre located to 1 mm (balanced on an edge), the
+/// periods to 10 us, 2 deg.
+PivotScanSimulation kater(double second_pivot, std::uint64_t seed) {
+  PivotScanSimulation sim;
+  sim.g = 9.80123;
+  sim.radius_of_gyration = 0.28;
+  sim.center_of_mass_position = 0.5;
+  sim.pivot_positions = {0.25, second_pivot};
+  sim.amplitudes = {2.0 * test::kDegree, 2.0 * test::kDegree};
+  sim.period_sigma = 1e-5;
+  sim.position_sigma = 2e-5;
+  sim.amplitude_sigma = 0.1 * test::kDegree;
+  sim.center_sigma = 0.001;
+  sim.seed = seed;
+  return sim;
+}
+
+}  // namespace
+
+TEST_CASE("Pivot scan: a noiseless metre stick gives back g, k and the centre", "[physical]") {
+  PivotScanSimulation sim = metre_stick(1);
+  sim.noise = false;
+  const Analysis a = analyse(simulate_pivot_scan({}, sim), exact());
+  INFO(a.fit.termination);
+  CHECK(a.fit.converged);
+  CHECK(a.fit.model == std::string("physical_pendulum"));
+  CHECK_THAT(a.g.value, WithinRel(sim.g, 1e-12));
+  CHECK_THAT(parameter(a, "radius_of_gyration").value, WithinAbs(sim.radius_of_gyration, 1e-12));
+  CHECK_THAT(parameter(a, "center_of_mass_position").value, WithinAbs(sim.center_of_mass_position, 1e-12));
+  // The curve's minimum is 2 pi sqrt(2k/g) at h = k (d/dh (k^2 + h^2)/h = 0).
+  REQUIRE(a.fit.pivot_scan);
+  const PivotScan& scan = *a.fit.pivot_scan;
+  CHECK_THAT(scan.minimum_period.value,
+             WithinRel(2 * kPi * std::sqrt(2 * sim.radius_of_gyration / sim.g), 1e-12));
+  REQUIRE(scan.minimum_pivot_positions.size() == 2);
+  CHECK_THAT(scan.minimum_pivot_positions[1].value,
+             WithinAbs(sim.center_of_mass_position + sim.radius_of_gyration, 1e-12));
+  // Each pivot's conjugate has its period: 2 pi sqrt(l/g) at h' = k^2/h
+  // from the body (bodies.hpp) equals the observation's ideal period.
+  const double h0 = sim.center_of_mass_position - sim.pivot_positions[0];
+  const double conjugate = sim.radius_of_gyration * sim.radius_of_gyration / h0;
+  CHECK_THAT(scan.conjugates[0].pivot_distance.value, WithinRel(conjugate, 1e-11));
+  CHECK_THAT(scan.conjugates[0].pivot_position->value, WithinAbs(sim.center_of_mass_position + conjugate, 1e-11));
+  CHECK_THAT(2 * kPi * std::sqrt(equivalent_length(sim.radius_of_gyration, conjugate) / sim.g),
+             WithinRel(a.observations[0].period_ideal.value, 1e-12));
+  CHECK_THAT(scan.conjugates[0].equivalent_length.value, WithinRel(h0 + conjugate, 1e-11));
+}
+
+TEST_CASE("Kater: the generic fit and Bessel's formula agree to 1e-12", "[physical][kater]") {
+  // The second pivot at the first's conjugate, k^2/h1 = 0.3136 m below the
+  // centre: equal periods but for the noise; the centre recorded off by
+  // N(0, 1 mm).
+  const ParsedScene scene = simulate_pivot_scan({}, kater(0.8136, 3));
+  const Analysis a = analyse(scene, exact());
+  CHECK(a.fit.converged);
+  // Bessel on the ideal periods: the measured ones over 2K(sin(A/2))/pi,
+  // with K from std::comp_ellint_1 (modulus k), and the recorded centre.
+  const double center = *scene.apparatus.body->center_of_mass_position;
+  auto ideal = [&](int i) {
+    const auto& o = scene.observations[i];
+    return o.period * kPi / (2 * std::comp_ellint_1(std::sin(o.amplitude / 2)));
+  };
+  const double t1 = ideal(0), t2 = ideal(1);
+  const double h1 = center - scene.observations[0].length, h2 = scene.observations[1].length - center;
+  const double bessel = 8 * kPi * kPi / ((t1 * t1 + t2 * t2) / (h1 + h2) + (t1 * t1 - t2 * t2) / (h1 - h2));
+  CHECK_THAT(a.g.value, WithinRel(bessel, 1e-12));
+  REQUIRE(a.fit.pivot_scan->bessel_g);
+  CHECK_THAT(*a.fit.pivot_scan->bessel_g, WithinRel(bessel, 1e-12));
+  // Why the method works: the rough centre's sensitivity is Bessel's
+  // derivative, dg/dx_c = 2 g^2 (T1^2 - T2^2) / (8 pi^2 (h1 - h2)^2), which
+  // T1 ~ T2 makes small.
+  const double dgdx = 2 * bessel * bessel * (t1 * t1 - t2 * t2) / (8 * kPi * kPi * (h1 - h2) * (h1 - h2));
+  bool found = false;
+  for (const auto& b : a.budget) {
+    if (b.input != "center_of_mass_position") continue;
+    found = true;
+    CHECK_THAT(b.sensitivity, WithinRel(dgdx, 1e-6));
+  }
+  CHECK(found);
+  for (const auto& w : a.warnings) CHECK_THAT(w, !Contains("kater:"));
+}
+
+TEST_CASE("Kater: a warning when T1 and T2 are too far apart", "[physical][kater]") {
+  // h2 = 0.45 m against the conjugate 0.3136 m: T1^2 - T2^2 no longer small.
+  const Analysis a = analyse(simulate_pivot_scan({}, kater(0.95, 3)), exact());
+  bool warned = false;
+  for (const auto& w : a.warnings) warned = warned || w.find("kater: the periods differ") != std::string::npos;
+  CHECK(warned);
+  CHECK(a.budget.front().input == "center_of_mass_position");
+}
+
+TEST_CASE("Pivot scans: +-1 sigma holds the truth 68% of the time", "[physical][coverage]") {
+  // 400 scans (seeds 1000-1399). If the propagated uncertainties are right,
+  // each count inside +-1 sigma is Binomial(400, 0.6827): mean 273.1,
+  // standard deviation 9.3; the test allows 3.5 standard deviations. The
+  // mean chi2 is dof = 15 with a standard error of sqrt(2 dof / 400) = 0.27.
+  const int n = 400;
+  int g_in = 0, k_in = 0, c_in = 0;
+  double chi2 = 0.0;
+  for (int s = 0; s < n; ++s) {
+    const PivotScanSimulation sim = metre_stick(1000 + s);
+    const Analysis a = analyse(simulate_pivot_scan({}, sim));
+    REQUIRE(a.fit.converged);
+    g_in += std::abs(a.g.value - sim.g) <= *a.g.uncertainty;
+    const ParameterResult& k = parameter(a, "radius_of_gyration");
+    k_in += std::abs(k.value - sim.radius_of_gyration) <= *k.uncertainty;
+    const ParameterResult& c = parameter(a, "center_of_mass_position");
+    c_in += std::abs(c.value - sim.center_of_mass_position) <= *c.uncertainty;
+    chi2 += a.fit.chi2 / n;
+  }
+  INFO("g " << g_in << ", k " << k_in << ", centre " << c_in << " of " << n << "; mean chi2 " << chi2);
+  CHECK(std::abs(g_in - 273.1) <= 3.5 * 9.3);
+  CHECK(std::abs(k_in - 273.1) <= 3.5 * 9.3);
+  CHECK(std::abs(c_in - 273.1) <= 3.5 * 9.3);
+  CHECK_THAT(chi2, WithinAbs(15.0, 5 * 0.27));
+}
+
+TEST_CASE("The bundled physical scenes are what their generator writes, and give back their truth",
+          "[physical][data]") {
+  for (const std::string name : {"metre_stick", "kater"}) {
+    const std::string file_name = name == "kater" ? "kater_reversible_pendulum.json" : "metre_stick_pivot_scan.json";
+    int status = 0;
+    const std::string text = test::command_output(std::string(PENDULUM_MAKE_PHYSICAL_SCENES) + " " + name, status);
+    REQUIRE(status == 0);
+    // Trials are rounded; another libm may move one by a unit, so the scenes
+    // are compared as read.
+    const ParsedScene generated = parse_scene(text);
+    const ParsedScene file = parse_scene(test::read_text(std::string(PENDULUM_DATA_DIR) + "/" + file_name));
+    REQUIRE(generated.observations.size() == file.observations.size());
+    for (std::size_t k = 0; k < file.observations.size(); ++k) {
+      const double unit = name == "kater" ? 1e-4 / 50 / 3 : 0.01 / 10 / 5;
+      CHECK_THAT(file.observations[k].period, WithinAbs(generated.observations[k].period, unit + 1e-12));
+      CHECK(file.observations[k].length == generated.observations[k].length);
+    }
+    // The truth: the site's normal gravity within 3 of the fit's standard
+    // uncertainties; the metre stick's k and centre those of its parts.
+    const Analysis a = analyse(file);
+    INFO(name);
+    REQUIRE(a.expected_g);
+    CHECK(std::abs(a.g.value - a.expected_g->value) < 3 * *a.g.uncertainty);
+    if (name == "metre_stick") {
+      const ParameterResult& k = parameter(a, "radius_of_gyration");
+      CHECK(std::abs(k.value - *file.body_from_parts->radius_of_gyration) < 3 * *k.uncertainty);
+    } else {
+      REQUIRE(a.fit.pivot_scan->bessel_g);
+      CHECK_THAT(*a.fit.pivot_scan->bessel_g, WithinRel(a.g.value, 1e-12));
+    }
+  }
+}
+
+namespace {
+
+/// A brass-weighted steel rod as a scene of one pivot: the body in parts,
+/// k and the centre from them, the closed form of one observation.
+std::string rod_scene(const std::string& extra) {
+  return R"({
+    "pivot_position": {"value": 0.05, "uncertainty": 0.0002, "unit": "m"},
+    "amplitude": {"value": 3, "uncertainty": 0.5, "unit": "deg"},
+    "timing": {"oscillations_per_trial": 20, "unit": "s", "resolution": 0.01, "trials": [37.58, 37.6, 37.59]},
+    "body": {"parts": [
+      {"shape": "cylinder", "radius": {"value": 6, "unit": "mm"}, "length": {"value": 1.2, "unit": "m"},
+       "axis": "body", "density": {"value": 7850, "unit": "kg/m^3"}, "position": {"value": 0.6, "unit": "m"}},
+      {"shape": "cylinder", "radius": {"value": 30, "unit": "mm"}, "inner_radius": {"value": 6, "unit": "mm"},
+       "length": {"value": 40, "unit": "mm"}, "axis": "body", "density": {"value": 8.5, "unit": "g/cm^3"},
+       "position": {"value": 1.0, "unit": "m"}}]})" +
+         extra + "}";
+}
+
+}  // namespace
+
+TEST_CASE("One pivot of a body in parts: the closed form is Eq. (56) solved for g", "[physical]") {
+  const ParsedScene scene = parse_scene(rod_scene(""));
+  CHECK(scene.model == PeriodModelKind::physical_pendulum);
+  const Analysis a = analyse(scene, exact());
+  CHECK(a.fit.method == "closed_form");
+  // Independently: the body's k and centre (bodies.hpp), then
+  // g = 4 pi^2 l (2K/pi)^2 / T^2 with K from std::comp_ellint_1.
+  const double steel = 7850 * kPi * 0.006 * 0.006 * 1.2, brass = 8500 * kPi * (0.03 * 0.03 - 0.006 * 0.006) * 0.04;
+  const auto b = body_properties(std::vector<Part<double>>{
+      make_part(cylinder(0.006, 0.0, 1.2, CylinderAxis::body_axis), steel, 0.6),
+      make_part(cylinder(0.03, 0.006, 0.04, CylinderAxis::body_axis), brass, 1.0)});
+  const double T = (37.58 + 37.6 + 37.59) / 3 / 20, A = 3 * test::kDegree;
+  const double factor = 2 * std::comp_ellint_1(std::sin(A / 2)) / kPi;
+  const double l = equivalent_length(b.radius_of_gyration, b.center - 0.05);
+  CHECK_THAT(a.g.value, WithinRel(4 * kPi * kPi * l * factor * factor / (T * T), 1e-13));
+}
+
+TEST_CASE("Temperature: every length of the body scales by (1 + w C)/(1 + w C_ref), Eq. (41)", "[physical]") {
+  // The same swing read at 20 degC and at 35 degC of a steel body (Kelley's
+  // table, 1.1e-5 /K): l and so g grow by (1 + 35 w)/(1 + 20 w).
+  const Analysis cold = analyse(parse_scene(rod_scene(
+      R"(, "temperature": {"value": 20, "unit": "degC"}, "reference_temperature": {"value": 20, "unit": "degC"},
+          "material": "steel")")), exact());
+  const Analysis warm = analyse(parse_scene(rod_scene(
+      R"(, "temperature": {"value": 35, "uncertainty": 0.5, "unit": "degC"},
+          "reference_temperature": {"value": 20, "unit": "degC"}, "material": "steel")")), exact());
+  const double w = 1.1e-5;
+  CHECK_THAT(warm.g.value / cold.g.value, WithinRel((1 + 35 * w) / (1 + 20 * w), 1e-14));
+  // The temperature's share of g: dg/dC = g w/(1 + w C) (K = degC steps).
+  bool found = false;
+  for (const auto& e : warm.budget) {
+    if (e.input != "temperature") continue;
+    found = true;
+    CHECK_THAT(e.sensitivity, WithinRel(warm.g.value * w / (1 + 35 * w), 1e-9));
+    CHECK(e.uncertainty == 0.5);
+  }
+  CHECK(found);
+}
+
+TEST_CASE("Pivot scan of a body in parts, k held and the centre fitted, gives back g", "[physical]") {
+  // The metre stick's k as its parts give it (held), its centre fitted; the
+  // start's line then runs through the origin in k^2 + h^2.
+  PivotScanSimulation sim = metre_stick(5);
+  sim.noise = false;
+  Apparatus<double> app;
+  app.body.emplace().radius_of_gyration = sim.radius_of_gyration;
+  ParsedScene scene = simulate_pivot_scan(app, sim);
+  scene.apparatus_uncertainty.body->radius_of_gyration = 0.0;
+  scene.fit = {"center_of_mass_position"};
+  const Analysis a = analyse(scene, exact());
+  CHECK(a.fit.converged);
+  CHECK_THAT(a.g.value, WithinRel(sim.g, 1e-12));
+  CHECK_THAT(parameter(a, "center_of_mass_position").value, WithinAbs(sim.center_of_mass_position, 1e-12));
+  CHECK_FALSE(parameter(a, "radius_of_gyration").fitted);
+}

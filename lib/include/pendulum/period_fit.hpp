@@ -2,9 +2,10 @@
 /// \file period_fit.hpp
 /// \brief One Ceres fit of any period model (period_model.hpp) to any number
 /// of observations: weighted least squares of the periods, with automatic
-/// derivatives. The uncertainties are the analysis's (analysis.hpp), which
-/// propagates every input through the fit's optimum and forms (J^T J)^-1
-/// from the same Jacobian (what ceres::Covariance would compute again).
+/// derivatives. g is projected out (every model's period is g^-1/2 times a
+/// function of its other parameters), so Ceres varies the others alone
+/// (docs/core.md). The uncertainties are the analysis's (analysis.hpp), which
+/// propagates every input through the fit's optimum.
 
 #include <array>
 #include <string>
@@ -26,7 +27,7 @@ struct PeriodFitProblem {
   const std::vector<AmplitudeChoice>* amplitude;  ///< one per observation
   /// 1 / (the period's standard uncertainty) of each observation (1/s).
   const std::vector<double>* weights;
-  std::array<bool, Model::kParameters> fitted;  ///< the others are held at `initial`
+  std::array<bool, Model::kParameters> fitted;  ///< g always; the others are held at `initial`
 };
 
 struct PeriodFitSolution {
@@ -40,9 +41,11 @@ struct PeriodFitSolution {
   int iterations = 0;
 };
 
-/// Minimises sum_k [(T_model,k(p) - T_k) w_k]^2 over the fitted parameters
-/// by Levenberg-Marquardt from `initial`, to the last digits (the tests
-/// recover noiseless parameters to 1e-12).
+/// Minimises sum_k [(T_model,k(p) - T_k) w_k]^2 over the fitted parameters:
+/// g in closed form for given others, the others by Levenberg-Marquardt from
+/// `initial` (g's start is not used), until a Gauss-Newton step would remove
+/// less than 1e-14 of the residual variance (the tests recover noiseless
+/// parameters to 1e-12).
 template <class Model>
 PeriodFitSolution fit_periods(const PeriodFitProblem<Model>& problem,
                               const std::array<double, Model::kParameters>& initial);

@@ -245,6 +245,7 @@ class Fit {
     weigh();
     solution = fit_periods(problem, p_);
     std::copy(solution.parameters.begin(), solution.parameters.end(), p_.begin());
+    Model::canonicalise(p_.data());
     out_.fit.method = "ceres_levenberg_marquardt";
     out_.fit.converged = solution.converged;
     out_.fit.termination = solution.termination;
@@ -628,7 +629,11 @@ class Fit {
     using JetP = ceres::Jet<double, P>;
     const Apparatus<JetP> app = convert_apparatus<JetP>(scene_.apparatus, [](const Field&, double x) { return JetP(x); });
     PivotScan scan;
-    auto k_of = [&](const JetP* p) { return M::thermal_scale(app) * M::gyration(p, app); };
+    // Only k^2 enters the period: the fit may land on either sign of k.
+    auto k_of = [&](const JetP* p) {
+      using std::abs;
+      return M::thermal_scale(app) * abs(M::gyration(p, app));
+    };
     scan.minimum_period = derived_estimate([&](const JetP* p) { return minimum_period(p[M::g], k_of(p)); });
     scan.minimum_pivot_distance = derived_estimate(k_of);
     const auto& body = scene_.apparatus.body;
@@ -641,7 +646,10 @@ class Fit {
     if (positions) {
       for (const double side : {-1.0, 1.0}) {
         scan.minimum_pivot_positions.push_back(
-            derived_estimate([&](const JetP* p) { return center_of(p) + side * M::gyration(p, app); }));
+            derived_estimate([&](const JetP* p) {
+              using std::abs;
+              return center_of(p) + side * abs(M::gyration(p, app));
+            }));
       }
     }
     for (std::size_t k = 0; k < k_; ++k) {

@@ -5,6 +5,8 @@
 ///
 /// A period model is a struct with
 ///   kParameters, kParameterInfo, kDefaults,
+///   canonicalise(double* p): the fitted parameters in their reported form
+///       (a sign only the square of which matters),
 ///   template <class T> PeriodPrediction<T> predict(const T* p,
 ///       const Observation<T>&, const Apparatus<T>&, const AmplitudeChoice&),
 ///   template <class T> Swing<T> swing(const Observation<T>&): what of the

@@ -61,6 +61,10 @@ struct PhysicalPendulum {
   /// scan from a linear fit instead.
   static constexpr std::array<double, kParameters> kDefaults{{kStandardGravity, 0.1, 0.0}};
 
+  /// The fitted parameters in their reported form: only k^2 enters the
+  /// period, so a fit may land on either sign of k; k is reported positive.
+  static void canonicalise(double* p) { p[radius_of_gyration] = std::abs(p[radius_of_gyration]); }
+
   /// k (m): the body's (from its parts) when it has one, else the parameter.
   template <class T>
   static T gyration(const T* p, const Apparatus<T>& app) {

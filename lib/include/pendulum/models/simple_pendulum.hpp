@@ -24,6 +24,9 @@ struct SimplePendulum {
   /// Starting values where the data give none (SI).
   static constexpr std::array<double, kParameters> kDefaults{{kStandardGravity, 0.0}};
 
+  /// The fitted parameters in their reported form (already unique here).
+  static void canonicalise(double*) {}
+
   /// The period of one observation at parameters p = (g (m/s^2), length
   /// offset (m)): T0 = 2 pi sqrt(l/g) (Eq. 3) with l = length + offset, times
   /// T/T0 of the corrections (corrections.hpp, compose).

@@ -245,6 +245,13 @@ class Fit {
     weigh();
     solution = fit_periods(problem, p_);
     std::copy(solution.parameters.begin(), solution.parameters.end(), p_.begin());
+    // The model cannot reach periods this far apart (a timing of another
+    // oscillation count, a pivot misread): bad input, named as such.
+    if (!std::all_of(p_.begin(), p_.end(), [](double x) { return std::isfinite(x); })) {
+      throw InputError("observations",
+                       "got periods the model cannot fit (the fit's parameters left the finite numbers); expected "
+                       "timings of one pendulum: check each observation's timing.oscillations_per_trial and setting");
+    }
     Model::canonicalise(p_.data());
     out_.fit.method = "ceres_levenberg_marquardt";
     out_.fit.converged = solution.converged;

@@ -267,17 +267,27 @@ class Fit {
     for (int i = 0; i < P; ++i) p[i] = Dual(p_[i]);
     const Apparatus<Dual> app = convert_apparatus<Dual>(scene_.apparatus, [](const Field&, double x) { return Dual(x); });
     for (std::size_t k = 0; k < k_; ++k) {
-      double variance = 0.0;
+      double variance = 0.0, largest = 0.0;
+      std::string largest_path;
       int ordinal = 0;
       zip_observation(scene_.observations[k], scene_.observation_uncertainties[k],
-                      [&](const Field&, const double&, const double& sigma) {
+                      [&](const Field& field, const double&, const double& sigma) {
                         const int seed = ordinal++;
                         if (sigma == 0.0) return;
                         const Observation<Dual> o = convert_observation<Dual>(scene_.observations[k], Seeder{seed});
                         const double d = (Model::predict(p.data(), o, app, amplitude_[k]).period - o.period).v[0];
-                        variance += d * d * sigma * sigma;
+                        const double share = d * d * sigma * sigma;
+                        variance += share;
+                        if (!(share <= largest)) largest = share, largest_path = field.path;
                       });
       weights_[k] = 1.0 / std::sqrt(variance);
+      // An uncertainty so large that the period's effective one overflows
+      // (1e300 m on a pivot) is the input's fault: name it.
+      if (!(std::isfinite(weights_[k]) && weights_[k] > 0.0)) {
+        throw InputError(scene_.sources[k].path + largest_path + ".uncertainty",
+                         "got an uncertainty so large that the period's effective uncertainty is not a finite "
+                         "number; expected an uncertainty of a measurement");
+      }
     }
   }
 

@@ -240,24 +240,29 @@ class Fit {
     // start, then once more at the optimum.
     const PeriodFitProblem<Model> problem{&scene_.apparatus, &scene_.observations, &amplitude_, &weights_, fitted_};
     weigh();
-    PeriodFitSolution solution = fit_periods(problem, p_);
-    std::copy(solution.parameters.begin(), solution.parameters.end(), p_.begin());
-    weigh();
-    solution = fit_periods(problem, p_);
-    std::copy(solution.parameters.begin(), solution.parameters.end(), p_.begin());
-    // The model cannot reach periods this far apart (a timing of another
+    // The model cannot reach periods too far apart (a timing of another
     // oscillation count, a pivot misread): bad input, named as such.
-    if (!std::all_of(p_.begin(), p_.end(), [](double x) { return std::isfinite(x); })) {
-      throw InputError("observations",
-                       "got periods the model cannot fit (the fit's parameters left the finite numbers); expected "
-                       "timings of one pendulum: check each observation's timing.oscillations_per_trial and setting");
-    }
+    const auto fit = [&] {
+      const PeriodFitSolution solution = fit_periods(problem, p_);
+      std::copy(solution.parameters.begin(), solution.parameters.end(), p_.begin());
+      if (!std::all_of(p_.begin(), p_.end(), [](double x) { return std::isfinite(x); })) throw_cannot_fit();
+      return solution;
+    };
+    fit();
+    weigh();
+    const PeriodFitSolution solution = fit();
     Model::canonicalise(p_.data());
     out_.fit.method = "ceres_levenberg_marquardt";
     out_.fit.converged = solution.converged;
     out_.fit.termination = solution.termination;
     out_.fit.iterations = solution.iterations;
     if (!solution.converged) out_.warnings.push_back("fit: did not converge (" + solution.termination + ")");
+  }
+
+  [[noreturn]] static void throw_cannot_fit() {
+    throw InputError("observations",
+                     "got periods the model cannot fit (no finite parameters reach them); expected timings of one "
+                     "pendulum: check each observation's timing.oscillations_per_trial and setting");
   }
 
   /// w_k = 1 / sqrt(sum over the observation's inputs x of
@@ -282,7 +287,9 @@ class Fit {
                       });
       weights_[k] = 1.0 / std::sqrt(variance);
       // An uncertainty so large that the period's effective one overflows
-      // (1e300 m on a pivot) is the input's fault: name it.
+      // (1e300 m on a pivot) is the input's fault: name it. Not a number:
+      // the model has no period at these parameters.
+      if (std::isnan(variance)) throw_cannot_fit();
       if (!(std::isfinite(weights_[k]) && weights_[k] > 0.0)) {
         throw InputError(scene_.sources[k].path + largest_path + ".uncertainty",
                          "got an uncertainty so large that the period's effective uncertainty is not a finite "

@@ -52,7 +52,7 @@ Scan make_scan(int n) {
     const double x = k % 2 ? uniform(0.55, 0.98) : uniform(0.02, 0.45);
     pendulum::Observation<double> o{0.0, x, uniform(2.0, 10.0) * pendulum::kPi / 180.0, 1,
                                     pendulum::Setting::pivot_position};
-    o.period = pendulum::physical_model_period(truth, o, s.apparatus, small) + kSigma * noise.next();
+    o.period = pendulum::model_period<pendulum::PhysicalPendulum>(truth, o, s.apparatus, small) + kSigma * noise.next();
     s.observations.push_back(o);
     s.amplitude.push_back(small);
     s.weights.push_back(1.0 / kSigma);

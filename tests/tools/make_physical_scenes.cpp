@@ -70,7 +70,7 @@ void observe(json& scene, const double* p, const std::vector<double>& positions,
     const double read = std::round((x + position_sigma * noise.next()) / position_step) / std::round(1.0 / position_step);
     pendulum::Observation<double> truth{0.0, x, amplitude, oscillations, pendulum::Setting::pivot_position};
     const double period =
-        pendulum::physical_model_period(p, truth, app, pendulum::cheapest_amplitude_method(amplitude, 0.0));
+        pendulum::model_period<pendulum::PhysicalPendulum>(p, truth, app, pendulum::cheapest_amplitude_method(amplitude, 0.0));
     json times = json::array();
     for (int i = 0; i < trials; ++i) {
       times.push_back(std::round((oscillations * period + trial_sigma * noise.next()) / resolution) /

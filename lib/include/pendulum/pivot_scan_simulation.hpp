@@ -13,6 +13,7 @@
 #include "pendulum/decay_simulation.hpp"
 #include "pendulum/models/physical_pendulum.hpp"
 #include "pendulum/parsed_scene.hpp"
+#include "pendulum/series_simulation.hpp"
 
 namespace pendulum {
 
@@ -32,20 +33,6 @@ struct PivotScanSimulation {
   std::uint64_t seed;  ///< NormalDeviates seed; draws: period, position, amplitude per observation, then the centre
   bool noise = true;   ///< false: the recorded values are the true ones
 };
-
-/// The physical pendulum's period at parameters p for `o`: the fixed point
-/// T = predict(p, o with period T), since T sets only the damping rows'
-/// working frequency (observation.hpp).
-inline double physical_model_period(const double* p, Observation<double> o, const Apparatus<double>& app,
-                                    const AmplitudeChoice& amplitude) {
-  o.period = PhysicalPendulum::ideal_period(p, o, app);
-  for (int i = 0; i < 8; ++i) {
-    const double next = PhysicalPendulum::period(p, o, app, amplitude);
-    if (next == o.period) break;
-    o.period = next;
-  }
-  return o.period;
-}
 
 /// A pivot-scan scene of `app` drawn from `sim`: each period from the model
 /// at the truth (exact amplitude factor) plus N(0, period_sigma), each
@@ -71,7 +58,7 @@ inline ParsedScene simulate_pivot_scan(const Apparatus<double>& app, const Pivot
   if (truth_app.body) truth_app.body->center_of_mass_position.reset();  // the truth's centre is p's
   for (std::size_t k = 0; k < sim.pivot_positions.size(); ++k) {
     Observation<double> truth{0.0, sim.pivot_positions[k], sim.amplitudes[k], 1, Setting::pivot_position};
-    truth.period = physical_model_period(p, truth, truth_app, cheapest_amplitude_method(truth.amplitude, 0.0));
+    truth.period = model_period<PhysicalPendulum>(p, truth, truth_app, cheapest_amplitude_method(truth.amplitude, 0.0));
     Observation<double> recorded = truth;
     recorded.period += scale * sim.period_sigma * noise.next();
     recorded.length += scale * sim.position_sigma * noise.next();

@@ -29,15 +29,16 @@ struct SeriesSimulation {
   bool fit_offset = true;  ///< the scene's "fit" holds length_offset
 };
 
-/// The period the model predicts at parameters p for `o`, whose own period
+/// The period `Model` predicts at parameters p for `o`, whose own period
 /// sets the corrections' working frequency (observation.hpp): the fixed
 /// point T = predict(p, o with period T), reached to rounding in a few steps
-/// since T enters only second-order terms.
-inline double model_period(const double* p, Observation<double> o, const Apparatus<double>& app,
-                           const AmplitudeChoice& amplitude) {
-  o.period = 2.0 * kPi * std::sqrt((o.length + p[SimplePendulum::length_offset]) / p[SimplePendulum::g]);
-  for (int i = 0; i < 8; ++i) {
-    const double next = SimplePendulum::predict(p, o, app, amplitude).period;
+/// from 1 s since T enters only second-order terms.
+template <class Model = SimplePendulum>
+double model_period(const double* p, Observation<double> o, const Apparatus<double>& app,
+                    const AmplitudeChoice& amplitude) {
+  o.period = 1.0;
+  for (int i = 0; i < 16; ++i) {
+    const double next = Model::predict(p, o, app, amplitude).period;
     if (next == o.period) break;
     o.period = next;
   }

@@ -265,3 +265,79 @@ TEST_CASE("The bundled series is what its generator writes, and gives back its t
   const ParameterResult& offset = parameter(a, "length_offset");
   CHECK(std::abs(offset.value - 0.0127) < 3 * *offset.uncertainty);
 }
+
+TEST_CASE("A length measured once for every amplitude is one input of the budget", "[series][budget]") {
+  // The 1 to 170 deg sweep of one 1 m length, the length measured once to
+  // 1 mm (ObservationSource::shared): moving it moves every observation at
+  // once, so its share of g's uncertainty is dg/dL of all lengths together,
+  // here checked against central differences of refits (every length moved
+  // by +-1e-3 of its uncertainty). Noiseless, as in the test above, so that
+  // the linearisation is exact.
+  SeriesSimulation sim = lengths_series(3);
+  sim.lengths.assign(8, 1.0);
+  sim.amplitudes.clear();
+  for (double deg : {1.0, 10.0, 30.0, 60.0, 90.0, 120.0, 150.0, 170.0}) sim.amplitudes.push_back(deg * test::kDegree);
+  sim.period_sigma = 1e-4;
+  sim.length_sigma = 1e-3;
+  sim.noise = false;
+  sim.fit_offset = false;
+  sim.length_offset = 0.0;
+  const ParsedScene independent = simulate_series(nelson_olsson_apparatus(), sim);
+  ParsedScene shared = independent;
+  for (auto& s : shared.sources) s.shared = {"length"};
+  const Analysis a = analyse(shared, exact());
+
+  auto g_at = [&](double h) {
+    ParsedScene t = shared;
+    for (auto& o : t.observations) o.length += h;
+    return analyse(t, exact()).g.value;
+  };
+  const double h = 1e-3 * sim.length_sigma;
+  const double dg_dl = (g_at(h) - g_at(-h)) / (2 * h);
+  const auto row = std::find_if(a.budget.begin(), a.budget.end(), [](const auto& b) { return b.input == "length"; });
+  REQUIRE(row != a.budget.end());
+  CHECK_THAT(row->contribution, WithinRel(std::abs(dg_dl) * sim.length_sigma, 1e-6));
+  // Once, not per observation.
+  CHECK(std::none_of(a.budget.begin(), a.budget.end(),
+                     [](const auto& b) { return b.input.find("].length") != std::string::npos; }));
+  // g is nearly proportional to the length (only the bob's and ring's small
+  // corrections depend on it otherwise), so its share is g sigma_L / L to
+  // within those corrections' size (1e-3 here).
+  CHECK_THAT(row->contribution, WithinRel(sim.g * sim.length_sigma / 1.0, 1e-3));
+
+  // Treated as eight independent lengths, the same 1 mm averages down: the
+  // lengths' quadrature sum is about 1/sqrt(8) of the shared length's.
+  const Analysis apart = analyse(independent, exact());
+  double lengths = 0.0;
+  for (const auto& b : apart.budget) {
+    if (b.input.find("].length") != std::string::npos) lengths += b.contribution * b.contribution;
+  }
+  CHECK(std::sqrt(lengths) < 0.5 * row->contribution);
+  // A shared length moves every period alike: it weighs no observation, so
+  // the fit's g is the one with the lengths' uncertainties left out.
+  ParsedScene exact_lengths = independent;
+  for (auto& u : exact_lengths.observation_uncertainties) u.length = 0.0;
+  CHECK_THAT(a.g.value, WithinRel(analyse(exact_lengths, exact()).g.value, 1e-15));
+}
+
+TEST_CASE("A series may give its length or amplitude once at the top level", "[series][json]") {
+  const std::string shared = R"({
+    "length": {"value": 1.0, "uncertainty": 0.001, "unit": "m"},
+    "observations": [
+      {"amplitude": {"value": 5, "uncertainty": 0.5, "unit": "deg"},
+       "timing": {"unit": "s", "oscillations_per_trial": 10, "resolution": 0.01, "trials": [20.07, 20.08, 20.06]}},
+      {"amplitude": {"value": 60, "uncertainty": 0.5, "unit": "deg"},
+       "timing": {"unit": "s", "oscillations_per_trial": 10, "resolution": 0.01, "trials": [21.44, 21.45, 21.43]}}]})";
+  const ParsedScene scene = parse_scene(shared);
+  REQUIRE(scene.observations.size() == 2);
+  for (std::size_t k = 0; k < 2; ++k) {
+    CHECK(scene.observations[k].length == 1.0);
+    CHECK(scene.observation_uncertainties[k].length == 0.001);
+    CHECK(scene.sources[k].is_shared("length"));
+    CHECK_FALSE(scene.sources[k].is_shared("amplitude"));
+    CHECK(scene.sources[k].path_of("length.value") == "length.value");
+    CHECK(scene.sources[k].path_of("amplitude") == "observations[" + std::to_string(k) + "].amplitude");
+  }
+  const Analysis a = analyse(scene);
+  CHECK(std::count_if(a.budget.begin(), a.budget.end(), [](const auto& b) { return b.input == "length"; }) == 1);
+}

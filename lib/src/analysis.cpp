@@ -133,13 +133,14 @@ std::array<double, 3> physical_start(const ParsedScene& scene, const std::array<
 
 namespace {
 
-/// One input: a scalar of the apparatus or of one observation.
+/// One input: a scalar of the apparatus, of one observation, or given once
+/// for several observations of a series (ObservationSource::shared).
 struct Input {
   std::string path;
   const char* unit;
   double value, sigma;
-  int observation;  ///< -1: the apparatus
-  int ordinal;      ///< place in its owner's zip order
+  std::vector<std::size_t> observations;  ///< the observations it is a field of; none: the apparatus's
+  int ordinal;                            ///< place in its owner's zip order
   FieldRole role;
 };
 
@@ -278,7 +279,8 @@ class Fit {
       zip_observation(scene_.observations[k], scene_.observation_uncertainties[k],
                       [&](const Field& field, const double&, const double& sigma) {
                         const int seed = ordinal++;
-                        if (sigma == 0.0) return;
+                        // A shared input moves every period alike: no scatter.
+                        if (sigma == 0.0 || scene_.sources[k].is_shared(field.path)) return;
                         const Observation<Dual> o = convert_observation<Dual>(scene_.observations[k], Seeder{seed});
                         const double d = (Model::predict(p.data(), o, app, amplitude_[k]).period - o.period).v[0];
                         const double share = d * d * sigma * sigma;
@@ -366,17 +368,27 @@ class Fit {
       int ordinal = 0;
       zip_observation(scene_.observations[k], scene_.observation_uncertainties[k],
                       [&](const Field& f, const double& v, const double& u) {
-                        add_input(scene_.sources[k].path + f.path, f, v, u, static_cast<int>(k), ordinal++);
+                        const ObservationSource& source = scene_.sources[k];
+                        const int at = ordinal++;
+                        if (!source.is_shared(f.path)) return add_input(source.path + f.path, f, v, u, {k}, at);
+                        const int known = find_input(f.path);
+                        if (known >= 0) return inputs_[known].observations.push_back(k);
+                        // Said once, by its first observation.
+                        const auto& missing = out_.inputs_without_uncertainty;
+                        if (std::find(missing.begin(), missing.end(), f.path) == missing.end()) {
+                          add_input(f.path, f, v, u, {k}, at);
+                        }
                       });
     }
     int ordinal = 0;
     zip_apparatus(scene_.apparatus, scene_.apparatus_uncertainty,
-                  [&](const Field& f, const double& v, const double& u) { add_input(f.path, f, v, u, -1, ordinal++); });
+                  [&](const Field& f, const double& v, const double& u) { add_input(f.path, f, v, u, {}, ordinal++); });
   }
 
-  void add_input(std::string path, const Field& f, double value, double sigma, int observation, int ordinal) {
+  void add_input(std::string path, const Field& f, double value, double sigma, std::vector<std::size_t> observations,
+                 int ordinal) {
     if (sigma > 0.0) {
-      inputs_.push_back({std::move(path), f.unit, value, sigma, observation, ordinal, f.role});
+      inputs_.push_back({std::move(path), f.unit, value, sigma, std::move(observations), ordinal, f.role});
     } else {
       out_.inputs_without_uncertainty.push_back(std::move(path));
     }
@@ -400,16 +412,18 @@ class Fit {
     }
     std::vector<std::array<double, kQuantities>> partial(k_);
     std::vector<double> residual_partial(k_);
+    std::vector<std::size_t> every(k_);
+    for (std::size_t k = 0; k < k_; ++k) every[k] = k;
     for (std::size_t j = 0; j < inputs_.size(); ++j) {
       const Input& in = inputs_[j];
-      const std::size_t first = in.observation < 0 ? 0 : in.observation;
-      const std::size_t last = in.observation < 0 ? k_ : in.observation + 1;
+      const bool of_apparatus = in.observations.empty();
+      const std::vector<std::size_t>& touched = of_apparatus ? every : in.observations;
       const Apparatus<Dual> seeded_app =
-          in.observation < 0 ? convert_apparatus<Dual>(scene_.apparatus, Seeder{in.ordinal}) : app;
+          of_apparatus ? convert_apparatus<Dual>(scene_.apparatus, Seeder{in.ordinal}) : app;
       Vector jt_dr = Vector::Zero();
-      for (std::size_t k = first; k < last; ++k) {
-        const Observation<Dual> o = convert_observation<Dual>(
-            scene_.observations[k], Seeder{in.observation < 0 ? -1 : in.ordinal});
+      for (const std::size_t k : touched) {
+        const Observation<Dual> o =
+            convert_observation<Dual>(scene_.observations[k], Seeder{of_apparatus ? -1 : in.ordinal});
         const PeriodPrediction<Dual> pr = Model::predict(p.data(), o, seeded_app, amplitude_[k]);
         const auto q = derived(pr);
         for (int i = 0; i < kQuantities; ++i) partial[k][i] = q[i].v[0];
@@ -421,16 +435,16 @@ class Fit {
       const Matrix outer = dp * dp.transpose() * (in.sigma * in.sigma);
       covariance_ += outer;
       if (in.role != FieldRole::other) covariance_pl_ += outer;
-      if (in.observation >= 0) {
+      if (!of_apparatus) {
         observations_total += outer;
-        observation_own[in.observation] += outer;
+        for (const std::size_t k : touched) observation_own[k] += outer;
       }
       Pair* pair = nullptr;
       for (auto& pr : pairs_) {
         if (pr.a == static_cast<int>(j) || pr.b == static_cast<int>(j)) pair = &pr;
       }
       if (pair) (pair->a == static_cast<int>(j) ? pair->da : pair->db).assign(k_, {});
-      for (std::size_t k = first; k < last; ++k) {
+      for (const std::size_t k : touched) {
         for (int i = 0; i < kQuantities; ++i) {
           const double total = partial[k][i] + base_[k].gradient[i].dot(dp);
           variance_[k][i] += total * total * in.sigma * in.sigma;

@@ -88,7 +88,7 @@ void check_observation(ParsedScene& scene, std::size_t k) {
     alt.amplitude = raw * find_unit(other, Dimension::angle)->factor;
     const double alt_ratio = alt.amplitude < kPi ? o.period / *expected_period(scene, alt) : 0.0;
     if (std::abs(alt_ratio - 1.0) <= kPeriodFit) {
-      throw InputError(at + "amplitude.unit", "got \"" + unit + "\": at " + format_number(raw) + " " + unit +
+      throw InputError(source.path_of("amplitude.unit"), "got \"" + unit + "\": at " + format_number(raw) + " " + unit +
                                                   " the measured period is " + off_by(ratio) + " than the one " +
                                                   at_g + "; expected \"" + other + "\": at " + format_number(raw) +
                                                   " " + other + " it is " + off_by(alt_ratio));

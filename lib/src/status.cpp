@@ -141,11 +141,11 @@ void judge_amplitudes(const ParsedScene& scene, std::vector<std::string>& reason
     const double raw = s.amplitude_raw;
     if (s.amplitude_unit != "deg" || raw < kOneDegree || raw > kSmallAngleLab) continue;
     const double arc_mm = scene.observations[k].length * raw * kOneDegree * 1e3;
-    reasons.push_back(s.path + "amplitude: " + format_number(raw, 4) + " deg moves the bob by " +
+    reasons.push_back(s.path_of("amplitude") + ": " + format_number(raw, 4) + " deg moves the bob by " +
                       format_number(arc_mm, 2) + " mm, too little to start and watch by hand, while " +
                       format_number(raw, 4) + " rad is " + format_number(raw / kOneDegree, 3) +
-                      " deg, a small-angle lab's amplitude: radians written as deg? fix " + s.path +
-                      "amplitude.unit (\"rad\")");
+                      " deg, a small-angle lab's amplitude: radians written as deg? fix " + s.path_of("amplitude.unit") +
+                      " (\"rad\")");
   }
 }
 

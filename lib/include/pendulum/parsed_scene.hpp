@@ -26,6 +26,21 @@ struct ObservationSource {
   /// What the length was measured to: "center" (the default), "top_of_bob"
   /// or "bottom_of_bob"; the reader adds or subtracts the bob's radius.
   std::string measured_to = "center";
+  /// Keys a series gives once at its top level ("length", "amplitude"),
+  /// shared by every observation: one measurement, one input of the budget.
+  std::vector<std::string> shared{};
+
+  /// Whether `key` ("length", or a path below it: "length.value") is shared.
+  bool is_shared(const std::string& key) const {
+    const std::string head = key.substr(0, key.find('.'));
+    for (const auto& s : shared) {
+      if (s == head) return true;
+    }
+    return false;
+  }
+  /// The JSON path of one of its keys ("amplitude", "length.value"): at the
+  /// top level where it is shared.
+  std::string path_of(const std::string& key) const { return is_shared(key) ? key : path + key; }
 };
 
 /// The period model a scene is reduced with (models/).

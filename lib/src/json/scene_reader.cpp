@@ -18,9 +18,18 @@ namespace {
 
 constexpr const char* kSceneSchema = "pendulum-g/scene/1";
 
+/// Where an observation's `key` is read from: its own object, or the series'
+/// top level where the key is given once for every observation.
+Object& owner(Object& o, Object* shared, const char* key, ObservationSource& source) {
+  if (o.has(key) || !shared || !shared->has(key)) return o;
+  source.shared.push_back(key);
+  return *shared;
+}
+
 /// The keys of one observation, under `o` (the top level, or an item of
-/// "observations") with `prefix` on every path.
-void read_observation(Object& o, const std::string& prefix, ParsedScene& out) {
+/// "observations") with `prefix` on every path; `shared`, in a series, holds
+/// the length or amplitude given once for all.
+void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Object* shared = nullptr) {
   Observation<double> v, u;
   ObservationSource source;
   source.path = prefix;
@@ -31,9 +40,12 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out) {
                    "got both pivot_distance and pivot_position; expected one");
   v.setting = u.setting = distance ? Setting::pivot_distance : position ? Setting::pivot_position : Setting::length;
   const char* key = setting_key(v.setting);
-  PENDULUM_FAIL_IF(v.setting != Setting::length && o.has("length"), prefix + "length",
-                   std::string("got both length and ") + key + "; expected one");
   const bool physical = v.setting != Setting::length;
+  Object& length_owner = physical ? o : owner(o, shared, "length", source);
+  PENDULUM_FAIL_IF(physical && o.has("length"), prefix + "length",
+                   std::string("got both length and ") + key + "; expected one");
+  PENDULUM_FAIL_IF(physical && shared && shared->has("length"), "length",
+                   std::string("got both length and ") + prefix + key + "; expected one");
   PENDULUM_FAIL_IF(!out.observations.empty() && physical != (out.model == PeriodModelKind::physical_pendulum),
                    prefix + key, "got a mix of length and pivot keys; expected every observation to give length "
                    "(a ball on a wire) or every one pivot_distance or pivot_position (a rigid body)");
@@ -42,17 +54,18 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out) {
     put(o, key, Dimension::length, position ? Range::any : Range::non_negative, v.length, u.length);
     within(std::abs(v.length), 0.0, 1e3, prefix + key + ".value", "m", "a laboratory body's pivot, within 1 km");
   } else {
-    const Measured length = quantity(o, "length", Dimension::length, Range::positive, &source.measured_to);
+    const Measured length = quantity(length_owner, "length", Dimension::length, Range::positive, &source.measured_to);
     v.length = length.value;
     u.length = length.sigma;
-    within(v.length, 1e-3, 1e3, prefix + "length.value", "m", "a laboratory pendulum, 1 mm to 1 km long");
+    within(v.length, 1e-3, 1e3, source.path_of("length.value"), "m", "a laboratory pendulum, 1 mm to 1 km long");
   }
-  put(o, "amplitude", Dimension::angle, Range::positive, v.amplitude, u.amplitude);
-  PENDULUM_FAIL_IF(v.amplitude >= kPi, prefix + "amplitude.value",
+  Object& amplitude_owner = owner(o, shared, "amplitude", source);
+  put(amplitude_owner, "amplitude", Dimension::angle, Range::positive, v.amplitude, u.amplitude);
+  PENDULUM_FAIL_IF(v.amplitude >= kPi, source.path_of("amplitude") + ".value",
                    "got " + format_number(v.amplitude * 180.0 / kPi) +
                        " deg; expected an amplitude below 180 deg (at 180 deg and beyond "
                        "the pendulum goes over the top)");
-  const json& amplitude = o.at("amplitude");
+  const json& amplitude = amplitude_owner.at("amplitude");
   source.amplitude_raw = amplitude.at("value").get<double>();
   source.amplitude_unit = find_unit(amplitude.at("unit").get<std::string>(), Dimension::angle)->name;
   out.observations.push_back(v);
@@ -62,10 +75,13 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out) {
 
 /// "observations": a non-empty array of objects with length, amplitude, timing.
 void read_series(Object& top, ParsedScene& out) {
-  for (const char* key : {"length", "pivot_distance", "pivot_position", "amplitude", "timing"}) {
+  // A length or amplitude measured once is given once (shared); what
+  // changes from one observation to the next is each observation's own.
+  for (const char* key : {"pivot_distance", "pivot_position", "timing"}) {
     PENDULUM_FAIL_IF(top.has(key), key,
                      "got both observations and a top-level " + std::string(key) +
-                         "; expected the observations to hold every length, amplitude and timing");
+                         "; expected each observation to hold its own " + key +
+                         " (only a length or amplitude measured once for all may be given at the top level)");
   }
   const json& list = top.at("observations");
   PENDULUM_FAIL_IF(!list.is_array() || list.empty(), "observations",
@@ -75,7 +91,12 @@ void read_series(Object& top, ParsedScene& out) {
   for (std::size_t k = 0; k < list.size(); ++k) {
     const std::string path = "observations[" + std::to_string(k) + "]";
     Object o(list[k], path, "an object with length, amplitude and timing");
-    read_observation(o, path + ".", out);
+    for (const char* key : {"length", "amplitude"}) {
+      PENDULUM_FAIL_IF(top.has(key) && o.has(key), path + "." + key,
+                       "got both a top-level " + std::string(key) + " (shared by every observation) and this one; "
+                       "expected one: give " + key + " once at the top level, or in every observation");
+    }
+    read_observation(o, path + ".", out, &top);
     if (o.has("source")) o.text("source");
     o.finish();
     PENDULUM_FAIL_IF(out.observation_uncertainties.back().period == 0.0, path + ".timing",
@@ -110,7 +131,7 @@ void read_fit(Object& top, ParsedScene& out) {
 void refer_lengths_to_centre(ParsedScene& out) {
   for (std::size_t k = 0; k < out.observations.size(); ++k) {
     const std::string& to = out.sources[k].measured_to;
-    const std::string path = out.sources[k].path + "length.measured_to";
+    const std::string path = out.sources[k].path_of("length.measured_to");
     const double sign = to == "top_of_bob" ? 1.0 : to == "bottom_of_bob" ? -1.0 : 0.0;
     PENDULUM_FAIL_IF(sign == 0.0 && to != "center" && to != "centre", path,
                      "got \"" + to + "\"; expected \"center\", \"top_of_bob\" or \"bottom_of_bob\"");
@@ -123,7 +144,8 @@ void refer_lengths_to_centre(ParsedScene& out) {
     out.observations[k].length += sign * radius;
     double& u = out.observation_uncertainties[k].length;
     u = std::hypot(u, sigma);
-    out.assumptions.push_back(out.sources[k].path + "length: measured to the " +
+    if (k > 0 && out.sources[k].is_shared("length")) continue;  // said once
+    out.assumptions.push_back(out.sources[k].path_of("length") + ": measured to the " +
                               (sign > 0 ? "top" : "bottom") + " of the bob; its radius " +
                               format_number(radius * 1e3, 4) + " mm is " + (sign > 0 ? "added" : "subtracted"));
   }
@@ -141,7 +163,7 @@ void check_geometry(const ParsedScene& out) {
   const Apparatus<double>& v = out.apparatus;
   for (std::size_t k = 0; k < out.observations.size(); ++k) {
     const double length = out.observations[k].length;
-    const std::string at = out.sources[k].path + "length.value";
+    const std::string at = out.sources[k].path_of("length") + ".value";
     if (!v.bob) continue;
     const double radius = v.bob->diameter / 2.0;
     PENDULUM_FAIL_IF(radius >= length, at,

@@ -28,43 +28,55 @@ struct Signal {
 
 /// Projection on the principal axis of the mean-removed vectors: one pass
 /// for the sums (shifted by the first sample, against cancellation), one for
-/// the projection.
-Signal principal_axis(const Recording& r) {
-  const std::size_t m = std::min<std::size_t>(r.channels.size(), 3), n = r.time.size();
-  std::array<const double*, 3> x{};
-  std::array<double, 3> shift{}, sum{};
-  std::array<double, 9> cross{};
-  for (std::size_t j = 0; j < m; ++j) x[j] = r.channels[j].data(), shift[j] = x[j][0];
+/// the projection. M, the number of axes, is fixed at compile time so that
+/// the passes over a long recording keep their sums in registers.
+template <int M>
+Signal principal_axis_of(const Recording& r) {
+  using Vector = Eigen::Matrix<double, M, 1>;
+  const std::size_t n = r.time.size();
+  std::array<const double*, M> x{};
+  Vector shift, sum = Vector::Zero();
+  Eigen::Matrix<double, M, M> cross = Eigen::Matrix<double, M, M>::Zero();
+  for (int j = 0; j < M; ++j) x[j] = r.channels[j].data(), shift[j] = x[j][0];
   for (std::size_t k = 0; k < n; ++k) {
-    double d[3] = {0.0, 0.0, 0.0};
-    for (std::size_t j = 0; j < m; ++j) d[j] = x[j][k] - shift[j], sum[j] += d[j];
-    for (std::size_t a = 0; a < m; ++a) {
-      for (std::size_t b = a; b < m; ++b) cross[3 * a + b] += d[a] * d[b];
+    Vector d;
+    for (int j = 0; j < M; ++j) d[j] = x[j][k] - shift[j];
+    sum += d;
+    for (int a = 0; a < M; ++a) {
+      for (int b = a; b < M; ++b) cross(a, b) += d[a] * d[b];
     }
   }
-  Eigen::MatrixXd cov(m, m);
-  Eigen::VectorXd mean(m);
-  for (std::size_t a = 0; a < m; ++a) {
-    mean[a] = shift[a] + sum[a] / n;
-    for (std::size_t b = a; b < m; ++b) cov(a, b) = cov(b, a) = cross[3 * a + b] / n - sum[a] * sum[b] / (double(n) * n);
+  Eigen::Matrix<double, M, M> cov;
+  const Vector mean = shift + sum / double(n);
+  for (int a = 0; a < M; ++a) {
+    for (int b = a; b < M; ++b) cov(a, b) = cov(b, a) = cross(a, b) / n - sum[a] * sum[b] / (double(n) * n);
   }
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(cov);
-  Eigen::VectorXd v = eig.eigenvectors().col(m - 1);  // largest eigenvalue last
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, M, M>> eig(cov);
+  Vector v = eig.eigenvectors().col(M - 1);  // largest eigenvalue last
   Eigen::Index largest = 0;
   v.cwiseAbs().maxCoeff(&largest);
   if (v[largest] < 0.0) v = -v;  // the sign is arbitrary: make it reproducible
   Signal sig;
-  for (std::size_t j = 0; j < m; ++j) sig.axis[j] = v[j];
+  for (int j = 0; j < M; ++j) sig.axis[j] = v[j];
   const double offset = v.dot(mean);
   sig.s.reserve(n);
   detail::huge_pages(sig.s);
   sig.s.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     double y = -offset;
-    for (std::size_t j = 0; j < m; ++j) y += v[j] * x[j][k];
+    for (int j = 0; j < M; ++j) y += v[j] * x[j][k];
     sig.s[k] = y;
   }
   return sig;
+}
+
+/// A rate or acceleration layout has at least one channel (read.cpp's detect).
+Signal principal_axis(const Recording& r) {
+  switch (std::min<std::size_t>(r.channels.size(), 3)) {
+    case 1: return principal_axis_of<1>(r);
+    case 2: return principal_axis_of<2>(r);
+    default: return principal_axis_of<3>(r);
+  }
 }
 
 Signal remove_mean(std::vector<double> s) {

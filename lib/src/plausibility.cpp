@@ -1,5 +1,6 @@
 #include "plausibility.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -173,8 +174,46 @@ std::vector<std::string> warn_about_skipped_parts(const ParsedScene& scene, doub
   return warnings;
 }
 
+/// A slip's text (status.cpp) with the keys it names as this observation's paths.
+std::string in_observation(std::string text, const ObservationSource& source) {
+  for (const auto& [key, path] : {std::pair<std::string, std::string>{"length.unit", source.path_of("length.unit")},
+                                  {"timing.", source.path_of("timing.")}}) {
+    for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + path.size())) {
+      text.replace(at, key.size(), path);
+    }
+  }
+  return text;
+}
+
+/// In a series, each observation whose period alone gives a g that a slip
+/// explains, unless every observation gives the same: that slip shows in
+/// the fitted g itself (status.cpp), while one slipped observation only
+/// drags the fit somewhere no slip names.
+void name_observation_slips(ParsedScene& scene) {
+  const std::size_t n = scene.observations.size();
+  if (n < 2) return;
+  std::vector<std::optional<std::string>> slips(n);
+  std::vector<double> ratios(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const Observation<double>& o = scene.observations[k];
+    const std::optional<double> expected = expected_period(scene, o);
+    if (!expected) return;  // a body whose k or centre the fit finds
+    ratios[k] = (*expected / o.period) * (*expected / o.period);  // g = 4 pi^2 l / T^2
+    slips[k] = name_slip(ratios[k]);
+  }
+  if (std::all_of(slips.begin(), slips.end(), [&](const auto& s) { return s == slips.front(); })) return;
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!slips[k]) continue;
+    const ObservationSource& source = scene.sources[k];
+    scene.suspicions.push_back(source.path + "timing: this observation alone gives g = " +
+                               format_number(ratios[k], 3) + " times standard gravity, unlike the others: " +
+                               in_observation(*slips[k], source));
+  }
+}
+
 void check_plausibility(ParsedScene& scene) {
   for (std::size_t k = 0; k < scene.observations.size(); ++k) check_observation(scene, k);
+  name_observation_slips(scene);
 }
 
 }  // namespace pendulum

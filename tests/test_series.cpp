@@ -47,6 +47,20 @@ SeriesSimulation lengths_series(std::uint64_t seed) {
   return sim;
 }
 
+/// One noiseless 1 m length at eight amplitudes from 1 to 170 deg, timed
+/// to 0.1 ms, g alone unknown.
+SeriesSimulation amplitude_sweep() {
+  SeriesSimulation sim = lengths_series(3);
+  sim.lengths.assign(8, 1.0);
+  sim.amplitudes.clear();
+  for (double deg : {1.0, 10.0, 30.0, 60.0, 90.0, 120.0, 150.0, 170.0}) sim.amplitudes.push_back(deg * test::kDegree);
+  sim.period_sigma = 1e-4;
+  sim.noise = false;
+  sim.fit_offset = false;
+  sim.length_offset = 0.0;
+  return sim;
+}
+
 }  // namespace
 
 /// The exact amplitude factor, as the simulation's.
@@ -174,14 +188,7 @@ TEST_CASE("One length swung from 1 to 170 deg gives one g with the exact amplitu
   // A 1 m pendulum in Nelson & Olsson's apparatus timed to 0.1 ms at eight
   // amplitudes; only g is unknown. The period grows by a factor of 2.44 over
   // the sweep (2K(sin 85 deg)/pi).
-  SeriesSimulation sim = lengths_series(3);
-  sim.lengths.assign(8, 1.0);
-  sim.amplitudes.clear();
-  for (double deg : {1.0, 10.0, 30.0, 60.0, 90.0, 120.0, 150.0, 170.0}) sim.amplitudes.push_back(deg * test::kDegree);
-  sim.period_sigma = 1e-4;
-  sim.noise = false;
-  sim.fit_offset = false;
-  sim.length_offset = 0.0;
+  const SeriesSimulation sim = amplitude_sweep();
   const ParsedScene scene = simulate_series(nelson_olsson_apparatus(), sim);
   const Analysis a = analyse(scene, exact());
   CHECK_THAT(a.g.value, WithinRel(sim.g, 1e-12));
@@ -273,15 +280,8 @@ TEST_CASE("A length measured once for every amplitude is one input of the budget
   // here checked against central differences of refits (every length moved
   // by +-1e-3 of its uncertainty). Noiseless, as in the test above, so that
   // the linearisation is exact.
-  SeriesSimulation sim = lengths_series(3);
-  sim.lengths.assign(8, 1.0);
-  sim.amplitudes.clear();
-  for (double deg : {1.0, 10.0, 30.0, 60.0, 90.0, 120.0, 150.0, 170.0}) sim.amplitudes.push_back(deg * test::kDegree);
-  sim.period_sigma = 1e-4;
+  SeriesSimulation sim = amplitude_sweep();
   sim.length_sigma = 1e-3;
-  sim.noise = false;
-  sim.fit_offset = false;
-  sim.length_offset = 0.0;
   const ParsedScene independent = simulate_series(nelson_olsson_apparatus(), sim);
   ParsedScene shared = independent;
   for (auto& s : shared.sources) s.shared = {"length"};

@@ -1,5 +1,6 @@
 // libFuzzer target: any bytes through the scene parser and the whole
-// reduction, with each amplitude method, as `pendulum-g reduce` runs them.
+// reduction, with each amplitude method, as `pendulum-g reduce` runs them,
+// and through the clock scene's parser and model, as `pendulum-g clock`.
 // Bad input must end in an InputError whose message is one printable line;
 // a scene that passes must give finite numbers everywhere and a positive g.
 // Anything else (another exception, a sanitizer report, a failed check
@@ -10,6 +11,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <iterator>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -18,7 +20,7 @@
 
 #include "pendulum/analysis.hpp"
 #include "pendulum/output.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/clock_scene.hpp"
 #include "pendulum/scene_json.hpp"
 
 namespace {
@@ -51,15 +53,24 @@ extern "C" std::size_t LLVMFuzzerMutate(std::uint8_t* data, std::size_t size, st
 // Byte mutations of a scene nearly always break its JSON or its physics, so
 // the reduction would rarely see a scene (11 of the 1739 inputs a 30-minute
 // campaign kept were scenes). Half the time, a valid scene has one number
-// changed instead: a unit slip, a small step, a sign, or an edge value.
+// changed instead: a unit slip, a small step, a sign, or an edge value (for a
+// clock scene too).
 extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t size,
                                                std::size_t max_size, unsigned int seed) {
   std::minstd_rand random(seed);
   const std::string text(reinterpret_cast<const char*>(data), size);
   if (random() % 2 == 0) return LLVMFuzzerMutate(data, size, max_size);
-  try {
-    pendulum::parse_scene(text);  // also bounds the nesting for the recursion below
-  } catch (const pendulum::InputError&) {
+  // A valid scene or clock scene: the parsers also bound the nesting for
+  // the recursion below.
+  const auto valid = [&](auto parse) {
+    try {
+      parse(text);
+      return true;
+    } catch (const pendulum::InputError&) {
+      return false;
+    }
+  };
+  if (!valid(pendulum::parse_scene) && !valid(pendulum::parse_clock_scene)) {
     return LLVMFuzzerMutate(data, size, max_size);
   }
   nlohmann::json scene = nlohmann::json::parse(text);
@@ -80,8 +91,41 @@ extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t s
   return mutated.size();
 }
 
+/// Bad input ends in one printable line of at most 1000 characters.
+void require_clear_message(const pendulum::InputError& e) {
+  const std::string message = e.what();
+  for (const char c : message) {
+    require(static_cast<unsigned char>(c) >= 0x20 && c != 0x7f, "control character in an error message", message);
+  }
+  require(message.size() <= 1000, "error message over 1000 characters", message.substr(0, 200));
+}
+
+/// The same bytes as a clock scene, through `pendulum-g clock` with every
+/// route (a route that cannot model the scene is bad input, as in the CLI).
+void run_clock(const std::string& text) {
+  pendulum::ClockScene scene;
+  try {
+    scene = pendulum::parse_clock_scene(text);
+  } catch (const pendulum::InputError& e) {
+    return require_clear_message(e);
+  }
+  using pendulum::ClockRoute;
+  for (const auto route : {std::optional<ClockRoute>{}, std::optional{ClockRoute::cycloid},
+                           std::optional{ClockRoute::circular_elliptic}, std::optional{ClockRoute::cycloid_damped},
+                           std::optional{ClockRoute::circular_rk4}}) {
+    try {
+      const pendulum::ClockAnalysis analysis = pendulum::analyse_clock(scene, route);
+      require_finite(nlohmann::ordered_json::parse(pendulum::clock_json(scene, analysis, "fuzz")), "");
+      (void)pendulum::clock_table(scene, analysis);
+    } catch (const pendulum::InputError& e) {
+      require_clear_message(e);
+    }
+  }
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
+  run_clock(text);
   // Bad input may be found while reading or, for inputs whose uncertainties
   // overflow g's, while propagating them: both as the CLI reports them.
   try {
@@ -97,12 +141,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       (void)pendulum::result_table(scene, analysis);
     }
   } catch (const pendulum::InputError& e) {
-    const std::string message = e.what();
-    for (const char c : message) {
-      require(static_cast<unsigned char>(c) >= 0x20 && c != 0x7f,
-              "control character in an error message", message);
-    }
-    require(message.size() <= 1000, "error message over 1000 characters", message.substr(0, 200));
+    require_clear_message(e);
   }
   return 0;
 }

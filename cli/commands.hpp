@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,8 @@
 
 namespace pendulum {
 struct AnalysisOptions;
+struct SwingOptions;
+enum class RecordingFormat;
 }
 
 namespace pendulum::cli {
@@ -71,6 +74,17 @@ Command add_fit_decay_command(CLI::App& app);
 /// `pendulum-g import RECORDING`: a phone, photogate or video-tracker
 /// recording -> period, amplitudes, timing and decay (cli/import_command.cpp).
 Command add_import_command(CLI::App& app);
+
+/// The recording families for --format: auto, phyphox, vernier, pasco,
+/// plain, tracker (import and report take them alike).
+std::vector<std::string> recording_family_names();
+
+/// The last family named among `formats`; empty when none is.
+std::optional<RecordingFormat> recording_family(const std::vector<std::string>& formats);
+
+/// --bob-width-m and --length-m, a photogate's amplitudes (import and report).
+void add_swing_options(CLI::App& cmd, SwingOptions& options);
+
 /// `pendulum-g clock SCENE`: circular and impulse error of a clock
 /// pendulum (cli/clock_command.cpp).
 Command add_clock_command(CLI::App& app);

@@ -101,47 +101,65 @@ std::string summary_table(const RecordingSummary& r) {
 
 }  // namespace
 
+namespace {
+constexpr RecordingFormat kFamilies[] = {RecordingFormat::automatic, RecordingFormat::phyphox,
+                                         RecordingFormat::vernier,   RecordingFormat::pasco,
+                                         RecordingFormat::plain,     RecordingFormat::tracker};
+}  // namespace
+
+std::vector<std::string> recording_family_names() {
+  std::vector<std::string> names;
+  for (auto f : kFamilies) names.push_back(recording_format_name(f));
+  return names;
+}
+
+std::optional<RecordingFormat> recording_family(const std::vector<std::string>& formats) {
+  std::optional<RecordingFormat> family;
+  for (const auto& f : formats) {
+    for (auto candidate : kFamilies) {
+      if (f == recording_format_name(candidate)) family = candidate;
+    }
+  }
+  return family;
+}
+
+void add_swing_options(CLI::App& cmd, SwingOptions& options) {
+  cmd.add_option("--bob-width-m", options.bob_width,
+                 "Photogates: the bob's width across the beam (m), for the amplitudes")
+      ->check(CLI::PositiveNumber);
+  cmd.add_option("--length-m", options.length,
+                 "Photogates: pivot to bob centre (m); without it the amplitudes take g as standard gravity")
+      ->check(CLI::PositiveNumber);
+}
+
 Command add_import_command(CLI::App& app) {
   struct Options {
     std::string file;
     std::vector<std::string> formats;
-    std::optional<double> bob_width;
-    std::optional<double> length;
+    SwingOptions swing;
   };
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
       "import", "Reduce a phone, photogate or video-tracker recording to a period, amplitudes and the "
                 "timing and decay parts of a scene (docs/recordings.md)");
   cmd->add_option("recording", o->file, "Recording file (CSV or tab-separated text)")->required();
+  std::vector<std::string> formats = recording_family_names();
+  formats.insert(formats.end(), {"json", "table"});
   cmd->add_option("--format", o->formats,
                   "The recording's family (auto, phyphox, vernier, pasco, plain, tracker; default: from the "
                   "header) and/or the output (json, the default, or table); may be given twice")
-      ->check(CLI::IsMember({"auto", "phyphox", "vernier", "pasco", "plain", "tracker", "json", "table"}))
+      ->check(CLI::IsMember(formats))
+      ->allow_extra_args(false)  // one value each time: the file after it is not a format
       ->take_all();
-  cmd->add_option("--bob-width-m", o->bob_width,
-                  "Photogates: the bob's width across the beam (m), for the amplitudes")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--length-m", o->length,
-                  "Photogates: pivot to bob centre (m); without it the amplitudes take g as standard gravity")
-      ->check(CLI::PositiveNumber);
+  add_swing_options(*cmd, o->swing);
 
   return {cmd, [o] {
-    RecordingFormat format = RecordingFormat::automatic;
     bool table = false;
     for (const auto& f : o->formats) {
-      if (f == "table" || f == "json") {
-        table = f == "table";
-        continue;
-      }
-      for (auto candidate : {RecordingFormat::automatic, RecordingFormat::phyphox, RecordingFormat::vernier,
-                             RecordingFormat::pasco, RecordingFormat::plain, RecordingFormat::tracker}) {
-        if (f == recording_format_name(candidate)) format = candidate;
-      }
+      if (f == "table" || f == "json") table = f == "table";
     }
-    SwingOptions options;
-    options.bob_width = o->bob_width;
-    options.length = o->length;
-    const RecordingSummary summary = analyse_recording(o->file, format, options);
+    const RecordingSummary summary =
+        analyse_recording(o->file, recording_family(o->formats).value_or(RecordingFormat::automatic), o->swing);
     std::cout << (table ? summary_table(summary) : summary_json(summary).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     return 0;
   }};

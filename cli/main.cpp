@@ -109,13 +109,15 @@ int main(int argc, char** argv) {
     if (!command.app->parsed()) continue;
     // The subcommand's input file, named in error messages.
     const CLI::Option* scene = command.app->get_option_no_throw("scene");
-    const std::string input = scene && scene->count() ? scene->as<std::string>() + ": " : "";
+    const std::string file = scene && scene->count() ? scene->as<std::string>() : "";
     try {
       const int status = command.run();
       std::cout.flush();
       return std::cout ? status : kExitInternal;
     } catch (const pendulum::InputError& e) {
-      std::cerr << "pendulum-g: error: " << input << e.what() << "\n";
+      // Not twice: a recording's errors name their file (and line) already.
+      const bool named = !file.empty() && (e.path() == file || e.path().rfind(file + ":", 0) == 0);
+      std::cerr << "pendulum-g: error: " << (file.empty() || named ? "" : file + ": ") << e.what() << "\n";
       return kExitInput;
     } catch (const std::exception& e) {
       std::cerr << "pendulum-g: internal error: " << e.what() << "\n";

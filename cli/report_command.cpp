@@ -1,17 +1,21 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <iostream>
 #include <memory>
 
 #include "commands.hpp"
 #include "pendulum/analysis.hpp"
 #include "pendulum/report/html_report.hpp"
+#include "pendulum/recordings/swings.hpp"
 #include "pendulum/report/plots.hpp"
+#include "pendulum/report/recording_report.hpp"
 #include "pendulum/input_error.hpp"
 #include "pendulum/scene_json.hpp"
 
@@ -72,34 +76,85 @@ void write_output(const std::string& path, const std::string& text) {
   }
 }
 
+namespace {
+
+/// A recording, not a scene: a regular file (a pipe is not read ahead) whose
+/// text does not open a JSON object or array and has three lines or more (no
+/// recording has fewer; a short or empty file gets the scene reader's
+/// message, as from reduce).
+bool looks_like_recording(const std::string& file) {
+  struct stat st;
+  if (file == "-" || ::stat(file.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return false;
+  std::ifstream in(file, std::ios::binary);
+  std::string head(65536, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  std::size_t at = head.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
+  at = head.find_first_not_of(" \t\r\n", at);
+  if (at == std::string::npos || head[at] == '{' || head[at] == '[') return false;
+  return std::count(head.begin() + static_cast<std::ptrdiff_t>(at), head.end(), '\n') >= 2;
+}
+
+}  // namespace
+
 Command add_report_command(CLI::App& app) {
   struct Options {
     std::string file;
     std::string output = "-";
-    std::string format = "html";
+    std::vector<std::string> formats;
     std::string plot;
     AnalysisOptions analysis;
+    SwingOptions swing;
   };
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
-      "report", "Write one self-contained HTML page (or one SVG plot) of the reduction, for people to read");
-  cmd->add_option("scene", o->file, "Scene file (JSON), or - for standard input")->required();
+      "report", "Write one self-contained HTML page (or one SVG plot) of the reduction of a scene or a "
+                "recording, for people to read");
+  cmd->add_option("scene", o->file,
+                  "Scene file (JSON), or - for standard input, or a recording (as for import, docs/recordings.md)")
+      ->required();
   cmd->add_option("-o,--output", o->output, "Output file (default: standard output); written whole or not at all");
-  cmd->add_option("--format", o->format, "html (default: the whole report) or svg (one plot, see --plot)")
-      ->check(CLI::IsMember({"html", "svg"}));
-  cmd->add_option("--plot", o->plot, "The plot for --format svg: corrections, budget, decay, series (implies svg)")
-      ->check(CLI::IsMember({"corrections", "budget", "decay", "series"}));
+  std::vector<std::string> formats = {"html", "svg"};
+  for (const auto& f : recording_family_names()) formats.push_back(f);
+  cmd->add_option("--format", o->formats,
+                  "html (default: the whole report) or svg (one plot, see --plot), and/or a recording's family "
+                  "as for import (auto, phyphox, vernier, pasco, plain, tracker: the input is a recording); may "
+                  "be given twice")
+      ->check(CLI::IsMember(formats))
+      ->allow_extra_args(false)  // one value each time: the file after it is not a format
+      ->take_all();
+  cmd->add_option("--plot", o->plot,
+                  "The plot for --format svg (implies svg): corrections, budget, decay, series for a scene; "
+                  "signal, amplitude, period-amplitude for a recording")
+      ->check(CLI::IsMember({"corrections", "budget", "decay", "series", "signal", "amplitude", "period-amplitude"}));
   add_analysis_options(*cmd, o->analysis);
+  add_swing_options(*cmd, o->swing);
 
   return {cmd, [o, cmd] {
-    const bool svg = !o->plot.empty() || o->format == "svg";
+    std::string format = "html";
+    for (const auto& f : o->formats) {
+      if (f == "html" || f == "svg") format = f;
+    }
+    const bool format_named = std::count(o->formats.begin(), o->formats.end(), format) > 0;
+    const bool svg = !o->plot.empty() || format == "svg";
     if (svg && o->plot.empty()) {
-      std::cerr << cmd->get_name() << ": --format svg needs --plot corrections, budget or decay\n";
+      std::cerr << cmd->get_name()
+                << ": --format svg needs --plot corrections, budget, decay or series (a scene), or signal, "
+                   "amplitude or period-amplitude (a recording)\n";
       return 2;
     }
-    if (!o->plot.empty() && cmd->count("--format") && o->format != "svg") {
-      std::cerr << cmd->get_name() << ": --plot makes one SVG; it does not go with --format " << o->format << "\n";
+    if (!o->plot.empty() && format_named && format != "svg") {
+      std::cerr << cmd->get_name() << ": --plot makes one SVG; it does not go with --format " << format << "\n";
       return 2;
+    }
+    const std::optional<RecordingFormat> family = recording_family(o->formats);
+    if (family || looks_like_recording(o->file)) {
+      const Recording samples = read_recording(o->file, family.value_or(RecordingFormat::automatic));
+      const RecordingSummary summary{o->file,       samples.format,  samples.kind,
+                                     samples.rows,  samples.dropped, analyse_swings(samples, o->file, o->swing)};
+      const report::RecordingRecord r = report::make_recording_record(summary, &samples);
+      write_output(o->output, svg ? report::recording_plot_svg(r, o->plot) : report::recording_report_html(r));
+      return 0;
     }
     const ParsedScene scene = parse_scene(read_input(o->file));
     const Analysis analysis = analyse(scene, o->analysis);

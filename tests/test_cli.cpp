@@ -1088,3 +1088,118 @@ TEST_CASE("report: a series, its fit and the textbook line", "[cli][report]") {
   CHECK(single.status == 1);
   CHECK_THAT(single.err, Contains("observations: the scene is not a series of observations"));
 }
+
+namespace {
+
+const std::string kRecordings = std::string(PENDULUM_DATA_DIR) + "/recordings/";
+
+}  // namespace
+
+TEST_CASE("report RECORDING: one page with the signal, the amplitudes and the periods", "[cli][report][recording]") {
+  const std::string dir = temporary_directory();
+  struct Case {
+    std::string file, options;
+    std::size_t plots;  // signal (sampled), amplitude and period-amplitude (with amplitudes)
+  };
+  const std::regex non_finite("(^|[^A-Za-z])-?(nan|inf)", std::regex::icase);
+  for (const Case& c : {Case{"phyphox_gyroscope.csv", "", 3}, Case{"phyphox_pendulum_raw.tsv", "", 3},
+                        Case{"phyphox_linear_acceleration.csv", "", 3}, Case{"phyphox_acceleration.csv", "", 3},
+                        Case{"pasco_rotary.csv", "", 3}, Case{"tracker_xy.txt", "", 3},
+                        Case{"tracker_theta.csv", "", 3},
+                        Case{"vernier_photogate.csv", "--bob-width-m 0.025 --length-m 0.80", 2},
+                        Case{"vernier_photogate.csv", "", 0}, Case{"plain_blocking_times.txt", "", 0}}) {
+    const std::string file = kRecordings + c.file;
+    INFO(c.file << " " << c.options);
+    const Run first = run("report " + c.options + " " + file + " -o " + dir + "/first.html");
+    REQUIRE(first.status == 0);
+    CHECK(first.out.empty());
+    CHECK(first.err.empty());
+    REQUIRE(run("report " + c.options + " " + file + " -o " + dir + "/second.html").status == 0);
+    const std::string page = pendulum::test::read_text(dir + "/first.html");
+    CHECK(page == pendulum::test::read_text(dir + "/second.html"));
+    CHECK(page == run("report " + c.options + " " + file).out);
+    CHECK(external_reference(page) == "");
+    CHECK_FALSE(std::regex_search(page, non_finite));
+    CHECK(occurrences(page, "<svg ") == c.plots);
+    CHECK(occurrences(page, "<title id=") == c.plots);
+    CHECK(occurrences(page, "<desc id=") == c.plots);
+    // What import found: the family and the full periods with their crossings.
+    const json imported = json::parse(run("import " + c.options + " " + file).out);
+    CHECK_THAT(page, Contains("Format: " + imported.at("format").get<std::string>() + ", "));
+    CHECK_THAT(page, Contains("<td>" + std::to_string(imported.at("periods").get<int>()) + " ("));
+  }
+  // The family forced as for import: the same page; one that does not fit fails.
+  const std::string gyroscope = kRecordings + "phyphox_gyroscope.csv";
+  CHECK(run("report --format phyphox " + gyroscope).out == run("report " + gyroscope).out);
+  const Run wrong = run("report --format vernier " + gyroscope + " -o " + dir + "/wrong.html");
+  CHECK(wrong.status == 1);
+  CHECK(wrong.err == run("import --format vernier " + gyroscope).err);
+  CHECK_FALSE(std::filesystem::exists(dir + "/wrong.html"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("report RECORDING --plot: one plot of a recording as an SVG file", "[cli][report][recording]") {
+  const std::string gyroscope = kRecordings + "phyphox_gyroscope.csv";
+  for (const char* name : {"signal", "amplitude", "period-amplitude"}) {
+    INFO(name);
+    const Run plot = run("report " + gyroscope + " --plot " + name);
+    REQUIRE(plot.status == 0);
+    CHECK(plot.out.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\"", 0) == 0);
+    CHECK_THAT(plot.out, Contains("<title id=\"" + std::string(name) + "-title\">"));
+    CHECK(plot.out == run("report --format svg --format phyphox --plot " + std::string(name) + " " + gyroscope).out);
+  }
+  // Every crossing is marked: 22 in the gyroscope file (import's table).
+  CHECK_THAT(run("report " + gyroscope + " --plot signal").out, Contains("detected crossing (22)"));
+
+  const Run events = run("report " + kRecordings + "vernier_photogate.csv --plot signal");
+  CHECK(events.status == 1);
+  CHECK_THAT(events.err, Contains("vernier_photogate.csv: a photogate recording has events, not a sampled signal"));
+  const Run scene_plot = run("report " + gyroscope + " --plot decay");
+  CHECK(scene_plot.status == 1);
+  CHECK_THAT(scene_plot.err,
+             Contains("no plot \"decay\" for a recording; this one has: signal, amplitude, period-amplitude"));
+  const Run recording_plot = run("report " + kNelsonOlsson + " --plot signal");
+  CHECK(recording_plot.status == 1);
+  CHECK_THAT(recording_plot.err, Contains("no plot \"signal\""));
+  CHECK(run("report " + gyroscope + " --format svg").status == 2);  // which plot?
+}
+
+TEST_CASE("report RECORDING: a bad recording fails as import does and leaves no file", "[cli][report][recording][errors]") {
+  const std::string dir = temporary_directory();
+  const std::string bad = std::string(PENDULUM_TESTS_DIR) + "/bad_recordings/";
+  for (const char* file : {"truncated_row.csv", "not_a_number.csv", "two_swings.csv", "no_oscillation.csv",
+                           "unknown_header.csv", "time_backwards.csv", "mixed_delimiters.csv"}) {
+    INFO(file);
+    const Run import = run("import " + bad + file);
+    const Run report = run("report " + bad + file + " -o " + dir + "/report.html");
+    CHECK(import.status == 1);
+    CHECK(report.status == 1);
+    CHECK(report.out.empty());
+    CHECK(report.err == import.err);
+    CHECK(std::filesystem::is_empty(dir));
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("report: an unknown uncertainty (a singular fit) is written and drawn as unknown, not +- 0",
+          "[cli][report][uncertainty]") {
+  // Three identical observations with the offset fitted: J^T J has rank 1
+  // (docs/core.md), so g's uncertainty is unknown, and the textbook line
+  // with an intercept is undefined.
+  json scene = json::parse(pendulum::test::read_text(std::string(PENDULUM_DATA_DIR) + "/pendulum_lengths_series.json"));
+  const json first = scene.at("observations").at(0);
+  scene["observations"] = json::array({first, first, first});
+  const std::string file = temporary_file();
+  std::ofstream(file) << scene.dump();
+  const Run r = run("report " + file);
+  std::remove(file.c_str());
+  REQUIRE(r.status == 0);
+  CHECK_THAT(r.err, Contains("the observations cannot separate the unknowns (their covariance is singular)"));
+  CHECK_FALSE(std::regex_search(r.out, std::regex("(^|[^A-Za-z])-?(nan|inf)", std::regex::icase)));
+  CHECK_THAT(r.out, Contains("undefined: the lengths do not determine a line"));
+  CHECK_THAT(r.out, Contains("m/s\u00B2 (uncertainty unknown)</p>"));
+  CHECK_THAT(r.out, Contains("(uncertainty unknown)</td>"));  // the fitted parameters' table
+  CHECK_THAT(r.out, Contains("\u00B5s, uncertainty unknown</text>"));  // the corrections chart
+  // No "± 0", "± 0.0000" anywhere (a zero uncertainty written as a number).
+  CHECK_FALSE(std::regex_search(r.out, std::regex("\u00B1 0(\\.0+)?([^0-9.]|$)")));
+}

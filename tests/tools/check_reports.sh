@@ -15,7 +15,9 @@ out=$(realpath "$out") exe=$(realpath "$exe")
 "$exe" report "$data/nelson_olsson_1986_decay.json" -o "$out/report-decay.html"
 "$exe" report "$data/pendulum_lengths_series.json" -o "$out/report-series.html" 2>/dev/null
 (cd "$data" && "$exe" batch class --report "$out/report-class.html" >/dev/null) || [ $? -eq 1 ]
-pages=(report-nelson-olsson:2880 report-decay:3870 report-series:5090 report-class:6150)
+# A recording: the signal with its crossings, the amplitudes, the periods.
+"$exe" report "$data/recordings/phyphox_gyroscope.csv" -o "$out/report-recording.html"
+pages=(report-nelson-olsson:2880 report-decay:3870 report-series:5090 report-class:6150 report-recording:3000)
 
 case $mode in
   xml)
@@ -28,6 +30,9 @@ case $mode in
     done
     "$exe" report "$data/nelson_olsson_1986_decay.json" --plot decay -o "$out/decay.svg"
     "$exe" report "$data/pendulum_lengths_series.json" --plot series -o "$out/series.svg" 2>/dev/null
+    for plot in signal amplitude period-amplitude; do
+      "$exe" report "$data/recordings/phyphox_gyroscope.csv" --plot $plot -o "$out/recording-$plot.svg"
+    done
     # The pages are written as well-formed XML too, so the same parser checks them.
     for f in "$out"/*.svg "$out"/*.html; do
       xmllint --noout "$f"

@@ -596,6 +596,11 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
   return out;
 }
 
+std::vector<double> swing_signal(const Recording& r) {
+  if (r.kind == SignalKind::gate_states || r.kind == SignalKind::blocking_times) return {};
+  return make_signal(r).s;
+}
+
 RecordingSummary analyse_recording(const std::string& path, RecordingFormat format, const SwingOptions& options,
                                    const RecordingLimits& limits) {
   const Recording r = read_recording(path, format, limits);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "pendulum/numeric.hpp"
 #include "pendulum/report/plots.hpp"
 #include "pendulum/report/svg_plot.hpp"
 
@@ -76,13 +77,13 @@ std::string g_comparison(const SceneReport& r) {
     row("expected g", "the scene gives no site to compare with");
   }
   row(r.series ? "g of the textbook line (no corrections)" : "g uncorrected (Eq. 5)",
-      format_fixed(r.g_uncorrected.value, 5) + " \u00B1 " + format_fixed(r.g_uncorrected.uncertainty, 5) + " m/s\u00B2");
+      r.g_uncorrected ? estimate_text(*r.g_uncorrected, 5, "m/s\u00B2")
+                      : "undefined: the lengths do not determine a line");
   if (r.series) return s + "</table>\n";  // the periods are in the series' table
   row("measured period T", format_fixed(r.period_measured.value, 6) + " \u00B1 " +
                                format_fixed(r.period_measured.uncertainty, 6) + " s (" + std::to_string(r.trials) +
                                " trials of " + std::to_string(r.oscillations_per_trial) + " oscillations)");
-  row("ideal period T\u2080", format_fixed(r.period_ideal.value, 6) + " \u00B1 " +
-                                  format_fixed(r.period_ideal.uncertainty, 6) + " s");
+  row("ideal period T\u2080", estimate_text(r.period_ideal, 6, "s"));
   return s + "</table>\n";
 }
 
@@ -104,7 +105,9 @@ std::string corrections_table(const SceneReport& r) {
     const std::string status = c.status == "skipped" && !c.reason.empty() ? c.status + ": " + c.reason : c.status;
     s += "<tr class=\"" + esc(c.status) + "\"><td>" + esc(c.title) + "</td><td class=\"num\">" +
          optional_fixed(c.delta_T, 1e6, 4, true) + "</td><td class=\"num\">" +
-         optional_fixed(c.delta_T_uncertainty, 1e6, 4, false) + "</td><td class=\"num\">" +
+         (c.delta_T && !c.delta_T_uncertainty ? std::string(kUncertaintyUnknown)
+                                              : optional_fixed(c.delta_T_uncertainty, 1e6, 4, false)) +
+         "</td><td class=\"num\">" +
          optional_fixed(c.delta_g, 1e5, 4, true) + "</td><td>" + esc(status) + "</td><td class=\"method\">" +
          (c.method.empty() ? "\u2014" : esc(c.method)) + "</td><td>" + esc(short_equation(c.equation)) + "</td></tr>\n";
   }
@@ -134,32 +137,35 @@ std::string budget_table(const SceneReport& r) {
   return s;
 }
 
-std::string decay_table(const DecayRecord& d) {
-  std::string s =
-      "<table class=\"decay\">\n<thead><tr><th scope=\"col\">parameter</th><th scope=\"col\" class=\"num\">value</th>"
-      "<th scope=\"col\">unit</th></tr></thead>\n<tbody>\n";
-  for (const auto& p : d.parameters) {
-    s += "<tr><td>" + esc(p.name) + "</td><td class=\"num\">" +
-         (p.uncertainty ? value_with_uncertainty(p.value, *p.uncertainty, false)
-                        : format_significant(p.value, 6) + " (held fixed)") +
-         "</td><td>" + esc(p.unit) + "</td></tr>\n";
+/// A fitted parameter's value: with its uncertainty, held fixed, or with
+/// its uncertainty unknown (a singular covariance).
+std::string parameter_value(const FitParameterText& p) {
+  if (p.uncertainty) return value_with_uncertainty(p.value, *p.uncertainty, false);
+  return format_significant(p.value, 6) + (p.fitted ? std::string(" (") + kUncertaintyUnknown + ")" : " (held fixed)");
+}
+
+std::string parameters_table(const char* css_class, const std::vector<FitParameterText>& parameters) {
+  std::string s = std::string("<table class=\"") + css_class +
+                  "\">\n<thead><tr><th scope=\"col\">parameter</th><th scope=\"col\" class=\"num\">value</th>"
+                  "<th scope=\"col\">unit</th></tr></thead>\n<tbody>\n";
+  for (const auto& p : parameters) {
+    s += "<tr><td>" + esc(p.name) + "</td><td class=\"num\">" + parameter_value(p) + "</td><td>" + esc(p.unit) +
+         "</td></tr>\n";
   }
-  s += "</tbody>\n</table>\n<p class=\"meta\">Model: " + esc(d.model) + ". \u03C7\u00B2 = " +
+  return s + "</tbody>\n</table>\n";
+}
+
+std::string decay_table(const DecayRecord& d) {
+  std::string s = parameters_table("decay", d.parameters);
+  s += "<p class=\"meta\">Model: " + esc(d.model) + ". \u03C7\u00B2 = " +
        format_significant(d.chi2, 4) + " for " + std::to_string(d.dof) + " degrees of freedom; uncertainties " +
        esc(d.uncertainty_scaling) + ".</p>\n";
   return s;
 }
 
 std::string series_table(const SeriesRecord& d) {
-  std::string s =
-      "<table class=\"series\">\n<thead><tr><th scope=\"col\">parameter</th><th scope=\"col\" class=\"num\">value</th>"
-      "<th scope=\"col\">unit</th></tr></thead>\n<tbody>\n";
-  for (const auto& p : d.parameters) {
-    s += "<tr><td>" + esc(p.name) + "</td><td class=\"num\">" +
-         (p.uncertainty ? value_with_uncertainty(p.value, *p.uncertainty, false) : format_significant(p.value, 6)) +
-         "</td><td>" + esc(p.unit) + "</td></tr>\n";
-  }
-  s += "</tbody>\n</table>\n<table class=\"observations\">\n<thead><tr><th scope=\"col\" class=\"num\">L (m)</th>"
+  std::string s = parameters_table("series", d.parameters);
+  s += "<table class=\"observations\">\n<thead><tr><th scope=\"col\" class=\"num\">L (m)</th>"
        "<th scope=\"col\" class=\"num\">T measured (s)</th><th scope=\"col\" class=\"num\">\u03C3 (s)</th>"
        "<th scope=\"col\" class=\"num\">T model (s)</th><th scope=\"col\" class=\"num\">residual (\u03C3)</th></tr></thead>\n<tbody>\n";
   for (std::size_t k = 0; k < d.lengths.size(); ++k) {
@@ -176,6 +182,49 @@ std::string series_table(const SeriesRecord& d) {
   return s;
 }
 
+/// A recording's findings and plots under a heading of `level` (2 or 3),
+/// their own headings one level below; `anchor` prefixes the plots' ids.
+std::string recording_part(const RecordingRecord& r, const std::string& anchor, int level) {
+  const std::string h = "h" + std::to_string(level), sub = "h" + std::to_string(level + 1);
+  auto heading = [](const std::string& tag, const std::string& text) {
+    return "<" + tag + ">" + text + "</" + tag + ">\n";
+  };
+  constexpr double kDeg = 180.0 / kPi;
+  std::string s = heading(h, "Recording <code>" + esc(r.input) + "</code>") +
+                  "<p class=\"meta\">Recording file: <code>" + esc(r.input) + "</code><br/>Format: " + esc(r.format) +
+                  ", " + esc(r.signal) + "; " + std::to_string(r.rows) + " rows read, " +
+                  std::to_string(r.dropped) + " skipped (a cell empty or not a number).</p>\n";
+  s += "<p class=\"g\">T = " + value_with_uncertainty(r.period.value, r.period.uncertainty, false) + " s</p>\n";
+  s += "<table class=\"summary\">\n";
+  auto row = [&](const std::string& name, const std::string& value) {
+    s += "<tr><th scope=\"row\">" + esc(name) + "</th><td>" + esc(value) + "</td></tr>\n";
+  };
+  row("full periods", std::to_string(r.period.periods) + " (" + std::to_string(r.crossings.size()) + " crossings, " +
+                          std::to_string(r.crossings_per_period) + " per period)");
+  row("crossing residuals", format_significant(r.period.residual_rms, 3) + " s rms, lag-1 correlation " +
+                                format_fixed(r.period.lag1_correlation, 2));
+  if (std::isfinite(r.small_amplitude_period)) {
+    row("small-amplitude period T\u2080", format_fixed(r.small_amplitude_period, 7) + " s");
+  }
+  if (std::isfinite(r.start_amplitude)) {
+    row("amplitude", format_fixed(r.start_amplitude * kDeg, 3) + "\u00B0 at the first crossing, " +
+                         format_fixed(r.end_amplitude * kDeg, 3) + "\u00B0 at the last");
+  }
+  s += "</table>\n";
+  if (auto f = signal_figure(r, anchor + "-signal")) {
+    s += heading(sub, "Signal and crossings") + figure_html(to_svg(*f, false), f->description);
+  }
+  if (auto f = amplitude_figure(r, anchor + "-amplitude")) {
+    s += heading(sub, "Amplitude against time") + figure_html(to_svg(*f, false), f->description);
+    s += r.decay ? decay_table(*r.decay) : "<p class=\"meta\">" + esc(r.decay_note) + ".</p>\n";
+  }
+  if (auto f = period_amplitude_figure(r, anchor + "-period-amplitude")) {
+    s += heading(sub, "Period against amplitude") + figure_html(to_svg(*f, false), f->description);
+  }
+  return s + "<p class=\"meta\"><code>pendulum-g import " + esc(r.input) +
+         "</code> prints the scene's <code>timing</code> and <code>decay</code> parts from this recording.</p>\n";
+}
+
 /// One scene's section; `anchor` is its id in the page, and prefixes the ids
 /// of its plots.
 std::string scene_section(const SceneReport& r, const std::string& anchor) {
@@ -183,8 +232,7 @@ std::string scene_section(const SceneReport& r, const std::string& anchor) {
                   esc(r.title.empty() ? r.input : r.title) + "</h2>\n<p class=\"meta\">Scene file: <code>" +
                   esc(r.input) + "</code>";
   if (!r.source.empty()) s += "<br/>Source: " + esc(r.source);
-  s += "</p>\n<p class=\"g\">g = " + format_fixed(r.g.value, 5) + " \u00B1 " + format_fixed(r.g.uncertainty, 5) +
-       " m/s\u00B2</p>\n";
+  s += "</p>\n<p class=\"g\">g = " + esc(estimate_text(r.g, 5, "m/s\u00B2")) + "</p>\n";
   s += g_comparison(r);
   if (!r.warnings.empty()) {
     s += "<h3>Warnings</h3>\n<ul class=\"warnings\">\n";
@@ -205,6 +253,9 @@ std::string scene_section(const SceneReport& r, const std::string& anchor) {
   if (auto d = decay_figure(r, anchor + "-decay")) {
     s += "<h3>Decay record</h3>\n" + figure_html(to_svg(*d, false), d->description) + decay_table(*r.decay);
   }
+  for (std::size_t i = 0; i < r.recordings.size(); ++i) {
+    s += recording_part(r.recordings[i], anchor + "-recording-" + std::to_string(i + 1), 3);
+  }
   return s + "</section>\n";
 }
 
@@ -212,6 +263,11 @@ std::string scene_section(const SceneReport& r, const std::string& anchor) {
 
 std::string scene_report_html(const SceneReport& r) {
   return page(r.title.empty() ? r.input : r.title, "<h1>pendulum-g report</h1>\n" + scene_section(r, "scene"));
+}
+
+std::string recording_report_html(const RecordingRecord& r) {
+  return page("Recording " + r.input, "<h1>pendulum-g report</h1>\n<section class=\"scene\" id=\"recording\">\n" +
+                                          recording_part(r, "recording", 2) + "</section>\n");
 }
 
 std::string class_report_html(const std::vector<ClassEntry>& entries) {
@@ -232,7 +288,7 @@ std::string class_report_html(const std::vector<ClassEntry>& entries) {
     points.push_back({slash == std::string::npos ? e.input : e.input.substr(slash + 1), "#" + anchor, r.g.value,
                       r.g.uncertainty, r.expected_g, r.z});
     rows.emplace_back(r.g.value, "<tr><td><a href=\"#" + anchor + "\"><code>" + esc(e.input) + "</code></a></td><td class=\"num\">" +
-            format_fixed(r.g.value, 5) + " \u00B1 " + format_fixed(r.g.uncertainty, 5) + "</td><td class=\"num\">" +
+            esc(estimate_text(r.g, 5, "")) + "</td><td class=\"num\">" +
             (r.expected_g ? format_fixed(r.expected_g->value, 5) : "\u2014") + "</td><td class=\"num\">" +
             (r.z ? signed_fixed(*r.z, 2) : "\u2014") + "</td><td>" +
             (r.budget.empty() ? "\u2014" : "<code>" + esc(r.budget.front().input) + "</code>") + "</td><td class=\"num\">" +

@@ -64,6 +64,14 @@ Figure fit_figure(const FitPlotData& d) {
   return f;
 }
 
+std::string estimate_text(const Estimate& e, int decimals, const std::string& unit) {
+  const std::string u = unit.empty() ? "" : " " + unit;
+  if (!e.uncertainty || !std::isfinite(*e.uncertainty)) {
+    return format_fixed(e.value, decimals) + u + " (" + kUncertaintyUnknown + ")";
+  }
+  return format_fixed(e.value, decimals) + " \u00B1 " + format_fixed(*e.uncertainty, decimals) + u;
+}
+
 std::string value_with_uncertainty(double value, double uncertainty, bool sign) {
   const std::string plus = sign && value > 0.0 ? "+" : "";
   if (!(uncertainty > 0.0) || !std::isfinite(uncertainty)) {
@@ -93,7 +101,7 @@ std::optional<CategoryChart> corrections_chart(const SceneReport& r, const std::
   CategorySeries applied{"applied", CategorySeries::Mark::bar, {}, {}, Colour::blue, true, Marker::circle};
   CategorySeries negligible{"negligible (still applied)", CategorySeries::Mark::bar, {}, {}, Colour::orange, false,
                             Marker::circle};
-  bool any = false;
+  bool any = false, unknown = false;
   int count = 0;
   for (const auto& c : r.corrections) {
     if (c.status == "skipped" || !c.delta_T) continue;
@@ -103,7 +111,9 @@ std::optional<CategoryChart> corrections_chart(const SceneReport& r, const std::
         c.delta_T_uncertainty ? std::optional<double>(*c.delta_T_uncertainty * kMicro) : std::nullopt;
     const bool is_applied = c.status == "applied";
     ch.categories.push_back(c.title);
-    ch.notes.push_back((*c.delta_T > 0.0 ? "+" : "") + format_significant(*c.delta_T * kMicro, 3) + " \u00B5s");
+    ch.notes.push_back((*c.delta_T > 0.0 ? "+" : "") + format_significant(*c.delta_T * kMicro, 3) + " \u00B5s" +
+                       (error ? "" : std::string(", ") + kUncertaintyUnknown));
+    unknown = unknown || !error;
     applied.values.push_back(is_applied ? std::optional<double>(size) : std::nullopt);
     negligible.values.push_back(is_applied ? std::nullopt : std::optional<double>(size));
     applied.errors.push_back(error);
@@ -123,19 +133,22 @@ std::optional<CategoryChart> corrections_chart(const SceneReport& r, const std::
                    " period corrections, each as the size of its change to the period, Delta T, in microseconds "
                    "on a logarithmic axis with its standard uncertainty as an error bar; filled bars are applied, "
                    "open bars are negligible (smaller than the threshold line) but still applied. The signed "
-                   "value of each is written at the right of its row.";
+                   "value of each is written at the right of its row." +
+                   (unknown ? std::string(" Where the uncertainty is unknown (the fit's covariance is singular), no "
+                                          "error bar is drawn and the row says so.")
+                            : "");
   return ch;
 }
 
 std::optional<CategoryChart> budget_chart(const SceneReport& r, const std::string& id) {
-  if (r.budget.empty() || !(r.g.uncertainty > 0.0)) return std::nullopt;
+  if (r.budget.empty() || !r.g.uncertainty || !(*r.g.uncertainty > 0.0)) return std::nullopt;
   CategoryChart ch;
   ch.id = id;
   ch.title = "Uncertainty budget of g, largest first";
   ch.value = {"contribution to u(g) (mm/s\u00B2)", Scale::linear, true};
   CategorySeries bars{"contribution |\u2202g/\u2202x| u(x)", CategorySeries::Mark::bar, {}, {}, Colour::blue, true,
                       Marker::circle};
-  const double total = r.g.uncertainty;
+  const double total = *r.g.uncertainty;
   for (const auto& b : r.budget) {
     ch.categories.push_back(b.input);
     bars.values.push_back(b.contribution * kMilli);
@@ -158,7 +171,10 @@ std::optional<CategoryChart> budget_chart(const SceneReport& r, const std::strin
 
 std::optional<Figure> decay_figure(const SceneReport& r, const std::string& id) {
   if (!r.decay) return std::nullopt;
-  const DecayRecord& d = *r.decay;
+  return decay_figure(*r.decay, id);
+}
+
+Figure decay_figure(const DecayRecord& d, const std::string& id) {
   FitPlotData p;
   p.id = id;
   p.title = "Decay of the amplitude, fit of Eq. (25) and residuals";
@@ -174,20 +190,24 @@ std::optional<Figure> decay_figure(const SceneReport& r, const std::string& id) 
   const bool dense = d.times.size() > 100;
   p.observations.colour = dense ? Colour::sky_blue : Colour::black;
   for (double a : d.fitted) p.model_at_x.push_back(a * kDegree);
-  p.model.name = "fit of Eq. (25)";
+  const bool band_known = !d.grid_uncertainty.empty();
+  p.model.name = band_known ? "fit of Eq. (25)"
+                            : std::string("fit of Eq. (25); ") + kUncertaintyUnknown + " (singular covariance): no band";
   p.model.x = d.grid;
   p.model.colour = dense ? Colour::black : Colour::vermillion;
   p.model.width = 2.5;
-  Band band;
-  band.name = "fit \u00B1 1\u03C3 (from the covariance)";
-  band.x = d.grid;
-  for (std::size_t i = 0; i < d.grid.size(); ++i) {
-    p.model.y.push_back(d.grid_fit[i] * kDegree);
-    band.lower.push_back((d.grid_fit[i] - d.grid_uncertainty[i]) * kDegree);
-    band.upper.push_back((d.grid_fit[i] + d.grid_uncertainty[i]) * kDegree);
+  for (double a : d.grid_fit) p.model.y.push_back(a * kDegree);
+  if (band_known) {
+    Band band;
+    band.name = "fit \u00B1 1\u03C3 (from the covariance)";
+    band.x = d.grid;
+    for (std::size_t i = 0; i < d.grid.size(); ++i) {
+      band.lower.push_back((d.grid_fit[i] - d.grid_uncertainty[i]) * kDegree);
+      band.upper.push_back((d.grid_fit[i] + d.grid_uncertainty[i]) * kDegree);
+    }
+    band.colour = Colour::orange;
+    p.model_band = band;
   }
-  band.colour = Colour::orange;
-  p.model_band = band;
   p.description = std::to_string(d.times.size()) + " measured amplitudes in degrees from t = " +
                   format_significant(d.times.front(), 3) + " s to " + format_significant(d.times.back(), 4) +
                   " s, with the fit of Nelson and Olsson's decay law, " + d.model +
@@ -223,21 +243,27 @@ std::optional<Figure> series_figure(const SceneReport& r, const std::string& id)
     p.model.y.push_back(y);
   }
   p.model.colour = Colour::vermillion;
-  Curve textbook;
-  textbook.name = "textbook T\u00B2 = 4\u03C0\u00B2(L + L\u2080)/g, g = " + format_fixed(s.textbook_g, 4) + " m/s\u00B2";
-  textbook.x = {0.0, longest};
-  for (double x : textbook.x) textbook.y.push_back(4.0 * kPi * kPi * (x + s.textbook_length_offset) / s.textbook_g);
-  textbook.colour = Colour::black;
-  textbook.dash = Dash::dashed;
-  textbook.width = 1.5;
-  p.textbook = textbook;
-  for (double x : s.lengths) p.textbook_at_x.push_back(4.0 * kPi * kPi * (x + s.textbook_length_offset) / s.textbook_g);
+  std::string textbook_words = "no textbook straight line (the lengths do not determine one)";
+  if (s.textbook_g) {
+    const double g = *s.textbook_g;
+    auto line = [&](double x) { return 4.0 * kPi * kPi * (x + s.textbook_length_offset) / g; };
+    Curve textbook;
+    textbook.name = "textbook T\u00B2 = 4\u03C0\u00B2(L + L\u2080)/g, g = " + format_fixed(g, 4) + " m/s\u00B2";
+    textbook.x = {0.0, longest};
+    for (double x : textbook.x) textbook.y.push_back(line(x));
+    textbook.colour = Colour::black;
+    textbook.dash = Dash::dashed;
+    textbook.width = 1.5;
+    p.textbook = textbook;
+    for (double x : s.lengths) p.textbook_at_x.push_back(line(x));
+    textbook_words = "the textbook straight line without corrections (g = " + format_fixed(g, 5) + " m/s^2)";
+  }
   p.description = std::to_string(s.lengths.size()) +
                   " measured periods, squared, against their lengths, with the period model fitted with every "
-                  "correction (g = " + format_fixed(r.g.value, 5) + " m/s^2) and the textbook straight line "
-                  "without corrections (g = " + format_fixed(s.textbook_g, 5) + " m/s^2); chi-squared " +
-                  format_significant(s.chi2, 4) + " for " + std::to_string(s.dof) +
-                  " degrees of freedom; the lower panel shows measured minus model, and the textbook line minus the model.";
+                  "correction (g = " + format_fixed(r.g.value, 5) + " m/s^2) and " + textbook_words +
+                  "; chi-squared " + format_significant(s.chi2, 4) + " for " + std::to_string(s.dof) +
+                  " degrees of freedom; the lower panel shows measured minus model" +
+                  (s.textbook_g ? ", and the textbook line minus the model." : ".");
   return fit_figure(p);
 }
 
@@ -258,7 +284,10 @@ CategoryChart class_chart(std::vector<ClassPoint> points, const std::string& id)
   for (const auto& p : points) {
     ch.categories.push_back(p.label);
     ch.links.push_back(p.link);
-    ch.notes.push_back(p.z ? "z = " + std::string(*p.z > 0.0 ? "+" : "") + format_fixed(*p.z, 2) : "no expected g");
+    std::string note =
+        p.z ? "z = " + std::string(*p.z > 0.0 ? "+" : "") + format_fixed(*p.z, 2) : p.expected ? "" : "no expected g";
+    if (!p.uncertainty) note += std::string(note.empty() ? "" : ", ") + kUncertaintyUnknown;
+    ch.notes.push_back(note);
     g.values.push_back(p.g);
     g.errors.push_back(p.uncertainty);
     expected.values.push_back(p.expected && !shared ? std::optional<double>(p.expected->value) : std::nullopt);
@@ -278,7 +307,11 @@ CategoryChart class_chart(std::vector<ClassPoint> points, const std::string& id)
   }
   ch.description = std::to_string(points.size()) +
                    " measured values of g with their standard uncertainties, sorted from smallest to largest, "
-                   "against the g expected at the site; the z-score of each is written at the right of its row.";
+                   "against the g expected at the site; the z-score of each is written at the right of its row." +
+                   (std::all_of(points.begin(), points.end(), [](const ClassPoint& p) { return p.uncertainty.has_value(); })
+                        ? std::string()
+                        : std::string(" Where an uncertainty is unknown (a singular fit) the row says so and has no "
+                                      "error bar."));
   return ch;
 }
 

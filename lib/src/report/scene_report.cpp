@@ -26,23 +26,32 @@ Measured fitted_amplitude(const DecayFit& fit, double t) {
   return {theta.a, std::sqrt(std::max(variance, 0.0))};
 }
 
-DecayRecord decay_record(const DecayData& data, const DecayFit& fit) {
+}  // namespace
+
+DecayRecord make_decay_record(const DecayData& data, const DecayFit& fit) {
   DecayRecord r;
   r.times = data.times;
   r.amplitudes = data.amplitudes;
   r.sigmas = data.sigmas;
   for (double t : data.times) r.fitted.push_back(fitted_amplitude(fit, t).value);
+  // A fitted parameter without an uncertainty: the covariance is singular,
+  // and the band unknown.
+  bool covariance_known = true;
+  for (const FittedParameter* p : {&fit.alpha, &fit.beta, &fit.initial_amplitude}) {
+    covariance_known = covariance_known && (!p->fitted || p->uncertainty);
+  }
   const double t0 = data.times.front(), t1 = data.times.back();
   for (int i = 0; i < kDecayGridPoints; ++i) {
     const double t = t0 + (t1 - t0) * i / (kDecayGridPoints - 1);
     const Measured m = fitted_amplitude(fit, t);
     r.grid.push_back(t);
     r.grid_fit.push_back(m.value);
-    r.grid_uncertainty.push_back(m.uncertainty);
+    if (covariance_known) r.grid_uncertainty.push_back(m.uncertainty);
   }
-  r.parameters = {{"alpha", "1/s", fit.alpha.value, fit.alpha.uncertainty},
-                  {"beta", "1/(s rad)", fit.beta.value, fit.beta.uncertainty},
-                  {"theta0m", "rad", fit.initial_amplitude.value, fit.initial_amplitude.uncertainty}};
+  r.parameters = {{"alpha", "1/s", fit.alpha.value, fit.alpha.uncertainty, fit.alpha.fitted},
+                  {"beta", "1/(s rad)", fit.beta.value, fit.beta.uncertainty, fit.beta.fitted},
+                  {"theta0m", "rad", fit.initial_amplitude.value, fit.initial_amplitude.uncertainty,
+                   fit.initial_amplitude.fitted}};
   switch (fit.model) {
     case DecayModel::both: r.model = "Eq. (25), alpha and beta fitted"; break;
     case DecayModel::linear_only: r.model = "Eq. (33), beta = 0"; break;
@@ -57,21 +66,18 @@ DecayRecord decay_record(const DecayData& data, const DecayFit& fit) {
   return r;
 }
 
-}  // namespace
-
 SceneReport make_scene_report(const std::string& input, const ParsedScene& scene, const Analysis& a) {
-  // An unknown uncertainty (a singular fit) is shown as 0 with a warning of
-  // the analysis beside it.
-  auto measured = [](const auto& x) { return Measured{x.value, x.uncertainty ? *x.uncertainty : 0.0}; };
   const ObservationResult& first = a.observations.front();
   SceneReport r;
   r.input = input;
   r.title = scene.title;
   r.source = scene.source;
-  r.g = measured(a.g);
-  r.g_uncorrected = measured(a.fit.textbook.g);
+  r.g = a.g;
+  // Identical lengths with the offset fitted: the analysis's textbook line
+  // has no finite slope.
+  if (std::isfinite(a.fit.textbook.g.value)) r.g_uncorrected = a.fit.textbook.g;
   r.period_measured = {first.period_measured.value, first.period_measured.uncertainty};
-  r.period_ideal = measured(first.period_ideal);
+  r.period_ideal = first.period_ideal;
   r.trials = first.trials;
   r.oscillations_per_trial = first.oscillations_per_trial;
   if (a.expected_g) {
@@ -88,7 +94,7 @@ SceneReport make_scene_report(const std::string& input, const ParsedScene& scene
   for (const auto& b : a.budget) r.budget.push_back({b.input, b.unit, b.value, b.uncertainty, b.contribution});
   if (a.budget_correlation) r.budget_correlation_variance = a.budget_correlation->variance;
   r.inputs_without_uncertainty = a.inputs_without_uncertainty;
-  if (scene.decay_data && a.decay_fit) r.decay = decay_record(*scene.decay_data, *a.decay_fit);
+  if (scene.decay_data && a.decay_fit) r.decay = make_decay_record(*scene.decay_data, *a.decay_fit);
   if (scene.series) {
     SeriesRecord s;
     for (std::size_t k = 0; k < a.observations.size(); ++k) {
@@ -99,11 +105,11 @@ SceneReport make_scene_report(const std::string& input, const ParsedScene& scene
       s.period_uncertainties.push_back(o.period_measured.uncertainty);
       s.periods_model.push_back(o.period_model);
     }
-    for (const auto& p : a.fit.parameters) s.parameters.push_back({p.name, p.unit, p.value, p.uncertainty});
+    for (const auto& p : a.fit.parameters) s.parameters.push_back({p.name, p.unit, p.value, p.uncertainty, p.fitted});
     s.chi2 = a.fit.chi2;
     s.dof = a.fit.dof;
     s.probability = a.fit.probability;
-    s.textbook_g = a.fit.textbook.g.value;
+    if (r.g_uncorrected) s.textbook_g = r.g_uncorrected->value;
     if (a.fit.textbook.length_offset) s.textbook_length_offset = a.fit.textbook.length_offset->value;
     r.series = s;
   }

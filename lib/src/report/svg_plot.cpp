@@ -142,6 +142,7 @@ namespace {
 constexpr double kTickFont = 13.0, kLabelFont = 14.0, kTitleFont = 16.0;
 constexpr const char* kGrid = "#DDDDDD";
 constexpr double kChartMarker = 4.5;  // marker radius in a CategoryChart (px)
+constexpr std::size_t kDenseMarkers = 1000;  // more filled circles than this: one path
 
 // Width of a text in DejaVu Sans, generously (digits are 0.64 em).
 double text_width(const std::string& s, double font) {
@@ -220,7 +221,20 @@ class Canvas {
         s_ += "<path d=\"M" + num(x) + "," + num(y - 1.3 * r) + " L" + num(x + 1.1 * r) + "," + num(y) + " L" +
               num(x) + "," + num(y + 1.3 * r) + " L" + num(x - 1.1 * r) + "," + num(y) + " Z\"" + paint;
         return;
+      case Marker::tick: markers(m, {{x, y}}, r, colour); return;
     }
+  }
+  /// Many markers as one path: ticks, or dots (round-capped strokes of
+  /// length 0, drawn by every SVG renderer as discs of the stroke's width).
+  void markers(Marker m, const std::vector<std::pair<double, double>>& at, double r, const char* colour) {
+    if (at.empty()) return;
+    const bool tick = m == Marker::tick;
+    s_ += "<path fill=\"none\" stroke=\"" + std::string(colour) + "\" stroke-width=\"" + num(tick ? 2.0 : 2.0 * r) +
+          "\"" + (tick ? "" : " stroke-linecap=\"round\"") + " d=\"";
+    for (const auto& [x, y] : at) {
+      s_ += tick ? "M" + num(x) + "," + num(y - 1.6 * r) + "v" + num(3.2 * r) : "M" + num(x) + "," + num(y) + "h0";
+    }
+    s_ += "\"/>\n";
   }
   void raw(const std::string& markup) { s_ += markup; }
   const std::string& str() const { return s_; }
@@ -399,6 +413,12 @@ std::string svg_open(const std::string& id, const std::string& title, const std:
   return s;
 }
 
+std::vector<std::pair<double, double>> pixels(const Points& p, const Mapping& mx, const Mapping& my) {
+  std::vector<std::pair<double, double>> at;
+  for (std::size_t j = 0; j < p.x.size(); ++j) at.emplace_back(mx(p.x[j]), my(p.y[j]));
+  return at;
+}
+
 void require_id(const std::string& id) {
   if (id.empty()) throw std::invalid_argument("plot: an id is needed to label the SVG");
 }
@@ -521,6 +541,11 @@ std::string to_svg(const Figure& f, bool standalone) {
           }
         }
       }
+      if (pt.marker == Marker::tick) continue;  // over the curves, below
+      if (pt.marker == Marker::circle && pt.filled && pt.x.size() > kDenseMarkers) {
+        c.markers(pt.marker, pixels(pt, mx, my), pt.size, colour);
+        continue;
+      }
       for (std::size_t j = 0; j < pt.x.size(); ++j) {
         c.marker(pt.marker, mx(pt.x[j]), my(pt.y[j]), pt.size, colour, pt.filled);
       }
@@ -532,6 +557,10 @@ std::string to_svg(const Figure& f, bool standalone) {
         if (std::isfinite(k.x[j]) && std::isfinite(k.y[j])) line.emplace_back(mx(k.x[j]), my(k.y[j]));
       }
       c.polyline(line, colour_hex(k.colour), k.width, k.dash);
+    }
+    // Ticks mark events on a curve (the crossings of a signal): over it.
+    for (const auto& pt : p.points) {
+      if (pt.marker == Marker::tick) c.markers(pt.marker, pixels(pt, mx, my), pt.size, colour_hex(pt.colour));
     }
     c.rect(left, y0, plot_width, p.height, "none", "#000000");
     y0 += p.height + gap;

@@ -134,6 +134,12 @@ PeriodEstimate fit_crossing_times(const std::vector<Crossing>& crossings, int cr
 SwingAnalysis analyse_swings(const Recording& recording, const std::string& file,
                              const SwingOptions& options = {});
 
+/// Step 1's swing signal of a sampled recording, one value per sample of
+/// `recording.time`, zero on average: the one analyse_swings finds the
+/// crossings on (rad/s for a rate, m/s^2 for an acceleration, rad for an
+/// angle or a track). Empty for gate events. For drawing (the report).
+std::vector<double> swing_signal(const Recording& recording);
+
 /// Everything `pendulum-g import` and a scene's recording hook need.
 struct RecordingSummary {
   std::string file;

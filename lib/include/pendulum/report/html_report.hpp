@@ -15,6 +15,11 @@ namespace pendulum::report {
 /// The report of one scene.
 std::string scene_report_html(const SceneReport& r);
 
+/// The report of one recording: what was read, the period, the signal with
+/// its crossings, the amplitudes with the decay fit, and the period against
+/// the amplitude.
+std::string recording_report_html(const RecordingRecord& r);
+
 /// One scene of a class: its report, or why it failed.
 struct ClassEntry {
   std::string input;

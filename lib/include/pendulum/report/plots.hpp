@@ -39,6 +39,14 @@ struct FitPlotData {
 /// the observations differ in length.
 Figure fit_figure(const FitPlotData& data);
 
+/// What the report writes where an uncertainty is unknown (a singular fit),
+/// in place of an error bar or a "± 0".
+inline constexpr const char* kUncertaintyUnknown = "uncertainty unknown";
+
+/// "9.80340 ± 0.00148 m/s²" with `decimals` fixed digits, or for an unknown
+/// uncertainty "9.80340 m/s² (uncertainty unknown)".
+std::string estimate_text(const Estimate& e, int decimals, const std::string& unit);
+
 /// A value and its uncertainty with the uncertainty to two significant
 /// digits and the value to the same decimal place: "+596 ± 119",
 /// "9.8034 ± 0.0015"; `sign` prints a + on positive values.
@@ -54,8 +62,10 @@ std::optional<CategoryChart> corrections_chart(const SceneReport& r, const std::
 std::optional<CategoryChart> budget_chart(const SceneReport& r, const std::string& id);
 
 /// The decay record in degrees with the fit of Eq. (25), its +-1 sigma band
+/// (none, and the legend says why, when the fit's covariance is unknown)
 /// and the residuals; empty without a record.
 std::optional<Figure> decay_figure(const SceneReport& r, const std::string& id);
+Figure decay_figure(const DecayRecord& d, const std::string& id);
 
 /// A series: T^2 against L with 2 T sigma_eff error bars, the fitted model at
 /// each length, the textbook line T^2 = (4 pi^2/g)(L + L0) and the
@@ -65,7 +75,8 @@ std::optional<Figure> series_figure(const SceneReport& r, const std::string& id)
 /// One student's result in a class chart.
 struct ClassPoint {
   std::string label, link;
-  double g, uncertainty;             ///< (m/s^2)
+  double g;                          ///< (m/s^2)
+  std::optional<double> uncertainty; ///< (m/s^2); empty when unknown
   std::optional<Measured> expected;  ///< (m/s^2)
   std::optional<double> z;
 };

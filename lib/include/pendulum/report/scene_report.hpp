@@ -11,13 +11,11 @@
 
 #include "pendulum/analysis.hpp"
 #include "pendulum/parsed_scene.hpp"
+#include "pendulum/report/decay_record.hpp"
+#include "pendulum/report/recording_report.hpp"
 
 namespace pendulum::report {
 
-struct Measured {
-  double value;
-  double uncertainty;
-};
 
 struct CorrectionEntry {
   std::string id, title, status, method, reason, equation;
@@ -33,28 +31,6 @@ struct BudgetShare {
   double contribution;  ///< to u(g) (m/s^2)
 };
 
-struct FitParameterText {
-  std::string name, unit;
-  double value;
-  std::optional<double> uncertainty;  ///< empty when held fixed
-};
-
-/// A decay record and its fit of Nelson & Olsson (1986) Eq. (25).
-struct DecayRecord {
-  std::vector<double> times;       ///< (s)
-  std::vector<double> amplitudes;  ///< (rad)
-  std::vector<double> sigmas;      ///< (rad); empty when the record states none
-  /// theta0(t) of the fit at the record's times and on a fine grid, with its
-  /// standard uncertainty from the fit's covariance (rad).
-  std::vector<double> fitted;
-  std::vector<double> grid, grid_fit, grid_uncertainty;
-  std::vector<FitParameterText> parameters;
-  std::string model;  ///< which terms were fitted, and why
-  double chi2 = 0.0;
-  int dof = 0;
-  std::string uncertainty_scaling;
-};
-
 /// A series of observations (lengths or pivot positions) and the fit of
 /// the period model to them, with the textbook line T^2 = (4 pi^2/g)(L + L0).
 struct SeriesRecord {
@@ -66,15 +42,23 @@ struct SeriesRecord {
   double chi2 = 0.0;
   int dof = 0;
   std::optional<double> probability;
-  double textbook_g = 0.0;            ///< (m/s^2)
+  /// (m/s^2); empty when the lengths determine no line (all equal, with
+  /// the offset fitted).
+  std::optional<double> textbook_g;
   double textbook_length_offset = 0.0;  ///< (m), 0 unless fitted
 };
 
 struct SceneReport {
   std::string input;  ///< the file as the user named it
   std::string title, source;
-  Measured g, g_uncorrected;     ///< (m/s^2)
-  Measured period_measured, period_ideal;  ///< (s)
+  /// An uncertainty is empty when unknown (a singular fit): the report draws
+  /// no error bar and says "uncertainty unknown".
+  Estimate g;                 ///< (m/s^2)
+  /// g of Eq. 5, or of the textbook line of a series (m/s^2); empty when
+  /// the lengths determine no line.
+  std::optional<Estimate> g_uncorrected;
+  Measured period_measured;   ///< (s)
+  Estimate period_ideal;      ///< (s)
   int trials = 0;
   int oscillations_per_trial = 1;
   /// A series: the corrections above are its first observation's.
@@ -89,6 +73,9 @@ struct SceneReport {
   std::optional<double> budget_correlation_variance;
   std::vector<std::string> inputs_without_uncertainty;
   std::optional<DecayRecord> decay;
+  /// The recordings behind the scene's timing or decay record, each drawn
+  /// in the scene's section (make_recording_record).
+  std::vector<RecordingRecord> recordings;
   std::vector<std::string> warnings;  ///< the scene's and the analysis's
 };
 

@@ -60,7 +60,11 @@ std::string xml_escape(const std::string& text);
 enum class Colour { black, blue, vermillion, green, orange, sky_blue, purple, grey };
 const char* colour_hex(Colour c);
 
-enum class Marker { none, circle, square, triangle, diamond };
+/// `tick`: a short vertical stroke through the point (e.g. an event on a
+/// time axis). A series of ticks, or of more than 1000 filled circles, is
+/// written as one path (a dot is a round-capped stroke of length 0), so that
+/// a long record stays a small file.
+enum class Marker { none, circle, square, triangle, diamond, tick };
 enum class Dash { solid, dashed, dotted, dash_dot };
 
 enum class Scale { linear, log };

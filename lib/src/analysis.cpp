@@ -614,10 +614,10 @@ class Fit {
 
   void report_textbook() {
     const StraightLine& line = textbook_;
-    TextbookFit& t = out_.fit.textbook;
-    const double g = 4.0 * kPi * kPi / line.slope;
-    t.g = {g, g * std::sqrt(line.var_slope) / line.slope};
-    if (P > 1 && fitted_[1]) {
+    const double g = 4.0 * kPi * kPi / line.slope, sigma = g * std::sqrt(line.var_slope) / line.slope;
+    if (g > 0.0 && std::isfinite(g) && std::isfinite(sigma)) out_.fit.textbook = TextbookFit{{g, sigma}, {}};
+    if (out_.fit.textbook && P > 1 && fitted_[1]) {  // else no line: the lengths are all equal
+      TextbookFit& t = *out_.fit.textbook;
       const double a = line.slope, b = line.intercept;
       const double var = line.var_intercept / (a * a) + b * b * line.var_slope / (a * a * a * a) -
                          2.0 * b * line.cov / (a * a * a);

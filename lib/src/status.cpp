@@ -181,6 +181,10 @@ Verdict judge(const ParsedScene& scene, const Analysis& analysis) {
   Verdict v;
   auto bob = bob_density_slip(scene.apparatus);
   judge_g(analysis, bob.has_value(), v.reasons);
+  if (!analysis.g.uncertainty) {
+    v.reasons.push_back("g has no uncertainty: the observations cannot separate the unknowns (the fit's covariance "
+                        "is singular); add observations at other settings, or fit fewer unknowns");
+  }
   if (bob) v.reasons.push_back(std::move(*bob));
   v.reasons.insert(v.reasons.end(), scene.suspicions.begin(), scene.suspicions.end());
   judge_air(scene, v.reasons);

@@ -156,7 +156,9 @@ struct FitReport {
   std::string method;  ///< "closed_form" or "ceres_levenberg_marquardt"
   std::string termination;
   int iterations = 0;
-  TextbookFit textbook;                 ///< the simple pendulum's
+  /// The simple pendulum's; none where the lengths determine no line (all
+  /// equal, with the offset fitted).
+  std::optional<TextbookFit> textbook;
   std::optional<PivotScan> pivot_scan;  ///< the physical pendulum's
 };
 

@@ -212,10 +212,13 @@ json fit_json(const ParsedScene& scene, const Analysis& a) {
          {"negligible_threshold_delta_T_s", o.negligible_below},
          {"corrections", corrections_json(o)}});
   }
-  json textbook = {{"equation", f.textbook.length_offset ? "T^2 = (4 pi^2 / g) (L + length_offset), no corrections"
-                                                          : "T^2 = (4 pi^2 / g) L, no corrections"},
-                   {"g", measured(f.textbook.g, "m/s^2")}};
-  if (f.textbook.length_offset) textbook["length_offset"] = measured(*f.textbook.length_offset, "m");
+  json textbook = nullptr;  // the lengths determine no line
+  if (f.textbook) {
+    textbook = {{"equation", f.textbook->length_offset ? "T^2 = (4 pi^2 / g) (L + length_offset), no corrections"
+                                                       : "T^2 = (4 pi^2 / g) L, no corrections"},
+                {"g", measured(f.textbook->g, "m/s^2")}};
+    if (f.textbook->length_offset) textbook["length_offset"] = measured(*f.textbook->length_offset, "m");
+  }
   if (f.pivot_scan) {
     for (std::size_t k = 0; k < observations.size(); ++k) {
       const PivotScan::Conjugate& c = f.pivot_scan->conjugates[k];
@@ -278,7 +281,7 @@ std::string result_json(const ParsedScene& scene, const Analysis& a, const Analy
   } else {
     const ObservationResult& o = a.observations.front();
     out["g"] = g_json(a);
-    if (!a.fit.pivot_scan) out["g_uncorrected"] = measured(a.fit.textbook.g, "m/s^2");
+    if (a.fit.textbook) out["g_uncorrected"] = measured(a.fit.textbook->g, "m/s^2");
     out["period"] = {{"measured", measured(o.period_measured, "s")},
                      {"ideal", measured(o.period_ideal, "s")},
                      {"trials", o.trials},
@@ -512,8 +515,8 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     std::snprintf(line, sizeof line, "Ideal period T0     = %.6f %s s\n", o.period_ideal.value,
                   plus_minus(o.period_ideal.uncertainty, "%.6f").c_str());
     os << line;
-    if (!a.fit.pivot_scan) {
-      os << "g (uncorrected)     = " << rounded(a.fit.textbook.g.value, a.fit.textbook.g.uncertainty) << " m/s^2\n";
+    if (a.fit.textbook) {
+      os << "g (uncorrected)     = " << rounded(a.fit.textbook->g.value, a.fit.textbook->g.uncertainty) << " m/s^2\n";
     }
   } else {
     std::snprintf(line, sizeof line, "%5s %9s %12s %12s %10s %12s %9s %12s\n", "obs", "L (m)", "theta0 (deg)",
@@ -547,8 +550,10 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
         std::snprintf(line, sizeof line, "Bessel's formula    : g = %.8f m/s^2\n", *scan.bessel_g);
         os << line;
       }
+    } else if (!a.fit.textbook) {
+      os << "Textbook line T^2 = (4 pi^2/g)(L + offset): none, the lengths are all equal\n";
     } else {
-      const TextbookFit& t = a.fit.textbook;
+      const TextbookFit& t = *a.fit.textbook;
       std::snprintf(line, sizeof line, "Textbook line T^2 = (4 pi^2/g)%s, no corrections: g = %.5f %s m/s^2",
                     t.length_offset ? "(L + offset)" : " L", t.g.value, plus_minus(t.g.uncertainty, "%.5f").c_str());
       os << line;

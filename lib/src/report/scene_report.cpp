@@ -73,9 +73,7 @@ SceneReport make_scene_report(const std::string& input, const ParsedScene& scene
   r.title = scene.title;
   r.source = scene.source;
   r.g = a.g;
-  // Identical lengths with the offset fitted: the analysis's textbook line
-  // has no finite slope.
-  if (std::isfinite(a.fit.textbook.g.value)) r.g_uncorrected = a.fit.textbook.g;
+  if (a.fit.textbook) r.g_uncorrected = a.fit.textbook->g;
   r.period_measured = {first.period_measured.value, first.period_measured.uncertainty};
   r.period_ideal = first.period_ideal;
   r.trials = first.trials;
@@ -110,7 +108,9 @@ SceneReport make_scene_report(const std::string& input, const ParsedScene& scene
     s.dof = a.fit.dof;
     s.probability = a.fit.probability;
     if (r.g_uncorrected) s.textbook_g = r.g_uncorrected->value;
-    if (a.fit.textbook.length_offset) s.textbook_length_offset = a.fit.textbook.length_offset->value;
+    if (a.fit.textbook && a.fit.textbook->length_offset) {
+      s.textbook_length_offset = a.fit.textbook->length_offset->value;
+    }
     r.series = s;
   }
   r.warnings = scene.warnings;

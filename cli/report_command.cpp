@@ -87,8 +87,8 @@ Command add_report_command(CLI::App& app) {
   cmd->add_option("-o,--output", o->output, "Output file (default: standard output); written whole or not at all");
   cmd->add_option("--format", o->format, "html (default: the whole report) or svg (one plot, see --plot)")
       ->check(CLI::IsMember({"html", "svg"}));
-  cmd->add_option("--plot", o->plot, "The plot for --format svg: corrections, budget, decay, series (implies svg)")
-      ->check(CLI::IsMember({"corrections", "budget", "decay", "series"}));
+  cmd->add_option("--plot", o->plot, "The plot for --format svg: corrections, budget, decay, series, pivot-scan (implies svg)")
+      ->check(CLI::IsMember({"corrections", "budget", "decay", "series", "pivot-scan"}));
   add_analysis_options(*cmd, o->analysis);
 
   return {cmd, [o, cmd] {

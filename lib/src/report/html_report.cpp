@@ -75,8 +75,12 @@ std::string g_comparison(const SceneReport& r) {
   } else {
     row("expected g", "the scene gives no site to compare with");
   }
-  row(r.series ? "g of the textbook line (no corrections)" : "g uncorrected (Eq. 5)",
-      format_fixed(r.g_uncorrected.value, 5) + " \u00B1 " + format_fixed(r.g_uncorrected.uncertainty, 5) + " m/s\u00B2");
+  if (r.pivot_scan) {
+    row("g of the textbook curve (no corrections)", format_fixed(r.pivot_scan->textbook_g, 5) + " m/s\u00B2");
+  } else {
+    row(r.series ? "g of the textbook line (no corrections)" : "g uncorrected (Eq. 5)",
+        format_fixed(r.g_uncorrected.value, 5) + " \u00B1 " + format_fixed(r.g_uncorrected.uncertainty, 5) + " m/s\u00B2");
+  }
   if (r.series) return s + "</table>\n";  // the periods are in the series' table
   row("measured period T", format_fixed(r.period_measured.value, 6) + " \u00B1 " +
                                format_fixed(r.period_measured.uncertainty, 6) + " s (" + std::to_string(r.trials) +
@@ -150,7 +154,8 @@ std::string decay_table(const DecayRecord& d) {
   return s;
 }
 
-std::string series_table(const SeriesRecord& d) {
+/// `setting` heads the settings' column: "L (m)", "pivot position x (m)".
+std::string series_table(const SeriesRecord& d, const std::string& setting) {
   std::string s =
       "<table class=\"series\">\n<thead><tr><th scope=\"col\">parameter</th><th scope=\"col\" class=\"num\">value</th>"
       "<th scope=\"col\">unit</th></tr></thead>\n<tbody>\n";
@@ -159,7 +164,7 @@ std::string series_table(const SeriesRecord& d) {
          (p.uncertainty ? value_with_uncertainty(p.value, *p.uncertainty, false) : format_significant(p.value, 6)) +
          "</td><td>" + esc(p.unit) + "</td></tr>\n";
   }
-  s += "</tbody>\n</table>\n<table class=\"observations\">\n<thead><tr><th scope=\"col\" class=\"num\">L (m)</th>"
+  s += "</tbody>\n</table>\n<table class=\"observations\">\n<thead><tr><th scope=\"col\" class=\"num\">" + esc(setting) + "</th>"
        "<th scope=\"col\" class=\"num\">T measured (s)</th><th scope=\"col\" class=\"num\">\u03C3 (s)</th>"
        "<th scope=\"col\" class=\"num\">T model (s)</th><th scope=\"col\" class=\"num\">residual (\u03C3)</th></tr></thead>\n<tbody>\n";
   for (std::size_t k = 0; k < d.lengths.size(); ++k) {
@@ -200,7 +205,12 @@ std::string scene_section(const SceneReport& r, const std::string& anchor) {
     s += "<h3>Uncertainty budget of g</h3>\n" + figure_html(to_svg(*b, false), b->description) + budget_table(r);
   }
   if (auto f = series_figure(r, anchor + "-series")) {
-    s += "<h3>Series fit</h3>\n" + figure_html(to_svg(*f, false), f->description) + series_table(*r.series);
+    s += "<h3>Series fit</h3>\n" + figure_html(to_svg(*f, false), f->description) + series_table(*r.series, "L (m)");
+  }
+  if (auto f = pivot_scan_figure(r, anchor + "-pivot-scan")) {
+    const std::string setting = r.pivot_scan->setting == Setting::pivot_position ? "pivot position x (m)" : "pivot distance h (m)";
+    s += std::string(r.pivot_scan->bessel_g ? "<h3>Kater's pendulum</h3>\n" : "<h3>Pivot scan</h3>\n") +
+         figure_html(to_svg(*f, false), f->description) + series_table(*r.series, setting);
   }
   if (auto d = decay_figure(r, anchor + "-decay")) {
     s += "<h3>Decay record</h3>\n" + figure_html(to_svg(*d, false), d->description) + decay_table(*r.decay);

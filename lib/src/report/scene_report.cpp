@@ -107,6 +107,7 @@ SceneReport make_scene_report(const std::string& input, const ParsedScene& scene
     if (a.fit.textbook.length_offset) s.textbook_length_offset = a.fit.textbook.length_offset->value;
     r.series = s;
   }
+  r.pivot_scan = pivot_scan_record(scene, a);
   r.warnings = scene.warnings;
   r.warnings.insert(r.warnings.end(), a.warnings.begin(), a.warnings.end());
   return r;

@@ -18,7 +18,8 @@ out=$(realpath "$out") exe=$(realpath "$exe")
 "$exe" report "$data/metre_stick_pivot_scan.json" -o "$out/report-pivot-scan.html" 2>/dev/null
 "$exe" report "$data/kater_reversible_pendulum.json" -o "$out/report-kater.html" 2>/dev/null
 (cd "$data" && "$exe" batch class --report "$out/report-class.html" >/dev/null) || [ $? -eq 1 ]
-pages=(report-nelson-olsson:2880 report-decay:3870 report-series:5090 report-class:6150)
+pages=(report-nelson-olsson:2880 report-decay:3870 report-series:5090 report-pivot-scan:7090 report-kater:4170
+       report-class:6150)
 
 case $mode in
   xml)

@@ -209,8 +209,11 @@ std::string scene_section(const SceneReport& r, const std::string& anchor) {
   }
   if (auto f = pivot_scan_figure(r, anchor + "-pivot-scan")) {
     const std::string setting = r.pivot_scan->setting == Setting::pivot_position ? "pivot position x (m)" : "pivot distance h (m)";
+    // sigma is the fit's, with the pivot's uncertainty, which dominates where T is steep: reduce's residuals.
+    SeriesRecord rows = *r.series;
+    rows.period_uncertainties = r.pivot_scan->uncertainties;
     s += std::string(r.pivot_scan->bessel_g ? "<h3>Kater's pendulum</h3>\n" : "<h3>Pivot scan</h3>\n") +
-         figure_html(to_svg(*f, false), f->description) + series_table(*r.series, setting);
+         figure_html(to_svg(*f, false), f->description) + series_table(rows, setting);
   }
   if (auto d = decay_figure(r, anchor + "-decay")) {
     s += "<h3>Decay record</h3>\n" + figure_html(to_svg(*d, false), d->description) + decay_table(*r.decay);

@@ -123,7 +123,9 @@ std::optional<Figure> pivot_scan_figure(const SceneReport& r, const std::string&
                      ", with the physical-pendulum model fitted with every correction (g = " + format_fixed(r.g.value, 5) +
                      " m/s^2, k = " + format_fixed(d.radius_of_gyration, 5) + " m" +
                      (positions ? ", centre of mass at " + format_fixed(d.center, 5) + " m" : "") +
-                     "), drawn on each side of the centre of mass, where the period is infinite, ";
+                     "), drawn " +
+                     (positions ? "on each side of the centre of mass, never across it (the period diverges there), "
+                                : "for h > 0 (the period diverges at the centre of mass, h = 0), ");
   if (d.amplitude_max == d.amplitude_min) {
     text += "at the observations' amplitude of " + format_fixed(amplitude, 2) + " deg";
   } else {

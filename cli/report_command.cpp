@@ -124,9 +124,10 @@ Command add_report_command(CLI::App& app) {
       ->allow_extra_args(false)  // one value each time: the file after it is not a format
       ->take_all();
   cmd->add_option("--plot", o->plot,
-                  "The plot for --format svg (implies svg): corrections, budget, decay, series for a scene; "
-                  "signal, amplitude, period-amplitude for a recording")
-      ->check(CLI::IsMember({"corrections", "budget", "decay", "series", "signal", "amplitude", "period-amplitude"}));
+                  "The plot for --format svg (implies svg): corrections, budget, decay, series, pivot-scan for a "
+                  "scene; signal, amplitude, period-amplitude for a recording")
+      ->check(CLI::IsMember(
+          {"corrections", "budget", "decay", "series", "pivot-scan", "signal", "amplitude", "period-amplitude"}));
   add_analysis_options(*cmd, o->analysis);
   add_swing_options(*cmd, o->swing);
 
@@ -139,7 +140,7 @@ Command add_report_command(CLI::App& app) {
     const bool svg = !o->plot.empty() || format == "svg";
     if (svg && o->plot.empty()) {
       std::cerr << cmd->get_name()
-                << ": --format svg needs --plot corrections, budget, decay or series (a scene), or signal, "
+                << ": --format svg needs --plot corrections, budget, decay, series or pivot-scan (a scene), or signal, "
                    "amplitude or period-amplitude (a recording)\n";
       return 2;
     }

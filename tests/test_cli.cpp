@@ -1210,3 +1210,26 @@ TEST_CASE("report: an unknown uncertainty (a singular fit) is written and drawn 
   // No "± 0", "± 0.0000" anywhere (a zero uncertainty written as a number).
   CHECK_FALSE(std::regex_search(r.out, std::regex("\u00B1 0(\\.0+)?([^0-9.]|$)")));
 }
+
+TEST_CASE("report: a pivot scan and Kater's pendulum, plotted as pivot scans", "[cli][report][pivot]") {
+  const std::string scan = std::string(PENDULUM_DATA_DIR) + "/metre_stick_pivot_scan.json";
+  const Run r = run("report " + scan);
+  REQUIRE(r.status == 0);
+  CHECK(external_reference(r.out) == "");
+  CHECK(occurrences(r.out, "<svg ") == 3);  // corrections of the first observation, budget, pivot scan
+  CHECK_THAT(r.out, Contains("<h3>Pivot scan</h3>"));
+  CHECK_THAT(r.out, !Contains("Series fit"));
+  CHECK_THAT(r.out, Contains("pivot position x (m)"));
+  const Run plot = run("report " + scan + " --plot pivot-scan");
+  REQUIRE(plot.status == 0);
+  CHECK_THAT(plot.out, Contains("<title id=\"pivot-scan-title\">Pivot scan: period T against pivot position"));
+  CHECK(run("report " + scan + " --plot series").out == plot.out);  // the scene's plot of its observations
+  const Run kater = run("report " + std::string(PENDULUM_DATA_DIR) + "/kater_reversible_pendulum.json");
+  REQUIRE(kater.status == 0);
+  CHECK_THAT(kater.out, Contains("<h3>Kater's pendulum</h3>"));
+  CHECK_THAT(kater.out, Contains("Bessel&#39;s formula on their ideal periods gives g = 9.81206 m/s^2"));
+  CHECK_THAT(kater.out, Contains("1 period correction, each"));
+  const Run simple = run("report " + std::string(PENDULUM_DATA_DIR) + "/pendulum_lengths_series.json --plot pivot-scan");
+  CHECK(simple.status == 1);
+  CHECK_THAT(simple.err, Contains("observations: the scene is not a pivot scan"));
+}

@@ -9,15 +9,19 @@ mkdir -p "$out"
 out=$(realpath "$out") exe=$(realpath "$exe")
 
 # The pages: a scene, a scene with a decay record, a series (it warns of a
-# trial on stderr), a class (student_c fails,
-# so batch exits 1 by design), each with the height of its whole page (px).
+# trial on stderr), a pivot scan and Kater's pendulum (both warn), a class
+# (student_c fails, so batch exits 1 by design), each with the height of its
+# whole page (px).
 "$exe" report "$data/nelson_olsson_1986.json" -o "$out/report-nelson-olsson.html"
 "$exe" report "$data/nelson_olsson_1986_decay.json" -o "$out/report-decay.html"
 "$exe" report "$data/pendulum_lengths_series.json" -o "$out/report-series.html" 2>/dev/null
+"$exe" report "$data/metre_stick_pivot_scan.json" -o "$out/report-pivot-scan.html" 2>/dev/null
+"$exe" report "$data/kater_reversible_pendulum.json" -o "$out/report-kater.html" 2>/dev/null
 (cd "$data" && "$exe" batch class --report "$out/report-class.html" >/dev/null) || [ $? -eq 1 ]
 # A recording: the signal with its crossings, the amplitudes, the periods.
 "$exe" report "$data/recordings/phyphox_gyroscope.csv" -o "$out/report-recording.html"
-pages=(report-nelson-olsson:2880 report-decay:3870 report-series:5090 report-class:6150 report-recording:3000)
+pages=(report-nelson-olsson:2880 report-decay:3870 report-series:5090 report-pivot-scan:7090 report-kater:4170
+       report-class:6150 report-recording:3000)
 
 case $mode in
   xml)
@@ -33,6 +37,8 @@ case $mode in
     for plot in signal amplitude period-amplitude; do
       "$exe" report "$data/recordings/phyphox_gyroscope.csv" --plot $plot -o "$out/recording-$plot.svg"
     done
+    "$exe" report "$data/metre_stick_pivot_scan.json" --plot pivot-scan -o "$out/pivot-scan.svg" 2>/dev/null
+    "$exe" report "$data/kater_reversible_pendulum.json" --plot pivot-scan -o "$out/kater.svg" 2>/dev/null
     # The pages are written as well-formed XML too, so the same parser checks them.
     for f in "$out"/*.svg "$out"/*.html; do
       xmllint --noout "$f"

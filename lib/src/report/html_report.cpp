@@ -76,9 +76,13 @@ std::string g_comparison(const SceneReport& r) {
   } else {
     row("expected g", "the scene gives no site to compare with");
   }
-  row(r.series ? "g of the textbook line (no corrections)" : "g uncorrected (Eq. 5)",
-      r.g_uncorrected ? estimate_text(*r.g_uncorrected, 5, "m/s\u00B2")
-                      : "undefined: the lengths do not determine a line");
+  if (r.pivot_scan) {
+    row("g of the textbook curve (no corrections)", format_fixed(r.pivot_scan->textbook_g, 5) + " m/s\u00B2");
+  } else {
+    row(r.series ? "g of the textbook line (no corrections)" : "g uncorrected (Eq. 5)",
+        r.g_uncorrected ? estimate_text(*r.g_uncorrected, 5, "m/s\u00B2")
+                        : "undefined: the lengths do not determine a line");
+  }
   if (r.series) return s + "</table>\n";  // the periods are in the series' table
   row("measured period T", format_fixed(r.period_measured.value, 6) + " \u00B1 " +
                                format_fixed(r.period_measured.uncertainty, 6) + " s (" + std::to_string(r.trials) +
@@ -163,9 +167,10 @@ std::string decay_table(const DecayRecord& d) {
   return s;
 }
 
-std::string series_table(const SeriesRecord& d) {
+/// `setting` heads the settings' column: "L (m)", "pivot position x (m)".
+std::string series_table(const SeriesRecord& d, const std::string& setting) {
   std::string s = parameters_table("series", d.parameters);
-  s += "<table class=\"observations\">\n<thead><tr><th scope=\"col\" class=\"num\">L (m)</th>"
+  s += "<table class=\"observations\">\n<thead><tr><th scope=\"col\" class=\"num\">" + esc(setting) + "</th>"
        "<th scope=\"col\" class=\"num\">T measured (s)</th><th scope=\"col\" class=\"num\">\u03C3 (s)</th>"
        "<th scope=\"col\" class=\"num\">T model (s)</th><th scope=\"col\" class=\"num\">residual (\u03C3)</th></tr></thead>\n<tbody>\n";
   for (std::size_t k = 0; k < d.lengths.size(); ++k) {
@@ -248,7 +253,15 @@ std::string scene_section(const SceneReport& r, const std::string& anchor) {
     s += "<h3>Uncertainty budget of g</h3>\n" + figure_html(to_svg(*b, false), b->description) + budget_table(r);
   }
   if (auto f = series_figure(r, anchor + "-series")) {
-    s += "<h3>Series fit</h3>\n" + figure_html(to_svg(*f, false), f->description) + series_table(*r.series);
+    s += "<h3>Series fit</h3>\n" + figure_html(to_svg(*f, false), f->description) + series_table(*r.series, "L (m)");
+  }
+  if (auto f = pivot_scan_figure(r, anchor + "-pivot-scan")) {
+    const std::string setting = r.pivot_scan->setting == Setting::pivot_position ? "pivot position x (m)" : "pivot distance h (m)";
+    // sigma is the fit's, with the pivot's uncertainty, which dominates where T is steep: reduce's residuals.
+    SeriesRecord rows = *r.series;
+    rows.period_uncertainties = r.pivot_scan->uncertainties;
+    s += std::string(r.pivot_scan->bessel_g ? "<h3>Kater's pendulum</h3>\n" : "<h3>Pivot scan</h3>\n") +
+         figure_html(to_svg(*f, false), f->description) + series_table(rows, setting);
   }
   if (auto d = decay_figure(r, anchor + "-decay")) {
     s += "<h3>Decay record</h3>\n" + figure_html(to_svg(*d, false), d->description) + decay_table(*r.decay);

@@ -129,8 +129,8 @@ std::optional<CategoryChart> corrections_chart(const SceneReport& r, const std::
     threshold.colour = Colour::vermillion;
     ch.references.push_back(threshold);
   }
-  ch.description = std::to_string(count) +
-                   " period corrections, each as the size of its change to the period, Delta T, in microseconds "
+  ch.description = std::to_string(count) + (count == 1 ? " period correction" : " period corrections") +
+                   ", each as the size of its change to the period, Delta T, in microseconds "
                    "on a logarithmic axis with its standard uncertainty as an error bar; filled bars are applied, "
                    "open bars are negligible (smaller than the threshold line) but still applied. The signed "
                    "value of each is written at the right of its row." +
@@ -217,7 +217,7 @@ Figure decay_figure(const DecayRecord& d, const std::string& id) {
 }
 
 std::optional<Figure> series_figure(const SceneReport& r, const std::string& id) {
-  if (!r.series) return std::nullopt;
+  if (!r.series || r.pivot_scan) return std::nullopt;  // a pivot scan has its own plot
   const SeriesRecord& s = *r.series;
   FitPlotData p;
   p.id = id;
@@ -320,7 +320,7 @@ std::vector<std::string> plot_names(const SceneReport& r) {
   if (corrections_chart(r, "x")) names.push_back("corrections");
   if (budget_chart(r, "x")) names.push_back("budget");
   if (r.decay) names.push_back("decay");
-  if (r.series) names.push_back("series");
+  if (r.series) names.push_back(r.pivot_scan ? "pivot-scan" : "series");
   return names;
 }
 
@@ -337,9 +337,17 @@ std::string plot_svg(const SceneReport& r, const std::string& name) {
     if (auto f = decay_figure(r, "decay")) return to_svg(*f, true);
     throw InputError("decay.data", "the scene has no decay record to plot");
   }
+  // A physical pendulum's series is plotted as a pivot scan, under either name.
+  if (name == "series" || name == "pivot-scan") {
+    if (auto f = pivot_scan_figure(r, "pivot-scan")) return to_svg(*f, true);
+  }
   if (name == "series") {
     if (auto f = series_figure(r, "series")) return to_svg(*f, true);
     throw InputError("observations", "the scene is not a series of observations");
+  }
+  if (name == "pivot-scan") {
+    throw InputError("observations", "the scene is not a pivot scan (a physical pendulum's series of "
+                                     "pivot_position or pivot_distance observations)");
   }
   std::string known;
   for (const auto& n : plot_names(r)) known += (known.empty() ? "" : ", ") + n;

@@ -113,6 +113,7 @@ SceneReport make_scene_report(const std::string& input, const ParsedScene& scene
     }
     r.series = s;
   }
+  r.pivot_scan = pivot_scan_record(scene, a);
   r.warnings = scene.warnings;
   r.warnings.insert(r.warnings.end(), a.warnings.begin(), a.warnings.end());
   return r;

@@ -72,6 +72,13 @@ Figure decay_figure(const DecayRecord& d, const std::string& id);
 /// residuals; empty for a scene of one observation.
 std::optional<Figure> series_figure(const SceneReport& r, const std::string& id);
 
+/// A physical pendulum's series as a pivot scan: T against the pivot's
+/// setting with u(T) error bars, the fitted model as a curve on each side of
+/// the centre of mass, the textbook curve, the minimum period and the first
+/// pivot's conjugate (Kater's knife edges with Bessel's g), and the
+/// residuals; empty for any other scene (src/report/pivot_scan_plot.cpp).
+std::optional<Figure> pivot_scan_figure(const SceneReport& r, const std::string& id);
+
 /// One student's result in a class chart.
 struct ClassPoint {
   std::string label, link;
@@ -85,7 +92,8 @@ struct ClassPoint {
 /// band (one line when the class shares it, a marker per row otherwise).
 CategoryChart class_chart(std::vector<ClassPoint> points, const std::string& id);
 
-/// The plots the scene's data allow, by name: corrections, budget, decay, series.
+/// The plots the scene's data allow, by name: corrections, budget, decay,
+/// series, pivot-scan.
 std::vector<std::string> plot_names(const SceneReport& r);
 
 /// One plot as a standalone SVG file. Throws InputError naming what the

@@ -1,14 +1,16 @@
 #pragma once
 /// \file scene_report.hpp
 /// \brief What a report shows of one reduced scene, as plain data in SI
-/// units. `make_scene_report` (src/report/scene_report.cpp) is the only
-/// place in the report code that reads ParsedScene, Analysis and DecayFit,
-/// so that a change to those touches one file.
+/// units. `make_scene_report` (src/report/scene_report.cpp) and, for a
+/// physical pendulum, `pivot_scan_record` (src/report/pivot_scan_record.cpp)
+/// are the only places in the report code that read ParsedScene, Analysis
+/// and DecayFit, so that a change to those touches two files.
 
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "pendulum/amplitude.hpp"
 #include "pendulum/analysis.hpp"
 #include "pendulum/parsed_scene.hpp"
 #include "pendulum/report/decay_record.hpp"
@@ -48,6 +50,57 @@ struct SeriesRecord {
   double textbook_length_offset = 0.0;  ///< (m), 0 unless fitted
 };
 
+/// A physical pendulum's observations as a pivot scan (docs/report.md): the
+/// fitted model and the textbook curve sampled on each side of the centre of
+/// mass, never across it (the period is infinite at h = 0), up to the top
+/// of the plotted period range, and the marks of the analysis's PivotScan.
+/// Settings x (m) are the observations' own: pivot positions from the
+/// body's mark, or pivot distances from the centre of mass.
+struct PivotScanRecord {
+  /// A curve on one side of its centre: x (m) uniform in h, from where the
+  /// period comes down to period_high near the centre to the plotted range's
+  /// end (or where the period rises to period_high again), and the value
+  /// there (s).
+  struct Branch {
+    std::vector<double> x, period;
+  };
+  Setting setting = Setting::pivot_position;
+  double center = 0.0;  ///< x of the model's centre of mass (m); 0 for pivot distances
+  double radius_of_gyration = 0.0;  ///< k of the model (m)
+  /// One branch per side of the centre that reaches into the plotted range.
+  std::vector<Branch> model, textbook;
+  /// The textbook curve minus the model on the model's grid, where both are
+  /// in the plotted range on the same side of their centres (s).
+  std::vector<Branch> textbook_minus_model;
+  /// The curve is the model's for an observation at `amplitude` (rad, the
+  /// median of the observations'), timed like the first, with the working
+  /// period its ideal period at each x, and the amplitude method the
+  /// analysis chose for the observation nearest that amplitude.
+  double amplitude = 0.0;
+  double amplitude_min = 0.0, amplitude_max = 0.0;  ///< of the observations (rad)
+  int oscillations_per_trial = 1;
+  AmplitudeChoice amplitude_method{AmplitudeMethod::agm, 0, 0.0};
+  /// Each observation's error bar: the fit's effective uncertainty, u(T)
+  /// with its pivot's and amplitude's uncertainties carried to T (s). Near
+  /// the centre, where T is steep, the pivot's dominates.
+  std::vector<double> uncertainties;
+  double period_low = 0.0, period_high = 0.0;  ///< the plotted period range (s)
+  /// The textbook curve T = 2 pi sqrt((k^2 + h^2)/(g h)) without corrections,
+  /// from the straight line T^2 h = (4 pi^2/g)(k^2 + h^2) in h^2 fitted to
+  /// the measured periods (analysis.hpp, physical_start).
+  double textbook_g = 0.0, textbook_k = 0.0, textbook_center = 0.0;  ///< (m/s^2, m, m)
+  /// The analysis's minimum (ideal period, h = k) and where it lies, with
+  /// the model's period there (on the plotted curve).
+  Estimate minimum_period{0.0, std::nullopt}, minimum_pivot_distance{0.0, std::nullopt};
+  std::vector<Estimate> minimum_x;
+  double minimum_model_period = 0.0;  ///< (s)
+  /// The first observation's conjugate pivot of equal period, when the
+  /// analysis gives it: x' (m) and l = h + h' (m).
+  std::optional<Estimate> conjugate_x, equivalent_length;
+  double conjugate_period = 0.0;  ///< the model's period at the first observation's x (s)
+  std::optional<double> bessel_g;  ///< Kater's reversible pendulum (m/s^2)
+};
+
 struct SceneReport {
   std::string input;  ///< the file as the user named it
   std::string title, source;
@@ -63,6 +116,8 @@ struct SceneReport {
   int oscillations_per_trial = 1;
   /// A series: the corrections above are its first observation's.
   std::optional<SeriesRecord> series;
+  /// A physical pendulum's series, plotted as a pivot scan.
+  std::optional<PivotScanRecord> pivot_scan;
   std::optional<Measured> expected_g;  ///< (m/s^2)
   std::string expected_source, expected_note;
   std::optional<double> z;
@@ -78,6 +133,10 @@ struct SceneReport {
   std::vector<RecordingRecord> recordings;
   std::vector<std::string> warnings;  ///< the scene's and the analysis's
 };
+
+/// The pivot-scan record of an analysed physical pendulum's series; empty
+/// for any other scene.
+std::optional<PivotScanRecord> pivot_scan_record(const ParsedScene& scene, const Analysis& analysis);
 
 /// The report data of an analysed scene; `input` names its file.
 SceneReport make_scene_report(const std::string& input, const ParsedScene& scene, const Analysis& analysis);

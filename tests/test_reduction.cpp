@@ -92,6 +92,36 @@ TEST_CASE("A bare scene computes only what it has", "[reduction]") {
   CHECK(row(a, "buoyancy").reason == "the scene is in vacuum");
 }
 
+// A fit composes T/T0 once per observation when no applied correction reads
+// the swing's length (period_fit.cpp): a correction marked as not reading it
+// must not change with it. Nelson & Olsson's apparatus applies all sixteen.
+// The support's Eq. (87), m g/(2 K l) with the working g = omega^2 l, reads
+// the length but leaves m omega^2/(2 K): marked as reading it, the safe side.
+TEST_CASE("The corrections marked reads_length are those that change with the swing's length", "[reduction][fit]") {
+  const ParsedScene s = parse_scene(test::nelson_olsson_text());
+  const Observation<double>& o = s.observations.front();
+  const AmplitudeChoice amplitude = cheapest_amplitude_method(o.amplitude, 0.0);
+  const Swing<double> swing = Swing<double>::of(o, 0.0);
+  Swing<double> longer = swing;
+  longer.length *= 1.25;
+  const Terms<double> at = correction_terms(s.apparatus, swing, amplitude);
+  const Terms<double> at_longer = correction_terms(s.apparatus, longer, amplitude);
+  for (int i = 0; i < kCorrectionCount; ++i) {
+    INFO(kCorrections[i].id);
+    REQUIRE(at[i].ratio.has_value());
+    const bool changes = *at[i].ratio != *at_longer[i].ratio;
+    if (!kCorrections[i].reads_length) {
+      CHECK_FALSE(changes);
+    } else if (kCorrections[i].correction != CorrectionId::support_motion) {
+      CHECK(changes);
+    }
+  }
+  CHECK(corrections_read_length(s.apparatus, swing, amplitude));
+  Apparatus<double> damped_only;  // the amplitude and the damping rows read no length
+  damped_only.decay = s.apparatus.decay;
+  CHECK_FALSE(corrections_read_length(damped_only, swing, amplitude));
+}
+
 namespace {
 // An independent propagation: central differences of the double-precision
 // reduction in each input, step 1e-3 of its uncertainty.

@@ -24,20 +24,48 @@ struct NormalSums {
   double rr = 0.0;
 };
 
-/// The apparatus and each observation's parameter-free swing (Model::swing)
-/// as dual numbers of N components: constants, converted once.
+/// A swing of constants (its derivatives 0) on dual numbers.
+template <class Jet>
+Swing<Jet> dual_swing(const Swing<double>& s) {
+  return {Jet(s.length), Jet(s.amplitude), Jet(s.omega), Jet(s.trial_duration), s.setting};
+}
+
+/// What a fit computes once: the apparatus on dual numbers of N components
+/// and, per observation, its measured swing (Model::swing), period, weight
+/// and amplitude method. The parameters reach the corrections through the
+/// swing's length alone (period_model.hpp), so when none of the corrections
+/// the apparatus applies reads the length (corrections_read_length, asked
+/// once per fit), each observation's T/T0 is the same at every step and is
+/// composed here, once, instead of at every evaluation.
 template <class Model, int N>
-struct DualData {
+struct FitData {
   using Jet = ceres::Jet<double, N>;
-  explicit DualData(const PeriodFitProblem<Model>& problem)
+  struct Row {
+    Swing<double> swing;
+    double period, weight;  ///< s, 1/s
+    const AmplitudeChoice* amplitude;
+    double ratio;  ///< T/T0 when `fixed_ratio`
+  };
+  FitData(const PeriodFitProblem<Model>& problem, const std::array<double, Model::kParameters>& start)
       : apparatus(convert_apparatus<Jet>(*problem.apparatus, [](const Field&, double x) { return Jet(x); })) {
-    swings.reserve(problem.observations->size());
-    for (const auto& o : *problem.observations) {
-      swings.push_back(Model::swing(convert_observation<Jet>(o, [](const Field&, double x) { return Jet(x); })));
+    const auto& obs = *problem.observations;
+    const Apparatus<double>& app = *problem.apparatus;
+    fixed_ratio = !obs.empty() &&
+                  !corrections_read_length(app, Model::swing_at(start.data(), Model::swing(obs[0]), app),
+                                           (*problem.amplitude)[0]);
+    rows.reserve(obs.size());
+    for (std::size_t k = 0; k < obs.size(); ++k) {
+      const Swing<double> measured = Model::swing(obs[k]);
+      const AmplitudeChoice& amplitude = (*problem.amplitude)[k];
+      const double ratio =
+          fixed_ratio ? 1.0 + Model::composition(app, Model::swing_at(start.data(), measured, app), amplitude).total
+                      : 0.0;
+      rows.push_back({measured, obs[k].period, (*problem.weights)[k], &amplitude, ratio});
     }
   }
   Apparatus<Jet> apparatus;
-  std::vector<Swing<Jet>> swings;
+  std::vector<Row> rows;
+  bool fixed_ratio;
 };
 
 /// g projected out (variable projection, Golub & Pereyra 1973). Every period
@@ -59,7 +87,8 @@ class ProjectedPeriods {
   using Jet = ceres::Jet<double, Q>;
   using VectorQ = Eigen::Matrix<double, Q, 1>;
 
-  explicit ProjectedPeriods(const PeriodFitProblem<Model>& problem) : problem_(problem), data_(problem) {}
+  ProjectedPeriods(const PeriodFitProblem<Model>& problem, const std::array<double, P>& start)
+      : problem_(problem), data_(problem, start) {}
 
   struct Point {
     double s;  ///< g^-1/2 at its best for q
@@ -73,27 +102,17 @@ class ProjectedPeriods {
     std::array<Jet, P> p;
     p[0] = Jet(1.0);  // g = 1: the period is h
     for (int i = 0; i < Q; ++i) p[i + 1] = problem_.fitted[i + 1] ? Jet(q[i], i) : Jet(q[i]);
-    double big_a = 0.0, big_b = 0.0;
-    VectorQ a = VectorQ::Zero(), b = VectorQ::Zero();
-    const auto& obs = *problem_.observations;
-    const auto& weights = *problem_.weights;
-    h_.resize(obs.size());
-    for (std::size_t k = 0; k < obs.size(); ++k) {
-      h_[k] = Model::period(p.data(), data_.swings[k], data_.apparatus, (*problem_.amplitude)[k]);
-      const double w2 = weights[k] * weights[k];
-      big_a += w2 * obs[k].period * h_[k].a;
-      big_b += w2 * h_[k].a * h_[k].a;
-      a += w2 * obs[k].period * h_[k].v;
-      b += w2 * h_[k].a * h_[k].v;
-    }
+    // Whether T/T0 was composed once is decided once per fit, outside the loop.
+    const Sums sums = data_.fixed_ratio ? model_sums<true>(p) : model_sums<false>(p);
+    const auto& rows = data_.rows;
     Point& pt = point_;
-    pt.s = big_a / big_b;
+    pt.s = sums.big_a / sums.big_b;
     const double s = pt.s;
-    const VectorQ ds = (a - 2.0 * s * b) / big_b;
+    const VectorQ ds = (sums.a - 2.0 * s * sums.b) / sums.big_b;
     pt.sums = NormalSums<Q>();
-    for (std::size_t k = 0; k < obs.size(); ++k) {
-      const double r = (s * h_[k].a - obs[k].period) * weights[k];
-      const VectorQ j = (h_[k].a * ds + s * h_[k].v) * weights[k];
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      const double r = (s * h_[k].a - rows[k].period) * rows[k].weight;
+      const VectorQ j = (h_[k].a * ds + s * h_[k].v) * rows[k].weight;
       pt.sums.jtj.noalias() += j * j.transpose();
       pt.sums.jtr += j * r;
       pt.sums.rr += r * r;
@@ -109,8 +128,37 @@ class ProjectedPeriods {
   }
 
  private:
+  struct Sums {
+    double big_a = 0.0, big_b = 0.0;
+    VectorQ a = VectorQ::Zero(), b = VectorQ::Zero();
+  };
+
+  /// Each observation's h and h' at p (g = 1) into h_, and the sums A, B, a, b.
+  template <bool kFixedRatio>
+  Sums model_sums(const std::array<Jet, P>& p) const {
+    Sums sums;
+    const auto& rows = data_.rows;
+    h_.resize(rows.size());
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      const auto& row = rows[k];
+      const Swing<Jet> swing = Model::swing_at(p.data(), dual_swing<Jet>(row.swing), data_.apparatus);
+      const Jet ideal = ideal_period(swing.length, 1.0);
+      if constexpr (kFixedRatio) {
+        h_[k] = ideal * row.ratio;
+      } else {
+        h_[k] = ideal * (1.0 + Model::composition(data_.apparatus, swing, *row.amplitude).total);
+      }
+      const double w2 = row.weight * row.weight;
+      sums.big_a += w2 * row.period * h_[k].a;
+      sums.big_b += w2 * h_[k].a * h_[k].a;
+      sums.a += w2 * row.period * h_[k].v;
+      sums.b += w2 * h_[k].a * h_[k].v;
+    }
+    return sums;
+  }
+
   const PeriodFitProblem<Model>& problem_;
-  const DualData<Model, Q> data_;
+  const FitData<Model, Q> data_;
   mutable bool cached_ = false;
   mutable std::array<double, Q> cached_q_{};
   mutable Point point_;
@@ -127,7 +175,7 @@ class ProjectedPeriods {
       Eigen::Matrix<double, P, 1> j;
       j(0) = h_[k].a * ds_dg;
       j.template tail<Q>() = s * h_[k].v;
-      jtj.noalias() += (*problem_.weights)[k] * (*problem_.weights)[k] * j * j.transpose();
+      jtj.noalias() += data_.rows[k].weight * data_.rows[k].weight * j * j.transpose();
     }
     return jtj;
   }
@@ -198,7 +246,7 @@ PeriodFitSolution fit_periods(const PeriodFitProblem<Model>& problem,
   static_assert(Q >= 1, "a period model has parameters besides g");
   std::array<double, Q> q;
   std::copy(initial.begin() + 1, initial.end(), q.begin());
-  const ProjectedPeriods<Model> projected(problem);
+  const ProjectedPeriods<Model> projected(problem, initial);
   PeriodFitSolution out;
   std::vector<int> held;
   for (int i = 0; i < Q; ++i) {

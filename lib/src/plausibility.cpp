@@ -45,7 +45,8 @@ std::optional<double> expected_period(const ParsedScene& scene, const Observatio
     return std::nullopt;
   }
   const double p[PhysicalPendulum::kParameters] = {kStandardGravity, 0.0, 0.0};  // k and the centre: the body's
-  return PhysicalPendulum::period(p, o, app, cheapest_amplitude_method(o.amplitude, 0.0));
+  return predicted_period<PhysicalPendulum>(p, PhysicalPendulum::swing(o), app,
+                                            cheapest_amplitude_method(o.amplitude, 0.0));
 }
 
 /// "5.3% longer"

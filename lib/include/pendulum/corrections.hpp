@@ -54,39 +54,43 @@ struct CorrectionInfo {
   const char* equation;     ///< where the formula comes from
   const char* part;         ///< the scene part it corrects for, named in its errors
   double max_ratio;         ///< validity: |DeltaT/T0| below this
+  /// Whether its ratio reads the swing's length (directly, or through the
+  /// working g = omega^2 l or the added mass's x): only these change with a
+  /// fit's parameters, which reach the corrections through the length alone.
+  bool reads_length;
 };
 
 /// The table of corrections, indexed by CorrectionId.
 inline constexpr std::array<CorrectionInfo, kCorrectionCount> kCorrections{{
     {CorrectionId::finite_amplitude, "finite_amplitude", "Finite amplitude",
-     "Nelson & Olsson (1986) Eq. (8)", "amplitude", kNoLimit},
+     "Nelson & Olsson (1986) Eq. (8)", "amplitude", kNoLimit, false},
     {CorrectionId::bob_radius, "bob_radius", "Finite radius of bob", "Nelson & Olsson (1986) Eq. (10)", "bob",
-     kFirstOrderLimit},
-    {CorrectionId::ring, "ring", "Mass of ring", "Nelson & Olsson (1986) Eq. (11)", "ring", kFirstOrderLimit},
-    {CorrectionId::cap, "cap", "Mass of cap", "Nelson & Olsson (1986) Eq. (12)", "cap", kFirstOrderLimit},
+     kFirstOrderLimit, true},
+    {CorrectionId::ring, "ring", "Mass of ring", "Nelson & Olsson (1986) Eq. (11)", "ring", kFirstOrderLimit, true},
+    {CorrectionId::cap, "cap", "Mass of cap", "Nelson & Olsson (1986) Eq. (12)", "cap", kFirstOrderLimit, true},
     {CorrectionId::cap_screw, "cap_screw", "Mass of cap screw", "Nelson & Olsson (1986) Eq. (12), Sec. III.B.2",
-     "cap_screw", kFirstOrderLimit},
+     "cap_screw", kFirstOrderLimit, true},
     {CorrectionId::wire_mass, "wire_mass", "Mass of wire", "Nelson & Olsson (1986) Eq. (13)", "wire",
-     kFirstOrderLimit},
+     kFirstOrderLimit, false},
     {CorrectionId::wire_flexibility, "wire_flexibility", "Flexibility of wire",
-     "Nelson & Olsson (1986) Sec. III.B.3, (71-55)/1440 (m_w/m)^2", "wire", kFirstOrderLimit},
+     "Nelson & Olsson (1986) Sec. III.B.3, (71-55)/1440 (m_w/m)^2", "wire", kFirstOrderLimit, false},
     {CorrectionId::bob_rotation, "bob_rotation", "Rotation of bob",
-     "Nelson & Olsson (1986) Sec. III.B.3, Eq. (10) x (2/5)(a/l)", "bob", kFirstOrderLimit},
+     "Nelson & Olsson (1986) Sec. III.B.3, Eq. (10) x (2/5)(a/l)", "bob", kFirstOrderLimit, true},
     {CorrectionId::double_pendulum, "double_pendulum", "Double pendulum",
-     "Nelson & Olsson (1986) Eq. (15), third term", "ring", kFirstOrderLimit},
-    {CorrectionId::buoyancy, "buoyancy", "Buoyancy", "Nelson & Olsson (1986) Eq. (16)", "air", kFirstOrderLimit},
+     "Nelson & Olsson (1986) Eq. (15), third term", "ring", kFirstOrderLimit, true},
+    {CorrectionId::buoyancy, "buoyancy", "Buoyancy", "Nelson & Olsson (1986) Eq. (16)", "air", kFirstOrderLimit, false},
     {CorrectionId::linear_damping, "linear_damping", "Linear damping", "Nelson & Olsson (1986) Eq. (34)", "decay",
-     kFirstOrderLimit},
+     kFirstOrderLimit, false},
     {CorrectionId::quadratic_damping, "quadratic_damping", "Quadratic damping", "Nelson & Olsson (1986) Eq. (48)",
-     "decay", kFirstOrderLimit},
+     "decay", kFirstOrderLimit, false},
     {CorrectionId::amplitude_decay, "amplitude_decay", "Decay of finite amplitude",
-     "Nelson & Olsson (1986) Eqs. (50a), (50b)", "decay", kFirstOrderLimit},
+     "Nelson & Olsson (1986) Eqs. (50a), (50b)", "decay", kFirstOrderLimit, false},
     {CorrectionId::added_mass, "added_mass", "Added mass", "Nelson & Olsson (1986) Eqs. (54), (61), (62)", "air",
-     kFirstOrderLimit},
+     kFirstOrderLimit, true},
     {CorrectionId::wire_stretch, "wire_stretch", "Stretching of wire", "Nelson & Olsson (1986) Eq. (79)", "wire",
-     kFirstOrderLimit},
+     kFirstOrderLimit, true},
     {CorrectionId::support_motion, "support_motion", "Motion of support",
-     "Nelson & Olsson (1986) Eqs. (83), (87), (88)", "support", kFirstOrderLimit},
+     "Nelson & Olsson (1986) Eqs. (83), (87), (88)", "support", kFirstOrderLimit, true},
 }};
 
 namespace detail {
@@ -104,7 +108,7 @@ static_assert(detail::table_follows_enum(), "kCorrections must list the correcti
 inline constexpr CorrectionInfo kAmplitudeCrossTerm{
     CorrectionId::finite_amplitude, "amplitude_cross_term", "Finite amplitude x other corrections",
     "(1 + r_amplitude)(1 + sum of the other r_i): Kelley (1993) Eq. (16) on the corrected pendulum",
-    "amplitude", kNoLimit};
+    "amplitude", kNoLimit, false};
 
 /// One correction's outcome: its relative size, or why it was skipped.
 template <class T>
@@ -272,6 +276,12 @@ struct Composition {
   T others;     ///< sum of the other applied r_i
   T cross;      ///< r_amplitude x others
   T total;      ///< T/T0 - 1 = amplitude + others + cross
+
+  /// The composition of r_amplitude and the sum of the others.
+  static Composition of(const T& amplitude, const T& others) {
+    const T cross = amplitude * others;
+    return {amplitude, others, cross, amplitude + others + cross};
+  }
 };
 
 /// The composition straight from the corrections, without their rows: what
@@ -279,33 +289,45 @@ struct Composition {
 template <class T>
 Composition<T> compose(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
   struct Sums {
-    Composition<T> c{T(0.0), T(0.0), T(0.0), T(0.0)};
+    T amplitude{0.0}, others{0.0};
     void set(CorrectionId id, const T& ratio, const char*) {
-      (id == CorrectionId::finite_amplitude ? c.amplitude : c.others) += ratio;
+      (id == CorrectionId::finite_amplitude ? amplitude : others) += ratio;
     }
     void skip(std::initializer_list<CorrectionId>, const char*) {}
   } sums;
   visit_corrections(app, s, amplitude, sums);
-  Composition<T>& c = sums.c;
-  c.cross = c.amplitude * c.others;
-  c.total = c.amplitude + c.others + c.cross;
-  return c;
+  return Composition<T>::of(sums.amplitude, sums.others);
+}
+
+/// Whether any correction `app` applies reads the swing's length
+/// (CorrectionInfo::reads_length). Which ones apply depends on the
+/// apparatus's parts alone, so a fit asks once: when none does, an
+/// observation's T/T0 is the same at every step and is composed once.
+template <class T>
+bool corrections_read_length(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
+  struct Applied {
+    bool reads_length = false;
+    void set(CorrectionId id, const T&, const char*) {
+      reads_length |= kCorrections[static_cast<int>(id)].reads_length;
+    }
+    void skip(std::initializer_list<CorrectionId>, const char*) {}
+  } applied;
+  visit_corrections(app, s, amplitude, applied);
+  return applied.reads_length;
 }
 
 template <class T>
 Composition<T> compose(const Terms<T>& terms) {
-  Composition<T> c{T(0.0), T(0.0), T(0.0), T(0.0)};
+  T amplitude(0.0), others(0.0);
   for (int i = 0; i < kCorrectionCount; ++i) {
     if (!terms[i].ratio) continue;
     if (i == static_cast<int>(CorrectionId::finite_amplitude)) {
-      c.amplitude = *terms[i].ratio;
+      amplitude = *terms[i].ratio;
     } else {
-      c.others += *terms[i].ratio;
+      others += *terms[i].ratio;
     }
   }
-  c.cross = c.amplitude * c.others;
-  c.total = c.amplitude + c.others + c.cross;
-  return c;
+  return Composition<T>::of(amplitude, others);
 }
 
 }  // namespace pendulum

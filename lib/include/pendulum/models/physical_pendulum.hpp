@@ -114,7 +114,7 @@ struct PhysicalPendulum {
   template <class T>
   static PeriodPrediction<T> predict(const T* p, const Observation<T>& o, const Apparatus<T>& app,
                                      const AmplitudeChoice& amplitude) {
-    const Swing<T> s = swing_of(p, swing(o), app);
+    const Swing<T> s = swing_at(p, swing(o), app);
     PeriodPrediction<T> out;
     out.terms = correction_terms(app, s, amplitude);
     auto& buoyancy_term = out.terms[static_cast<int>(CorrectionId::buoyancy)];
@@ -129,7 +129,7 @@ struct PhysicalPendulum {
           "needs the body's mass and volume (a body given in parts with densities)";
     }
     out.composition = compose(out.terms);
-    out.ideal = ideal_period(p, o, app);
+    out.ideal = ideal_period(s.length, p[g]);  // Eq. (56)
     out.period = out.ideal * (1.0 + out.composition.total);
     return out;
   }
@@ -142,26 +142,22 @@ struct PhysicalPendulum {
     return Swing<T>::of(o, T(0.0));
   }
 
-  /// predict()'s period alone, without the rows: the fit's residuals, from
-  /// the observation or from its swing().
+  /// The swing the corrections act on at p: the measured one with its
+  /// setting made the equivalent length.
   template <class T>
-  static T period(const T* p, const Observation<T>& o, const Apparatus<T>& app, const AmplitudeChoice& amplitude) {
-    return period(p, swing(o), app, amplitude);
-  }
-  template <class T>
-  static T period(const T* p, const Swing<T>& measured, const Apparatus<T>& app, const AmplitudeChoice& amplitude) {
-    using std::sqrt;
-    const Swing<T> s = swing_of(p, measured, app);
-    Composition<T> c = compose(app, s, amplitude);
-    if (const auto r = body_buoyancy(app)) c.others += *r;
-    return 2.0 * kPi * sqrt(s.length / p[g]) * (1.0 + c.amplitude + c.others + c.amplitude * c.others);  // Eq. (56)
+  static Swing<T> swing_at(const T* p, Swing<T> measured, const Apparatus<T>& app) {
+    measured.length = equivalent(p, measured, app);
+    measured.setting = Setting::length;
+    return measured;
   }
 
-  /// T0 = 2 pi sqrt(l/g) (Eq. 56 without K).
+  /// predict()'s composition without the rows: the corrections that apply
+  /// to a rigid body and its buoyancy.
   template <class T>
-  static T ideal_period(const T* p, const Observation<T>& o, const Apparatus<T>& app) {
-    using std::sqrt;
-    return 2.0 * kPi * sqrt(equivalent(p, o, app) / p[g]);  // Eq. (56)
+  static Composition<T> composition(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
+    const Composition<T> c = compose(app, s, amplitude);
+    const auto r = body_buoyancy(app);
+    return r ? Composition<T>::of(c.amplitude, c.others + *r) : c;
   }
 
   /// The closed form for one observation with g the only unknown:
@@ -170,22 +166,12 @@ struct PhysicalPendulum {
   template <class T>
   static T solve_g(const T* p, const Observation<T>& o, const Apparatus<T>& app, const AmplitudeChoice& amplitude) {
     T unit[kParameters] = {T(1.0), p[radius_of_gyration], p[center_of_mass_position]};
-    const T ratio = period(unit, o, app, amplitude) / o.period;
+    const T ratio = predicted_period<PhysicalPendulum>(unit, swing(o), app, amplitude) / o.period;
     return ratio * ratio;
   }
 
  private:
   static constexpr double kZeroCelsius = 273.15;  // K
-
-  /// The swing the corrections act on: the measured one with its setting
-  /// made the equivalent length.
-  template <class T>
-  static Swing<T> swing_of(const T* p, const Swing<T>& measured, const Apparatus<T>& app) {
-    Swing<T> s = measured;
-    s.length = equivalent(p, measured, app);
-    s.setting = Setting::length;
-    return s;
-  }
 
   /// m_air/(2M) for a body of known mass and volume in air (Eq. 16).
   template <class T>

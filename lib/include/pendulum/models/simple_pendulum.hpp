@@ -33,11 +33,11 @@ struct SimplePendulum {
   template <class T>
   static PeriodPrediction<T> predict(const T* p, const Observation<T>& o, const Apparatus<T>& app,
                                      const AmplitudeChoice& amplitude) {
-    const Swing<T> swing = Swing<T>::of(o, p[length_offset]);
+    const Swing<T> s = swing_at(p, swing(o), app);
     PeriodPrediction<T> out;
-    out.terms = correction_terms(app, swing, amplitude);
+    out.terms = correction_terms(app, s, amplitude);
     out.composition = compose(out.terms);
-    out.ideal = ideal_period(p, swing);
+    out.ideal = ideal_period(s.length, p[g]);  // Eq. (3)
     out.period = out.ideal * (1.0 + out.composition.total);
     return out;
   }
@@ -49,19 +49,18 @@ struct SimplePendulum {
     return Swing<T>::of(o, T(0.0));
   }
 
-  /// predict()'s period alone, without the rows, from swing(o): the fit's
-  /// residuals.
+  /// The swing the corrections act on at p: the measured one with the
+  /// offset added to its length.
   template <class T>
-  static T period(const T* p, Swing<T> swing, const Apparatus<T>& app, const AmplitudeChoice& amplitude) {
-    swing.length += p[length_offset];
-    return ideal_period(p, swing) * (1.0 + compose(app, swing, amplitude).total);
+  static Swing<T> swing_at(const T* p, Swing<T> measured, const Apparatus<T>&) {
+    measured.length += p[length_offset];
+    return measured;
   }
 
-  /// T0 = 2 pi sqrt(l/g) (Eq. 3).
+  /// predict()'s composition without the rows (corrections.hpp, compose).
   template <class T>
-  static T ideal_period(const T* p, const Swing<T>& swing) {
-    using std::sqrt;
-    return 2.0 * kPi * sqrt(swing.length / p[g]);  // Eq. (3)
+  static Composition<T> composition(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
+    return compose(app, s, amplitude);
   }
 
   /// The closed form for one observation with g the only unknown (the

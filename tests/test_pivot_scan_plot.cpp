@@ -42,8 +42,8 @@ double model_period(const Reduced& r, double x) {
   Observation<double> o = r.scene.observations.front();
   o.amplitude = d.amplitude;
   o.length = x;
-  o.period = PhysicalPendulum::ideal_period(p, o, r.scene.apparatus);
-  return PhysicalPendulum::period(p, o, r.scene.apparatus, d.amplitude_method);
+  o.period = PhysicalPendulum::predict(p, o, r.scene.apparatus, d.amplitude_method).ideal;  // T0 needs no period
+  return PhysicalPendulum::predict(p, o, r.scene.apparatus, d.amplitude_method).period;
 }
 
 /// The checks every pivot scan's plot must pass.

@@ -108,8 +108,8 @@ std::optional<PivotScanRecord> pivot_scan_record(const ParsedScene& given, const
   auto model_at = [&](double x) {
     Observation<double> o = like;
     o.length = x;
-    o.period = M::ideal_period(p.data(), o, app);
-    return M::period(p.data(), o, app, r.amplitude_method);
+    o.period = ideal_period(M::swing_at(p.data(), M::swing(o), app).length, p[M::g]);
+    return predicted_period<M>(p.data(), M::swing(o), app, r.amplitude_method);
   };
 
   r.minimum_period = scan.minimum_period;

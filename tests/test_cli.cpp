@@ -216,6 +216,8 @@ void check_numbers(const json& result) {
       // A physical pendulum's pivot scan: Bessel's g without Kater's pair, the
       // parts' k and centre without parts (docs/output.md).
       if (pointer == "/fit/pivot_scan/bessel_g_m_s2" || parent == "/fit/pivot_scan/from_parts") continue;
+      // As many observations as unknowns: no chi2 to judge (docs/output.md).
+      if ((pointer == "/fit/probability" || pointer == "/fit/reduced_chi2") && result.at("fit").at("dof") == 0) continue;
       // A singular fit: no uncertainty, no correlation, and with every length
       // equal no textbook line (docs/output.md).
       if (result.at("g").at("uncertainty").is_null() &&

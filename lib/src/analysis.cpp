@@ -748,9 +748,12 @@ class Fit {
   }
 
   /// Kater's reversible pendulum: two pivot positions on opposite sides of
-  /// a measured centre. Bessel's formula on the ideal periods checks the fit;
-  /// the rough centre enters g only through T1^2 - T2^2, and a warning says
-  /// when the periods are too far apart for that.
+  /// a measured centre, at different distances from it (two pivots on one
+  /// side are an ordinary scan of two; at equal distances the periods are
+  /// equal by symmetry and Bessel's (T1^2 - T2^2)/(h1 - h2) is 0/0).
+  /// Bessel's formula on the ideal periods checks the fit; the rough centre
+  /// enters g only through T1^2 - T2^2, and a warning says when the periods
+  /// are too far apart for that.
   void review_kater(PivotScan& scan) {
     const auto& body = scene_.apparatus.body;
     if (k_ != 2 || !body || !body->center_of_mass_position) return;
@@ -758,8 +761,10 @@ class Fit {
     const auto& o2 = scene_.observations[1];
     if (o1.setting != Setting::pivot_position || o2.setting != Setting::pivot_position) return;
     const double center = *body->center_of_mass_position;
+    if ((o1.length - center) * (o2.length - center) >= 0.0) return;
     const double scale = PhysicalPendulum::thermal_scale(scene_.apparatus);
     const double h1 = scale * std::abs(o1.length - center), h2 = scale * std::abs(o2.length - center);
+    if (std::abs(h1 - h2) <= 1e-6 * (h1 + h2)) return;
     auto ideal = [&](std::size_t k) { return base_[k].value[kIdealPeriod] / base_[k].value[kModelPeriod] * scene_.observations[k].period; };
     scan.bessel_g = bessel_g(ideal(0), ideal(1), h1, h2);
     double center_share = 0.0, others = 0.0;

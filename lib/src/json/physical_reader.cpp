@@ -242,20 +242,22 @@ void read_physical(Object& top, ParsedScene& out) {
                      "got a pivot " + format_number(h) + " m from the centre of mass; expected a pivot away from "
                      "it (at the centre the body has no restoring torque and its period is infinite)");
   }
-  // Kater's reversible pendulum: two pivots about a measured centre.
-  if (positions && out.observations.size() == 2 && v.center_of_mass_position && !fit_center) {
-    const double c = *v.center_of_mass_position;
-    const double x1 = out.observations[0].length, x2 = out.observations[1].length;
-    const std::string at = out.sources[1].path + "pivot_position.value";
-    PENDULUM_FAIL_IF((x1 - c) * (x2 - c) > 0.0, at,
-                     "got pivots at " + format_number(x1) + " m and " + format_number(x2) +
-                         " m, both on one side of the centre of mass at " + format_number(c) +
-                         " m; expected Kater's pivots on opposite sides");
-    const double h1 = std::abs(x1 - c), h2 = std::abs(x2 - c);
-    PENDULUM_FAIL_IF(std::abs(h1 - h2) <= 1e-6 * (h1 + h2), at,
-                     "got pivots at equal distances (" + format_number(h1) + " m) from the centre of mass; "
-                     "expected different distances: the periods are then equal by symmetry, and Bessel's "
-                     "(T1^2 - T2^2)/(h1 - h2) is 0/0");
+  // With k fitted, the pivots must lie at more than one distance from the
+  // centre: at one distance every period is the same one, which tells g
+  // from k no better than a single observation.
+  if (fit_k && !fit_center && out.observations.size() > 1) {
+    auto distance = [&](const Observation<double>& o) {
+      return o.setting == Setting::pivot_position ? std::abs(o.length - *v.center_of_mass_position) : o.length;
+    };
+    const double h0 = distance(out.observations.front());
+    const bool one_distance = std::all_of(out.observations.begin(), out.observations.end(), [&](const auto& o) {
+      return std::abs(distance(o) - h0) <= 1e-6 * h0;
+    });
+    const auto& last = out.observations.back();
+    PENDULUM_FAIL_IF(one_distance, out.sources.back().path + setting_key(last.setting) + ".value",
+                     "got every pivot " + format_number(h0) + " m from the centre of mass; expected pivots at "
+                     "different distances: with radius_of_gyration fitted, one distance gives one period, which "
+                     "cannot tell g from k");
   }
   out.apparatus.body = v;
   out.apparatus_uncertainty.body = u;

@@ -276,4 +276,6 @@ TEST_CASE("Pivot scan of a body in parts, k held and the centre fitted, gives ba
   CHECK_THAT(a.g.value, WithinRel(sim.g, 1e-12));
   CHECK_THAT(parameter(a, "center_of_mass_position").value, WithinAbs(sim.center_of_mass_position, 1e-12));
   CHECK_FALSE(parameter(a, "radius_of_gyration").fitted);
+  // Held, it is reported as the k the model used: the body's, not the default.
+  CHECK(parameter(a, "radius_of_gyration").value == sim.radius_of_gyration);
 }

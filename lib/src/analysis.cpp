@@ -126,7 +126,11 @@ std::array<double, 3> physical_start(const ParsedScene& scene, const std::array<
   double ssr;
   const StraightLine line = line_through(center, ssr);
   p[M::g] = 4.0 * kPi * kPi / line.slope;
-  if (!known_k && line.intercept > 0.0) p[M::radius_of_gyration] = std::sqrt(line.intercept / line.slope);
+  if (known_k) {
+    p[M::radius_of_gyration] = *body->radius_of_gyration;  // held: what the model takes (PhysicalPendulum::gyration)
+  } else if (line.intercept > 0.0) {
+    p[M::radius_of_gyration] = std::sqrt(line.intercept / line.slope);
+  }
   p[M::center_of_mass_position] = center;
   return p;
 }

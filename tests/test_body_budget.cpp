@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pendulum/air.hpp"
 #include "pendulum/analysis.hpp"
 #include "pendulum/scene_json.hpp"
 #include "reference.hpp"
@@ -204,4 +205,25 @@ TEST_CASE("Kelley's expansion coefficient carries its uncertainty into g's budge
     CHECK_THAT(b.sensitivity, WithinRel(g * (35 / (1 + w * 35) - 20 / (1 + w * 20)), 1e-9));
   }
   CHECK(found);
+}
+
+TEST_CASE("A bar's added mass in potential flow: its limits", "[physical][air]") {
+  const double rho = 1.2, a = 0.006, d = 0.8, L = 0.04;
+  // No air, no added mass.
+  CHECK(strip_added_inertia(0.0, a, d - L / 2, d + L / 2) == 0.0);
+  // A short rod at distance d: its strips' s^2 integrate exactly to
+  // m_a (d^2 + L^2/12), m_a = rho pi a^2 L the air it displaces (Lamb Sec. 68:
+  // kappa = 1).
+  const double m_a = rho * kPi * a * a * L;
+  CHECK_THAT(strip_added_inertia(rho, a, d - L / 2, d + L / 2), WithinRel(m_a * (d * d + L * L / 12), 1e-14));
+  // So the rod as a point bob of mass m on a massless rod of length d is
+  // Nelson & Olsson's Eq. (54) with kappa = 1, twice the potential-flow
+  // sphere's 1/2 of Eq. (58) (kappa = 1/2 as added_mass_factor(1, 1, 0, a)).
+  const double m = 5.0;
+  const double rod = 0.5 * strip_added_inertia(rho, a, d - 1e-7, d + 1e-7) / (m * d * d);
+  CHECK_THAT(rod, WithinRel(added_mass(1.0, rho * kPi * a * a * 2e-7, m), 1e-9));
+  const double sphere_m_a = rho * 4.0 / 3.0 * kPi * a * a * a;
+  CHECK_THAT(added_mass(added_mass_factor(1.0, 1.0, 0.0, a), sphere_m_a, m), WithinRel(0.25 * sphere_m_a / m, 1e-15));
+  // A pivot at the rod's middle: the halves add (s1 = -s2).
+  CHECK_THAT(strip_added_inertia(rho, a, -0.5, 0.5), WithinRel(2 * strip_added_inertia(rho, a, 0.0, 0.5), 1e-15));
 }

@@ -386,7 +386,7 @@ class Fit {
     }
     int ordinal = 0;
     zip_apparatus(scene_.apparatus, scene_.apparatus_uncertainty,
-                  [&](const Field& f, const double& v, const double& u) { add_input(f.path, f, v, u, {}, ordinal++); });
+                  [&](const Field& f, const double& v, const double& u) { add_input(field_path(f), f, v, u, {}, ordinal++); });
   }
 
   void add_input(std::string path, const Field& f, double value, double sigma, std::vector<std::size_t> observations,

@@ -1,6 +1,7 @@
 #pragma once
 /// \file air.hpp
-/// \brief The air: its density and viscosity, buoyancy and added mass.
+/// \brief The air: its density and viscosity, buoyancy and added mass (of a
+/// sphere, and of a long bar swinging across its length).
 ///
 /// SI units throughout: Pa, K, kg/mol, kg/m^3, Pa s, m, kg, rad/s.
 
@@ -113,6 +114,31 @@ T added_mass_factor(const T& c_a, const T& c_h, const T& delta, const T& a) {
 template <class T>
 T added_mass(const T& kappa, const T& m_a, const T& m) {
   return 0.5 * kappa * m_a / m;
+}
+
+/// Added moment of inertia (kg m^2) about the pivot of a long straight part
+/// swinging across its length, in potential flow, by strips: the element ds
+/// at distance s from the pivot moves across its axis at s dtheta/dt and
+/// carries the two-dimensional added mass rho pi b^2 ds of a cylinder of
+/// elliptic section whose semi-axis across the motion is b (Lamb 1932,
+/// Hydrodynamics, 6th ed., Secs. 68 and 72), so
+///   DeltaI = rho pi b^2 (s2^3 - s1^3)/3,
+/// and DeltaT/T0 = (1/2) DeltaI/I for a body of moment of inertia I about the
+/// pivot. b: a circular rod of radius a, b = a (the mass of the air it
+/// displaces, Nelson & Olsson's Ref. 36: kappa = 1 against the sphere's 1/2
+/// of Eq. 58); a flat strip of width w moving broadside, b = w/2.
+/// \param rho air density (kg/m^3); \param b half the section's extent across
+/// the motion (m); \param s1, s2 the part's ends along the body, signed
+/// distances from the pivot (m), s1 <= s2.
+/// Validity: inviscid attached flow, so the swing's excursion s theta0 << b
+/// (Keulegan-Carpenter number pi s theta0 / b << 1) and the viscous
+/// penetration depth (2 eta/(omega rho))^(1/2) << b; a part much longer than
+/// b, away from walls. A pendulum's swing violates the first at its lower
+/// end (docs/physical.md, "Added mass"), where the real added mass is larger
+/// (Nelson & Olsson's sphere: kappa 1.18 against 1/2).
+template <class T>
+T strip_added_inertia(const T& rho, const T& b, const T& s1, const T& s2) {
+  return kPi * rho * b * b * (s2 * s2 * s2 - s1 * s1 * s1) / 3.0;  // Lamb Secs. 68, 72
 }
 
 }  // namespace pendulum

@@ -13,7 +13,9 @@
 
 #include <optional>
 #include <type_traits>
+#include <vector>
 
+#include "pendulum/body_parts.hpp"
 #include "pendulum/fields.hpp"
 
 namespace pendulum {
@@ -131,6 +133,11 @@ struct Decay {
 /// models/physical_pendulum.hpp): what the scene states or its parts give
 /// (bodies.hpp), each held in the fit. Positions are in the frame of the
 /// observations' pivot_position: along the body from a mark on it.
+///
+/// A body in parts has its parts' scalars as fields (`body.parts[j].mass`),
+/// and its k, centre, mass and volume are what the parts give
+/// (derive_from_parts, run by convert_apparatus), not fields of their own:
+/// a part's dimension moves them wherever it moves.
 template <class T>
 struct RigidBody {
   std::optional<T> center_of_mass_position;  ///< measured (balanced on an edge) or from the parts (m)
@@ -140,17 +147,38 @@ struct RigidBody {
   std::optional<T> temperature;              ///< of the body during the swings (K)
   std::optional<T> reference_temperature;    ///< at which its lengths were measured (K)
   std::optional<T> expansion_coefficient;    ///< linear, w of Kelley Eq. (41) (1/K)
+  std::vector<BodyPart<T>> parts;            ///< as the scene gives them (body.parts)
+  bool gyration_from_parts = false;          ///< k held at the parts' (not fitted)
+  bool center_from_parts = false;            ///< the centre held at the parts' (not fitted, not measured)
   template <class A, class B, class F>
   static void zip(A& a, B& b, F& f) {
-    f({"center_of_mass_position", "m"}, a.center_of_mass_position, b.center_of_mass_position);
-    f({"body.radius_of_gyration", "m"}, a.radius_of_gyration, b.radius_of_gyration);
-    f({"body.mass", "kg"}, a.mass, b.mass);
-    f({"body.volume", "m^3"}, a.volume, b.volume);
+    if constexpr (!std::is_const_v<B>) b.gyration_from_parts = a.gyration_from_parts, b.center_from_parts = a.center_from_parts;
+    if (!a.center_from_parts) f({"center_of_mass_position", "m"}, a.center_of_mass_position, b.center_of_mass_position);
+    if (a.parts.empty()) {
+      f({"body.radius_of_gyration", "m"}, a.radius_of_gyration, b.radius_of_gyration);
+      f({"body.mass", "kg"}, a.mass, b.mass);
+      f({"body.volume", "m^3"}, a.volume, b.volume);
+    }
+    detail::zip_list(a.parts, b.parts, f);
     f({"temperature", "K"}, a.temperature, b.temperature);
     f({"reference_temperature", "K"}, a.reference_temperature, b.reference_temperature);
     f({"expansion_coefficient", "1/K"}, a.expansion_coefficient, b.expansion_coefficient);
   }
 };
+
+/// Sets what a body's parts give it: its mass and volume, and its k and
+/// centre where they are held at the parts'. Only a body of values (positive
+/// mass) has them: an apparatus of uncertainties keeps none.
+template <class T>
+void derive_from_parts(RigidBody<T>& b) {
+  if (b.parts.empty()) return;
+  const PartsSum<T> sum = sum_parts(b.parts);
+  if (!(sum.body.mass > 0.0)) return;
+  b.mass = sum.body.mass;
+  b.volume = sum.volume;
+  if (b.gyration_from_parts) b.radius_of_gyration = sum.body.radius_of_gyration;
+  if (b.center_from_parts) b.center_of_mass_position = sum.body.center;
+}
 
 /// The apparatus of one experiment: the parts it has.
 template <class T>
@@ -190,11 +218,13 @@ void zip_apparatus(A& a, B& b, F&& f) {
   detail::zip_part(a.body, b.body, z);
 }
 
-/// The same apparatus with every scalar mapped by f(field, value) -> U.
+/// The same apparatus with every scalar mapped by f(field, value) -> U, and
+/// what a body's parts give derived again from the mapped parts.
 template <class U, class T, class F>
 Apparatus<U> convert_apparatus(const Apparatus<T>& a, F&& f) {
   Apparatus<U> out;
   zip_apparatus(a, out, [&](const Field& field, const T& x, U& y) { y = f(field, x); });
+  if (out.body) derive_from_parts(*out.body);
   return out;
 }
 

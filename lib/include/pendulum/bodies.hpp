@@ -173,19 +173,38 @@ T thermal_length(const T& length0, const T& w, const T& celsius) {
   return length0 * (1.0 + w * celsius);  // Eq. (41)
 }
 
-/// A material's linear expansion coefficient w (1/K), Eq. (41).
+/// A material's linear expansion coefficient w (1/K), Eq. (41), with a
+/// standard uncertainty and what it rests on.
 struct ExpansionCoefficient {
   const char* material;
-  double w;  ///< (1/K = 1/degC)
+  double w;            ///< (1/K = 1/degC)
+  double uncertainty;  ///< standard uncertainty of w (1/K)
+  const char* basis;   ///< where the uncertainty comes from
 };
 
-/// Kelley (1993) Sec. V a, the table after Eq. (41) (his Ref. 7): averages
-/// over grades and alloys, for 10-90 degC. Typical steels range from 9.07e-6
-/// to 1.21e-5; wood along the grain from 2.6e-6 (beech) to 9.5e-6 (ash),
-/// across it 3.4e-5 (pine). Mercury's is a third of its cubical 1.8e-4.
+/// sqrt(12): a value known only to lie in an interval of width d is uniform
+/// there, with standard uncertainty d/sqrt(12) (GUM 4.3.7).
+inline constexpr double kSqrt12 = 3.4641016151377546;
+
+/// Kelley (1993) Sec. V a, the table after Eq. (41) (his Ref. 7, the
+/// Handbook of Chemistry and Physics, 40th ed.): averages over grades and
+/// alloys, for 10-90 degC. The uncertainties: for steel and wood the range
+/// Kelley gives beside the table (steels 9.07e-6 to 1.21e-5, woods along the
+/// grain 2.6e-6 beech to 9.5e-6 ash), for mercury the rounding of the
+/// cubical 1.8e-4 it is a third of, for the others the rounding of the
+/// printed value (half a unit of its last digit either way); each interval
+/// taken as uniform. The rounding understates the spread between grades,
+/// which Kelley gives only for steel and wood.
 inline constexpr ExpansionCoefficient kExpansionCoefficients[] = {
-    {"aluminum", 2.3e-5}, {"brass", 1.9e-5}, {"copper", 1.7e-5}, {"glass", 8.3e-6}, {"invar", 7e-7},
-    {"iron", 1.1e-5},     {"mercury", 6e-5}, {"steel", 1.1e-5},  {"wood", 6e-6},
+    {"aluminum", 2.3e-5, 1e-6 / kSqrt12, "the printed 2.3e-5 rounded to 1e-6"},
+    {"brass", 1.9e-5, 1e-6 / kSqrt12, "the printed 1.9e-5 rounded to 1e-6"},
+    {"copper", 1.7e-5, 1e-6 / kSqrt12, "the printed 1.7e-5 rounded to 1e-6"},
+    {"glass", 8.3e-6, 1e-7 / kSqrt12, "the printed 8.3e-6 rounded to 1e-7"},
+    {"invar", 7e-7, 1e-7 / kSqrt12, "the printed 7e-7 rounded to 1e-7"},
+    {"iron", 1.1e-5, 1e-6 / kSqrt12, "the printed 1.1e-5 rounded to 1e-6"},
+    {"mercury", 6e-5, 1e-5 / 3.0 / kSqrt12, "a third of the cubical 1.8e-4 rounded to 1e-5"},
+    {"steel", 1.1e-5, (1.21e-5 - 9.07e-6) / kSqrt12, "Kelley's range for typical steels, 9.07e-6 to 1.21e-5"},
+    {"wood", 6e-6, (9.5e-6 - 2.6e-6) / kSqrt12, "Kelley's range along the grain, 2.6e-6 (beech) to 9.5e-6 (ash)"},
 };
 
 }  // namespace pendulum

@@ -15,19 +15,23 @@ namespace {
 const char* const kShapes =
     "point_mass, solid_sphere, spherical_shell, cylinder, disk, ring, thin_rod, box";
 
-/// A length under `key` that must be positive (a dimension of a part).
-double dimension(Object& o, const std::string& key) {
+/// A length under `key` that must be positive (a dimension of a part), into
+/// the part's field and its uncertainty.
+void dimension(Object& o, const std::string& key, std::optional<double>& value, std::optional<double>& sigma) {
   const Measured m = quantity(o, key, Dimension::length, Range::positive);
-  return m.value;
+  value = m.value;
+  sigma = m.sigma;
 }
 
-/// A radius below `radius` (a hole through a cylinder or a sphere), 0 when absent.
-double inner_radius(Object& o, double radius) {
-  if (!o.has("inner_radius")) return 0.0;
-  const double inner = quantity(o, "inner_radius", Dimension::length, Range::non_negative).value;
-  PENDULUM_FAIL_IF(inner > radius, o.path("inner_radius") + ".value",
-                   "got " + format_number(inner) + " m; expected at most the radius, " + format_number(radius) + " m");
-  return inner;
+/// A radius below the part's radius (a hole through a cylinder or a sphere), when present.
+void inner_radius(Object& o, BodyPart<double>& v, BodyPart<double>& u) {
+  if (!o.has("inner_radius")) return;
+  const Measured inner = quantity(o, "inner_radius", Dimension::length, Range::non_negative);
+  PENDULUM_FAIL_IF(inner.value > *v.radius, o.path("inner_radius") + ".value",
+                   "got " + format_number(inner.value) + " m; expected at most the radius, " +
+                       format_number(*v.radius) + " m");
+  v.inner_radius = inner.value;
+  u.inner_radius = inner.sigma;
 }
 
 /// "axis" of a cylinder, or "plane" of a disk or ring.
@@ -48,105 +52,113 @@ CylinderAxis orientation(Object& o, const std::string& key, CylinderAxis otherwi
                                     "; expected \"swing\" (face on in the plane of swing) or \"edge_on\"");
 }
 
-/// One part: its shape, mass (or density), position and whether it is a hole.
+/// One part as written (values and their uncertainties, the same fields).
 struct ReadPart {
-  Shape<double> shape;
-  Part<double> part;
+  BodyPart<double> value, sigma;
 };
 
 ReadPart read_part(const json& j, const std::string& path) {
   Object o(j, path, "an object with shape, its dimensions, mass or density, and position");
   const std::string shape = o.text("shape");
-  Shape<double> s;
+  BodyPart<double> v, u;
   if (shape == "point_mass") {
-    s = point_mass_shape<double>();
+    v.shape = PartShape::point_mass;
   } else if (shape == "solid_sphere") {
-    s = solid_sphere(dimension(o, "radius"));
+    v.shape = PartShape::solid_sphere;
+    dimension(o, "radius", v.radius, u.radius);
   } else if (shape == "spherical_shell") {
-    const double r = dimension(o, "radius");
-    s = spherical_shell(r, inner_radius(o, r));
+    v.shape = PartShape::spherical_shell;
+    dimension(o, "radius", v.radius, u.radius);
+    inner_radius(o, v, u);
   } else if (shape == "cylinder") {
-    const double r = dimension(o, "radius");
-    s = cylinder(r, inner_radius(o, r), dimension(o, "length"), orientation(o, "axis", CylinderAxis::body_axis));
+    v.shape = PartShape::cylinder;
+    dimension(o, "radius", v.radius, u.radius);
+    inner_radius(o, v, u);
+    dimension(o, "length", v.length, u.length);
+    v.axis = orientation(o, "axis", CylinderAxis::body_axis);
   } else if (shape == "disk" || shape == "ring") {
-    const double r = dimension(o, "radius");
-    const double inner = shape == "ring" ? inner_radius(o, r) : 0.0;
-    const double thickness = o.has("thickness") ? dimension(o, "thickness") : 0.0;
-    s = cylinder(r, inner, thickness, orientation(o, "plane", CylinderAxis::swing_axis));
+    v.shape = shape == "ring" ? PartShape::ring : PartShape::disk;
+    dimension(o, "radius", v.radius, u.radius);
+    if (shape == "ring") inner_radius(o, v, u);
+    if (o.has("thickness")) dimension(o, "thickness", v.thickness, u.thickness);
+    v.axis = orientation(o, "plane", CylinderAxis::swing_axis);
   } else if (shape == "thin_rod") {
-    s = thin_rod(dimension(o, "length"));
+    v.shape = PartShape::thin_rod;
+    dimension(o, "length", v.length, u.length);
   } else if (shape == "box") {
-    s = box(dimension(o, "length"), dimension(o, "width"), dimension(o, "thickness"));
+    v.shape = PartShape::box;
+    dimension(o, "length", v.length, u.length);
+    dimension(o, "width", v.width, u.width);
+    dimension(o, "thickness", v.thickness, u.thickness);
   } else {
     throw InputError(o.path("shape"), "got " + shown(o.at("shape")) + "; expected one of: " + kShapes);
   }
+  const Shape<double> s = shape_of(v);
   const bool has_mass = o.has("mass"), has_density = o.has("density");
   PENDULUM_FAIL_IF(has_mass == has_density, path,
                    std::string(has_mass ? "got both mass and density" : "got neither mass nor density") +
                        "; expected one of them");
-  double mass;
   if (has_mass) {
-    mass = quantity(o, "mass", Dimension::mass, Range::positive).value;
+    const Measured m = quantity(o, "mass", Dimension::mass, Range::positive);
+    v.mass = m.value;
+    u.mass = m.sigma;
   } else {
     PENDULUM_FAIL_IF(!(s.volume > 0.0), o.path("density"),
                      "a " + shape + " has no volume (or a zero dimension); expected its mass instead");
-    const double rho = quantity(o, "density", Dimension::density, Range::positive).value;
-    within(rho, 1e-3, kMaxDensity, o.path("density") + ".value", "kg/m^3",
+    const Measured rho = quantity(o, "density", Dimension::density, Range::positive);
+    within(rho.value, 1e-3, kMaxDensity, o.path("density") + ".value", "kg/m^3",
            "a solid's or a liquid's density, up to osmium's 22590 kg/m^3");
-    mass = rho * s.volume;
+    v.density = rho.value;
+    u.density = rho.sigma;
   }
-  const bool hole = o.has("hole") && o.at("hole").is_boolean() && o.at("hole").get<bool>();
+  v.hole = o.has("hole") && o.at("hole").is_boolean() && o.at("hole").get<bool>();
   PENDULUM_FAIL_IF(o.has("hole") && !o.at("hole").is_boolean(), o.path("hole"),
                    "got " + shown(o.at("hole")) + "; expected true or false");
-  const double position = quantity(o, "position", Dimension::length, Range::any).value;
+  const Measured position = quantity(o, "position", Dimension::length, Range::any);
+  v.position = position.value;
+  u.position = position.sigma;
   if (o.has("source")) o.text("source");
   o.finish();
-  return {s, make_part(s, hole ? -mass : mass, position)};
+  u.shape = v.shape, u.axis = v.axis, u.hole = v.hole;
+  return {v, u};
 }
 
-/// "body": {"parts": [...]}: k, the centre, the mass and (when every part
-/// has one) the volume.
-RigidBody<double> read_body(Object& top) {
+/// "body": {"parts": [...]}: the parts (values and uncertainties), checked
+/// to make a body; k, the centre, the mass and (when every part has one) the
+/// volume follow from them (derive_from_parts).
+void read_body(Object& top, RigidBody<double>& v, RigidBody<double>& u) {
   Object body(top.at("body"), "body", "an object with parts");
   const json& list = body.at("parts");
   PENDULUM_FAIL_IF(!list.is_array() || list.empty(), "body.parts",
                    "got " + shown(list) + "; expected a non-empty array of parts");
-  std::vector<ReadPart> read;
-  for (std::size_t i = 0; i < list.size(); ++i) read.push_back(read_part(list[i], "body.parts[" + std::to_string(i) + "]"));
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const ReadPart r = read_part(list[i], "body.parts[" + std::to_string(i) + "]");
+    v.parts.push_back(r.value);
+    u.parts.push_back(r.sigma);
+  }
   if (body.has("source")) body.text("source");
   body.finish();
   // The body's extent is the solid parts'; a hole must lie within it.
   double lo = HUGE_VAL, hi = -HUGE_VAL;
-  for (const auto& r : read) {
-    if (r.part.mass < 0.0) continue;
-    lo = std::min(lo, r.part.center - r.shape.half_length);
-    hi = std::max(hi, r.part.center + r.shape.half_length);
+  for (const auto& p : v.parts) {
+    if (p.hole) continue;
+    const double half = shape_of(p).half_length;
+    lo = std::min(lo, p.position - half);
+    hi = std::max(hi, p.position + half);
   }
   PENDULUM_FAIL_IF(!(hi >= lo), "body.parts", "every part is a hole; expected at least one solid part");
-  std::vector<Part<double>> parts;
-  double volume = 0.0;
-  bool volumes = true;
-  for (std::size_t i = 0; i < read.size(); ++i) {
-    const auto& r = read[i];
-    const double from = r.part.center - r.shape.half_length, to = r.part.center + r.shape.half_length;
-    PENDULUM_FAIL_IF(r.part.mass < 0.0 && (from < lo || to > hi), "body.parts[" + std::to_string(i) + "].position",
+  for (std::size_t i = 0; i < v.parts.size(); ++i) {
+    const auto& p = v.parts[i];
+    const double half = shape_of(p).half_length, from = p.position - half, to = p.position + half;
+    PENDULUM_FAIL_IF(p.hole && (from < lo || to > hi), "body.parts[" + std::to_string(i) + "].position",
                      "the hole spans " + format_number(from) + " m to " + format_number(to) +
                          " m; expected it inside the body, which spans " + format_number(lo) + " m to " +
                          format_number(hi) + " m");
-    parts.push_back(r.part);
-    volumes = volumes && r.shape.volume > 0.0;
-    volume += (r.part.mass < 0.0 ? -1.0 : 1.0) * r.shape.volume;
   }
-  const BodyProperties<double> b = body_properties(parts);
+  const BodyProperties<double> b = sum_parts(v.parts).body;
   PENDULUM_FAIL_IF(!(b.mass > 0.0) || !(b.inertia_center > 0.0), "body.parts",
                    "the holes outweigh the solid parts (total mass " + format_number(b.mass) +
                        " kg); expected a body of positive mass and moment of inertia");
-  RigidBody<double> out;
-  out.center_of_mass_position = b.center;
-  out.radius_of_gyration = b.radius_of_gyration;
-  out.mass = b.mass;
-  if (volumes) out.volume = volume;
-  return out;
 }
 
 /// temperature, reference_temperature, and expansion_coefficient or material.
@@ -183,9 +195,11 @@ void read_temperature(Object& top, RigidBody<double>& v, RigidBody<double>& u, P
   for (const auto& m : kExpansionCoefficients) {
     if (name == m.material) {
       v.expansion_coefficient = m.w;
-      u.expansion_coefficient = 0.0;
-      out.assumptions.push_back("expansion_coefficient: " + name + ", " + format_number(m.w) +
-                                " /K (Kelley 1993, table after Eq. 41: an average over grades, 10-90 degC)");
+      u.expansion_coefficient = m.uncertainty;
+      out.assumptions.push_back("expansion_coefficient: " + name + ", " + format_number(m.w) + " +- " +
+                                format_number(m.uncertainty, 2) +
+                                " /K (Kelley 1993, table after Eq. 41: an average over grades, 10-90 degC; "
+                                "the uncertainty from " + m.basis + ", as a uniform interval)");
       return;
     }
     names += (names.empty() ? "" : ", ") + std::string(m.material);
@@ -198,21 +212,20 @@ void read_temperature(Object& top, RigidBody<double>& v, RigidBody<double>& u, P
 
 void read_physical(Object& top, ParsedScene& out) {
   RigidBody<double> v, u;
-  if (top.has("body")) {
-    out.body_from_parts = read_body(top);
-    v = *out.body_from_parts;
-  }
+  if (top.has("body")) read_body(top, v, u);
   const bool fit_k = std::find(out.fit.begin(), out.fit.end(), "radius_of_gyration") != out.fit.end();
   const bool fit_center = std::find(out.fit.begin(), out.fit.end(), "center_of_mass_position") != out.fit.end();
-  // The fit replaces what the parts give; the parts' values stay for the check.
-  if (fit_k) v.radius_of_gyration.reset();
-  if (fit_center) v.center_of_mass_position.reset();
-  // What the parts give carries no uncertainty of its own (their
-  // dimensions' uncertainties are not propagated).
-  if (v.radius_of_gyration) u.radius_of_gyration = 0.0;
-  if (v.center_of_mass_position) u.center_of_mass_position = 0.0;
-  if (v.mass) u.mass = 0.0;
-  if (v.volume) u.volume = 0.0;
+  if (!v.parts.empty()) {
+    // What the parts give, also where the fit replaces it (the fit is checked against it).
+    RigidBody<double> parts = v;
+    parts.gyration_from_parts = parts.center_from_parts = true;
+    derive_from_parts(parts);
+    out.body_from_parts = parts;
+    // The fit replaces what the parts give, and so does a measured centre.
+    v.gyration_from_parts = u.gyration_from_parts = !fit_k;
+    v.center_from_parts = u.center_from_parts = !fit_center && !top.has("center_of_mass_position");
+    derive_from_parts(v);
+  }
   if (top.has("center_of_mass_position")) {
     PENDULUM_FAIL_IF(fit_center, "center_of_mass_position",
                      "given and also in fit; expected one: a measured centre is held, a fitted one is not given");

@@ -123,7 +123,9 @@ struct PhysicalPendulum {
       buoyancy_term.ratio = *r;
       buoyancy_term.method = "eq16_body";
       buoyancy_term.skip_reason = "";
-      added_mass_term.skip_reason = "Eqs. (54)-(62) are for a sphere; the body's added mass is not modelled";
+      added_mass_term.skip_reason =
+          "Eqs. (54)-(62) are for a sphere; a bar's potential-flow added mass (strip_added_inertia) needs swings "
+          "much smaller than its section, which a pendulum's are not (docs/physical.md, Added mass)";
     } else if (app.air) {
       buoyancy_term.skip_reason = added_mass_term.skip_reason =
           "needs the body's mass and volume (a body given in parts with densities)";

@@ -633,24 +633,34 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
 }
 
 Recording read_recording(const std::string& path, RecordingFormat format, const RecordingLimits& limits) {
+  auto refuse_unless_regular = [&](const struct stat& st) {
+    if (S_ISREG(st.st_mode)) return;
+    throw InputError(path, S_ISDIR(st.st_mode) ? "a directory; expected a recording file"
+                                               : "not a regular file (a pipe or a device); expected a recording file");
+  };
+  // A pipe or a device is refused before it is opened; what is opened is
+  // checked again, and opened without waiting, so that a pipe swapped in
+  // between cannot block the reader either.
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) {
     throw InputError(path, std::string("cannot open the file: ") + std::strerror(errno));
   }
-  if (!S_ISREG(st.st_mode)) {
-    throw InputError(path, S_ISDIR(st.st_mode) ? "a directory; expected a recording file"
-                                               : "not a regular file (a pipe or a device); expected a recording file");
-  }
+  refuse_unless_regular(st);
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) throw InputError(path, std::string("cannot open the file: ") + std::strerror(errno));
+  struct Close {
+    int fd;
+    ~Close() { ::close(fd); }
+  } close_fd{fd};
+  if (::fstat(fd, &st) != 0) throw InputError(path, std::string("cannot read the file: ") + std::strerror(errno));
+  refuse_unless_regular(st);
   if (static_cast<std::size_t>(st.st_size) > limits.max_bytes) {
     throw InputError(path, "the file has " + std::to_string(st.st_size) + " bytes; expected at most " +
                                std::to_string(limits.max_bytes) + " (RecordingLimits::max_bytes)");
   }
   // Mapped, not read: no copy of the text and no zero-filled buffer.
-  const int fd = ::open(path.c_str(), O_RDONLY);
-  if (fd < 0) throw InputError(path, std::string("cannot open the file: ") + std::strerror(errno));
   const std::size_t size = static_cast<std::size_t>(st.st_size);
   void* map = size ? ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0) : nullptr;
-  ::close(fd);
   if (map == MAP_FAILED) throw InputError(path, std::string("cannot read the file: ") + std::strerror(errno));
   struct Unmap {
     void* p;

@@ -434,3 +434,28 @@ TEST_CASE("A photogate's period uncertainty is honest, with and without the bob'
     CHECK(std::fabs(coverage - p) < 3.0 * std::sqrt(p * (1.0 - p) / 400.0));
   }
 }
+
+TEST_CASE("A zip export is unpacked within the limit, its sets all together", "[recordings][zip]") {
+  // data/recordings/phyphox_export.zip: three phyphox CSVs of about 65 kB
+  // each (tests/tools/make_phyphox_zips.py). The gyroscope's set alone is read
+  // as its CSV is, value for value.
+  const std::string folder = std::string(PENDULUM_DATA_DIR) + "/recordings/";
+  const pendulum::Recording zip = pendulum::read_recording(folder + "phyphox_export.zip");
+  const pendulum::Recording csv = pendulum::read_recording(folder + "phyphox_gyroscope.csv");
+  CHECK(zip.set == "Gyroscope.csv");
+  CHECK(zip.time == csv.time);
+  CHECK(zip.channels == csv.channels);
+  // A limit below the sets' stated total refuses the archive before it is unpacked.
+  pendulum::RecordingLimits limits;
+  limits.max_bytes = 150000;
+  try {
+    pendulum::read_recording(folder + "phyphox_export.zip", pendulum::RecordingFormat::automatic, limits);
+    FAIL("unpacked over the limit");
+  } catch (const pendulum::InputError& e) {
+    CHECK_THAT(e.what(), Contains("unpack to over 150000 bytes"));
+  }
+  // One set under the limit alone still reads.
+  const auto one = pendulum::read_recording(folder + "phyphox_export.zip", pendulum::RecordingFormat::automatic,
+                                            limits, "Gyroscope.csv");
+  CHECK(one.time == csv.time);
+}

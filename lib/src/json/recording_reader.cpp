@@ -37,6 +37,8 @@ std::size_t RecordingReader::read(Object& o, ParsedScene& out) {
                        "; expected numbers: this scene was read as text, not from a file or standard input, "
                        "so no file it names is opened");
   const RecordingFormat format = format_at(o);
+  const std::string set = o.has("set") ? o.text("set") : std::string();
+  PENDULUM_FAIL_IF(o.has("set") && set.empty(), o.path("set"), "got \"\"; expected the name of a CSV in the zip archive");
   SwingOptions options;
   if (o.has("bob_width")) options.bob_width = quantity(o, "bob_width", Dimension::length, Range::positive).value;
   if (o.has("source")) o.text("source");
@@ -45,13 +47,14 @@ std::size_t RecordingReader::read(Object& o, ParsedScene& out) {
   // Relative to the scene's directory; an absolute name stays as it is.
   const std::string file = (std::filesystem::path(*files_.directory) / name).lexically_normal().string();
   const auto same = [&](const Done& d) {
-    return d.file == file && d.format == recording_format_name(format) && d.bob_width == options.bob_width;
+    return d.file == file && d.format == recording_format_name(format) && d.set == set &&
+           d.bob_width == options.bob_width;
   };
   auto it = std::find_if(done_.begin(), done_.end(), same);
   if (it == done_.end()) {
     try {
-      done_.push_back({file, recording_format_name(format), options.bob_width,
-                       analyse_recording(file, format, options)});
+      done_.push_back({file, recording_format_name(format), set, options.bob_width,
+                       analyse_recording(file, format, options, {}, set)});
     } catch (const InputError& e) {
       throw InputError(at, e.what());  // "file: message" or "file:line:column: message"
     }

@@ -22,7 +22,7 @@ class RecordingReader {
  public:
   explicit RecordingReader(SceneFiles files) : files_(std::move(files)) {}
 
-  /// The reference `o` (keys recording, format, bob_width, source): its file
+  /// The reference `o` (keys recording, format, set, bob_width, source): its file
   /// analysed and appended to out.recordings; returns its index there.
   /// InputError at `o.recording` naming the file opened (and its line and
   /// column for an error inside it).
@@ -31,7 +31,7 @@ class RecordingReader {
  private:
   SceneFiles files_;
   struct Done {
-    std::string file, format;
+    std::string file, format, set;
     std::optional<double> bob_width;
     RecordingSummary summary;
   };

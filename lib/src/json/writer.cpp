@@ -268,6 +268,7 @@ json recordings_json(const ParsedScene& scene) {
                     {"recording", r.name},
                     {"file", r.summary.file},
                     {"format", recording_format_name(r.summary.format)},
+                    {"set", r.summary.set.empty() ? json(nullptr) : json(r.summary.set)},
                     {"rows", r.summary.rows},
                     {"skipped_rows", r.summary.dropped},
                     {"periods", p.periods},

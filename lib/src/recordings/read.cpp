@@ -20,6 +20,7 @@
 
 #include "pendulum/input_error.hpp"
 #include "huge_pages.hpp"
+#include "zip.hpp"
 
 namespace pendulum {
 
@@ -324,9 +325,8 @@ inline const char* fast_number(const char* s, const char* e, char mark, double& 
 }  // namespace
 
 Recording parse_recording(std::string_view text, const std::string& file, RecordingFormat format) {
-  if (starts_with(text, "PK\x03\x04")) {
-    fail(file, 1, 1, "a zip archive (phyphox's zip export?); expected a text export: unzip it and "
-                     "import the sensor's CSV inside (docs/recordings.md)");
+  if (looks_like_zip(text)) {
+    fail(file, 1, 1, "a zip archive; expected a text export here (a zip is unpacked when read from its file: read_recording)");
   }
   if (const void* nul = std::memchr(text.data(), '\0', text.size())) {
     const std::size_t at = static_cast<const char*>(nul) - text.data();
@@ -632,7 +632,8 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
   return rec;
 }
 
-Recording read_recording(const std::string& path, RecordingFormat format, const RecordingLimits& limits) {
+Recording read_recording(const std::string& path, RecordingFormat format, const RecordingLimits& limits,
+                         const std::string& set) {
   auto refuse_unless_regular = [&](const struct stat& st) {
     if (S_ISREG(st.st_mode)) return;
     throw InputError(path, S_ISDIR(st.st_mode) ? "a directory; expected a recording file"
@@ -670,6 +671,7 @@ Recording read_recording(const std::string& path, RecordingFormat format, const 
     }
   } unmap{map, size};
   const std::string_view text(static_cast<const char*>(map), size);
+  if (looks_like_zip(text)) return read_zip_recording(text, path, format, set, limits);
   return parse_recording(text, path, format);
 }
 

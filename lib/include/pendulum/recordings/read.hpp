@@ -56,11 +56,16 @@ struct Recording {
   std::vector<double> periods;
   std::size_t rows = 0;     ///< data rows read
   std::size_t dropped = 0;  ///< rows skipped for an empty or NaN cell
+  /// The CSV inside a zip archive it was read from ("Gyroscope.csv"); empty
+  /// for a text file.
+  std::string set;
 };
 
 /// Limits that keep a wrong file from eating the memory or the time.
 struct RecordingLimits {
-  std::size_t max_bytes = std::size_t{1} << 30;  ///< 1 GiB: 8 hours at 500 Hz
+  /// 1 GiB: 8 hours at 500 Hz. For a zip archive, also the most its sets
+  /// may unpack to, all together.
+  std::size_t max_bytes = std::size_t{1} << 30;
 };
 
 /// Reads a recording from its text. `file` names it in errors, which are
@@ -71,8 +76,11 @@ Recording parse_recording(std::string_view text, const std::string& file,
                           RecordingFormat format = RecordingFormat::automatic);
 
 /// Reads the file at `path` (at most limits.max_bytes; a larger file, a
-/// directory, a device or a pipe is refused) and parses it.
+/// directory, a device or a pipe is refused) and parses it. A zip archive
+/// (phyphox's zip export) is unpacked in memory: `set` names the CSV inside
+/// to read, and by default the one with the best pendulum signal is read
+/// (docs/recordings.md); `set` is ignored for a text file.
 Recording read_recording(const std::string& path, RecordingFormat format = RecordingFormat::automatic,
-                         const RecordingLimits& limits = {});
+                         const RecordingLimits& limits = {}, const std::string& set = {});
 
 }  // namespace pendulum

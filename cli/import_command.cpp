@@ -157,8 +157,9 @@ Command add_import_command(CLI::App& app) {
   add_swing_options(*cmd, o->swing);
 
   cmd->add_option("--set", o->set,
-                  "Zip exports: the CSV inside to read (Gyroscope.csv); default: the one with the best pendulum "
-                  "signal (a rate, then linear acceleration, then acceleration)");
+                  "Zip exports: the CSV inside to read (Gyroscope.csv; default: the one with the best pendulum "
+                  "signal, a rate, then linear acceleration, then acceleration). PASCO: the run (\"Run #2\"; "
+                  "default run 1)");
 
   return {cmd, [o] {
     bool table = false;

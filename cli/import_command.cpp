@@ -70,7 +70,7 @@ std::string summary_table(const RecordingSummary& r) {
   };
   put("%-22s %s (%zu rows, %zu skipped)\n", "recording", r.file.c_str(), r.rows, r.dropped);
   put("%-22s %s\n", "format", recording_format_name(r.format));
-  if (!r.set.empty()) put("%-22s %s\n", "set in the zip", r.set.c_str());
+  if (!r.set.empty()) put("%-22s %s\n", "set", r.set.c_str());
   put("%-22s %d (%zu crossings)\n", "full periods", a.period.periods, a.crossings.size());
   put("%-22s %.7f s +- %.2g s\n", "period", a.period.value, a.period.uncertainty);
   put("%-22s %.3g s rms, lag-1 correlation %.2f\n", "crossing residuals", a.period.residual_rms,

@@ -654,7 +654,7 @@ TEST_CASE("import: phyphox's zip export reads its best set, or the one named", "
     CHECK(from_zip.at("amplitude_range") == from_csv.at("amplitude_range"));
   }
   const Run table = run("import --format table " + zip);
-  CHECK_THAT(table.out, Contains("set in the zip         Gyroscope.csv"));
+  CHECK_THAT(table.out, Contains("set                    Gyroscope.csv"));
   const Run missing = run("import --set Magnetometer " + zip);
   CHECK(missing.status == 1);
   CHECK_THAT(missing.err, Contains("a zip archive with no set \"Magnetometer\"; expected one of its CSV sets: "

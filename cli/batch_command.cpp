@@ -140,7 +140,8 @@ struct Outcome {
 };
 Outcome process(const Job& job, const AnalysisOptions& options, bool with_report) {
   try {
-    const ParsedScene scene = parse_scene(job.text ? *job.text : read_input(job.name));
+    const ParsedScene scene = parse_scene(job.text ? *job.text : read_input(job.name),
+                                            {job.text ? std::string(".") : scene_directory(job.name)});
     const Analysis analysis = analyse(scene, options);
     Outcome out{batch_line(job.name, scene, analysis), {job.name, std::nullopt, ""}};
     if (with_report) out.entry.report = report::make_scene_report(job.name, scene, analysis);

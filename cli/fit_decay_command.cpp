@@ -33,7 +33,7 @@ Command add_fit_decay_command(CLI::App& app) {
       ->type_name("both|linear_only|quadratic_only");
 
   return {cmd, [o] {
-    const ParsedScene scene = parse_decay_document(read_input(o->file));
+    const ParsedScene scene = parse_decay_document(read_input(o->file), {scene_directory(o->file)});
     if (!scene.decay_data) throw InputError("decay.data", "missing; fit-decay needs a decay record");
     DecayFitOptions fit_options;
     fit_options.model = o->model;

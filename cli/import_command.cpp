@@ -25,7 +25,7 @@ nlohmann::ordered_json summary_json(const RecordingSummary& r) {
   const SwingAnalysis& a = r.swings;
   const int n = a.period.periods;
   const std::string source = std::string("pendulum-g import: ") + recording_format_name(r.format) +
-                             " recording " + r.file;
+                             " recording " + r.file + (r.set.empty() ? "" : "/" + r.set);
   nlohmann::ordered_json out;
   out["format"] = recording_format_name(r.format);
   out["periods"] = n;
@@ -70,6 +70,7 @@ std::string summary_table(const RecordingSummary& r) {
   };
   put("%-22s %s (%zu rows, %zu skipped)\n", "recording", r.file.c_str(), r.rows, r.dropped);
   put("%-22s %s\n", "format", recording_format_name(r.format));
+  if (!r.set.empty()) put("%-22s %s\n", "set", r.set.c_str());
   put("%-22s %d (%zu crossings)\n", "full periods", a.period.periods, a.crossings.size());
   put("%-22s %.7f s +- %.2g s\n", "period", a.period.value, a.period.uncertainty);
   put("%-22s %.3g s rms, lag-1 correlation %.2f\n", "crossing residuals", a.period.residual_rms,
@@ -137,12 +138,14 @@ Command add_import_command(CLI::App& app) {
     std::string file;
     std::vector<std::string> formats;
     SwingOptions swing;
+    std::string set;
   };
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
       "import", "Reduce a phone, photogate or video-tracker recording to a period, amplitudes and the "
                 "timing and decay parts of a scene (docs/recordings.md)");
-  cmd->add_option("recording", o->file, "Recording file (CSV or tab-separated text)")->required();
+  cmd->add_option("recording", o->file, "Recording file (CSV or tab-separated text, or phyphox's zip export)")
+      ->required();
   std::vector<std::string> formats = recording_family_names();
   formats.insert(formats.end(), {"json", "table"});
   cmd->add_option("--format", o->formats,
@@ -153,13 +156,18 @@ Command add_import_command(CLI::App& app) {
       ->take_all();
   add_swing_options(*cmd, o->swing);
 
+  cmd->add_option("--set", o->set,
+                  "Zip exports: the CSV inside to read (Gyroscope.csv; default: the one with the best pendulum "
+                  "signal, a rate, then linear acceleration, then acceleration). PASCO: the run (\"Run #2\"; "
+                  "default run 1)");
+
   return {cmd, [o] {
     bool table = false;
     for (const auto& f : o->formats) {
       if (f == "table" || f == "json") table = f == "table";
     }
-    const RecordingSummary summary =
-        analyse_recording(o->file, recording_family(o->formats).value_or(RecordingFormat::automatic), o->swing);
+    const RecordingSummary summary = analyse_recording(
+        o->file, recording_family(o->formats).value_or(RecordingFormat::automatic), o->swing, {}, o->set);
     std::cout << (table ? summary_table(summary) : summary_json(summary).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     return 0;
   }};

@@ -28,7 +28,7 @@ Command add_reduce_command(CLI::App& app) {
   add_analysis_options(*cmd, o->analysis);
 
   return {cmd, [o] {
-    const ParsedScene scene = parse_scene(read_input(o->file));
+    const ParsedScene scene = parse_scene(read_input(o->file), {scene_directory(o->file)});
     const Analysis analysis = analyse(scene, o->analysis);
     const std::string text =
         o->format == "table"

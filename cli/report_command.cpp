@@ -157,7 +157,7 @@ Command add_report_command(CLI::App& app) {
       write_output(o->output, svg ? report::recording_plot_svg(r, o->plot) : report::recording_report_html(r));
       return 0;
     }
-    const ParsedScene scene = parse_scene(read_input(o->file));
+    const ParsedScene scene = parse_scene(read_input(o->file), {scene_directory(o->file)});
     const Analysis analysis = analyse(scene, o->analysis);
     const report::SceneReport r = report::make_scene_report(o->file, scene, analysis);
     const std::string text = svg ? report::plot_svg(r, o->plot) : report::scene_report_html(r);

@@ -7,8 +7,12 @@
 // - `splice`: {"PLACEHOLDER": "raw text"}: the string "PLACEHOLDER" in the
 //   scene replaced by raw text that a JSON value cannot hold (1e400, -0, a
 //   key given twice).
+// Then "${PENDULUM_DATA_DIR}" and "${PENDULUM_TESTS_DIR}" become those
+// directories: a recording a case names (docs/recordings.md) by absolute path,
+// since the scene is written to a temporary file.
 // Read by the CLI tests and by the fuzzer's seed writer.
 #include <string>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -34,6 +38,15 @@ inline std::string catalogue_text(const nlohmann::json& entry, const nlohmann::j
   for (const auto& [placeholder, raw] : splice.items()) {
     const std::string quoted = nlohmann::json(placeholder).dump();
     text.replace(text.find(quoted), quoted.size(), raw.get<std::string>());
+  }
+  const std::pair<std::string, std::string> directories[] = {
+    {"${PENDULUM_DATA_DIR}", PENDULUM_DATA_DIR},
+#ifdef PENDULUM_TESTS_DIR
+    {"${PENDULUM_TESTS_DIR}", PENDULUM_TESTS_DIR},
+#endif
+  };
+  for (const auto& [name, directory] : directories) {
+    for (auto at = text.find(name); at != std::string::npos; at = text.find(name, at)) text.replace(at, name.size(), directory);
   }
   return text;
 }

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <charconv>
 #include <random>
+#include <sstream>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -433,4 +434,63 @@ TEST_CASE("A photogate's period uncertainty is honest, with and without the bob'
     WARN((options.bob_width ? "with" : "without") << " the width: coverage " << coverage);
     CHECK(std::fabs(coverage - p) < 3.0 * std::sqrt(p * (1.0 - p) / 400.0));
   }
+}
+
+TEST_CASE("A zip export is unpacked within the limit, its sets all together", "[recordings][zip]") {
+  // data/recordings/phyphox_export.zip: three phyphox CSVs of about 65 kB
+  // each (tests/tools/make_phyphox_zips.py). The gyroscope's set alone is read
+  // as its CSV is, value for value.
+  const std::string folder = std::string(PENDULUM_DATA_DIR) + "/recordings/";
+  const pendulum::Recording zip = pendulum::read_recording(folder + "phyphox_export.zip");
+  const pendulum::Recording csv = pendulum::read_recording(folder + "phyphox_gyroscope.csv");
+  CHECK(zip.set == "Gyroscope.csv");
+  CHECK(zip.time == csv.time);
+  CHECK(zip.channels == csv.channels);
+  // A limit below the sets' stated total refuses the archive before it is unpacked.
+  pendulum::RecordingLimits limits;
+  limits.max_bytes = 150000;
+  try {
+    pendulum::read_recording(folder + "phyphox_export.zip", pendulum::RecordingFormat::automatic, limits);
+    FAIL("unpacked over the limit");
+  } catch (const pendulum::InputError& e) {
+    CHECK_THAT(e.what(), Contains("unpack to over 150000 bytes"));
+  }
+  // One set under the limit alone still reads.
+  const auto one = pendulum::read_recording(folder + "phyphox_export.zip", pendulum::RecordingFormat::automatic,
+                                            limits, "Gyroscope.csv");
+  CHECK(one.time == csv.time);
+}
+
+TEST_CASE("A PASCO run after the first is read by its number", "[recordings][pasco]") {
+  // pasco_rotary.csv's run 1, and beside it a run 2 of its first 600 rows
+  // (the rest of run 2's cells empty, as Capstone leaves a shorter run).
+  const std::string text = test::read_text(kDir + "pasco_rotary.csv");
+  std::istringstream in(text);
+  std::string line, two_runs;
+  std::getline(in, line);
+  two_runs = line + ",\"Time (s) Run #2\",\"Angle (rad) Run #2\"\n";
+  for (int row = 0; std::getline(in, line); ++row) two_runs += line + (row < 600 ? "," + line : ",,") + "\n";
+  const Recording one = parse_recording(text, "one.csv");
+  const Recording first = parse_recording(two_runs, "two.csv");
+  const Recording second = parse_recording(two_runs, "two.csv", RecordingFormat::automatic, "Run #2");
+  CHECK(first.time == one.time);  // run 2's empty cells do not drop run 1's rows
+  CHECK(first.channels == one.channels);
+  CHECK(first.dropped == 0);
+  REQUIRE(second.time.size() == 600);
+  CHECK(second.set == "Run #2");
+  CHECK(second.dropped == one.time.size() - 600);
+  CHECK(std::equal(second.time.begin(), second.time.end(), one.time.begin()));
+  CHECK(std::equal(second.channels[0].begin(), second.channels[0].end(), one.channels[0].begin()));
+  CHECK(parse_recording(two_runs, "two.csv", RecordingFormat::automatic, "2").time == second.time);
+  CHECK(analyse_swings(second, "two.csv").period.periods >= 5);
+  CHECK_THROWS_WITH(parse_recording(two_runs, "two.csv", RecordingFormat::automatic, "Run #3"),
+                    Contains("two.csv:1:1: no column of run 3 in the header") && Contains("(its runs: 1, 2)"));
+  CHECK_THROWS_WITH(parse_recording(two_runs, "two.csv", RecordingFormat::automatic, "Gyroscope.csv"),
+                    Contains("expected a PASCO run (\"Run #2\")"));
+  CHECK_THROWS_WITH(read_recording(kDir + "phyphox_gyroscope.csv", RecordingFormat::automatic, {}, "Run #1"),
+                    Contains("no column of run 1 in the header"));
+  // A run asked of a file read as another family (forced), which has no runs.
+  CHECK_THROWS_WITH(parse_recording("\"Time (s) Run #1\",\"State Run #1\"\n0.1,1\n0.2,0\n", "gate.csv",
+                                    RecordingFormat::vernier, "Run #1"),
+                    Contains("this vernier export holds a single set"));
 }

@@ -241,3 +241,35 @@ TEST_CASE("A length measured to the top or bottom of the bob is referred to its 
   CHECK_THAT(top.observation_uncertainties[0].length, WithinRel(std::hypot(0.0003, 0.00005), 1e-12));
   CHECK(centre.observation_uncertainties[0].length == 0.0003);
 }
+
+TEST_CASE("A scene naming a recording: read only where the caller says the scene's folder is", "[scene][recordings]") {
+  const std::string text = R"({"timing": {"recording": "phyphox_gyroscope.csv"},
+                               "length": {"value": 0.8, "unit": "m"}})";
+  // Text alone (the fuzzer, a library call): no file is opened.
+  try {
+    parse_scene(text);
+    FAIL("a recording read without a folder");
+  } catch (const InputError& e) {
+    CHECK(e.path() == "timing.recording");
+    CHECK_THAT(e.what(), Contains("this scene was read as text"));
+  }
+  // With the folder: the recording's period, its periods as one trial, and
+  // its amplitude at the start of the timing, exactly as analyse_recording gives them.
+  const std::string folder = std::string(PENDULUM_DATA_DIR) + "/recordings";
+  const ParsedScene s = parse_scene(text, {folder});
+  const RecordingSummary r = analyse_recording(folder + "/phyphox_gyroscope.csv");
+  REQUIRE(s.recordings.size() == 1);
+  CHECK(s.recordings[0].path == "timing");
+  CHECK(s.sources[0].recording == std::size_t{0});
+  CHECK(s.sources[0].trial_count == 1);
+  CHECK(s.observations[0].period == r.swings.period.value);
+  CHECK(s.observation_uncertainties[0].period == r.swings.period.uncertainty);
+  CHECK(s.observations[0].oscillations_per_trial == r.swings.period.periods);
+  CHECK(s.observations[0].amplitude == r.swings.start_amplitude);
+  CHECK_FALSE(s.decay_data);
+
+  CHECK(scene_directory("-") == ".");
+  CHECK(scene_directory("scene.json") == ".");
+  CHECK(scene_directory("class/a.json") == "class");
+  CHECK(scene_directory("/data/a.json") == "/data");
+}

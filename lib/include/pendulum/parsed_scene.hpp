@@ -10,6 +10,7 @@
 #include "pendulum/apparatus.hpp"
 #include "pendulum/decay_fit.hpp"
 #include "pendulum/observation.hpp"
+#include "pendulum/recordings/swings.hpp"
 #include "pendulum/site.hpp"
 
 namespace pendulum {
@@ -41,6 +42,16 @@ struct ObservationSource {
   /// The JSON path of one of its keys ("amplitude", "length.value"): at the
   /// top level where it is shared.
   std::string path_of(const std::string& key) const { return is_shared(key) ? key : path + key; }
+  /// Index in ParsedScene::recordings when the timing names a recording.
+  std::optional<std::size_t> recording = std::nullopt;
+};
+
+/// A recording a scene names in place of numbers (`timing` or `decay.data`,
+/// docs/recordings.md), as read and analysed.
+struct SceneRecording {
+  std::string path;  ///< JSON path of the object naming it: "timing", "observations[2].timing", "decay.data"
+  std::string name;  ///< as written in the scene; summary.file is the path opened
+  RecordingSummary summary;
 };
 
 /// The period model a scene is reduced with (models/).
@@ -62,6 +73,9 @@ struct ParsedScene {
   /// A decay record to fit alpha and beta from (decay.data); the fit
   /// replaces any alpha and beta given beside it.
   std::optional<DecayData> decay_data;
+  /// The recordings the scene's timing and decay record came from, in the
+  /// order read; empty when the scene gives numbers.
+  std::vector<SceneRecording> recordings;
   /// Where the experiment was done, to compare g with.
   std::optional<Site> site;
   /// Inputs whose errors are correlated (alpha and beta of a decay fit), by

@@ -6,6 +6,7 @@
 /// path, the value found and what was expected (InputError).
 
 #include <cstddef>
+#include <optional>
 #include <string>
 
 #include "pendulum/input_error.hpp"
@@ -17,12 +18,26 @@ namespace pendulum {
 /// bound keeps a wrong file (a log, /dev/zero) from eating the memory.
 inline constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 20;
 
+/// Where the files a scene names (a recording in `timing` or `decay.data`,
+/// docs/recordings.md) are looked for.
+struct SceneFiles {
+  /// The directory a relative name is resolved against: the scene file's
+  /// (scene_directory()). Without it, a scene that names a file is refused:
+  /// parsing text opens no file unless the caller says where from (the
+  /// fuzzer parses arbitrary text and passes none).
+  std::optional<std::string> directory;
+};
+
+/// The directory of the scene file at `path`: "." for "-" (standard input)
+/// and for a bare file name.
+std::string scene_directory(const std::string& path);
+
 /// Parses and validates scene JSON text. Throws InputError.
-ParsedScene parse_scene(const std::string& text);
+ParsedScene parse_scene(const std::string& text, const SceneFiles& files = {});
 
 /// A whole scene, or a document holding only a decay record: `decay` (with
 /// `data`) and the free-text keys (schema, title, source, notes), what
 /// `fit-decay` reads. The latter has no observations. Throws InputError.
-ParsedScene parse_decay_document(const std::string& text);
+ParsedScene parse_decay_document(const std::string& text, const SceneFiles& files = {});
 
 }  // namespace pendulum

@@ -5,6 +5,7 @@
 
 #include "pendulum/air.hpp"
 #include "pendulum/numeric.hpp"
+#include "recording_reader.hpp"
 
 namespace pendulum::json_reader {
 
@@ -336,7 +337,7 @@ void read_parts(Object& top, ParsedScene& out) {
 
 /// decay: alpha and beta as measured, and/or a record to fit them from
 /// (docs/scene.md); the record is validated here, fitted by the analysis.
-void read_decay(Object& top, ParsedScene& out) {
+void read_decay(Object& top, ParsedScene& out, RecordingReader& recordings) {
   Object o(top.at("decay"), "decay");
   const bool given = o.has("alpha") || o.has("beta");
   const bool has_data = o.has("data");
@@ -347,7 +348,9 @@ void read_decay(Object& top, ParsedScene& out) {
     put(o, "alpha", Dimension::rate, Range::non_negative, pv.alpha, pu.alpha);
     put(o, "beta", Dimension::rate_per_angle, Range::non_negative, pv.beta, pu.beta);
   }
-  if (has_data) {
+  if (has_data && names_recording(o.at("data"))) {
+    out.decay_data = read_recorded_decay(o, out, recordings);
+  } else if (has_data) {
     Object d(o.at("data"), "decay.data");
     const Unit time_unit = unit_at(d, "time_unit", Dimension::time);
     const Unit angle_unit = unit_at(d, "amplitude_unit", Dimension::angle);

@@ -22,8 +22,11 @@ void read_timing(Object& parent, const std::string& prefix, Observation<double>&
 /// bob, ring, cap, cap_screw, wire, air, support: the apparatus's parts.
 void read_parts(Object& top, ParsedScene& out);
 
-/// decay: alpha and beta as measured, and/or a record to fit them from.
-void read_decay(Object& top, ParsedScene& out);
+class RecordingReader;
+
+/// decay: alpha and beta as measured, and/or a record to fit them from
+/// (numbers, or a recording that `recordings` reads).
+void read_decay(Object& top, ParsedScene& out, RecordingReader& recordings);
 
 /// site: a measured reference g, or latitude and height for normal gravity.
 void read_site(Object& top, ParsedScene& out);

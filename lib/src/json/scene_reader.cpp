@@ -3,9 +3,11 @@
 // unknowns to fit, and the checks across parts and observations.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "../plausibility.hpp"
 #include "parts.hpp"
+#include "recording_reader.hpp"
 #include "pendulum/models/physical_pendulum.hpp"
 #include "pendulum/models/simple_pendulum.hpp"
 #include "pendulum/scene_json.hpp"
@@ -29,11 +31,16 @@ Object& owner(Object& o, Object* shared, const char* key, ObservationSource& sou
 /// The keys of one observation, under `o` (the top level, or an item of
 /// "observations") with `prefix` on every path; `shared`, in a series, holds
 /// the length or amplitude given once for all.
-void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Object* shared = nullptr) {
+void read_observation(Object& o, const std::string& prefix, ParsedScene& out, RecordingReader& recordings,
+                      Object* shared = nullptr) {
   Observation<double> v, u;
   ObservationSource source;
   source.path = prefix;
-  read_timing(o, prefix, v, u, source, out);
+  if (o.has("timing") && names_recording(o.at("timing"))) {
+    read_recorded_timing(o, prefix, v, u, source, out, recordings);
+  } else {
+    read_timing(o, prefix, v, u, source, out);
+  }
   // A rigid body is set by its pivot (docs/physical.md), a ball by its length.
   const bool distance = o.has("pivot_distance"), position = o.has("pivot_position");
   PENDULUM_FAIL_IF(distance && position, prefix + "pivot_position",
@@ -60,21 +67,35 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Ob
     within(v.length, 1e-3, 1e3, source.path_of("length.value"), "m", "a laboratory pendulum, 1 mm to 1 km long");
   }
   Object& amplitude_owner = owner(o, shared, "amplitude", source);
-  put(amplitude_owner, "amplitude", Dimension::angle, Range::positive, v.amplitude, u.amplitude);
+  if (!amplitude_owner.has("amplitude") && source.recording) {
+    // The recording's amplitude where the timing starts (docs/recordings.md).
+    const RecordingSummary& r = out.recordings[*source.recording].summary;
+    PENDULUM_FAIL_IF(!std::isfinite(r.swings.start_amplitude), prefix + "amplitude",
+                     "missing, and the recording " + r.file + " gives no amplitudes (a photogate gives them with "
+                     "timing.bob_width); expected the amplitude at the start of the timing");
+    v.amplitude = r.swings.start_amplitude;
+    u.amplitude = 0.0;
+    source.amplitude_raw = v.amplitude * 180.0 / kPi;
+    source.amplitude_unit = "deg";
+    out.assumptions.push_back(prefix + "amplitude: " + format_number(source.amplitude_raw, 5) +
+                              " deg, the recording's at the start of its timing (no uncertainty)");
+  } else {
+    put(amplitude_owner, "amplitude", Dimension::angle, Range::positive, v.amplitude, u.amplitude);
+    const json& amplitude = amplitude_owner.at("amplitude");
+    source.amplitude_raw = amplitude.at("value").get<double>();
+    source.amplitude_unit = find_unit(amplitude.at("unit").get<std::string>(), Dimension::angle)->name;
+  }
   PENDULUM_FAIL_IF(v.amplitude >= kPi, source.path_of("amplitude") + ".value",
                    "got " + format_number(v.amplitude * 180.0 / kPi) +
                        " deg; expected an amplitude below 180 deg (at 180 deg and beyond "
                        "the pendulum goes over the top)");
-  const json& amplitude = amplitude_owner.at("amplitude");
-  source.amplitude_raw = amplitude.at("value").get<double>();
-  source.amplitude_unit = find_unit(amplitude.at("unit").get<std::string>(), Dimension::angle)->name;
   out.observations.push_back(v);
   out.observation_uncertainties.push_back(u);
   out.sources.push_back(std::move(source));
 }
 
 /// "observations": a non-empty array of objects with length, amplitude, timing.
-void read_series(Object& top, ParsedScene& out) {
+void read_series(Object& top, ParsedScene& out, RecordingReader& recordings) {
   // A length or amplitude measured once is given once (shared); what
   // changes from one observation to the next is each observation's own.
   for (const char* key : {"pivot_distance", "pivot_position", "timing"}) {
@@ -96,7 +117,7 @@ void read_series(Object& top, ParsedScene& out) {
                        "got both a top-level " + std::string(key) + " (shared by every observation) and this one; "
                        "expected one: give " + key + " once at the top level, or in every observation");
     }
-    read_observation(o, path + ".", out, &top);
+    read_observation(o, path + ".", out, recordings, &top);
     if (o.has("source")) o.text("source");
     o.finish();
     PENDULUM_FAIL_IF(out.observation_uncertainties.back().period == 0.0, path + ".timing",
@@ -202,19 +223,26 @@ void read_header(Object& top, ParsedScene& out) {
 
 }  // namespace
 
-ParsedScene parse_scene(const std::string& text) {
+std::string scene_directory(const std::string& path) {
+  if (path == "-") return ".";
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  return parent.empty() ? "." : parent.string();
+}
+
+ParsedScene parse_scene(const std::string& text, const SceneFiles& files) {
   const json doc = parse_json(text, kMaxSceneBytes);
+  RecordingReader recordings(files);
   ParsedScene out;
   Object top(doc, "", "a JSON object (the scene)");
   read_header(top, out);
 
   if (top.has("observations")) {
-    read_series(top, out);
+    read_series(top, out, recordings);
   } else {
-    read_observation(top, "", out);
+    read_observation(top, "", out, recordings);
   }
   read_parts(top, out);
-  if (top.has("decay")) read_decay(top, out);
+  if (top.has("decay")) read_decay(top, out, recordings);
   if (top.has("site")) read_site(top, out);
   const bool physical = out.model == PeriodModelKind::physical_pendulum;
   if (top.has("fit")) physical ? read_fit<PhysicalPendulum>(top, out) : read_fit<SimplePendulum>(top, out);
@@ -232,17 +260,18 @@ ParsedScene parse_scene(const std::string& text) {
   return out;
 }
 
-ParsedScene parse_decay_document(const std::string& text) {
+ParsedScene parse_decay_document(const std::string& text, const SceneFiles& files) {
   const json doc = parse_json(text, kMaxSceneBytes);
   Object top(doc, "", "a JSON object (the scene)");
   for (const char* key : {"observations", "timing", "length", "amplitude"}) {
-    if (top.has(key)) return parse_scene(text);
+    if (top.has(key)) return parse_scene(text, files);
   }
+  RecordingReader recordings(files);
   ParsedScene out;
   read_header(top, out);
   PENDULUM_FAIL_IF(!top.has("decay"), "decay",
                    "missing; expected a decay record (decay.data), alone or in a whole scene");
-  read_decay(top, out);
+  read_decay(top, out, recordings);
   top.finish();
   return out;
 }

@@ -258,6 +258,26 @@ json fit_json(const ParsedScene& scene, const Analysis& a) {
   return out;
 }
 
+/// Where the timing and decay records came from when the scene names
+/// recordings (docs/recordings.md, "In a scene").
+json recordings_json(const ParsedScene& scene) {
+  json list = json::array();
+  for (const SceneRecording& r : scene.recordings) {
+    const PeriodEstimate& p = r.summary.swings.period;
+    list.push_back({{"path", r.path},
+                    {"recording", r.name},
+                    {"file", r.summary.file},
+                    {"format", recording_format_name(r.summary.format)},
+                    {"set", r.summary.set.empty() ? json(nullptr) : json(r.summary.set)},
+                    {"rows", r.summary.rows},
+                    {"skipped_rows", r.summary.dropped},
+                    {"periods", p.periods},
+                    {"period", {{"value", p.value}, {"uncertainty", p.uncertainty}, {"unit", "s"}}},
+                    {"swing_amplitudes", r.summary.swings.decay.amplitudes.size()}});
+  }
+  return list;
+}
+
 json warnings_json(const ParsedScene& scene, const Analysis& a) {
   json warnings = scene.warnings;
   for (const auto& w : a.warnings) warnings.push_back(w);
@@ -304,6 +324,7 @@ std::string result_json(const ParsedScene& scene, const Analysis& a, const Analy
                          {"z", optional_number(a.z_score)}};
   }
   if (a.decay_fit) out["decay_fit"] = decay_fit_to_json(*a.decay_fit, a.decay_given);
+  if (!scene.recordings.empty()) out["recordings"] = recordings_json(scene);
   if (a.drag) {
     const Decay<double> used = a.decay_fit ? Decay<double>{a.decay_fit->alpha.value, a.decay_fit->beta.value}
                                            : *scene.apparatus.decay;
@@ -316,6 +337,7 @@ std::string decay_fit_json(const std::string& input, const ParsedScene& scene, c
                            const std::vector<std::string>& warnings) {
   json out = {{"schema", "pendulum-g/decay-fit/1"}, {"input", input}};
   out.update(decay_fit_to_json(fit, scene.apparatus.decay));
+  if (!scene.recordings.empty()) out["recordings"] = recordings_json(scene);
   ParsedScene fitted = scene;
   use_fitted_decay(fitted, fit);
   // A decay-only document has no pendulum to predict the air's damping of.

@@ -20,6 +20,7 @@
 
 #include "pendulum/input_error.hpp"
 #include "huge_pages.hpp"
+#include "zip.hpp"
 
 namespace pendulum {
 
@@ -140,7 +141,7 @@ std::vector<std::size_t> find_all(const std::vector<Column>& cols, Role role) {
 }
 
 /// The layout of `format` for these columns, or nullopt if they do not fit it.
-std::optional<Layout> layout_for(RecordingFormat format, const std::vector<Column>& cols, bool preamble) {
+std::optional<Layout> layout_for(RecordingFormat format, const std::vector<Column>& cols, bool preamble, int run) {
   Layout l;
   l.format = format;
   auto angle_scale = [&](const Column& c) {
@@ -175,23 +176,23 @@ std::optional<Layout> layout_for(RecordingFormat format, const std::vector<Colum
       return l;
     }
     case RecordingFormat::pasco: {
-      const auto t = find(cols, Role::time, 1);
+      const auto t = find(cols, Role::time, run);
       if (!t) return std::nullopt;
       l.time = *t;
       l.time_scale = time_scale(cols[*t].unit).value_or(1.0);
-      if (const auto a = find(cols, Role::angle, 1)) {
+      if (const auto a = find(cols, Role::angle, run)) {
         l.kind = SignalKind::angle;
         l.channels = {*a};
         l.channel_scale = angle_scale(cols[*a]);
-      } else if (const auto w = find(cols, Role::omega, 1)) {
+      } else if (const auto w = find(cols, Role::omega, run)) {
         l.kind = SignalKind::angular_rate;
         l.channels = {*w};
         l.channel_scale = cols[*w].unit.find("deg") != std::string::npos || cols[*w].unit[0] == '\xc2'
                               ? 3.14159265358979323846 / 180.0 : 1.0;
-      } else if (const auto s = find(cols, Role::state, 1)) {
+      } else if (const auto s = find(cols, Role::state, run)) {
         l.kind = SignalKind::gate_states;
         l.channels = {*s};
-        l.period = find(cols, Role::period, 1);
+        l.period = find(cols, Role::period, run);
       } else {
         return std::nullopt;
       }
@@ -229,9 +230,9 @@ std::optional<Layout> layout_for(RecordingFormat format, const std::vector<Colum
 }
 
 Layout detect(RecordingFormat forced, const std::vector<Column>& cols, bool preamble, bool has_header,
-              const std::string& file, std::size_t header_line) {
+              const std::string& file, std::size_t header_line, int run) {
   if (forced != RecordingFormat::automatic) {
-    if (auto l = layout_for(forced, cols, preamble)) return *l;
+    if (auto l = layout_for(forced, cols, preamble, run)) return *l;
     fail(file, header_line, 1,
          std::string("the header does not fit a ") + recording_format_name(forced) +
              " export (docs/recordings.md lists the columns each format needs)");
@@ -239,11 +240,11 @@ Layout detect(RecordingFormat forced, const std::vector<Column>& cols, bool prea
   // The first family whose columns the header has; the most specific first
   // (a PASCO gate file also has what a Vernier one needs).
   if (!has_header || cols.size() == 1) {
-    if (auto l = layout_for(RecordingFormat::plain, cols, preamble)) return *l;
+    if (auto l = layout_for(RecordingFormat::plain, cols, preamble, run)) return *l;
   } else {
     for (auto family : {RecordingFormat::pasco, RecordingFormat::vernier, RecordingFormat::tracker,
                         RecordingFormat::phyphox}) {
-      if (auto l = layout_for(family, cols, preamble)) return *l;
+      if (auto l = layout_for(family, cols, preamble, run)) return *l;
     }
   }
   std::string names;
@@ -323,10 +324,10 @@ inline const char* fast_number(const char* s, const char* e, char mark, double& 
 
 }  // namespace
 
-Recording parse_recording(std::string_view text, const std::string& file, RecordingFormat format) {
-  if (starts_with(text, "PK\x03\x04")) {
-    fail(file, 1, 1, "a zip archive (phyphox's zip export?); expected a text export: unzip it and "
-                     "import the sensor's CSV inside (docs/recordings.md)");
+Recording parse_recording(std::string_view text, const std::string& file, RecordingFormat format,
+                          const std::string& set) {
+  if (looks_like_zip(text)) {
+    fail(file, 1, 1, "a zip archive; expected a text export here (a zip is unpacked when read from its file: read_recording)");
   }
   if (const void* nul = std::memchr(text.data(), '\0', text.size())) {
     const std::size_t at = static_cast<const char*>(nul) - text.data();
@@ -406,9 +407,36 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
     if (delimiter) n += std::count(first_data.begin(), first_data.end(), delimiter);
     cols.resize(n);
   }
-  const Layout layout = detect(format, cols, preamble, header.has_value(), file, header_line);
+  // A PASCO run other than the first, by its number ("Run #2", "run 2" or "2").
+  int run = 1;
+  if (!set.empty()) {
+    const std::string name = lower(set);
+    const std::size_t digits = name.find_first_of("0123456789");
+    const bool number = digits != std::string::npos && name.find_first_not_of("0123456789", digits) == std::string::npos &&
+                        digits < 8 && name.size() - digits < 6;
+    const std::string prefix = number ? std::string(trim(name.substr(0, digits))) : std::string();
+    if (!number || !(prefix.empty() || prefix == "run #" || prefix == "run")) {
+      fail(file, header_line, 1, "got the set \"" + set + "\"; expected a PASCO run (\"Run #2\") in a text export");
+    }
+    run = std::atoi(name.c_str() + digits);
+    std::string runs;
+    for (const auto& c : cols) {
+      if (c.run > 0 && c.role == Role::time) runs += (runs.empty() ? "" : ", ") + std::to_string(c.run);
+    }
+    if (std::none_of(cols.begin(), cols.end(), [&](const Column& c) { return c.run == run; })) {
+      fail(file, header_line, 1, "no column of run " + std::to_string(run) + " in the header; expected a PASCO " +
+                                     "export with \"Run #" + std::to_string(run) + "\"" +
+                                     (runs.empty() ? std::string() : " (its runs: " + runs + ")"));
+    }
+  }
+  const Layout layout = detect(format, cols, preamble, header.has_value(), file, header_line, run);
+  if (!set.empty() && layout.format != RecordingFormat::pasco) {
+    fail(file, header_line, 1, "got the set \"" + set + "\", but this " + recording_format_name(layout.format) +
+                                   " export holds a single set; expected a set in a zip archive or a PASCO file");
+  }
 
   Recording rec;
+  rec.set = set;
   rec.format = layout.format;
   rec.kind = layout.kind;
   for (std::size_t j : layout.channels) rec.channel_names.push_back(cols[j].name);
@@ -632,25 +660,36 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
   return rec;
 }
 
-Recording read_recording(const std::string& path, RecordingFormat format, const RecordingLimits& limits) {
+Recording read_recording(const std::string& path, RecordingFormat format, const RecordingLimits& limits,
+                         const std::string& set) {
+  auto refuse_unless_regular = [&](const struct stat& st) {
+    if (S_ISREG(st.st_mode)) return;
+    throw InputError(path, S_ISDIR(st.st_mode) ? "a directory; expected a recording file"
+                                               : "not a regular file (a pipe or a device); expected a recording file");
+  };
+  // A pipe or a device is refused before it is opened; what is opened is
+  // checked again, and opened without waiting, so that a pipe swapped in
+  // between cannot block the reader either.
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) {
     throw InputError(path, std::string("cannot open the file: ") + std::strerror(errno));
   }
-  if (!S_ISREG(st.st_mode)) {
-    throw InputError(path, S_ISDIR(st.st_mode) ? "a directory; expected a recording file"
-                                               : "not a regular file (a pipe or a device); expected a recording file");
-  }
+  refuse_unless_regular(st);
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) throw InputError(path, std::string("cannot open the file: ") + std::strerror(errno));
+  struct Close {
+    int fd;
+    ~Close() { ::close(fd); }
+  } close_fd{fd};
+  if (::fstat(fd, &st) != 0) throw InputError(path, std::string("cannot read the file: ") + std::strerror(errno));
+  refuse_unless_regular(st);
   if (static_cast<std::size_t>(st.st_size) > limits.max_bytes) {
     throw InputError(path, "the file has " + std::to_string(st.st_size) + " bytes; expected at most " +
                                std::to_string(limits.max_bytes) + " (RecordingLimits::max_bytes)");
   }
   // Mapped, not read: no copy of the text and no zero-filled buffer.
-  const int fd = ::open(path.c_str(), O_RDONLY);
-  if (fd < 0) throw InputError(path, std::string("cannot open the file: ") + std::strerror(errno));
   const std::size_t size = static_cast<std::size_t>(st.st_size);
   void* map = size ? ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0) : nullptr;
-  ::close(fd);
   if (map == MAP_FAILED) throw InputError(path, std::string("cannot read the file: ") + std::strerror(errno));
   struct Unmap {
     void* p;
@@ -660,7 +699,8 @@ Recording read_recording(const std::string& path, RecordingFormat format, const 
     }
   } unmap{map, size};
   const std::string_view text(static_cast<const char*>(map), size);
-  return parse_recording(text, path, format);
+  if (looks_like_zip(text)) return read_zip_recording(text, path, format, set, limits);
+  return parse_recording(text, path, format, set);
 }
 
 }  // namespace pendulum

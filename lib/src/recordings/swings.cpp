@@ -602,15 +602,16 @@ std::vector<double> swing_signal(const Recording& r) {
 }
 
 RecordingSummary analyse_recording(const std::string& path, RecordingFormat format, const SwingOptions& options,
-                                   const RecordingLimits& limits) {
-  const Recording r = read_recording(path, format, limits);
+                                   const RecordingLimits& limits, const std::string& set) {
+  const Recording r = read_recording(path, format, limits, set);
   RecordingSummary s;
   s.file = path;
   s.format = r.format;
   s.kind = r.kind;
   s.rows = r.rows;
   s.dropped = r.dropped;
-  s.swings = analyse_swings(r, path, options);
+  s.set = r.set;
+  s.swings = analyse_swings(r, r.set.empty() ? path : path + "/" + r.set, options);
   return s;
 }
 

@@ -13,7 +13,7 @@
 ///  - Vernier (Graphical Analysis, Logger Pro): "Latest: Time (s)",
 ///    "Latest: GateState" (or "Run 1: ...", "Gate State"), one row per gate
 ///    change with the state, 0 or 1; "Period (s)" where present.
-///  - PASCO Capstone: "Time (s) Run #1" and a measurement of run 1: "Angle
+///  - PASCO Capstone: "Time (s) Run #n" and a measurement of that run (1 unless asked): "Angle
 ///    (rad) Run #1", "Angular Velocity (rad/s) Run #1", "State Run #1".
 ///  - plain: one column of blocking times, header optional ("t (ms)").
 ///  - Tracker: a line naming the track ("mass A"), then "t","x","y",...
@@ -56,23 +56,33 @@ struct Recording {
   std::vector<double> periods;
   std::size_t rows = 0;     ///< data rows read
   std::size_t dropped = 0;  ///< rows skipped for an empty or NaN cell
+  /// The CSV inside a zip archive it was read from ("Gyroscope.csv"), or the
+  /// PASCO run asked for ("Run #2"); empty otherwise.
+  std::string set;
 };
 
 /// Limits that keep a wrong file from eating the memory or the time.
 struct RecordingLimits {
-  std::size_t max_bytes = std::size_t{1} << 30;  ///< 1 GiB: 8 hours at 500 Hz
+  /// 1 GiB: 8 hours at 500 Hz. For a zip archive, also the most its sets
+  /// may unpack to, all together.
+  std::size_t max_bytes = std::size_t{1} << 30;
 };
 
 /// Reads a recording from its text. `file` names it in errors, which are
 /// pendulum::InputError with path "file:line:column" (column in bytes, from
 /// 1): an unrecognised header, mixed delimiters, a truncated or overlong
 /// row, a cell that is not a number, time going backwards, a binary file.
+/// `set` picks a PASCO run ("Run #2", "run 2" or "2"; by default run 1),
+/// and is refused for a family that has one set only.
 Recording parse_recording(std::string_view text, const std::string& file,
-                          RecordingFormat format = RecordingFormat::automatic);
+                          RecordingFormat format = RecordingFormat::automatic, const std::string& set = {});
 
 /// Reads the file at `path` (at most limits.max_bytes; a larger file, a
-/// directory, a device or a pipe is refused) and parses it.
+/// directory, a device or a pipe is refused) and parses it. A zip archive
+/// (phyphox's zip export) is unpacked in memory: `set` names the CSV inside
+/// to read, and by default the one with the best pendulum signal is read
+/// (docs/recordings.md); in a text file `set` picks a PASCO run (parse_recording).
 Recording read_recording(const std::string& path, RecordingFormat format = RecordingFormat::automatic,
-                         const RecordingLimits& limits = {});
+                         const RecordingLimits& limits = {}, const std::string& set = {});
 
 }  // namespace pendulum

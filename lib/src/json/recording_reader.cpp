@@ -1,0 +1,110 @@
+#include "recording_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "pendulum/numeric.hpp"
+
+namespace pendulum::json_reader {
+
+namespace {
+
+constexpr RecordingFormat kFormats[] = {RecordingFormat::automatic, RecordingFormat::phyphox,
+                                        RecordingFormat::vernier,   RecordingFormat::pasco,
+                                        RecordingFormat::plain,     RecordingFormat::tracker};
+
+RecordingFormat format_at(Object& o) {
+  if (!o.has("format")) return RecordingFormat::automatic;
+  const std::string name = o.text("format");
+  std::string names;
+  for (const auto f : kFormats) {
+    if (name == recording_format_name(f)) return f;
+    names += (names.empty() ? "\"" : ", \"") + std::string(recording_format_name(f)) + "\"";
+  }
+  throw InputError(o.path("format"), "got " + shown(o.at("format")) + "; expected a recording format: " + names);
+}
+
+}  // namespace
+
+std::size_t RecordingReader::read(Object& o, ParsedScene& out) {
+  const std::string name = o.text("recording");
+  const std::string at = o.path("recording");
+  PENDULUM_FAIL_IF(name.empty() || name.find('\0') != std::string::npos, at,
+                   "got " + shown(o.at("recording")) + "; expected the name of a recording file");
+  PENDULUM_FAIL_IF(!files_.directory, at,
+                   "got " + shown(o.at("recording")) +
+                       "; expected numbers: this scene was read as text, not from a file or standard input, "
+                       "so no file it names is opened");
+  const RecordingFormat format = format_at(o);
+  const std::string set = o.has("set") ? o.text("set") : std::string();
+  PENDULUM_FAIL_IF(o.has("set") && set.empty(), o.path("set"), "got \"\"; expected the name of a CSV in the zip archive");
+  SwingOptions options;
+  if (o.has("bob_width")) options.bob_width = quantity(o, "bob_width", Dimension::length, Range::positive).value;
+  if (o.has("source")) o.text("source");
+  o.finish();
+
+  // Relative to the scene's directory; an absolute name stays as it is.
+  const std::string file = (std::filesystem::path(*files_.directory) / name).lexically_normal().string();
+  const auto same = [&](const Done& d) {
+    return d.file == file && d.format == recording_format_name(format) && d.set == set &&
+           d.bob_width == options.bob_width;
+  };
+  auto it = std::find_if(done_.begin(), done_.end(), same);
+  if (it == done_.end()) {
+    try {
+      done_.push_back({file, recording_format_name(format), set, options.bob_width,
+                       analyse_recording(file, format, options, {}, set)});
+    } catch (const InputError& e) {
+      throw InputError(at, e.what());  // "file: message" or "file:line:column: message"
+    }
+    it = done_.end() - 1;
+  }
+  out.recordings.push_back({o.path(), name, it->summary});
+  return out.recordings.size() - 1;
+}
+
+void read_recorded_timing(Object& parent, const std::string& prefix, Observation<double>& value,
+                          Observation<double>& sigma, ObservationSource& source, ParsedScene& out,
+                          RecordingReader& recordings) {
+  Object t(parent.at("timing"), prefix + "timing", "an object (the timing)");
+  for (const char* key : {"oscillations_per_trial", "unit", "trials", "resolution", "uncertainty"}) {
+    PENDULUM_FAIL_IF(t.has(key), t.path(key),
+                     "got both recording and " + std::string(key) +
+                         "; expected one of them: the recording gives the periods and their uncertainty");
+  }
+  const std::size_t k = recordings.read(t, out);
+  const RecordingSummary& r = out.recordings[k].summary;
+  const PeriodEstimate& p = r.swings.period;
+  PENDULUM_FAIL_IF(p.periods < 1 || !(p.value > 0.0) || !std::isfinite(p.uncertainty), t.path("recording"),
+                   r.file + ": " + std::to_string(p.periods) + " full periods; expected at least one, timed");
+  source.trial_count = 1;
+  source.recording = k;
+  value.oscillations_per_trial = sigma.oscillations_per_trial = p.periods;
+  value.period = p.value;
+  sigma.period = p.uncertainty;
+  out.assumptions.push_back(t.path() + ": from the recording " + r.file + " (" + recording_format_name(r.format) +
+                            ", " + std::to_string(p.periods) + " full periods): one trial of all of them, the "
+                            "period's uncertainty from the crossing times (docs/recordings.md)");
+}
+
+DecayData read_recorded_decay(Object& decay, ParsedScene& out, RecordingReader& recordings) {
+  Object d(decay.at("data"), "decay.data", "an object (the decay record)");
+  for (const char* key : {"time_unit", "times", "amplitude_unit", "amplitudes", "sigma", "sigmas"}) {
+    PENDULUM_FAIL_IF(d.has(key), d.path(key),
+                     "got both recording and " + std::string(key) +
+                         "; expected one of them: the recording gives the times and the amplitudes");
+  }
+  const std::size_t k = recordings.read(d, out);
+  const RecordingSummary& r = out.recordings[k].summary;
+  DecayData data = r.swings.decay;
+  PENDULUM_FAIL_IF(data.times.size() < 3, d.path("recording"),
+                   r.file + ": " + std::to_string(data.times.size()) + " swing amplitudes; expected at least 3 " +
+                       "for a decay record (a photogate gives them with bob_width)");
+  validate_decay_data(data, d.path("recording"));
+  out.assumptions.push_back(d.path() + ": from the recording " + r.file + ", " + std::to_string(data.times.size()) +
+                            " swing amplitudes, without sigmas (the fit scales by its residuals)");
+  return data;
+}
+
+}  // namespace pendulum::json_reader

@@ -1,0 +1,50 @@
+#pragma once
+// A scene's `timing` or `decay.data` naming a recording in place of numbers
+// (docs/recordings.md, "In a scene"): the file, resolved against the scene's
+// directory, is read and analysed by analyse_recording(), each file once, and
+// what it gives fills the same fields as hand-typed input.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pendulum/parsed_scene.hpp"
+#include "pendulum/scene_json.hpp"
+#include "reader.hpp"
+
+namespace pendulum::json_reader {
+
+/// An object with the key "recording": a reference to a recording file.
+inline bool names_recording(const json& j) { return j.is_object() && j.contains("recording"); }
+
+/// Reads the recordings a scene names, each file (with its options) once.
+class RecordingReader {
+ public:
+  explicit RecordingReader(SceneFiles files) : files_(std::move(files)) {}
+
+  /// The reference `o` (keys recording, format, set, bob_width, source): its file
+  /// analysed and appended to out.recordings; returns its index there.
+  /// InputError at `o.recording` naming the file opened (and its line and
+  /// column for an error inside it).
+  std::size_t read(Object& o, ParsedScene& out);
+
+ private:
+  SceneFiles files_;
+  struct Done {
+    std::string file, format, set;
+    std::optional<double> bob_width;
+    RecordingSummary summary;
+  };
+  std::vector<Done> done_;
+};
+
+/// `timing` naming a recording: one trial of all its periods, with the
+/// period's uncertainty from the crossing times.
+void read_recorded_timing(Object& parent, const std::string& prefix, Observation<double>& value,
+                          Observation<double>& sigma, ObservationSource& source, ParsedScene& out,
+                          RecordingReader& recordings);
+
+/// `decay.data` naming a recording (under `decay`): one amplitude per swing.
+DecayData read_recorded_decay(Object& decay, ParsedScene& out, RecordingReader& recordings);
+
+}  // namespace pendulum::json_reader

@@ -1,0 +1,133 @@
+#include "zip.hpp"
+
+#include <zip.h>
+
+#include <algorithm>
+#include <cctype>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "pendulum/input_error.hpp"
+
+namespace pendulum {
+
+namespace {
+
+/// A name from the archive, fit for a one-line message.
+std::string printable(std::string s) {
+  for (char& c : s) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  }
+  return s.size() > 80 ? s.substr(0, 77) + "..." : s;
+}
+
+bool ends_with_csv(const std::string& name) {
+  if (name.size() < 4) return false;
+  std::string end = name.substr(name.size() - 4);
+  for (char& c : end) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return end == ".csv";
+}
+
+/// Lower rank, better pendulum signal: a rate turns with the pendulum.
+int rank(SignalKind kind) {
+  switch (kind) {
+    case SignalKind::angular_rate: return 0;
+    case SignalKind::linear_acceleration: return 1;
+    case SignalKind::acceleration: return 2;
+    default: return 3;
+  }
+}
+
+struct Entry {
+  zip_uint64_t index;
+  std::string name;
+  zip_uint64_t size;  ///< uncompressed, as the archive states it
+};
+
+}  // namespace
+
+bool looks_like_zip(std::string_view bytes) {
+  return bytes.substr(0, 4) == std::string_view("PK\x03\x04", 4) || bytes.substr(0, 4) == std::string_view("PK\x05\x06", 4);
+}
+
+Recording read_zip_recording(std::string_view bytes, const std::string& file, RecordingFormat format,
+                             const std::string& set, const RecordingLimits& limits) {
+  zip_error_t error;
+  zip_error_init(&error);
+  auto fail = [&](const std::string& message) {
+    zip_error_fini(&error);
+    throw InputError(file, message);
+  };
+  auto damaged = [&](const char* why) {
+    fail(std::string("a damaged zip archive (") + why + "); expected phyphox's zip export, whole");
+  };
+  zip_source_t* source = zip_source_buffer_create(bytes.data(), bytes.size(), 0, &error);
+  if (!source) damaged(zip_error_strerror(&error));
+  // The archive owns the source once it is open.
+  std::unique_ptr<zip_t, void (*)(zip_t*)> archive(zip_open_from_source(source, ZIP_RDONLY | ZIP_CHECKCONS, &error),
+                                                    zip_discard);
+  if (!archive) {
+    zip_source_free(source);
+    damaged(zip_error_strerror(&error));
+  }
+
+  // The candidate sets: CSV files outside meta/ (phyphox's device and time tables).
+  std::vector<Entry> sets;
+  std::string names;  // every candidate's, for a set asked for that is not there
+  const zip_int64_t count = zip_get_num_entries(archive.get(), 0);
+  for (zip_int64_t i = 0; i < count; ++i) {
+    zip_stat_t st;
+    zip_stat_init(&st);
+    if (zip_stat_index(archive.get(), static_cast<zip_uint64_t>(i), 0, &st) != 0 ||
+        !(st.valid & ZIP_STAT_NAME) || !(st.valid & ZIP_STAT_SIZE)) {
+      damaged(zip_error_strerror(zip_get_error(archive.get())));
+    }
+    const std::string name = st.name;
+    if (name.rfind("meta/", 0) == 0 || !ends_with_csv(name)) continue;
+    if (names.size() < 300) names += (names.empty() ? "\"" : ", \"") + printable(name) + "\"";
+    if (!set.empty() && name != set && name != set + ".csv") continue;
+    sets.push_back({static_cast<zip_uint64_t>(i), name, st.size});
+  }
+  if (sets.empty()) {
+    fail(set.empty() ? "a zip archive with no CSV set outside meta/; expected phyphox's zip export "
+                       "(Gyroscope.csv, Accelerometer.csv, ...)"
+                     : "a zip archive with no set \"" + printable(set) + "\"; expected one of its CSV sets: " + names);
+  }
+  // Stated sizes first: a zip bomb is refused before anything is unpacked.
+  zip_uint64_t total = 0;
+  for (const Entry& e : sets) total += std::min<zip_uint64_t>(e.size, limits.max_bytes + 1);
+  if (total > limits.max_bytes) {
+    fail("a zip archive whose sets unpack to over " + std::to_string(limits.max_bytes) +
+         " bytes (RecordingLimits::max_bytes; a zip bomb?); expected a recording that fits");
+  }
+
+  std::optional<Recording> best;
+  std::string refused;
+  for (const Entry& e : sets) {
+    const std::string name = file + "/" + printable(e.name);
+    std::string text(e.size, '\0');
+    std::unique_ptr<zip_file_t, int (*)(zip_file_t*)> in(zip_fopen_index(archive.get(), e.index, 0), zip_fclose);
+    // One byte more than stated: a set longer than its header says is damaged too.
+    char extra;
+    if (!in || zip_fread(in.get(), text.data(), e.size) != static_cast<zip_int64_t>(e.size) ||
+        zip_fread(in.get(), &extra, 1) != 0) {
+      const char* why = in ? zip_file_strerror(in.get()) : zip_error_strerror(zip_get_error(archive.get()));
+      fail("a damaged zip archive (" + printable(e.name) + ": " + why + "); expected phyphox's zip export, whole");
+    }
+    try {
+      Recording r = parse_recording(text, name, format);
+      r.set = e.name;
+      if (!best || rank(r.kind) < rank(best->kind)) best = std::move(r);
+    } catch (const InputError& bad) {
+      if (!set.empty()) throw;  // the set asked for: its own error
+      if (refused.size() < 400) refused += std::string(refused.empty() ? "" : "; ") + bad.what();
+    }
+    if (best && rank(best->kind) == 0) break;  // nothing beats a rate
+  }
+  if (!best) fail("a zip archive with no set that reads as a recording (" + refused + ")");
+  zip_error_fini(&error);
+  return std::move(*best);
+}
+
+}  // namespace pendulum

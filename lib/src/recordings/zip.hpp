@@ -1,0 +1,26 @@
+#pragma once
+// phyphox's zip export: one CSV per sensor set (Gyroscope.csv,
+// Accelerometer.csv, ...) and a meta/ folder (docs/recordings.md, "zip").
+
+#include <string>
+#include <string_view>
+
+#include "pendulum/recordings/read.hpp"
+
+namespace pendulum {
+
+/// Whether `bytes` start like a zip archive: a local file header, or the end
+/// record of an empty archive.
+bool looks_like_zip(std::string_view bytes);
+
+/// Reads the recording in a zip archive. Each CSV outside meta/ is a
+/// candidate set; `set` (its name inside, with or without ".csv") picks one,
+/// and otherwise the set with the best signal is read: an angular rate, then
+/// a linear acceleration, then an acceleration with g, then any other that
+/// reads. Refused (InputError naming `file`): a damaged archive, no usable
+/// set, a set that unpacks to more than limits.max_bytes in all (a zip bomb).
+/// A set's own errors name "file/set:line:column".
+Recording read_zip_recording(std::string_view bytes, const std::string& file, RecordingFormat format,
+                             const std::string& set, const RecordingLimits& limits);
+
+}  // namespace pendulum

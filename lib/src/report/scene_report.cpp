@@ -1,11 +1,13 @@
 // The one place where the report code reads the analysis's own types.
 #include "pendulum/report/scene_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <ceres/jet.h>
 
 #include "pendulum/damping.hpp"
+#include "pendulum/report/recording_report.hpp"
 
 namespace pendulum::report {
 
@@ -114,6 +116,16 @@ SceneReport make_scene_report(const std::string& input, const ParsedScene& scene
     r.series = s;
   }
   r.pivot_scan = pivot_scan_record(scene, a);
+  // The swings of each recording the scene names, once however often it is
+  // named (timing and decay.data); its samples are not kept, so no signal
+  // plot: `report` on the recording itself draws that.
+  for (std::size_t i = 0; i < scene.recordings.size(); ++i) {
+    const RecordingSummary& summary = scene.recordings[i].summary;
+    const bool named_before = std::any_of(scene.recordings.begin(), scene.recordings.begin() + i, [&](const auto& o) {
+      return o.summary.file == summary.file && o.summary.set == summary.set;
+    });
+    if (!named_before) r.recordings.push_back(make_recording_record(summary));
+  }
   r.warnings = scene.warnings;
   r.warnings.insert(r.warnings.end(), a.warnings.begin(), a.warnings.end());
   return r;

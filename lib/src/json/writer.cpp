@@ -531,8 +531,8 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     const ObservationResult& o = a.observations.front();
     correction_table(os, o);
     os << "\n";
-    std::snprintf(line, sizeof line, "Measured period T   = %.6f +- %.6f s (%d trials)\n", o.period_measured.value,
-                  o.period_measured.uncertainty, o.trials);
+    std::snprintf(line, sizeof line, "Measured period T   = %.6f +- %.6f s (%d trial%s)\n", o.period_measured.value,
+                  o.period_measured.uncertainty, o.trials, o.trials == 1 ? "" : "s");
     os << line;
     std::snprintf(line, sizeof line, "Ideal period T0     = %.6f %s s\n", o.period_ideal.value,
                   plus_minus(o.period_ideal.uncertainty, "%.6f").c_str());

@@ -904,6 +904,31 @@ TEST_CASE("template prints a scene that reduces to an ok g with no warning", "[c
   CHECK(std::abs(g - 9.80665) < u);
 }
 
+TEST_CASE("template series prints a series that reduces to g and the ball's radius, status ok", "[cli][template]") {
+  const std::string file = temporary_file();
+  const Run t = run("template series > " + file);
+  REQUIRE(t.status == 0);
+  const Run r = run("reduce --strict " + file);
+  std::remove(file.c_str());
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  const json result = json::parse(r.out);
+  CHECK(result.at("kind") == "series");
+  CHECK(result.at("status") == "ok");
+  CHECK(result.at("warnings").empty());
+  // Its trials are 2 pi sqrt((L + 12.7 mm)/g) at standard gravity with the
+  // corrections, lengths taped to the top of the 25.4 mm ball, timed by hand:
+  // g within its uncertainty of 9.80665 m/s^2, the offset within its
+  // uncertainty of the ball's radius.
+  const double g = result.at("g").at("value"), u = result.at("g").at("uncertainty");
+  CHECK(std::abs(g - 9.80665) < u);
+  for (const auto& p : result.at("fit").at("parameters")) {
+    if (p.at("name") != "length_offset") continue;
+    CHECK(std::abs(p.at("value").get<double>() - 0.0127) < p.at("uncertainty").get<double>());
+  }
+  CHECK(run("template pendulum").status != 0);
+}
+
 namespace {
 
 const std::string kDecayScene = std::string(PENDULUM_DATA_DIR) + "/nelson_olsson_1986_decay.json";

@@ -139,6 +139,7 @@ TEST_CASE("Coverage: +-1 sigma holds the truth 68% of the time", "[decay_fit][co
       if (!weighted) d.sigmas.clear();  // covariance scaled by SSR/dof instead
       const DecayFit f = fit_decay(d, {DecayModel::both});
       REQUIRE(f.converged);
+      CHECK(f.separable);  // an hour from 17.5 deg: both terms many sigma from 0
       alpha_in += std::abs(f.alpha.value - test::kAlpha) <= *f.alpha.uncertainty;
       beta_in += std::abs(f.beta.value - test::kBeta) <= *f.beta.uncertainty;
     }

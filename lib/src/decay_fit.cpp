@@ -366,7 +366,15 @@ DecayFit fit_decay(const DecayData& data, const DecayFitOptions& options) {
   auto fit = [&](DecayModel model, std::string reason) {
     return report(data, model, solve(data, model), std::move(reason));
   };
-  if (options.model) return fit(*options.model, "chosen by the user");
+  auto separable = [](const DecayFit& f) {
+    return f.model == DecayModel::both && f.alpha.uncertainty && f.beta.uncertainty &&
+           (f.alpha.significant || f.beta.significant);
+  };
+  if (options.model) {
+    DecayFit f = fit(*options.model, "chosen by the user");
+    f.separable = separable(f);
+    return f;
+  }
 
   const int full_parameters = 2 + !data.initial_amplitude;
   if (n <= full_parameters) {
@@ -381,7 +389,7 @@ DecayFit fit_decay(const DecayData& data, const DecayFitOptions& options) {
   }
   // Both terms, always: dropping one that ends on its bound 0, or that the
   // record cannot tell from the other, and quoting the other's one-term
-  // uncertainty as if the model were known put it 6-14 sigma from the truth
+  // uncertainty as if the model were known put it 6-20 sigma from the truth
   // on short records (issue 14). The two-term covariance at the optimum,
   // bound or not, is what the record says about each term.
   DecayFit full = fit(DecayModel::both, "");
@@ -389,10 +397,10 @@ DecayFit fit_decay(const DecayData& data, const DecayFitOptions& options) {
     full.model_reason = "the two-term fit's covariance is singular: the record cannot fix alpha and beta";
     return full;
   }
-  full.separable = full.alpha.significant || full.beta.significant;
-  std::string bound = full.alpha.at_bound  ? "alpha reached its bound 0"
-                      : full.beta.at_bound ? "beta reached its bound 0"
-                                           : "";
+  full.separable = separable(full);
+  const std::string bound = full.alpha.at_bound  ? "alpha reached its bound 0"
+                            : full.beta.at_bound ? "beta reached its bound 0"
+                                                 : "";
   if (full.separable) {
     if (!bound.empty()) {
       full.model_reason = bound + (full.alpha.at_bound ? ": the data show no linear damping"

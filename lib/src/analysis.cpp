@@ -45,7 +45,7 @@ std::vector<std::string> review_decay_fit(const DecayFit& fit) {
                            !fit.separable;
   if (inseparable) {
     warnings.push_back("decay fit: the record cannot tell linear from quadratic damping (correlation of alpha "
-                       "and beta " + format_number(fit.correlation_alpha_beta, 4) +
+                       "and beta " + format_number(fit.correlation_alpha_beta, 6) +
                        "; both one-term models fit it): alpha and beta carry the two-term fit's large, "
                        "correlated uncertainties into the damping rows. A record over which the amplitude "
                        "falls further separates them");

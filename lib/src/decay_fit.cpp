@@ -410,7 +410,7 @@ DecayFit fit_decay(const DecayData& data, const DecayFitOptions& options) {
     return full;
   }
   full.model_reason = "the record cannot tell linear from quadratic damping (correlation of alpha and beta " +
-                      number(full.correlation_alpha_beta, 4) + ", neither term two standard uncertainties from 0" +
+                      number(full.correlation_alpha_beta, 6) + ", neither term two standard uncertainties from 0" +
                       (bound.empty() ? "" : "; " + bound) +
                       "): both terms are reported with the two-term fit's correlated uncertainties";
   return full;

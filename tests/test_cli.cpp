@@ -576,7 +576,9 @@ TEST_CASE("A scene naming a recording reduces as the scene import's output paste
   const Run r = run("reduce " + scene);  // from the build folder: the scene's folder decides
   INFO(r.err);
   REQUIRE(r.status == 0);
-  CHECK(r.err.empty());
+  // 19 amplitudes over 16 s fix the decay's total rate only (docs/decay_fit.md).
+  CHECK(r.err.rfind("pendulum-g: warning: decay fit: the record cannot tell linear from quadratic damping", 0) == 0);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);  // that warning alone
   const json result = json::parse(r.out);
   // The pasted numbers went through decimal text and degrees: equal to rounding.
   CHECK_THAT(result.at("g").at("value").get<double>(), WithinRel(g, 1e-12));

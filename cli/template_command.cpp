@@ -1,4 +1,6 @@
 #include <iostream>
+#include <memory>
+#include <string>
 
 #include "commands.hpp"
 
@@ -32,15 +34,69 @@ constexpr const char* kBallOnAString = R"({
 }
 )";
 
+/// The same ball swung at five lengths, each taped to the top of the ball:
+/// `"fit": ["length_offset"]` finds the distance from that mark to the
+/// ball's centre (docs/series.md). Its trials are a real pendulum's at
+/// standard gravity with the corrections (2 pi sqrt((L + 12.7 mm)/g)), timed
+/// by hand: it reduces to g = 9.804 +- 0.037 m/s^2 and an offset of
+/// 12.2 +- 3.2 mm (the radius is 12.7 mm), status ok.
+constexpr const char* kSeries = R"({
+  "schema": "pendulum-g/scene/1",
+  "title": "A steel ball on a string at five lengths, taped to the top of the ball",
+  "notes": "Replace every number with yours; add or remove observations (at least two lengths, the more spread the better). Each observation is one length with its own timing: oscillations_per_trial full oscillations (there and back) timed in each trial. Lengths are from the pivot to whatever mark you measured to, the same mark every time: fit length_offset finds the distance from that mark to the ball's centre, and g.",
+  "fit": ["length_offset"],
+  "bob": {
+    "diameter": {"value": 25.4, "uncertainty": 0.1, "unit": "mm"},
+    "mass": {"value": 67.4, "uncertainty": 0.1, "unit": "g"}
+  },
+  "air": {
+    "pressure": {"value": 1013, "unit": "hPa"},
+    "temperature": {"value": 21, "unit": "degC"}
+  },
+  "observations": [
+    {
+      "length": {"value": 40.0, "uncertainty": 0.2, "unit": "cm"},
+      "amplitude": {"value": 5, "uncertainty": 1, "unit": "deg"},
+      "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [12.91, 12.85, 12.94, 12.88, 12.90]}
+    },
+    {
+      "length": {"value": 60.0, "uncertainty": 0.2, "unit": "cm"},
+      "amplitude": {"value": 5, "uncertainty": 1, "unit": "deg"},
+      "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [15.68, 15.73, 15.76, 15.67, 15.71]}
+    },
+    {
+      "length": {"value": 80.0, "uncertainty": 0.2, "unit": "cm"},
+      "amplitude": {"value": 5, "uncertainty": 1, "unit": "deg"},
+      "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [18.14, 18.10, 18.05, 18.12, 18.09]}
+    },
+    {
+      "length": {"value": 100.0, "uncertainty": 0.2, "unit": "cm"},
+      "amplitude": {"value": 5, "uncertainty": 1, "unit": "deg"},
+      "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [20.18, 20.25, 20.20, 20.16, 20.21]}
+    },
+    {
+      "length": {"value": 120.0, "uncertainty": 0.2, "unit": "cm"},
+      "amplitude": {"value": 5, "uncertainty": 1, "unit": "deg"},
+      "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [22.11, 22.08, 22.13, 22.15, 22.08]}
+    }
+  ]
+}
+)";
+
 }  // namespace
 
 Command add_template_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "template",
-      "Print a starter scene: a ball on a string timed with a phone. Save it, put your numbers in, and "
-      "run: pendulum-g reduce --format table my_pendulum.json");
-  return {cmd, [] {
-    std::cout << kBallOnAString;
+      "Print a starter scene. Save it, put your numbers in, and run: pendulum-g reduce --format table "
+      "my_pendulum.json");
+  auto kind = std::make_shared<std::string>("ball");
+  cmd->add_option("kind", *kind,
+                  "ball (default): a ball on a string timed with a phone; series: the same ball at several "
+                  "lengths, with the offset from the measured mark to the ball's centre fitted")
+      ->check(CLI::IsMember({"ball", "series"}));
+  return {cmd, [kind] {
+    std::cout << (*kind == "series" ? kSeries : kBallOnAString);
     return 0;
   }};
 }

@@ -41,13 +41,22 @@ std::vector<std::string> review_decay_fit(const DecayFit& fit) {
       warnings.push_back(w.str());
     }
   }
+  const bool inseparable = fit.model == DecayModel::both && fit.alpha.uncertainty && fit.beta.uncertainty &&
+                           !fit.separable;
+  if (inseparable) {
+    warnings.push_back("decay fit: the record cannot tell linear from quadratic damping (correlation of alpha "
+                       "and beta " + format_number(fit.correlation_alpha_beta, 6) +
+                       "; both one-term models fit it): alpha and beta carry the two-term fit's large, "
+                       "correlated uncertainties into the damping rows. A record over which the amplitude "
+                       "falls further separates them");
+  }
   for (const auto& [name, q] : {std::pair{"alpha", fit.alpha}, std::pair{"beta", fit.beta}}) {
     if (q.fitted && !q.uncertainty) {
       warnings.push_back(std::string("decay fit: the record cannot fix ") + name +
                          " (the fit's covariance is singular): its uncertainty is unknown, and it is "
                          "listed in g.inputs_without_uncertainty, not in the budget");
     }
-    if (q.fitted && q.uncertainty && !q.at_bound && !q.significant) {
+    if (q.fitted && q.uncertainty && !q.at_bound && !q.significant && !inseparable) {
       warnings.push_back(std::string("decay fit: ") + name +
                          " is not significant (less than two standard uncertainties from 0)");
     }

@@ -150,14 +150,25 @@ void judge_amplitudes(const ParsedScene& scene, std::vector<std::string>& reason
 }
 
 /// A decay record whose amplitudes are 57 times the scene's, or 1/57 of
-/// them, is in the other angular unit. Nothing finer: a record may well start
-/// from a larger release than the timing (Nelson & Olsson's starts at 17 deg,
-/// their trials at 3 deg).
+/// them, is in the other angular unit; one that starts at twice the scene's
+/// amplitude, more than 3 of its standard uncertainties above it, holds
+/// peak-to-peak swings. Nothing finer: a record may well start from a larger
+/// release than the timing (Nelson & Olsson's starts at 17 deg, their trials
+/// at 3 deg).
 void judge_decay_record(const ParsedScene& scene, std::vector<std::string>& reasons) {
   constexpr double kUnitFactor = 20.0;  // far beyond any release, short of 57.3
+  constexpr double kPeakToPeakTolerance = 0.15;  // a hand's release against a reading of the first swing
   if (!scene.decay_data || scene.series || scene.decay_data->amplitudes.empty()) return;
   const double first = scene.decay_data->amplitudes.front(), swing = scene.observations.front().amplitude;
   const double ratio = first / swing, degree = kPi / 180.0;
+  const double swing_sigma = scene.observation_uncertainties.front().amplitude;
+  if (std::abs(ratio / 2.0 - 1.0) <= kPeakToPeakTolerance && first - swing > 3.0 * swing_sigma) {
+    reasons.push_back("decay.data.amplitudes[0]: the record starts at " + format_number(first / degree, 3) + " deg, " +
+                      format_number(ratio, 3) + " times the scene's amplitude " + format_number(swing / degree, 3) +
+                      " deg: peak-to-peak swings written as amplitudes? An amplitude is from the rest position to "
+                      "one side: halve decay.data.amplitudes");
+    return;
+  }
   if (ratio > 1.0 / kUnitFactor && ratio < kUnitFactor) return;
   const bool tiny = ratio < 1.0;
   reasons.push_back("decay.data.amplitude_unit: the record starts at " + format_number(first / degree, 3) +

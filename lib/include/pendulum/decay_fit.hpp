@@ -33,8 +33,8 @@ const char* decay_model_name(DecayModel model);
 
 struct FittedParameter {
   double value = 0.0;
-  /// Standard uncertainty; empty for a parameter held fixed (given, or
-  /// dropped from the model because the data cannot support it).
+  /// Standard uncertainty; empty for a parameter held fixed (given, or not
+  /// in a one-term model) and when the fit's covariance is singular.
   std::optional<double> uncertainty;
   bool at_bound = false;     ///< the fit ended on the bound 0
   bool fitted = false;       ///< varied by the fit
@@ -44,11 +44,18 @@ struct FittedParameter {
 
 struct DecayFit {
   DecayModel model = DecayModel::both;
-  std::string model_reason;  ///< why a simpler model was used, or ""
+  /// Why a one-term model was used, or what a two-term fit could not tell
+  /// (a term on its bound, the terms not separable, a singular covariance); "" otherwise.
+  std::string model_reason;
   FittedParameter alpha;              ///< (1/s)
   FittedParameter beta;               ///< (1/(s rad))
   FittedParameter initial_amplitude;  ///< (rad)
   double correlation_alpha_beta = 0.0;  ///< 0 unless both are fitted
+  /// The two-term fit tells linear from quadratic damping: at least one term
+  /// is more than two standard uncertainties from 0, so the record rules out
+  /// one of the one-term models. False when both one-term models fit as well
+  /// (or no two-term fit was made: too few points, or a model forced).
+  bool separable = false;
   /// Covariance of (alpha, beta, theta0m) in SI units, row-major.
   std::array<double, 9> covariance{};
   double chi2 = 0.0;  ///< sum of squared weighted residuals

@@ -65,6 +65,7 @@ json decay_fit_to_json(const DecayFit& f, const std::optional<Decay<double>>& gi
               {"beta", parameter(f.beta, "1/(s rad)")},
               {"initial_amplitude", parameter(f.initial_amplitude, "rad")},
               {"correlation_alpha_beta", f.correlation_alpha_beta},
+              {"alpha_beta_separable", f.separable},
               {"chi2", f.chi2},
               {"dof", f.dof},
               {"reduced_chi2", f.dof > 0 ? json(f.chi2 / f.dof) : json(nullptr)},

@@ -1440,3 +1440,28 @@ TEST_CASE("report: a scene that names a recording shows its swings once", "[cli]
   CHECK(external_reference(r.out) == "");
   CHECK(run("report " + scene).out == r.out);
 }
+
+TEST_CASE("table: a correlated pair of budget inputs is shown together", "[cli][table][budget]") {
+  // The phyphox scene's record cannot tell alpha from beta (correlation
+  // -0.99998): each alone is listed at 0.034 m/s^2 while g's uncertainty is
+  // 0.006. The pair's line must close the budget: the other rows and the
+  // pair together add in quadrature to g's uncertainty (to the 1e-6 m/s^2
+  // the table prints).
+  const std::string scene = std::string(PENDULUM_DATA_DIR) + "/recordings/phyphox_pendulum_raw_from_file.json";
+  const Run table = run("reduce --format table " + scene);
+  const json result = json::parse(run("reduce " + scene).out);
+  REQUIRE(table.status == 0);
+  const std::smatch m = [&] {
+    std::smatch found;
+    std::regex_search(table.out, found, std::regex("decay\\.alpha and decay\\.beta are correlated \\((-?[0-9.]+)\\): "
+                                                   "together ([0-9.]+) m/s\\^2"));
+    return found;
+  }();
+  REQUIRE(m.size() == 3);
+  CHECK_THAT(std::stod(m[1]), WithinAbs(result["g"]["budget_correlation"]["correlation"].get<double>(), 1e-6));
+  double variance = std::pow(std::stod(m[2]), 2);
+  for (const auto& row : result["g"]["budget"]) {
+    if (row["input"] != "decay.alpha" && row["input"] != "decay.beta") variance += std::pow(row["contribution_m_s2"].get<double>(), 2);
+  }
+  CHECK_THAT(std::sqrt(variance), WithinAbs(result["g"]["uncertainty"].get<double>(), 2e-6));
+}

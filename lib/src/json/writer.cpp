@@ -624,6 +624,16 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
       os << line;
     }
     if (a.budget.size() > kShown) os << "  ... and " << a.budget.size() - kShown << " more (JSON: g.budget)\n";
+    // Correlated inputs do not add in quadrature: say what the pair gives together.
+    if (const auto& c = a.budget_correlation) {
+      double together = c->variance;
+      for (const auto& b : a.budget) {
+        if (b.input == c->first || b.input == c->second) together += b.contribution * b.contribution;
+      }
+      std::snprintf(line, sizeof line, "  %s and %s are correlated (%.6f): together %.6f m/s^2\n", c->first.c_str(),
+                    c->second.c_str(), c->correlation, std::sqrt(std::max(together, 0.0)));
+      os << line;
+    }
   }
   if (!a.inputs_without_uncertainty.empty()) {
     os << "Inputs without an uncertainty (they add nothing to the budget):";

@@ -159,7 +159,17 @@ Command add_report_command(CLI::App& app) {
     }
     const ParsedScene scene = parse_scene(read_input(o->file), {scene_directory(o->file)});
     const Analysis analysis = analyse(scene, o->analysis);
-    const report::SceneReport r = report::make_scene_report(o->file, scene, analysis);
+    // The recordings the scene names, read again for their signal plots
+    // (once each: the report draws a recording named twice once).
+    std::vector<Recording> samples;
+    for (std::size_t i = 0; i < scene.recordings.size(); ++i) {
+      const RecordingSummary& s = scene.recordings[i].summary;
+      const bool named_before = std::any_of(scene.recordings.begin(), scene.recordings.begin() + i, [&](const auto& o) {
+        return o.summary.file == s.file && o.summary.set == s.set;
+      });
+      samples.push_back(named_before ? Recording{} : read_recording(s.file, s.format, {}, s.set));
+    }
+    const report::SceneReport r = report::make_scene_report(o->file, scene, analysis, samples);
     const std::string text = svg ? report::plot_svg(r, o->plot) : report::scene_report_html(r);
     print_warnings(scene.warnings);
     print_warnings(analysis.warnings);

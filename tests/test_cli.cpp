@@ -1428,15 +1428,16 @@ TEST_CASE("report: a pivot scan and Kater's pendulum, plotted as pivot scans", "
 }
 
 TEST_CASE("report: a scene that names a recording shows its swings once", "[cli][report][recording]") {
-  // timing and decay.data name the same file: one recording section, its
-  // amplitude and period plots, and no signal plot (the samples are not kept).
+  // timing and decay.data name the same file: one recording section with
+  // its signal (read again by report), amplitude and period plots.
   const std::string scene = std::string(PENDULUM_DATA_DIR) + "/recordings/phyphox_pendulum_raw_from_file.json";
   const Run r = run("report " + scene);
   REQUIRE(r.status == 0);
   CHECK(occurrences(r.out, "<h3>Recording <code>") == 1);
   CHECK(occurrences(r.out, "<h4>Amplitude against time") == 1);
   CHECK(occurrences(r.out, "<h4>Period against amplitude") == 1);
-  CHECK(occurrences(r.out, "<svg ") == 5);  // corrections, budget, decay, amplitude, period
+  CHECK(occurrences(r.out, "<h4>Signal") == 1);
+  CHECK(occurrences(r.out, "<svg ") == 6);  // corrections, budget, decay, signal, amplitude, period
   CHECK(external_reference(r.out) == "");
   CHECK(run("report " + scene).out == r.out);
 }

@@ -68,7 +68,8 @@ DecayRecord make_decay_record(const DecayData& data, const DecayFit& fit) {
   return r;
 }
 
-SceneReport make_scene_report(const std::string& input, const ParsedScene& scene, const Analysis& a) {
+SceneReport make_scene_report(const std::string& input, const ParsedScene& scene, const Analysis& a,
+                              const std::vector<Recording>& samples) {
   const ObservationResult& first = a.observations.front();
   SceneReport r;
   r.input = input;
@@ -116,15 +117,14 @@ SceneReport make_scene_report(const std::string& input, const ParsedScene& scene
     r.series = s;
   }
   r.pivot_scan = pivot_scan_record(scene, a);
-  // The swings of each recording the scene names, once however often it is
-  // named (timing and decay.data); its samples are not kept, so no signal
-  // plot: `report` on the recording itself draws that.
+  // Each recording the scene names, once however often it is named
+  // (timing and decay.data); the signal plot where its samples are given.
   for (std::size_t i = 0; i < scene.recordings.size(); ++i) {
     const RecordingSummary& summary = scene.recordings[i].summary;
     const bool named_before = std::any_of(scene.recordings.begin(), scene.recordings.begin() + i, [&](const auto& o) {
       return o.summary.file == summary.file && o.summary.set == summary.set;
     });
-    if (!named_before) r.recordings.push_back(make_recording_record(summary));
+    if (!named_before) r.recordings.push_back(make_recording_record(summary, i < samples.size() ? &samples[i] : nullptr));
   }
   r.warnings = scene.warnings;
   r.warnings.insert(r.warnings.end(), a.warnings.begin(), a.warnings.end());

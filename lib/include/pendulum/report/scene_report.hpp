@@ -139,6 +139,10 @@ struct SceneReport {
 std::optional<PivotScanRecord> pivot_scan_record(const ParsedScene& scene, const Analysis& analysis);
 
 /// The report data of an analysed scene; `input` names its file.
-SceneReport make_scene_report(const std::string& input, const ParsedScene& scene, const Analysis& analysis);
+/// `samples[i]`, where given, is the recording scene.recordings[i] names, for
+/// its signal plot (the reduction does not keep the samples; the caller
+/// reads them again, read_recording).
+SceneReport make_scene_report(const std::string& input, const ParsedScene& scene, const Analysis& analysis,
+                              const std::vector<Recording>& samples = {});
 
 }  // namespace pendulum::report

@@ -8,6 +8,16 @@ namespace pendulum::cli {
 
 namespace {
 
+/// The ball and the room's air, the same in every template.
+constexpr const char* kBobAndAir = R"(  "bob": {
+    "diameter": {"value": 25.4, "uncertainty": 0.1, "unit": "mm"},
+    "mass": {"value": 67.4, "uncertainty": 0.1, "unit": "g"}
+  },
+  "air": {
+    "pressure": {"value": 1013, "unit": "hPa"},
+    "temperature": {"value": 21, "unit": "degC"}
+  })";
+
 /// A ball on a string timed with a phone: every key a first-year student
 /// needs, and nothing else (docs/scene.md explains each). Its numbers are a
 /// real pendulum's: it reduces to g = 9.808 +- 0.025 m/s^2, status ok.
@@ -23,15 +33,6 @@ constexpr const char* kBallOnAString = R"({
   },
   "length": {"value": 100.0, "uncertainty": 0.2, "unit": "cm", "measured_to": "center"},
   "amplitude": {"value": 5, "uncertainty": 1, "unit": "deg"},
-  "bob": {
-    "diameter": {"value": 25.4, "uncertainty": 0.1, "unit": "mm"},
-    "mass": {"value": 67.4, "uncertainty": 0.1, "unit": "g"}
-  },
-  "air": {
-    "pressure": {"value": 1013, "unit": "hPa"},
-    "temperature": {"value": 21, "unit": "degC"}
-  }
-}
 )";
 
 /// The same ball swung at five lengths, each taped to the top of the ball:
@@ -43,42 +44,22 @@ constexpr const char* kBallOnAString = R"({
 constexpr const char* kSeries = R"({
   "schema": "pendulum-g/scene/1",
   "title": "A steel ball on a string at five lengths, taped to the top of the ball",
-  "notes": "Replace every number with yours; add or remove observations (at least two lengths, the more spread the better). Each observation is one length with its own timing: oscillations_per_trial full oscillations (there and back) timed in each trial. Lengths are from the pivot to whatever mark you measured to, the same mark every time: fit length_offset finds the distance from that mark to the ball's centre, and g.",
+  "notes": "Replace every number with yours; add or remove observations (at least two lengths, the more spread the better). Each observation is one length with its own timing: oscillations_per_trial full oscillations (there and back) timed in each trial. The amplitude, the same release every time, is given once at the top; give each observation its own instead if they differ. Lengths are from the pivot to whatever mark you measured to, the same mark every time: fit length_offset finds the distance from that mark to the ball's centre, and g.",
   "fit": ["length_offset"],
-  "bob": {
-    "diameter": {"value": 25.4, "uncertainty": 0.1, "unit": "mm"},
-    "mass": {"value": 67.4, "uncertainty": 0.1, "unit": "g"}
-  },
-  "air": {
-    "pressure": {"value": 1013, "unit": "hPa"},
-    "temperature": {"value": 21, "unit": "degC"}
-  },
+)";
+constexpr const char* kSeriesObservations = R"(,
+  "amplitude": {"value": 5, "uncertainty": 1, "unit": "deg"},
   "observations": [
-    {
-      "length": {"value": 40.0, "uncertainty": 0.2, "unit": "cm"},
-      "amplitude": {"value": 5, "uncertainty": 1, "unit": "deg"},
-      "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [12.91, 12.85, 12.94, 12.88, 12.90]}
-    },
-    {
-      "length": {"value": 60.0, "uncertainty": 0.2, "unit": "cm"},
-      "amplitude": {"value": 5, "uncertainty": 1, "unit": "deg"},
-      "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [15.68, 15.73, 15.76, 15.67, 15.71]}
-    },
-    {
-      "length": {"value": 80.0, "uncertainty": 0.2, "unit": "cm"},
-      "amplitude": {"value": 5, "uncertainty": 1, "unit": "deg"},
-      "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [18.14, 18.10, 18.05, 18.12, 18.09]}
-    },
-    {
-      "length": {"value": 100.0, "uncertainty": 0.2, "unit": "cm"},
-      "amplitude": {"value": 5, "uncertainty": 1, "unit": "deg"},
-      "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [20.18, 20.25, 20.20, 20.16, 20.21]}
-    },
-    {
-      "length": {"value": 120.0, "uncertainty": 0.2, "unit": "cm"},
-      "amplitude": {"value": 5, "uncertainty": 1, "unit": "deg"},
-      "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [22.11, 22.08, 22.13, 22.15, 22.08]}
-    }
+    {"length": {"value": 40.0, "uncertainty": 0.2, "unit": "cm"},
+     "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [12.91, 12.85, 12.94, 12.88, 12.90]}},
+    {"length": {"value": 60.0, "uncertainty": 0.2, "unit": "cm"},
+     "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [15.68, 15.73, 15.76, 15.67, 15.71]}},
+    {"length": {"value": 80.0, "uncertainty": 0.2, "unit": "cm"},
+     "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [18.14, 18.10, 18.05, 18.12, 18.09]}},
+    {"length": {"value": 100.0, "uncertainty": 0.2, "unit": "cm"},
+     "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [20.18, 20.25, 20.20, 20.16, 20.21]}},
+    {"length": {"value": 120.0, "uncertainty": 0.2, "unit": "cm"},
+     "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [22.11, 22.08, 22.13, 22.15, 22.08]}}
   ]
 }
 )";
@@ -96,7 +77,11 @@ Command add_template_command(CLI::App& app) {
                   "lengths, with the offset from the measured mark to the ball's centre fitted")
       ->check(CLI::IsMember({"ball", "series"}));
   return {cmd, [kind] {
-    std::cout << (*kind == "series" ? kSeries : kBallOnAString);
+    if (*kind == "series") {
+      std::cout << kSeries << kBobAndAir << kSeriesObservations;
+    } else {
+      std::cout << kBallOnAString << kBobAndAir << "\n}\n";
+    }
     return 0;
   }};
 }

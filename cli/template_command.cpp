@@ -64,6 +64,52 @@ constexpr const char* kSeriesObservations = R"(,
 }
 )";
 
+
+/// A metre stick hung on a nail through holes at eight places, k and the
+/// centre fitted (docs/physical.md). Its trials are a uniform 1 m stick's
+/// (k = 1 m/sqrt(12), centre at 50 cm) at standard gravity, 2 pi
+/// sqrt((k^2 + h^2)/(g h)) times the exact 5 deg factor, timed by hand
+/// (N(0, 0.03 s), read to 0.01 s; Python's random, seed 3): it reduces to
+/// g = 9.812 +- 0.025 m/s^2, status ok.
+constexpr const char* kPivotScan = R"({
+  "schema": "pendulum-g/scene/1",
+  "title": "A metre stick hung on a nail through its holes",
+  "notes": "Replace every number with yours. pivot_position: where the nail goes through the stick, measured from one end, the same end every time. Each observation is one hole with its own timing: oscillations_per_trial full oscillations (there and back) timed in each trial. fit finds g, the radius of gyration and the centre of mass's position; holes on both sides of the centre and near it pin them down best. The amplitude, the same release every time, is given once.",
+  "fit": ["radius_of_gyration", "center_of_mass_position"],
+  "amplitude": {"value": 5, "uncertainty": 1, "unit": "deg"},
+  "observations": [
+    {"pivot_position": {"value": 5.0, "uncertainty": 0.1, "unit": "cm"},
+     "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [16.0, 16.04, 15.97]}},
+    {"pivot_position": {"value": 15.0, "uncertainty": 0.1, "unit": "cm"},
+     "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [15.42, 15.39, 15.39]}},
+    {"pivot_position": {"value": 25.0, "uncertainty": 0.1, "unit": "cm"},
+     "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [15.39, 15.34, 15.33]}},
+    {"pivot_position": {"value": 35.0, "uncertainty": 0.1, "unit": "cm"},
+     "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [16.88, 16.9, 16.86]}},
+    {"pivot_position": {"value": 65.0, "uncertainty": 0.1, "unit": "cm"},
+     "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [16.88, 16.83, 16.85]}},
+    {"pivot_position": {"value": 75.0, "uncertainty": 0.1, "unit": "cm"},
+     "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [15.32, 15.29, 15.29]}},
+    {"pivot_position": {"value": 85.0, "uncertainty": 0.1, "unit": "cm"},
+     "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [15.35, 15.39, 15.39]}},
+    {"pivot_position": {"value": 95.0, "uncertainty": 0.1, "unit": "cm"},
+     "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [15.99, 16.0, 15.96]}}
+  ]
+}
+)";
+
+/// A ball timed by a phone's or a photogate's recording (docs/recordings.md):
+/// timing and the decay record come from the file, named relative to this
+/// scene's folder.
+constexpr const char* kRecording = R"({
+  "schema": "pendulum-g/scene/1",
+  "title": "A ball on a string, timed by a phone's recording",
+  "notes": "Put the file your phone or photogate wrote (phyphox CSV or zip, Vernier, PASCO, Tracker) beside this scene and write its name in timing.recording and decay.data.recording; pendulum-g import FILE shows what it finds in it. Replace the length and the ball with yours.",
+  "timing": {"recording": "my_recording.csv", "format": "auto"},
+  "decay": {"data": {"recording": "my_recording.csv"}},
+  "length": {"value": 80.0, "uncertainty": 0.1, "unit": "cm", "measured_to": "center"},
+)";
+
 }  // namespace
 
 Command add_template_command(CLI::App& app) {
@@ -74,11 +120,17 @@ Command add_template_command(CLI::App& app) {
   auto kind = std::make_shared<std::string>("ball");
   cmd->add_option("kind", *kind,
                   "ball (default): a ball on a string timed with a phone; series: the same ball at several "
-                  "lengths, with the offset from the measured mark to the ball's centre fitted")
-      ->check(CLI::IsMember({"ball", "series"}));
+                  "lengths, with the offset from the measured mark to the ball's centre fitted; pivot-scan: a "
+                  "metre stick hung at several holes (a physical pendulum); recording: a ball timed by a phone's "
+                  "or a photogate's file")
+      ->check(CLI::IsMember({"ball", "series", "pivot-scan", "recording"}));
   return {cmd, [kind] {
     if (*kind == "series") {
       std::cout << kSeries << kBobAndAir << kSeriesObservations;
+    } else if (*kind == "pivot-scan") {
+      std::cout << kPivotScan;
+    } else if (*kind == "recording") {
+      std::cout << kRecording << kBobAndAir << "\n}\n";
     } else {
       std::cout << kBallOnAString << kBobAndAir << "\n}\n";
     }

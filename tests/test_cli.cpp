@@ -936,6 +936,43 @@ TEST_CASE("template series prints a series that reduces to g and the ball's radi
   CHECK(run("template pendulum").status != 0);
 }
 
+TEST_CASE("template pivot-scan prints a metre stick that reduces to g, k and its centre, status ok",
+          "[cli][template]") {
+  // Its trials are a uniform 1 m stick's (k = 1/sqrt(12) m, centre 0.5 m) at
+  // standard gravity, timed by hand: each within its uncertainty's reach.
+  const json result = reduce_template("pivot-scan");
+  const double g = result.at("g").at("value"), u = result.at("g").at("uncertainty");
+  CHECK(std::abs(g - 9.80665) < u);
+  for (const auto& p : result.at("fit").at("parameters")) {
+    const double truth = p.at("name") == "radius_of_gyration"        ? 1.0 / std::sqrt(12.0)
+                         : p.at("name") == "center_of_mass_position" ? 0.5
+                                                                      : 9.80665;
+    CHECK(std::abs(p.at("value").get<double>() - truth) < 2 * p.at("uncertainty").get<double>());
+  }
+}
+
+TEST_CASE("template recording names a file beside the scene; with a recording there it reduces", "[cli][template]") {
+  char folder[] = "/tmp/pendulum-g-template-XXXXXX";
+  REQUIRE(mkdtemp(folder));
+  const std::string dir = folder;
+  REQUIRE(run("template recording > " + dir + "/scene.json").status == 0);
+  // Without the file: the error names the key and the file.
+  const Run missing = run("reduce " + dir + "/scene.json");
+  CHECK(missing.status == 1);
+  CHECK_THAT(missing.err, Contains("timing.recording: ") && Contains("my_recording.csv"));
+  // With the synthetic phyphox recording of a 0.80 m pendulum at standard
+  // gravity (data/recordings/phyphox_pendulum_raw.tsv) saved under that name.
+  std::filesystem::copy_file(std::string(PENDULUM_DATA_DIR) + "/recordings/phyphox_pendulum_raw.tsv",
+                             dir + "/my_recording.csv");
+  const Run r = run("reduce " + dir + "/scene.json");
+  std::filesystem::remove_all(dir);
+  REQUIRE(r.status == 0);
+  const json result = json::parse(r.out);
+  CHECK(result.at("status") == "ok");
+  const double g = result.at("g").at("value"), u = result.at("g").at("uncertainty");
+  CHECK(std::abs(g - 9.80665) < u);
+}
+
 namespace {
 
 const std::string kDecayScene = std::string(PENDULUM_DATA_DIR) + "/nelson_olsson_1986_decay.json";

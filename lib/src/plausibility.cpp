@@ -119,7 +119,8 @@ void check_observation(ParsedScene& scene, std::size_t k) {
                              off_by(ratio) + " than the " + format_number(expected, 5) + " s " + at_g +
                              (bob_density_slip(app) ? std::string("; check bob.mass and its unit: the bob's density is implausible")
                                                     : "; check the " + std::string(setting_key(o.setting)) +
-                                                          "'s unit and oscillations_per_trial"));
+                                                          "'s unit and oscillations_per_trial" +
+                                                          (scene.body_from_parts ? ", and the body's parts" : "")));
   }
   const double degrees = o.amplitude * 180.0 / kPi;
   // A series may sweep the amplitude on purpose.

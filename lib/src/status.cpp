@@ -65,7 +65,8 @@ std::string signed_number(double x, int digits) { return (x >= 0.0 ? "+" : "") +
 
 /// `bob_slip`: the bob's density is implausible, which explains a g far off
 /// through buoyancy and added mass.
-void judge_g(const Analysis& a, bool bob_slip, std::vector<std::string>& reasons) {
+/// `settings` names what sets the period besides the timing, for the hint.
+void judge_g(const Analysis& a, bool bob_slip, const std::string& settings, std::vector<std::string>& reasons) {
   const std::string bob = ": the bob's implausible density (bob.mass, below) drives buoyancy and added mass";
   const double expected = a.expected_g ? a.expected_g->value : kStandardGravity;
   const std::string against = a.expected_g ? "the site's expected " + format_number(expected, 6) + " m/s^2"
@@ -93,8 +94,8 @@ void judge_g(const Analysis& a, bool bob_slip, std::vector<std::string>& reasons
   reasons.push_back(g + " is " + format_percent(std::abs(ratio - 1.0)) + " " +
                     (ratio > 1.0 ? "above " : "below ") + against + ", more than 5%" +
                     (bob_slip ? bob
-                              : "; no unit or counting slip makes this ratio: check the length (pivot to the "
-                                "bob's centre), the trials and timing.oscillations_per_trial"));
+                              : "; no unit or counting slip makes this ratio: check " + settings +
+                                    ", the trials and timing.oscillations_per_trial"));
 }
 
 }  // namespace
@@ -191,7 +192,12 @@ std::optional<std::string> name_slip(double ratio) {
 Verdict judge(const ParsedScene& scene, const Analysis& analysis) {
   Verdict v;
   auto bob = bob_density_slip(scene.apparatus);
-  judge_g(analysis, bob.has_value(), v.reasons);
+  const bool rigid = scene.model == PeriodModelKind::physical_pendulum;
+  const std::string settings =
+      !rigid ? "the length (pivot to the bob's centre)"
+      : scene.body_from_parts ? "the pivots, and the body's parts (masses, dimensions, positions and their units)"
+                              : "the pivots, the radius of gyration and the centre of mass";
+  judge_g(analysis, bob.has_value(), settings, v.reasons);
   if (!analysis.g.uncertainty) {
     v.reasons.push_back("g has no uncertainty: the observations cannot separate the unknowns (the fit's covariance "
                         "is singular); add observations at other settings, or fit fewer unknowns");

@@ -1336,15 +1336,15 @@ TEST_CASE("report RECORDING: one page with the signal, the amplitudes and the pe
   const std::string dir = temporary_directory();
   struct Case {
     std::string file, options;
-    std::size_t plots;  // signal (sampled), amplitude and period-amplitude (with amplitudes)
+    std::size_t plots;  // signal (sampled, or a gate's states), amplitude and period-amplitude (with amplitudes)
   };
   const std::regex non_finite("(^|[^A-Za-z])-?(nan|inf)", std::regex::icase);
   for (const Case& c : {Case{"phyphox_gyroscope.csv", "", 3}, Case{"phyphox_pendulum_raw.tsv", "", 3},
                         Case{"phyphox_linear_acceleration.csv", "", 3}, Case{"phyphox_acceleration.csv", "", 3},
                         Case{"pasco_rotary.csv", "", 3}, Case{"tracker_xy.txt", "", 3},
                         Case{"tracker_theta.csv", "", 3},
-                        Case{"vernier_photogate.csv", "--bob-width-m 0.025 --length-m 0.80", 2},
-                        Case{"vernier_photogate.csv", "", 0}, Case{"plain_blocking_times.txt", "", 0}}) {
+                        Case{"vernier_photogate.csv", "--bob-width-m 0.025 --length-m 0.80", 3},
+                        Case{"vernier_photogate.csv", "", 1}, Case{"plain_blocking_times.txt", "", 0}}) {
     const std::string file = kRecordings + c.file;
     INFO(c.file << " " << c.options);
     const Run first = run("report " + c.options + " " + file + " -o " + dir + "/first.html");
@@ -1388,9 +1388,13 @@ TEST_CASE("report RECORDING --plot: one plot of a recording as an SVG file", "[c
   // Every crossing is marked: 22 in the gyroscope file (import's table).
   CHECK_THAT(run("report " + gyroscope + " --plot signal").out, Contains("detected crossing (22)"));
 
-  const Run events = run("report " + kRecordings + "vernier_photogate.csv --plot signal");
+  // A photogate's gate states are drawn as the beam's state, stepping at each event.
+  const Run gate = run("report " + kRecordings + "vernier_photogate.csv --plot signal");
+  CHECK(gate.status == 0);
+  CHECK_THAT(gate.out, Contains("beam: blocked (1) or open (0)"));
+  const Run events = run("report " + kRecordings + "plain_blocking_times.txt --plot signal");
   CHECK(events.status == 1);
-  CHECK_THAT(events.err, Contains("vernier_photogate.csv: a photogate recording has events, not a sampled signal"));
+  CHECK_THAT(events.err, Contains("plain_blocking_times.txt: a column of blocking times has no signal to plot"));
   const Run scene_plot = run("report " + gyroscope + " --plot decay");
   CHECK(scene_plot.status == 1);
   CHECK_THAT(scene_plot.err,

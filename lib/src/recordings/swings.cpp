@@ -268,6 +268,21 @@ std::vector<Crossing> find_crossings(const std::vector<double>& t, const Signal&
 
 /// Gate passages: the middle of each blocking, and its duration (NaN for
 /// bare blocking times).
+/// Each gate event's state as blocked (1) or open (0). A passage blocks the
+/// beam for a small part of the swing, and exporters differ in which state
+/// they call blocked: the state held for less time overall is.
+std::vector<double> blocked_states(const Recording& r) {
+  const auto& state = r.channels[0];
+  double time_high = 0.0, time_low = 0.0;
+  for (std::size_t k = 0; k + 1 < r.time.size(); ++k) {
+    (state[k] > 0.5 ? time_high : time_low) += r.time[k + 1] - r.time[k];
+  }
+  const bool high_is_blocked = time_high <= time_low;
+  std::vector<double> blocked(state.size());
+  for (std::size_t k = 0; k < state.size(); ++k) blocked[k] = (state[k] > 0.5) == high_is_blocked ? 1.0 : 0.0;
+  return blocked;
+}
+
 std::vector<Crossing> gate_passages(const Recording& r, std::vector<double>& durations) {
   std::vector<Crossing> out;
   if (r.kind == SignalKind::blocking_times) {
@@ -275,17 +290,10 @@ std::vector<Crossing> gate_passages(const Recording& r, std::vector<double>& dur
     durations.assign(out.size(), kNaN);
     return out;
   }
-  // A passage blocks the beam for a small part of the swing. Exporters differ
-  // in which state they call blocked: the state held for less time overall is.
-  const auto& state = r.channels[0];
-  double time_high = 0.0, time_low = 0.0;
-  for (std::size_t k = 0; k + 1 < r.time.size(); ++k) {
-    (state[k] > 0.5 ? time_high : time_low) += r.time[k + 1] - r.time[k];
-  }
-  const bool high_is_blocked = time_high <= time_low;
+  const std::vector<double> state = blocked_states(r);
   std::optional<double> blocked_at;
   for (std::size_t k = 0; k < r.time.size(); ++k) {
-    const bool blocked = (state[k] > 0.5) == high_is_blocked;
+    const bool blocked = state[k] > 0.5;
     if (blocked && !blocked_at) blocked_at = r.time[k];
     if (!blocked && blocked_at) {
       out.push_back({(*blocked_at + r.time[k]) / 2.0, 0.0, 0});
@@ -597,7 +605,8 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
 }
 
 std::vector<double> swing_signal(const Recording& r) {
-  if (r.kind == SignalKind::gate_states || r.kind == SignalKind::blocking_times) return {};
+  if (r.kind == SignalKind::gate_states) return blocked_states(r);
+  if (r.kind == SignalKind::blocking_times) return {};
   return make_signal(r).s;
 }
 

@@ -42,13 +42,26 @@ SignalMeaning signal_meaning(SignalKind kind, bool has_amplitudes) {
     case SignalKind::position:
       if (has_amplitudes) return {"angle about the centre of the track's circle", "angle about the centre (\u00B0)", kDegree};
       return {"position along the track's principal axis", "position on the principal axis (track unit)", 1.0};
-    case SignalKind::gate_states: return {"photogate events (the middle of each blocking)", "", 1.0};
+    case SignalKind::gate_states:
+      return {"photogate events (the middle of each blocking)", "beam: blocked (1) or open (0)", 1.0};
     case SignalKind::blocking_times: return {"photogate blocking times", "", 1.0};
   }
   return {};
 }
 
 std::string seconds(double t) { return format_significant(t, 4) + " s"; }
+
+/// Gate events as the beam's state between them: each event holds its state
+/// until the next, so the trace steps at every event (a few per swing: no
+/// decimation needed).
+SignalTrace step_trace(const std::vector<double>& time, const std::vector<double>& state) {
+  SignalTrace t;
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    if (k > 0) t.time.push_back(time[k]), t.value.push_back(state[k - 1]);
+    t.time.push_back(time[k]), t.value.push_back(state[k]);
+  }
+  return t;
+}
 
 }  // namespace
 
@@ -114,7 +127,8 @@ RecordingRecord make_recording_record(const RecordingSummary& summary, const Rec
     if (!s.empty()) {
       for (double& x : s) x *= meaning.scale;
       r.samples = s.size();
-      r.trace = decimate_signal(samples->time, s, kSignalColumns);
+      r.trace = summary.kind == SignalKind::gate_states ? step_trace(samples->time, s)
+                                                         : decimate_signal(samples->time, s, kSignalColumns);
       r.trace_label = meaning.label;
     }
   }
@@ -286,7 +300,7 @@ std::vector<std::string> recording_plot_names(const RecordingRecord& r) {
 std::string recording_plot_svg(const RecordingRecord& r, const std::string& name) {
   if (name == "signal") {
     if (auto f = signal_figure(r, "signal")) return to_svg(*f, true);
-    throw InputError(r.input, "a photogate recording has events, not a sampled signal to plot");
+    throw InputError(r.input, "a column of blocking times has no signal to plot, only the blocking instants");
   }
   if (name == "amplitude") {
     if (auto f = amplitude_figure(r, "amplitude")) return to_svg(*f, true);

@@ -137,7 +137,9 @@ SwingAnalysis analyse_swings(const Recording& recording, const std::string& file
 /// Step 1's swing signal of a sampled recording, one value per sample of
 /// `recording.time`, zero on average: the one analyse_swings finds the
 /// crossings on (rad/s for a rate, m/s^2 for an acceleration, rad for an
-/// angle or a track). Empty for gate events. For drawing (the report).
+/// angle or a track). For gate states, 1 where the beam is blocked and 0
+/// where it is open, one value per event; empty for bare blocking times.
+/// For drawing (the report).
 std::vector<double> swing_signal(const Recording& recording);
 
 /// Everything `pendulum-g import` and a scene's recording hook need.

@@ -69,12 +69,12 @@ void check_first_order(const Apparatus<double>& app, const Observation<double>& 
   }
 }
 
-void check_observation(ParsedScene& scene, std::size_t k) {
+/// `expected_or_none`: expected_period of observation k.
+void check_observation(ParsedScene& scene, std::size_t k, const std::optional<double>& expected_or_none) {
   const Apparatus<double>& app = scene.apparatus;
   const Observation<double>& o = scene.observations[k];
   const ObservationSource& source = scene.sources[k];
   const std::string& at = source.path;
-  const std::optional<double> expected_or_none = expected_period(scene, o);
   if (!expected_or_none) return;  // a body whose k or centre the fit finds
   const double expected = *expected_or_none;
   const double ratio = o.period / expected;
@@ -190,17 +190,17 @@ std::string in_observation(std::string text, const ObservationSource& source) {
 /// In a series, each observation whose period alone gives a g that a slip
 /// explains, unless every observation gives the same: that slip shows in
 /// the fitted g itself (status.cpp), while one slipped observation only
-/// drags the fit somewhere no slip names.
-void name_observation_slips(ParsedScene& scene) {
+/// drags the fit somewhere no slip names. `expected`: each observation's
+/// expected_period.
+void name_observation_slips(ParsedScene& scene, const std::vector<std::optional<double>>& expected) {
   const std::size_t n = scene.observations.size();
   if (n < 2) return;
   std::vector<std::optional<std::string>> slips(n);
   std::vector<double> ratios(n);
   for (std::size_t k = 0; k < n; ++k) {
-    const Observation<double>& o = scene.observations[k];
-    const std::optional<double> expected = expected_period(scene, o);
-    if (!expected) return;  // a body whose k or centre the fit finds
-    ratios[k] = (*expected / o.period) * (*expected / o.period);  // g = 4 pi^2 l / T^2
+    if (!expected[k]) return;  // a body whose k or centre the fit finds
+    const double ratio = *expected[k] / scene.observations[k].period;
+    ratios[k] = ratio * ratio;  // g = 4 pi^2 l / T^2
     slips[k] = name_slip(ratios[k]);
   }
   if (std::all_of(slips.begin(), slips.end(), [&](const auto& s) { return s == slips.front(); })) return;
@@ -214,8 +214,10 @@ void name_observation_slips(ParsedScene& scene) {
 }
 
 void check_plausibility(ParsedScene& scene) {
-  for (std::size_t k = 0; k < scene.observations.size(); ++k) check_observation(scene, k);
-  name_observation_slips(scene);
+  std::vector<std::optional<double>> expected;
+  for (const auto& o : scene.observations) expected.push_back(expected_period(scene, o));
+  for (std::size_t k = 0; k < scene.observations.size(); ++k) check_observation(scene, k, expected[k]);
+  name_observation_slips(scene, expected);
 }
 
 }  // namespace pendulum

@@ -135,6 +135,10 @@ void read_timing(Object& parent, const std::string& prefix, Observation<double>&
                      "oscillation is a full swing, there and back)");
   }
   const int n_osc = static_cast<int>(n_value);
+  // Trials written as quantities, each with its unit, are the usual slip.
+  PENDULUM_FAIL_IF(!t.has("unit"), t.path("unit"),
+                   "missing; expected the unit of the trial times, e.g. \"unit\": \"s\", with \"trials\" a list "
+                   "of plain numbers in it");
   const std::string unit_name = t.text("unit");
   const auto unit = find_unit(unit_name, Dimension::time);
   if (!unit) {

@@ -159,7 +159,8 @@ Command add_import_command(CLI::App& app) {
   cmd->add_option("--set", o->set,
                   "Zip exports: the CSV inside to read (Gyroscope.csv; default: the one with the best pendulum "
                   "signal, a rate, then linear acceleration, then acceleration). PASCO: the run (\"Run #2\"; "
-                  "default run 1)");
+                  "default run 1). Tracker's export of several tracks: the pendulum's track by its name "
+                  "(\"mass B\")");
 
   return {cmd, [o] {
     bool table = false;

@@ -89,23 +89,29 @@ TEST_CASE("Each family's recording in data/recordings/ is read and reduced", "[r
     RecordingFormat format;
     SignalKind kind;
     double spread;  // rad: one swing's amplitude noise allowance, or -1: no amplitudes
+    const char* set = "";
   };
   const Family families[] = {
       // Amplitude noise of one swing: the gyroscope's 0.01 rad/s on a 0.8 rad/s
       // peak over ~16 samples, 3 sigma: 0.002 rad; |a| with g, 0.05 m/s^2 on a
-      // 0.9 m/s^2 swing of |a|, measured scatter 0.007 rad: 0.02 rad.
+      // 0.9 m/s^2 swing of |a|, measured scatter 0.007 rad: 0.02 rad. A video
+      // track's angles are about the circle fitted to its marks, whose radius
+      // from 600 marks of 1.5 mm on this arc scatters by 5.7 mm (0.7 %; 300
+      // simulated tracks, scipy's least_squares on the geometric distances)
+      // and moves every amplitude alike: 3 sd, 0.0054 rad, more.
       {"phyphox_gyroscope.csv", RecordingFormat::phyphox, SignalKind::angular_rate, 0.002},
       {"phyphox_pendulum_raw.tsv", RecordingFormat::phyphox, SignalKind::angular_rate, 0.002},
       {"phyphox_linear_acceleration.csv", RecordingFormat::phyphox, SignalKind::linear_acceleration, 0.004},
       {"phyphox_acceleration.csv", RecordingFormat::phyphox, SignalKind::acceleration, 0.02},
       {"vernier_photogate.csv", RecordingFormat::vernier, SignalKind::gate_states, -1},
       {"pasco_rotary.csv", RecordingFormat::pasco, SignalKind::angle, 0.002},
-      {"tracker_xy.txt", RecordingFormat::tracker, SignalKind::position, 0.002},
+      {"tracker_xy.txt", RecordingFormat::tracker, SignalKind::position, 0.0075},
       {"tracker_theta.csv", RecordingFormat::tracker, SignalKind::angle, 0.002},
+      {"tracker_two_tracks.txt", RecordingFormat::tracker, SignalKind::position, 0.0075, "mass B"},
   };
   for (const auto& f : families) {
     INFO(f.file);
-    const RecordingSummary r = analyse_recording(kDir + f.file);
+    const RecordingSummary r = analyse_recording(kDir + f.file, RecordingFormat::automatic, {}, {}, f.set);
     CHECK(r.format == f.format);
     CHECK(r.kind == f.kind);
     const auto& p = r.swings.period;
@@ -169,6 +175,25 @@ TEST_CASE("Readers: delimiters, decimal commas, NaN cells, the header decides", 
   const Recording p = parse_recording("t (ms)\n100\n250.5\n", "d.txt");
   CHECK(p.format == RecordingFormat::plain);
   CHECK(p.time == std::vector<double>{0.1, 0.2505});
+
+  // Tracker's export of several tracks: the names above each track's first
+  // column, one time column; the track chosen by name, in any case.
+  const std::string two = "#multi:\n\tmass A\t\tmass B\t\nt\tx\ty\tx\ty\n0.1\t1\t2\t3\t4\n0.2\t5\t6\t7\t8\n";
+  const Recording b = parse_recording(two, "m.txt", RecordingFormat::automatic, "MASS b");
+  CHECK(b.format == RecordingFormat::tracker);
+  CHECK(b.set == "mass B");
+  CHECK(b.time == std::vector<double>{0.1, 0.2});
+  CHECK(b.channels[0] == std::vector<double>{3.0, 7.0});
+  CHECK(b.channels[1] == std::vector<double>{4.0, 8.0});
+  CHECK(parse_recording(two, "m.txt", RecordingFormat::automatic, "mass A").channels[0] == std::vector<double>{1.0, 5.0});
+  CHECK_THROWS_WITH(parse_recording(two, "m.txt"),
+                    Contains("m.txt:3:1") && Contains("2 tracks (\"mass A\", \"mass B\")") && Contains("--set"));
+  CHECK_THROWS_WITH(parse_recording(two, "m.txt", RecordingFormat::automatic, "mass C"),
+                    Contains("got the set \"mass C\"; expected one of this Tracker export's tracks"));
+  // One track needs no name; a name other than a set's is refused.
+  CHECK(parse_recording("#multi:\n\tbob\t\nt\tx\ty\n0.1\t1\t2\n", "o.txt").set == "bob");
+  CHECK_THROWS_WITH(parse_recording("mass A\nt\tx\ty\n0.1\t1\t2\n", "s.txt", RecordingFormat::automatic, "mass A"),
+                    Contains("expected a PASCO run (\"Run #2\") or the name of a track in a Tracker export of several"));
 
   // Logger Pro's text export: a data-set line above the column names.
   const Recording v = parse_recording("Run 1\nTime (s)\tGate State\n0.10\t1\n0.12\t0\n", "g.txt");
@@ -328,12 +353,18 @@ TEST_CASE("Mutated recordings fail cleanly or give finite results", "[recordings
   // signs, letters, NUL or newlines, runs deleted or repeated, the file cut.
   // Each must either throw InputError or give a finite period, uncertainty
   // and amplitudes: nothing else is thrown, nothing crashes, no NaN leaks.
-  const char* files[] = {"phyphox_gyroscope.csv", "phyphox_pendulum_raw.tsv", "vernier_photogate.csv",
-                         "pasco_rotary.csv", "tracker_xy.txt", "plain_blocking_times.txt"};
+  struct File {
+    const char* name;
+    const char* set;
+  };
+  const File files[] = {{"phyphox_gyroscope.csv", ""}, {"phyphox_pendulum_raw.tsv", ""},
+                        {"vernier_photogate.csv", ""},  {"pasco_rotary.csv", ""},
+                        {"tracker_xy.txt", ""},         {"tracker_two_tracks.txt", "mass B"},
+                        {"plain_blocking_times.txt", ""}};
   const char alphabet[] = {',', ';', '\t', '\n', '-', '+', '.', 'E', 'x', '"', ' ', '\0', '9'};
   std::mt19937_64 random(20261130);
   int failed_cleanly = 0, succeeded = 0;
-  for (const char* name : files) {
+  for (const auto& [name, set] : files) {
     const std::string original = test::read_text(kDir + name);
     for (int trial = 0; trial < 150; ++trial) {
       std::string text = original;
@@ -348,7 +379,7 @@ TEST_CASE("Mutated recordings fail cleanly or give finite results", "[recordings
         }
       }
       try {
-        const SwingAnalysis a = analyse_swings(parse_recording(text, name), name);
+        const SwingAnalysis a = analyse_swings(parse_recording(text, name, RecordingFormat::automatic, set), name);
         ++succeeded;
         CHECK(std::isfinite(a.period.value));
         CHECK(std::isfinite(a.period.uncertainty));

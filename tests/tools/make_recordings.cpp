@@ -173,5 +173,18 @@ int main(int argc, char** argv) {
     }
     write(dir + "/tracker_theta.csv", out);
   }
+  {  // two tracks, Tracker's "#multi:" export: a mark on the support (mass A,
+     // still), then the bob (mass B), one time column; tab-separated
+    pendulum::NormalDeviates two(18);
+    std::string out = "#multi:\n\tmass A\t\tmass B\t\nt\tx\ty\tx\ty\n";
+    for (std::size_t k = 0; k < v.t.size(); ++k) {
+      const double xa = 0.0015 * two.next(), ya = 0.0015 * two.next();
+      const double xb = video.length * std::sin(v.theta[k]) + 0.0015 * two.next();
+      const double yb = -video.length * std::cos(v.theta[k]) + 0.0015 * two.next();
+      out += number("%.4f", k / 30.0) + "\t" + number("%.5f", xa) + "\t" + number("%.5f", ya) + "\t" +
+             number("%.5f", xb) + "\t" + number("%.5f", yb) + "\n";
+    }
+    write(dir + "/tracker_two_tracks.txt", out);
+  }
   return 0;
 }

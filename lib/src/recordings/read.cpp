@@ -53,6 +53,7 @@ struct Column {
   Role role = Role::other;
   std::string unit;  ///< text in the last parentheses, lower case
   int run = 0;       ///< PASCO's "Run #n", else 0
+  int track = 0;     ///< Tracker's track in an export of several (1, 2, ... by the names above the header), else 0
   bool prefixed = false;  ///< Vernier's "Latest: " or "Run 1: "
 };
 
@@ -125,9 +126,10 @@ std::optional<double> time_scale(const std::string& unit) {
   return std::nullopt;
 }
 
-std::optional<std::size_t> find(const std::vector<Column>& cols, Role role, int run = -1) {
+/// The first column of `role`, of PASCO run `run` and Tracker track `track` (-1: any).
+std::optional<std::size_t> find(const std::vector<Column>& cols, Role role, int run = -1, int track = -1) {
   for (std::size_t j = 0; j < cols.size(); ++j) {
-    if (cols[j].role == role && (run < 0 || cols[j].run == run)) return j;
+    if (cols[j].role == role && (run < 0 || cols[j].run == run) && (track < 0 || cols[j].track == track)) return j;
   }
   return std::nullopt;
 }
@@ -141,7 +143,8 @@ std::vector<std::size_t> find_all(const std::vector<Column>& cols, Role role) {
 }
 
 /// The layout of `format` for these columns, or nullopt if they do not fit it.
-std::optional<Layout> layout_for(RecordingFormat format, const std::vector<Column>& cols, bool preamble, int run) {
+std::optional<Layout> layout_for(RecordingFormat format, const std::vector<Column>& cols, bool preamble, int run,
+                                 int track) {
   Layout l;
   l.format = format;
   auto angle_scale = [&](const Column& c) {
@@ -202,14 +205,14 @@ std::optional<Layout> layout_for(RecordingFormat format, const std::vector<Colum
       const auto t = find(cols, Role::time);
       if (!t || (!preamble && cols[*t].name != "t")) return std::nullopt;
       l.time = *t;
-      if (const auto a = find(cols, Role::angle)) {
+      if (const auto a = find(cols, Role::angle, -1, track)) {
         l.kind = SignalKind::angle;
         l.channels = {*a};
         l.channel_scale = angle_scale(cols[*a]);
-      } else if (const auto w = find(cols, Role::omega)) {
+      } else if (const auto w = find(cols, Role::omega, -1, track)) {
         l.kind = SignalKind::angular_rate;
         l.channels = {*w};
-      } else if (const auto x = find(cols, Role::x), y = find(cols, Role::y); x && y) {
+      } else if (const auto x = find(cols, Role::x, -1, track), y = find(cols, Role::y, -1, track); x && y) {
         l.kind = SignalKind::position;
         l.channels = {*x, *y};
       } else {
@@ -230,9 +233,9 @@ std::optional<Layout> layout_for(RecordingFormat format, const std::vector<Colum
 }
 
 Layout detect(RecordingFormat forced, const std::vector<Column>& cols, bool preamble, bool has_header,
-              const std::string& file, std::size_t header_line, int run) {
+              const std::string& file, std::size_t header_line, int run, int track) {
   if (forced != RecordingFormat::automatic) {
-    if (auto l = layout_for(forced, cols, preamble, run)) return *l;
+    if (auto l = layout_for(forced, cols, preamble, run, track)) return *l;
     fail(file, header_line, 1,
          std::string("the header does not fit a ") + recording_format_name(forced) +
              " export (docs/recordings.md lists the columns each format needs)");
@@ -240,11 +243,11 @@ Layout detect(RecordingFormat forced, const std::vector<Column>& cols, bool prea
   // The first family whose columns the header has; the most specific first
   // (a PASCO gate file also has what a Vernier one needs).
   if (!has_header || cols.size() == 1) {
-    if (auto l = layout_for(RecordingFormat::plain, cols, preamble, run)) return *l;
+    if (auto l = layout_for(RecordingFormat::plain, cols, preamble, run, track)) return *l;
   } else {
     for (auto family : {RecordingFormat::pasco, RecordingFormat::vernier, RecordingFormat::tracker,
                         RecordingFormat::phyphox}) {
-      if (auto l = layout_for(family, cols, preamble, run)) return *l;
+      if (auto l = layout_for(family, cols, preamble, run, track)) return *l;
     }
   }
   std::string names;
@@ -362,15 +365,16 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
   // it are a preamble (Tracker's track name).
   const char* p = begin;
   std::size_t line_no = 0;
-  std::optional<std::string_view> header;
+  std::optional<std::string_view> header, above_header;
   std::size_t header_line = 1;
-  bool preamble = false;
+  bool preamble = false, several_tracks = false;
   while (p < end) {
     const char* e = line_end(p);
     ++line_no;
     if (!is_blank(p, e)) {
       if (is_data(p, e)) break;
-      if (header) preamble = true;
+      if (header) preamble = true, above_header = header;
+      several_tracks |= starts_with(std::string_view(p, e - p), "#multi");
       header = std::string_view(p, e - p);
       header_line = line_no;
     }
@@ -392,31 +396,60 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
   }
   const bool decimal_comma = delimiter != ',' && first_data.find(',') != std::string_view::npos;
 
-  std::vector<Column> cols;
-  if (header) {
-    std::size_t start = 0;
-    while (true) {
-      const std::size_t d = delimiter ? header->find(delimiter, start) : std::string_view::npos;
-      cols.push_back(classify(header->substr(start, d == std::string_view::npos ? d : d - start)));
-      if (d == std::string_view::npos) break;
+  auto cells = [&](std::string_view line) {
+    std::vector<std::string_view> out;
+    for (std::size_t start = 0;;) {
+      const std::size_t d = delimiter ? line.find(delimiter, start) : std::string_view::npos;
+      out.push_back(trim(line.substr(start, d == std::string_view::npos ? d : d - start)));
+      if (d == std::string_view::npos) return out;
       start = d + 1;
     }
+  };
+  std::vector<Column> cols;
+  // Tracker's export of several tracks: "#multi:", then each track's name
+  // above its first column, then the header (one time column for all).
+  std::vector<std::string> tracks;
+  if (header) {
+    for (std::string_view cell : cells(*header)) cols.push_back(classify(cell));
     while (cols.size() > 1 && cols.back().name.empty()) cols.pop_back();  // a trailing delimiter
+    if (several_tracks && above_header) {
+      const std::vector<std::string_view> names = cells(*above_header);
+      for (std::size_t j = 0; j < cols.size(); ++j) {
+        if (j < names.size() && !names[j].empty()) tracks.emplace_back(names[j]);
+        cols[j].track = static_cast<int>(tracks.size());
+      }
+    }
   } else {
     std::size_t n = 1;
     if (delimiter) n += std::count(first_data.begin(), first_data.end(), delimiter);
     cols.resize(n);
   }
+  // Which of several Tracker tracks, by its name.
+  int track = -1;
+  if (!tracks.empty()) {
+    std::string listed;
+    for (const auto& t : tracks) listed += (listed.empty() ? "\"" : ", \"") + t + "\"";
+    if (set.empty() && tracks.size() > 1) {
+      fail(file, header_line, 1, "a Tracker export of " + std::to_string(tracks.size()) + " tracks (" + listed +
+                                     "); expected the pendulum's chosen by its name (import --set, a scene's set)");
+    }
+    const auto named = std::find_if(tracks.begin(), tracks.end(), [&](const std::string& t) { return lower(t) == lower(set); });
+    if (!set.empty() && named == tracks.end()) {
+      fail(file, header_line, 1, "got the set \"" + set + "\"; expected one of this Tracker export's tracks: " + listed);
+    }
+    track = set.empty() ? 1 : static_cast<int>(named - tracks.begin()) + 1;
+  }
   // A PASCO run other than the first, by its number ("Run #2", "run 2" or "2").
   int run = 1;
-  if (!set.empty()) {
+  if (!set.empty() && tracks.empty()) {
     const std::string name = lower(set);
     const std::size_t digits = name.find_first_of("0123456789");
     const bool number = digits != std::string::npos && name.find_first_not_of("0123456789", digits) == std::string::npos &&
                         digits < 8 && name.size() - digits < 6;
     const std::string prefix = number ? std::string(trim(name.substr(0, digits))) : std::string();
     if (!number || !(prefix.empty() || prefix == "run #" || prefix == "run")) {
-      fail(file, header_line, 1, "got the set \"" + set + "\"; expected a PASCO run (\"Run #2\") in a text export");
+      fail(file, header_line, 1, "got the set \"" + set + "\"; expected a PASCO run (\"Run #2\") or the name of a track in a Tracker "
+                                     "export of several (\"#multi:\")");
     }
     run = std::atoi(name.c_str() + digits);
     std::string runs;
@@ -429,14 +462,16 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
                                      (runs.empty() ? std::string() : " (its runs: " + runs + ")"));
     }
   }
-  const Layout layout = detect(format, cols, preamble, header.has_value(), file, header_line, run);
-  if (!set.empty() && layout.format != RecordingFormat::pasco) {
+  const Layout layout = detect(format, cols, preamble, header.has_value(), file, header_line, run, track);
+  const bool holds_sets = layout.format == RecordingFormat::pasco || (layout.format == RecordingFormat::tracker && !tracks.empty());
+  if (!set.empty() && !holds_sets) {
     fail(file, header_line, 1, "got the set \"" + set + "\", but this " + recording_format_name(layout.format) +
-                                   " export holds a single set; expected a set in a zip archive or a PASCO file");
+                                   " export holds a single set; expected a set in a zip archive, a PASCO file or a Tracker export of "
+                                   "several tracks");
   }
 
   Recording rec;
-  rec.set = set;
+  rec.set = track > 0 ? tracks[static_cast<std::size_t>(track - 1)] : set;  // a track as Tracker names it
   rec.format = layout.format;
   rec.kind = layout.kind;
   for (std::size_t j : layout.channels) rec.channel_names.push_back(cols[j].name);

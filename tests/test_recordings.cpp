@@ -14,6 +14,8 @@
 #include <random>
 #include <sstream>
 #include <cmath>
+#include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -346,6 +348,30 @@ TEST_CASE("A large file is read in slices with the same numbers and line numbers
   const auto line = 1 + std::count(text.begin(), text.begin() + at, '\n');
   CHECK_THROWS_WITH(parse_recording(text, "big.csv"),
                     Contains("big.csv:" + std::to_string(line) + ":") && Contains("expected a number"));
+}
+
+TEST_CASE("A text cut inside a cell is read to its end and no further", "[recordings][robustness]") {
+  // Each text in a heap block of exactly its size (no terminator after it),
+  // so that a read past its end is a sanitizer's report (.ci/run). The first
+  // is the fuzzer's (tests/fuzz/fuzz_recording.cpp): a lone sign at the end.
+  for (const std::string text : {" \".439,, \"+", "\"Time (s)\",\"Gyroscope x (rad/s)\"\n1,+",
+                                 "\"Time (s)\",\"Gyroscope x (rad/s)\"\n1,-", "t\tx\ty\n0.1\t1\t1e",
+                                 "Time (s);Rotation x (rad/s)\n0,5;1,"}) {
+    INFO(text);
+    const std::unique_ptr<char[]> block(new char[text.size()]);
+    std::memcpy(block.get(), text.data(), text.size());
+    try {
+      (void)parse_recording(std::string_view(block.get(), text.size()), "cut.csv");
+    } catch (const InputError& e) {
+      CHECK_THAT(e.what(), Contains("cut.csv:"));
+    }
+  }
+}
+
+TEST_CASE("A message quotes the file's text without its control bytes", "[recordings][robustness]") {
+  // The fuzzer's first finding: a header cell's \x04 went into the message.
+  CHECK_THROWS_WITH(parse_recording("\"Tim\x04" "e (s)\",\"01.0\"\n1,2\n", "c.csv"),
+                    Contains("unrecognised header \"Tim?e (s)\", \"01.0\""));
 }
 
 TEST_CASE("Mutated recordings fail cleanly or give finite results", "[recordings][robustness]") {

@@ -18,6 +18,14 @@ std::string one_line(const std::string& s, std::size_t max) {
   return out.size() > max ? out.substr(0, max - 3) + "..." : out;
 }
 
+std::string printable(const std::string& s, std::size_t max) {
+  std::string out = s;
+  for (char& c : out) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  }
+  return out.size() > max ? out.substr(0, max - 3) + "..." : out;
+}
+
 std::string format_number(double x, int digits) {
   std::ostringstream os;
   os.precision(digits);

@@ -10,6 +10,11 @@ namespace pendulum {
 /// as \xNN, cut to `max` characters.
 std::string one_line(const std::string& s, std::size_t max);
 
+/// Text from a file (a header cell, a name in an archive) fit for a one-line
+/// message: control bytes as '?', UTF-8 kept (a header's θ or µs), cut to
+/// `max` characters with "...".
+std::string printable(const std::string& s, std::size_t max);
+
 /// `x` with `digits` significant digits.
 std::string format_number(double x, int digits = 10);
 

@@ -22,14 +22,12 @@
 #include "pendulum/output.hpp"
 #include "pendulum/clock_scene.hpp"
 #include "pendulum/scene_json.hpp"
+#include "fuzz_checks.hpp"
 
 namespace {
 
-void require(bool ok, const char* what, const std::string& detail) {
-  if (ok) return;
-  std::fprintf(stderr, "fuzz_scene: %s: %s\n", what, detail.c_str());
-  std::abort();
-}
+using pendulum::fuzz::require;
+using pendulum::fuzz::require_clear_message;
 
 void require_finite(const nlohmann::ordered_json& j, const std::string& path) {
   if (j.is_structured()) {
@@ -90,15 +88,6 @@ extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t s
   if (mutated.size() > max_size) return LLVMFuzzerMutate(data, size, max_size);
   std::memcpy(data, mutated.data(), mutated.size());
   return mutated.size();
-}
-
-/// Bad input ends in one printable line of at most 1000 characters.
-void require_clear_message(const pendulum::InputError& e) {
-  const std::string message = e.what();
-  for (const char c : message) {
-    require(static_cast<unsigned char>(c) >= 0x20 && c != 0x7f, "control character in an error message", message);
-  }
-  require(message.size() <= 1000, "error message over 1000 characters", message.substr(0, 200));
 }
 
 /// The same bytes as a clock scene, through `pendulum-g clock` with every

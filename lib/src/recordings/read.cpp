@@ -19,6 +19,7 @@
 #include <thread>
 
 #include "pendulum/input_error.hpp"
+#include "../text.hpp"
 #include "huge_pages.hpp"
 #include "zip.hpp"
 
@@ -40,9 +41,10 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+/// Messages quote the file's own text (header cells, names): one line.
 [[noreturn]] void fail(const std::string& file, std::size_t line, std::size_t column,
                        const std::string& message) {
-  throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(column), message);
+  throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(column), printable(message, 800));
 }
 
 /// What a header cell names.
@@ -251,7 +253,9 @@ Layout detect(RecordingFormat forced, const std::vector<Column>& cols, bool prea
     }
   }
   std::string names;
-  for (const auto& c : cols) names += (names.empty() ? "\"" : ", \"") + c.name + "\"";
+  for (const auto& c : cols) {
+    if (names.size() < 300) names += (names.empty() ? "\"" : ", \"") + printable(c.name, 40) + "\"";
+  }
   fail(file, header_line, 1,
        "unrecognised header " + names +
            "; expected a phyphox, Vernier, PASCO or Tracker export or one column of blocking "
@@ -545,8 +549,9 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
           auto bad_cell = [&](const char* bad) {
             const char* token_end = s;
             while (!ends_cell(token_end)) ++token_end;
-            if (std::find(std::begin(other_delimiters), std::end(other_delimiters), *bad) !=
-                std::end(other_delimiters)) {
+            // `bad` is the end of the text when a cell is a lone sign there.
+            if (bad < e && std::find(std::begin(other_delimiters), std::end(other_delimiters), *bad) !=
+                               std::end(other_delimiters)) {
               fail(file, line_no, column(bad),
                    std::string("mixed delimiters: found '") + (*bad == '\t' ? "\\t" : std::string(1, *bad)) +
                        "' in a file whose header separates columns by '" +

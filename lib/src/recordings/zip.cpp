@@ -9,18 +9,11 @@
 #include <vector>
 
 #include "pendulum/input_error.hpp"
+#include "../text.hpp"
 
 namespace pendulum {
 
 namespace {
-
-/// A name from the archive, fit for a one-line message.
-std::string printable(std::string s) {
-  for (char& c : s) {
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
-  }
-  return s.size() > 80 ? s.substr(0, 77) + "..." : s;
-}
 
 bool ends_with_csv(const std::string& name) {
   if (name.size() < 4) return false;
@@ -85,14 +78,14 @@ Recording read_zip_recording(std::string_view bytes, const std::string& file, Re
     }
     const std::string name = st.name;
     if (name.rfind("meta/", 0) == 0 || !ends_with_csv(name)) continue;
-    if (names.size() < 300) names += (names.empty() ? "\"" : ", \"") + printable(name) + "\"";
+    if (names.size() < 300) names += (names.empty() ? "\"" : ", \"") + printable(name, 80) + "\"";
     if (!set.empty() && name != set && name != set + ".csv") continue;
     sets.push_back({static_cast<zip_uint64_t>(i), name, st.size});
   }
   if (sets.empty()) {
     fail(set.empty() ? "a zip archive with no CSV set outside meta/; expected phyphox's zip export "
                        "(Gyroscope.csv, Accelerometer.csv, ...)"
-                     : "a zip archive with no set \"" + printable(set) + "\"; expected one of its CSV sets: " + names);
+                     : "a zip archive with no set \"" + printable(set, 80) + "\"; expected one of its CSV sets: " + names);
   }
   // Stated sizes first: a zip bomb is refused before anything is unpacked.
   zip_uint64_t total = 0;
@@ -105,7 +98,7 @@ Recording read_zip_recording(std::string_view bytes, const std::string& file, Re
   std::optional<Recording> best;
   std::string refused;
   for (const Entry& e : sets) {
-    const std::string name = file + "/" + printable(e.name);
+    const std::string name = file + "/" + printable(e.name, 80);
     std::string text(e.size, '\0');
     std::unique_ptr<zip_file_t, int (*)(zip_file_t*)> in(zip_fopen_index(archive.get(), e.index, 0), zip_fclose);
     // One byte more than stated: a set longer than its header says is damaged too.
@@ -113,7 +106,7 @@ Recording read_zip_recording(std::string_view bytes, const std::string& file, Re
     if (!in || zip_fread(in.get(), text.data(), e.size) != static_cast<zip_int64_t>(e.size) ||
         zip_fread(in.get(), &extra, 1) != 0) {
       const char* why = in ? zip_file_strerror(in.get()) : zip_error_strerror(zip_get_error(archive.get()));
-      fail("a damaged zip archive (" + printable(e.name) + ": " + why + "); expected phyphox's zip export, whole");
+      fail("a damaged zip archive (" + printable(e.name, 80) + ": " + why + "); expected phyphox's zip export, whole");
     }
     try {
       Recording r = parse_recording(text, name, format);

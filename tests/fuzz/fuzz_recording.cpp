@@ -1,0 +1,34 @@
+// libFuzzer target: any bytes through the recording readers and the swing
+// analysis, as `pendulum-g import` runs them on a text export, with no set,
+// a PASCO run and a Tracker track named. Bad input must end in an InputError
+// whose message is one printable line; a recording that passes must give a
+// finite period, uncertainty and amplitudes. A zip archive is refused here
+// (parse_recording reads text; libzip unpacks a file's bytes), so the zip
+// reader is left to its catalogue cases (tests/bad_recordings/).
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "fuzz_checks.hpp"
+#include "pendulum/recordings/read.hpp"
+#include "pendulum/recordings/swings.hpp"
+
+using pendulum::fuzz::require;
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  for (const char* set : {"", "Run #2", "mass B"}) {
+    try {
+      const pendulum::Recording r = pendulum::parse_recording(text, "fuzz", pendulum::RecordingFormat::automatic, set);
+      for (const auto& column : r.channels) require(column.size() == r.time.size(), "ragged columns", set);
+      const pendulum::SwingAnalysis a = pendulum::analyse_swings(r, "fuzz");
+      require(std::isfinite(a.period.value) && a.period.value > 0.0, "period not finite and positive", set);
+      require(std::isfinite(a.period.uncertainty), "period uncertainty not finite", set);
+      for (double x : a.decay.amplitudes) require(std::isfinite(x), "non-finite amplitude", set);
+    } catch (const pendulum::InputError& e) {
+      pendulum::fuzz::require_clear_message(e);
+    }
+  }
+  return 0;
+}

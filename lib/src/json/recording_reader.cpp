@@ -38,7 +38,7 @@ std::size_t RecordingReader::read(Object& o, ParsedScene& out) {
                        "so no file it names is opened");
   const RecordingFormat format = format_at(o);
   const std::string set = o.has("set") ? o.text("set") : std::string();
-  PENDULUM_FAIL_IF(o.has("set") && set.empty(), o.path("set"), "got \"\"; expected the name of a CSV in the zip archive");
+  PENDULUM_FAIL_IF(o.has("set") && set.empty(), o.path("set"), "got \"\"; expected the name of a set: a CSV in a zip archive, a PASCO run, a Tracker track");
   SwingOptions options;
   if (o.has("bob_width")) options.bob_width = quantity(o, "bob_width", Dimension::length, Range::positive).value;
   if (o.has("source")) o.text("source");

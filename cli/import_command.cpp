@@ -124,13 +124,18 @@ std::optional<RecordingFormat> recording_family(const std::vector<std::string>& 
   return family;
 }
 
-void add_swing_options(CLI::App& cmd, SwingOptions& options) {
+void add_recording_options(CLI::App& cmd, SwingOptions& options, std::string& set) {
   cmd.add_option("--bob-width-m", options.bob_width,
                  "Photogates: the bob's width across the beam (m), for the amplitudes")
       ->check(CLI::PositiveNumber);
   cmd.add_option("--length-m", options.length,
                  "Photogates: pivot to bob centre (m); without it the amplitudes take g as standard gravity")
       ->check(CLI::PositiveNumber);
+  cmd.add_option("--set", set,
+                 "Zip exports: the CSV inside to read (Gyroscope.csv; default: the one with the best pendulum "
+                 "signal, a rate, then linear acceleration, then acceleration). PASCO: the run (\"Run #2\"; "
+                 "default run 1). Tracker's export of several tracks: the pendulum's track by its name "
+                 "(\"mass B\")");
 }
 
 Command add_import_command(CLI::App& app) {
@@ -154,13 +159,7 @@ Command add_import_command(CLI::App& app) {
       ->check(CLI::IsMember(formats))
       ->allow_extra_args(false)  // one value each time: the file after it is not a format
       ->take_all();
-  add_swing_options(*cmd, o->swing);
-
-  cmd->add_option("--set", o->set,
-                  "Zip exports: the CSV inside to read (Gyroscope.csv; default: the one with the best pendulum "
-                  "signal, a rate, then linear acceleration, then acceleration). PASCO: the run (\"Run #2\"; "
-                  "default run 1). Tracker's export of several tracks: the pendulum's track by its name "
-                  "(\"mass B\")");
+  add_recording_options(*cmd, o->swing, o->set);
 
   return {cmd, [o] {
     bool table = false;

@@ -105,6 +105,7 @@ Command add_report_command(CLI::App& app) {
     std::string plot;
     AnalysisOptions analysis;
     SwingOptions swing;
+    std::string set;
   };
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
@@ -129,7 +130,7 @@ Command add_report_command(CLI::App& app) {
       ->check(CLI::IsMember(
           {"corrections", "budget", "decay", "series", "pivot-scan", "signal", "amplitude", "period-amplitude"}));
   add_analysis_options(*cmd, o->analysis);
-  add_swing_options(*cmd, o->swing);
+  add_recording_options(*cmd, o->swing, o->set);
 
   return {cmd, [o, cmd] {
     std::string format = "html";
@@ -150,9 +151,10 @@ Command add_report_command(CLI::App& app) {
     }
     const std::optional<RecordingFormat> family = recording_family(o->formats);
     if (family || looks_like_recording(o->file)) {
-      const Recording samples = read_recording(o->file, family.value_or(RecordingFormat::automatic));
-      const RecordingSummary summary{o->file,       samples.format,  samples.kind,
-                                     samples.rows,  samples.dropped, analyse_swings(samples, o->file, o->swing)};
+      const Recording samples = read_recording(o->file, family.value_or(RecordingFormat::automatic), {}, o->set);
+      const RecordingSummary summary{o->file,      samples.format,  samples.kind,
+                                     samples.rows, samples.dropped, analyse_swings(samples, o->file, o->swing),
+                                     samples.set};
       const report::RecordingRecord r = report::make_recording_record(summary, &samples);
       write_output(o->output, svg ? report::recording_plot_svg(r, o->plot) : report::recording_report_html(r));
       return 0;

@@ -1372,6 +1372,17 @@ TEST_CASE("report RECORDING: one page with the signal, the amplitudes and the pe
   CHECK(wrong.status == 1);
   CHECK(wrong.err == run("import --format vernier " + gyroscope).err);
   CHECK_FALSE(std::filesystem::exists(dir + "/wrong.html"));
+  // A set as for import: the track of a Tracker export of several, named on the page.
+  const std::string tracks = kRecordings + "tracker_two_tracks.txt";
+  const Run track = run("report --set \"mass b\" " + tracks);
+  CHECK(track.status == 0);
+  CHECK_THAT(track.out, Contains("tracker_two_tracks.txt/mass B"));
+  const json imported = json::parse(run("import --set \"mass b\" " + tracks).out);
+  CHECK_THAT(track.out, Contains("<td>" + std::to_string(imported.at("periods").get<int>()) + " ("));
+  const Run no_track = run("report " + tracks + " -o " + dir + "/no_track.html");
+  CHECK(no_track.status == 1);
+  CHECK(no_track.err == run("import " + tracks).err);
+  CHECK_FALSE(std::filesystem::exists(dir + "/no_track.html"));
   std::filesystem::remove_all(dir);
 }
 

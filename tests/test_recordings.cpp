@@ -192,6 +192,22 @@ TEST_CASE("Readers: delimiters, decimal commas, NaN cells, the header decides", 
                     Contains("m.txt:3:1") && Contains("2 tracks (\"mass A\", \"mass B\")") && Contains("--set"));
   CHECK_THROWS_WITH(parse_recording(two, "m.txt", RecordingFormat::automatic, "mass C"),
                     Contains("got the set \"mass C\"; expected one of this Tracker export's tracks"));
+  // Names out of line with the columns would mix two tracks' x and y;
+  // without names, with a name twice, or a track of velocities: refused.
+  const auto multi = [](const std::string& names, const std::string& header) {
+    return "#multi:\n" + names + "\n" + header + "\n0.1\t1\t2\t3\t4\n";
+  };
+  CHECK_THROWS_WITH(parse_recording(multi("\t\tmass A\t\tmass B", "t\tx\ty\tx\ty"), "m.txt", RecordingFormat::automatic, "mass A"),
+                    Contains("m.txt:2:1: the track names are out of line with the columns: column 2 (\"x\") comes "
+                             "before the first name"));
+  CHECK_THROWS_WITH(parse_recording(multi("\tmass A", "t\tx\ty\tx\ty"), "m.txt", RecordingFormat::automatic, "mass A"),
+                    Contains("column 4 (\"x\") is track \"mass A\"'s second \"x\""));
+  CHECK_THROWS_WITH(parse_recording("#multi:\nt\tx\ty\n0.1\t1\t2\n", "m.txt"),
+                    Contains("(#multi:) without their names"));
+  CHECK_THROWS_WITH(parse_recording(multi("\tmass A\t\tMASS A", "t\tx\ty\tx\ty"), "m.txt", RecordingFormat::automatic, "mass a"),
+                    Contains("the name of more than one track"));
+  CHECK_THROWS_WITH(parse_recording(multi("\tcm A\t\tcm B", "t\tvx\tvy\tvx\tvy"), "m.txt", RecordingFormat::automatic, "cm B"),
+                    Contains("the track \"cm B\" has the columns \"vx\", \"vy\"; expected its angle"));
   // One track needs no name; a name other than a set's is refused.
   CHECK(parse_recording("#multi:\n\tbob\t\nt\tx\ty\n0.1\t1\t2\n", "o.txt").set == "bob");
   CHECK_THROWS_WITH(parse_recording("mass A\nt\tx\ty\n0.1\t1\t2\n", "s.txt", RecordingFormat::automatic, "mass A"),

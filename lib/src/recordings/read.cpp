@@ -416,11 +416,31 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
   if (header) {
     for (std::string_view cell : cells(*header)) cols.push_back(classify(cell));
     while (cols.size() > 1 && cols.back().name.empty()) cols.pop_back();  // a trailing delimiter
-    if (several_tracks && above_header) {
+    if (several_tracks) {
+      if (!above_header || starts_with(*above_header, "#multi")) {
+        fail(file, header_line, 1, "a Tracker export of several tracks (#multi:) without their names; expected "
+                                   "each track's name on the line above the header, over its first column");
+      }
       const std::vector<std::string_view> names = cells(*above_header);
       for (std::size_t j = 0; j < cols.size(); ++j) {
         if (j < names.size() && !names[j].empty()) tracks.emplace_back(names[j]);
         cols[j].track = static_cast<int>(tracks.size());
+      }
+      // Names out of line with the columns would mix two tracks' x and y.
+      for (std::size_t j = 0; j < cols.size(); ++j) {
+        const Column& c = cols[j];
+        const auto twice = std::find_if(cols.begin(), cols.begin() + j, [&](const Column& b) {
+          return b.track == c.track && b.role == c.role;
+        });
+        const bool unnamed = c.track == 0 && c.role != Role::time && c.role != Role::other;
+        if (unnamed || (c.role != Role::other && c.track > 0 && twice != cols.begin() + j)) {
+          fail(file, header_line - 1, 1,
+               "the track names are out of line with the columns: column " + std::to_string(j + 1) + " (\"" +
+                   c.name + "\") " +
+                   (unnamed ? std::string("comes before the first name")
+                            : "is track \"" + tracks[c.track - 1] + "\"'s second \"" + c.name + "\"") +
+                   "; expected each track's name above its first column (Tracker's #multi: export)");
+        }
       }
     }
   } else {
@@ -437,11 +457,25 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
       fail(file, header_line, 1, "a Tracker export of " + std::to_string(tracks.size()) + " tracks (" + listed +
                                      "); expected the pendulum's chosen by its name (import --set, a scene's set)");
     }
-    const auto named = std::find_if(tracks.begin(), tracks.end(), [&](const std::string& t) { return lower(t) == lower(set); });
+    const auto is_set = [&](const std::string& t) { return lower(t) == lower(set); };
+    const auto named = std::find_if(tracks.begin(), tracks.end(), is_set);
     if (!set.empty() && named == tracks.end()) {
       fail(file, header_line, 1, "got the set \"" + set + "\"; expected one of this Tracker export's tracks: " + listed);
     }
+    if (!set.empty() && std::count_if(tracks.begin(), tracks.end(), is_set) > 1) {
+      fail(file, header_line, 1, "got the set \"" + set + "\", the name of more than one track (" + listed +
+                                     "); expected a name of one track (rename the others in Tracker)");
+    }
     track = set.empty() ? 1 : static_cast<int>(named - tracks.begin()) + 1;
+    const bool positions = find(cols, Role::x, -1, track) && find(cols, Role::y, -1, track);
+    if (!find(cols, Role::angle, -1, track) && !find(cols, Role::omega, -1, track) && !positions) {
+      std::string own;
+      for (const auto& c : cols) {
+        if (c.track == track) own += (own.empty() ? "\"" : ", \"") + c.name + "\"";
+      }
+      fail(file, header_line, 1, "the track \"" + tracks[track - 1] + "\" has the columns " + own +
+                                     "; expected its angle (θ), angular velocity (ω) or x and y");
+    }
   }
   // A PASCO run other than the first, by its number ("Run #2", "run 2" or "2").
   int run = 1;

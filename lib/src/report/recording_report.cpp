@@ -102,7 +102,7 @@ SignalTrace decimate_signal(const std::vector<double>& time, const std::vector<d
 RecordingRecord make_recording_record(const RecordingSummary& summary, const Recording* samples) {
   const SwingAnalysis& a = summary.swings;
   RecordingRecord r;
-  r.input = summary.file;
+  r.input = summary.set.empty() ? summary.file : summary.file + "/" + summary.set;  // as errors name a set
   r.format = recording_format_name(summary.format);
   r.rows = summary.rows;
   r.dropped = summary.dropped;

@@ -56,8 +56,9 @@ struct Recording {
   std::vector<double> periods;
   std::size_t rows = 0;     ///< data rows read
   std::size_t dropped = 0;  ///< rows skipped for an empty or NaN cell
-  /// The CSV inside a zip archive it was read from ("Gyroscope.csv"), or the
-  /// PASCO run asked for ("Run #2"); empty otherwise.
+  /// The CSV inside a zip archive it was read from ("Gyroscope.csv"), the
+  /// PASCO run asked for ("Run #2"), or the Tracker track read, as Tracker
+  /// names it ("mass B"); empty otherwise.
   std::string set;
 };
 
@@ -72,8 +73,9 @@ struct RecordingLimits {
 /// pendulum::InputError with path "file:line:column" (column in bytes, from
 /// 1): an unrecognised header, mixed delimiters, a truncated or overlong
 /// row, a cell that is not a number, time going backwards, a binary file.
-/// `set` picks a PASCO run ("Run #2", "run 2" or "2"; by default run 1),
-/// and is refused for a family that has one set only.
+/// `set` picks a PASCO run ("Run #2", "run 2" or "2"; by default run 1) or
+/// the track of a Tracker export of several ("#multi:"; by its name in any
+/// case, required there), and is refused for a family that has one set only.
 Recording parse_recording(std::string_view text, const std::string& file,
                           RecordingFormat format = RecordingFormat::automatic, const std::string& set = {});
 
@@ -81,7 +83,8 @@ Recording parse_recording(std::string_view text, const std::string& file,
 /// directory, a device or a pipe is refused) and parses it. A zip archive
 /// (phyphox's zip export) is unpacked in memory: `set` names the CSV inside
 /// to read, and by default the one with the best pendulum signal is read
-/// (docs/recordings.md); in a text file `set` picks a PASCO run (parse_recording).
+/// (docs/recordings.md); in a text file `set` picks a PASCO run or a Tracker
+/// track (parse_recording).
 Recording read_recording(const std::string& path, RecordingFormat format = RecordingFormat::automatic,
                          const RecordingLimits& limits = {}, const std::string& set = {});
 

@@ -150,14 +150,14 @@ struct RecordingSummary {
   std::size_t rows = 0;     ///< data rows read
   std::size_t dropped = 0;  ///< rows skipped for an empty or NaN cell
   SwingAnalysis swings;     ///< period, its uncertainty, periods, per-swing data, decay record
-  std::string set = {};     ///< the CSV read inside a zip archive; empty for a text file
+  std::string set = {};     ///< the set read (Recording::set); empty for a file of one set
 };
 
 /// Reads the recording at `path` (format from its header unless given) and
 /// analyses it: the one call a scene reader makes for a `timing` or
 /// `decay.data` that names a recording. Throws InputError naming the file
 /// (and line and column for a bad row). `set`: the CSV to read in a zip
-/// archive (read_recording).
+/// archive, a PASCO run or a Tracker track (read_recording).
 RecordingSummary analyse_recording(const std::string& path,
                                    RecordingFormat format = RecordingFormat::automatic,
                                    const SwingOptions& options = {},

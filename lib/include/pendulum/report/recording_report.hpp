@@ -38,7 +38,7 @@ SignalTrace decimate_signal(const std::vector<double>& time, const std::vector<d
 
 /// The report data of an analysed recording, in SI units (angles in rad).
 struct RecordingRecord {
-  std::string input;        ///< the file as the user named it
+  std::string input;        ///< the file as the user named it, "/set" after it for a set
   std::string format;       ///< the family read: "phyphox", ...
   std::string signal;       ///< what the signal is, in words
   std::size_t rows = 0, dropped = 0;

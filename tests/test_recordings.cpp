@@ -100,7 +100,8 @@ TEST_CASE("Each family's recording in data/recordings/ is read and reduced", "[r
       // track's angles are about the circle fitted to its marks, whose radius
       // from 600 marks of 1.5 mm on this arc scatters by 5.7 mm (0.7 %; 300
       // simulated tracks, scipy's least_squares on the geometric distances)
-      // and moves every amplitude alike: 3 sd, 0.0054 rad, more.
+      // and moves every amplitude alike: 3 sd, 0.0054 rad, more (0.0075 =
+      // 0.002 + 0.0054, rounded up).
       {"phyphox_gyroscope.csv", RecordingFormat::phyphox, SignalKind::angular_rate, 0.002},
       {"phyphox_pendulum_raw.tsv", RecordingFormat::phyphox, SignalKind::angular_rate, 0.002},
       {"phyphox_linear_acceleration.csv", RecordingFormat::phyphox, SignalKind::linear_acceleration, 0.004},

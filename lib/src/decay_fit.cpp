@@ -114,6 +114,7 @@ class CompressedDecayCost final : public ceres::CostFunction {
     if (jacobians && jacobians[0]) {
       decrement_ = q.squaredNorm();
       rr_ = sums_.rr;
+      std::copy(parameters[0], parameters[0] + 3, judged_.begin());
       Eigen::Map<Eigen::Matrix<double, 4, 3, Eigen::RowMajor>> jac(jacobians[0]);
       jac.topRows<3>() = r_factor;
       jac.row(3).setZero();
@@ -126,10 +127,13 @@ class CompressedDecayCost final : public ceres::CostFunction {
   /// would still remove, and |r|^2.
   double decrement() const { return decrement_; }
   double rr() const { return rr_; }
+  /// That point: the parameters NewtonDecrement judged.
+  const std::array<double, 3>& judged() const { return judged_; }
 
  private:
   const Record& record_;
   mutable double decrement_ = 0.0, rr_ = 0.0;
+  mutable std::array<double, 3> judged_{};
   mutable bool cached_ = false;
   mutable std::array<double, 3> cached_p_{};
   mutable kernel::DecaySums sums_;
@@ -247,6 +251,10 @@ Solution solve(const DecayData& data, DecayModel model) {
   NewtonDecrement<CompressedDecayCost> converged(*cost, static_cast<int>(data.times.size() - free.size()));
   options.callbacks.push_back(&converged);
   ceres::Solve(options, &problem, &s.summary);
+  // Ceres returns its least cost, which rounding can put at an earlier
+  // point than the one the stopping rule judged (period_fit.cpp): the fit
+  // ends where it was judged.
+  if (s.summary.termination_type == ceres::USER_SUCCESS) s.p = cost->judged();
   const kernel::DecaySums& sums = cost->sums_at(s.p.data());
   s.covariance = covariance(sums, free);
   s.unweighted_squares = sums.dd;

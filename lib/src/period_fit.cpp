@@ -32,18 +32,19 @@ struct NormalSums {
 /// varies q alone, on dual numbers of P - 1 components, against the
 /// residuals r_k = (s(q) h_k(q) - T_k) w_k, whose derivatives are
 /// dr_k = w_k (h_k s' + s h'_k) with s' = (a - 2 s b)/B,
-/// a = sum w^2 T h', b = sum w^2 h h'. One pass gives h, h' and the four
-/// sums, a second r and dr and the normal sums (forming r^T r as C - s A
-/// instead would cancel to 1e-7 of it).
+/// a = sum w^2 T h', b = sum w^2 h h'. A step is a scalar pass for each
+/// observation's h on dual numbers, then two passes on kLanes observations
+/// at a time (vector instructions): one for the four sums, one for r, dr and
+/// the normal sums (forming r^T r as C - s A instead would cancel to 1e-7 of
+/// it). The columns are padded to whole lanes with observations of weight 0.
 ///
 /// The parameters reach the corrections through the swing's length alone
 /// (period_model.hpp), so when none of the corrections the apparatus applies
 /// reads the length (corrections_read_length, asked once per fit), each
-/// observation's T/T0 is the same at every step: it is composed once, and an
-/// evaluation is h = c sqrt(l). Both passes then run on kLanes observations
-/// at a time (vector instructions), the first bound by its square roots and
-/// divisions, under which its sums cost nothing; the columns are padded to
-/// whole lanes with observations of weight 0.
+/// observation's T/T0 is the same at every step: it is composed once, the
+/// scalar pass gives only the length l(q), and the first vector pass takes
+/// h = T0(l, g = 1) T/T0 and h' = h l'/(2 l), bound by the square roots and
+/// divisions, under which its sums cost nothing.
 template <class Model>
 class ProjectedPeriods {
  public:
@@ -69,11 +70,9 @@ class ProjectedPeriods {
       columns_(k, kOmega) = swing.omega, columns_(k, kTrialDuration) = swing.trial_duration;
       columns_(k, kPeriod) = obs[k].period;
       columns_(k, kWeight) = (*problem.weights)[k];
-      // h / sqrt(l) at g = 1 (ideal_period, Eq. 3).
-      columns_(k, kScale) =
-          2.0 * kPi *
-          (fixed_ratio_ ? 1.0 + Model::composition(app, Model::swing_at(start.data(), swing, app), amplitude[k]).total
-                        : 1.0);
+      if (fixed_ratio_) {
+        columns_(k, kRatio) = 1.0 + Model::composition(app, Model::swing_at(start.data(), swing, app), amplitude[k]).total;
+      }
     }
   }
 
@@ -151,9 +150,9 @@ class ProjectedPeriods {
   using Lanes = Eigen::Array<double, kLanes, 1>;
 
   /// The columns of columns_, one row per observation: the measured swing
-  /// (Model::swing), the period, the weight and h / sqrt(l) at g = 1; then
-  /// h and, per parameter after g, h' at the cached q.
-  enum Column { kLength, kAmplitude, kOmega, kTrialDuration, kPeriod, kWeight, kScale, kH, kDh, kColumns = kDh + Q };
+  /// (Model::swing), the period, the weight and T/T0 (when fixed_ratio_);
+  /// then h and, per parameter after g, h' at the cached q.
+  enum Column { kLength, kAmplitude, kOmega, kTrialDuration, kPeriod, kWeight, kRatio, kH, kDh, kColumns = kDh + Q };
 
   auto lanes(int column, Eigen::Index k) const { return columns_.col(column).template segment<kLanes>(k); }
 
@@ -171,7 +170,7 @@ class ProjectedPeriods {
 
   /// Each observation's h and h' at p (g = 1) into their columns, and the
   /// sums A, B, a, b. With T/T0 fixed, the lengths on dual numbers first,
-  /// then h = c sqrt(l) and h' = c l' / (2 sqrt(l)) with the sums.
+  /// then h = T0(l) T/T0 and h' = h l' / (2 l) with the sums.
   template <bool kFixedRatio>
   ModelSums model_sums(const std::array<Jet, P>& p) const {
     auto h = columns_.col(kH);
@@ -186,7 +185,7 @@ class ProjectedPeriods {
       h(k) = hk.a;
       dh.row(k) = hk.v.transpose();
     }
-    // The padding's h: 0 = 0 sqrt(1) when h is c sqrt(l) (its c is 0).
+    // The padding's h: 0 = T0(1) x 0 when h is T0(l) T/T0 (its T/T0 is 0).
     if constexpr (kFixedRatio) h.tail(columns_.rows() - count_).setOnes();
     Lanes big_a = Lanes::Zero(), big_b = Lanes::Zero();
     std::array<Lanes, Q> a, b;
@@ -196,12 +195,12 @@ class ProjectedPeriods {
       std::array<Lanes, Q> dhk;
       for (int i = 0; i < Q; ++i) dhk[i] = lanes(kDh + i, k);
       if constexpr (kFixedRatio) {
-        const Lanes c = lanes(kScale, k), root = hk.sqrt();  // Eq. (3)
-        const Lanes half_c_over_root = 0.5 * c / root;
-        hk = c * root;
+        const Lanes length = hk;
+        hk = ideal_period(length, 1.0) * lanes(kRatio, k);
+        const Lanes per_length = 0.5 * hk / length;  // dT0/dl = T0/(2 l)
         h.template segment<kLanes>(k) = hk;
         for (int i = 0; i < Q; ++i) {
-          dhk[i] *= half_c_over_root;
+          dhk[i] *= per_length;
           dh.col(i).template segment<kLanes>(k) = dhk[i];
         }
       }
@@ -262,6 +261,7 @@ class CompressedPeriodResiduals : public ceres::CostFunction {
     if (jacobians && jacobians[0]) {
       decrement_ = q.squaredNorm();
       rr_ = s.rr;
+      std::copy(parameters[0], parameters[0] + Q, judged_.begin());
       // Ceres's row-major (Q + 1) x Q block (one column: the same either way).
       constexpr int kLayout = Q == 1 ? Eigen::ColMajor : Eigen::RowMajor;
       Eigen::Map<Eigen::Matrix<double, Q + 1, Q, kLayout>> jac(jacobians[0]);
@@ -276,10 +276,13 @@ class CompressedPeriodResiduals : public ceres::CostFunction {
   /// remove, and |r|^2 (NewtonDecrement).
   double decrement() const { return decrement_; }
   double rr() const { return rr_; }
+  /// That point: the parameters NewtonDecrement judged.
+  const std::array<double, Q>& judged() const { return judged_; }
 
  private:
   const ProjectedPeriods<Model>& projected_;
   mutable double decrement_ = 0.0, rr_ = 0.0;
+  mutable std::array<double, Q> judged_{};
 };
 
 }  // namespace
@@ -313,10 +316,11 @@ PeriodFitSolution fit_periods(const PeriodFitProblem<Model>& problem,
     options.linear_solver_type = ceres::DENSE_QR;  // on the Q + 1 compressed residuals
     options.max_num_iterations = 200;
     // Near the optimum a Gauss-Newton step lowers the cost by less than the
-    // rounding of the periods moves it (eps T w per residual); a monotonic
-    // trust region then rejects such steps at random and shrinks until its
-    // parameter tolerance ends the fit (10 iterations instead of 3 on a
-    // 10-pivot scan). Measured against the cost a few steps back, they pass.
+    // rounding of the periods moves it (u T w per residual, u = 2^-53); a
+    // monotonic trust region then rejects such steps at random and shrinks
+    // until its parameter tolerance ends the fit (10 iterations instead of 3
+    // on a 10-pivot scan). Measured against the cost a few steps back, they
+    // pass.
     options.use_nonmonotonic_steps = true;
     // NewtonDecrement decides; Ceres's tolerances, at the last digits, only
     // stop a stalled fit.
@@ -334,6 +338,10 @@ PeriodFitSolution fit_periods(const PeriodFitProblem<Model>& problem,
         summary.termination_type == ceres::CONVERGENCE || summary.termination_type == ceres::USER_SUCCESS;
     out.termination = summary.message;
     out.iterations = static_cast<int>(summary.iterations.size()) - 1;
+    // Ceres returns the point of least cost, which the same rounding can make
+    // an earlier one than the point the stopping rule judged (up to 3e-5 of
+    // a standard uncertainty away in the tests): the fit ends where it was judged.
+    if (summary.termination_type == ceres::USER_SUCCESS) q = residuals.judged();
   }
   const typename ProjectedPeriods<Model>::Point& best = projected.at(q.data());
   out.parameters.assign(P, 0.0);

@@ -5,25 +5,20 @@
 
 namespace pendulum {
 
-std::string one_line(const std::string& s, std::size_t max) {
+std::string one_line(const std::string& s, std::size_t max, bool keep_utf8) {
   std::string out;
   for (const unsigned char c : s) {
-    if (c >= 0x20 && c < 0x7f) {
+    if ((c >= 0x20 && c < 0x7f) || (keep_utf8 && c >= 0x80)) {
       out += static_cast<char>(c);
     } else {
       static const char hex[] = "0123456789abcdef";
       out += {'\\', 'x', hex[c >> 4], hex[c & 15]};
     }
   }
-  return out.size() > max ? out.substr(0, max - 3) + "..." : out;
-}
-
-std::string printable(const std::string& s, std::size_t max) {
-  std::string out = s;
-  for (char& c : out) {
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
-  }
-  return out.size() > max ? out.substr(0, max - 3) + "..." : out;
+  if (out.size() <= max) return out;
+  std::size_t cut = max - 3;
+  while (cut > 0 && (static_cast<unsigned char>(out[cut]) & 0xc0) == 0x80) --cut;  // a UTF-8 continuation byte
+  return out.substr(0, cut) + "...";
 }
 
 std::string format_number(double x, int digits) {

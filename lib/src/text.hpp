@@ -6,14 +6,11 @@
 
 namespace pendulum {
 
-/// `s` fit for a one-line message: ASCII only, control and non-ASCII bytes
-/// as \xNN, cut to `max` characters.
-std::string one_line(const std::string& s, std::size_t max);
-
-/// Text from a file (a header cell, a name in an archive) fit for a one-line
-/// message: control bytes as '?', UTF-8 kept (a header's θ or µs), cut to
-/// `max` characters with "...".
-std::string printable(const std::string& s, std::size_t max);
+/// `s` fit for a one-line message: control bytes as \xNN, and the bytes of
+/// other characters than ASCII too unless `keep_utf8` (a recording's header
+/// says θ or µs), cut to at most `max` bytes with "..." (at a character's
+/// start).
+std::string one_line(const std::string& s, std::size_t max, bool keep_utf8 = false);
 
 /// `x` with `digits` significant digits.
 std::string format_number(double x, int digits = 10);

@@ -44,7 +44,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// Messages quote the file's own text (header cells, names): one line.
 [[noreturn]] void fail(const std::string& file, std::size_t line, std::size_t column,
                        const std::string& message) {
-  throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(column), printable(message, 800));
+  throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(column), one_line(message, 800, true));
 }
 
 /// What a header cell names.
@@ -254,7 +254,7 @@ Layout detect(RecordingFormat forced, const std::vector<Column>& cols, bool prea
   }
   std::string names;
   for (const auto& c : cols) {
-    if (names.size() < 300) names += (names.empty() ? "\"" : ", \"") + printable(c.name, 40) + "\"";
+    if (names.size() < 300) names += (names.empty() ? "\"" : ", \"") + one_line(c.name, 40, true) + "\"";
   }
   fail(file, header_line, 1,
        "unrecognised header " + names +

@@ -78,14 +78,14 @@ Recording read_zip_recording(std::string_view bytes, const std::string& file, Re
     }
     const std::string name = st.name;
     if (name.rfind("meta/", 0) == 0 || !ends_with_csv(name)) continue;
-    if (names.size() < 300) names += (names.empty() ? "\"" : ", \"") + printable(name, 80) + "\"";
+    if (names.size() < 300) names += (names.empty() ? "\"" : ", \"") + one_line(name, 80, true) + "\"";
     if (!set.empty() && name != set && name != set + ".csv") continue;
     sets.push_back({static_cast<zip_uint64_t>(i), name, st.size});
   }
   if (sets.empty()) {
     fail(set.empty() ? "a zip archive with no CSV set outside meta/; expected phyphox's zip export "
                        "(Gyroscope.csv, Accelerometer.csv, ...)"
-                     : "a zip archive with no set \"" + printable(set, 80) + "\"; expected one of its CSV sets: " + names);
+                     : "a zip archive with no set \"" + one_line(set, 80, true) + "\"; expected one of its CSV sets: " + names);
   }
   // Stated sizes first: a zip bomb is refused before anything is unpacked.
   zip_uint64_t total = 0;
@@ -98,7 +98,7 @@ Recording read_zip_recording(std::string_view bytes, const std::string& file, Re
   std::optional<Recording> best;
   std::string refused;
   for (const Entry& e : sets) {
-    const std::string name = file + "/" + printable(e.name, 80);
+    const std::string name = file + "/" + one_line(e.name, 80, true);
     std::string text(e.size, '\0');
     std::unique_ptr<zip_file_t, int (*)(zip_file_t*)> in(zip_fopen_index(archive.get(), e.index, 0), zip_fclose);
     // One byte more than stated: a set longer than its header says is damaged too.
@@ -106,7 +106,7 @@ Recording read_zip_recording(std::string_view bytes, const std::string& file, Re
     if (!in || zip_fread(in.get(), text.data(), e.size) != static_cast<zip_int64_t>(e.size) ||
         zip_fread(in.get(), &extra, 1) != 0) {
       const char* why = in ? zip_file_strerror(in.get()) : zip_error_strerror(zip_get_error(archive.get()));
-      fail("a damaged zip archive (" + printable(e.name, 80) + ": " + why + "); expected phyphox's zip export, whole");
+      fail("a damaged zip archive (" + one_line(e.name, 80, true) + ": " + why + "); expected phyphox's zip export, whole");
     }
     try {
       Recording r = parse_recording(text, name, format);

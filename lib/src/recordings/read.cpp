@@ -329,6 +329,19 @@ inline const char* fast_number(const char* s, const char* e, char mark, double& 
   return e - s >= 64 ? parse_decimal<false>(s, e, mark, v) : parse_decimal<true>(s, e, mark, v);
 }
 
+/// Throws, naming its line and column, if [text, text + size) holds a NUL byte.
+void refuse_binary(std::string_view text, std::size_t size, const std::string& file) {
+  if (const void* nul = std::memchr(text.data(), '\0', size)) {
+    const std::size_t at = static_cast<const char*>(nul) - text.data();
+    const std::size_t line = 1 + std::count(text.data(), text.data() + at, '\n');
+    const std::size_t bol = text.substr(0, at).rfind('\n');
+    fail(file, line, at - (bol == std::string_view::npos ? 0 : bol + 1) + 1,
+         "a NUL byte: this is a binary file, not a text export");
+  }
+}
+
+Recording parse_text(std::string_view text, const std::string& file, RecordingFormat format, const std::string& set);
+
 }  // namespace
 
 Recording parse_recording(std::string_view text, const std::string& file, RecordingFormat format,
@@ -336,13 +349,22 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
   if (looks_like_zip(text)) {
     fail(file, 1, 1, "a zip archive; expected a text export here (a zip is unpacked when read from its file: read_recording)");
   }
-  if (const void* nul = std::memchr(text.data(), '\0', text.size())) {
-    const std::size_t at = static_cast<const char*>(nul) - text.data();
-    const std::size_t line = 1 + std::count(text.data(), text.data() + at, '\n');
-    const std::size_t bol = text.substr(0, at).rfind('\n');
-    fail(file, line, at - (bol == std::string_view::npos ? 0 : bol + 1) + 1,
-         "a NUL byte: this is a binary file, not a text export");
+  // A binary file is named as such wherever its NUL byte is. parse_text
+  // checks the lines before the data; in the data a NUL fits no cell, so the
+  // rows refuse it, and the text is searched for it only then (a search of
+  // the whole text up front took 3 % of reading a large file).
+  try {
+    return parse_text(text, file, format, set);
+  } catch (const InputError&) {
+    refuse_binary(text, text.size(), file);
+    throw;
   }
+}
+
+namespace {
+
+Recording parse_text(std::string_view text, const std::string& file, RecordingFormat format, const std::string& set) {
+  const std::string_view original = text;
   if (starts_with(text, "\xef\xbb\xbf")) text.remove_prefix(3);  // UTF-8 byte-order mark
 
   const char* const begin = text.data();
@@ -385,6 +407,7 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
     p = e + (e < end);
     if (line_no > 100) fail(file, line_no, 1, "no numbers in the first 100 lines; expected a data export");
   }
+  refuse_binary(original, p - original.data(), file);  // the header and what precedes it
   if (p >= end) fail(file, line_no + 1, 1, "no data rows; expected a recording");
   const std::string_view first_data(p, line_end(p) - p);
 
@@ -561,9 +584,8 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
       bool missing = false;
       if (plain) {
         time = cells[layout.time] * layout.time_scale;
-        for (std::size_t j = 0; j < ncols; ++j) {
-          if (target[j] >= 0) row[target[j]] = cells[j];
-        }
+        for (std::size_t k = 0; k < layout.channels.size(); ++k) row[k] = cells[layout.channels[k]];
+        if (layout.period) row[period_target] = cells[*layout.period];
       } else if (is_blank(p, e)) {
         continue;
       } else {
@@ -733,6 +755,8 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
   }
   return rec;
 }
+
+}  // namespace
 
 Recording read_recording(const std::string& path, RecordingFormat format, const RecordingLimits& limits,
                          const std::string& set) {

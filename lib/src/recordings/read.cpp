@@ -537,30 +537,24 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
   rec.kind = layout.kind;
   for (std::size_t j : layout.channels) rec.channel_names.push_back(cols[j].name);
   rec.channels.resize(layout.channels.size());
-  // Where each column goes: -2 ignored, -1 time, k channel k.
-  std::vector<int> target(cols.size(), -2);
-  target[layout.time] = -1;
-  for (std::size_t k = 0; k < layout.channels.size(); ++k) target[layout.channels[k]] = static_cast<int>(k);
-  const int period_target = static_cast<int>(layout.channels.size());
-  if (layout.period) target[*layout.period] = period_target;
+  // The columns a row needs: without its time or a channel it is dropped.
+  std::vector<std::size_t> needed{layout.time};
+  needed.insert(needed.end(), layout.channels.begin(), layout.channels.end());
   const char other_delimiters[] = {'\t', ';', delimiter == ',' ? '\0' : ','};
   const std::size_t ncols = cols.size();
   const char mark = decimal_comma ? ',' : '.';
 
-  // The rows of [p, end), whose first line is line_no, stored from index
-  // `offset` on (the caller sized the columns for every line).
+  // The rows of [p, end), whose first line is line_no.
   struct Slice {
     std::size_t rows = 0, dropped = 0;
     std::vector<double> time, periods;
     std::vector<std::vector<double>> channels;
   };
   auto parse_rows = [&](const char* p, const char* end, std::size_t line_no, Slice& out) {
-    std::vector<double> row(layout.channels.size() + 1);
-
     double last_time = -std::numeric_limits<double>::infinity();
     std::size_t last_time_line = 0;
     char buffer[64];
-    std::vector<double> cells(ncols);
+    std::vector<double> cells(ncols);  // this row's values, NaN for an empty or "NaN" cell
     // The common row: plain numbers between single delimiters, read up to its
     // newline, which it returns (no search for the line's end first). Anything
     // else (quotes, spaces, empty or NaN cells, errors) takes the general path.
@@ -575,21 +569,9 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
       q += q < end && *q == '\r';
       return q >= end || *q == '\n' ? q : nullptr;
     };
-    for (const char* e = nullptr; p < end; p = e < end ? e + 1 : end, ++line_no) {
-      const char* plain = plain_row(p);
-      e = plain ? plain : line_end(p);
-      const char* line_begin = p;
-      auto column = [&](const char* at) { return static_cast<std::size_t>(at - line_begin) + 1; };
-      double time = kNaN;
-      bool missing = false;
-      if (plain) {
-        time = cells[layout.time] * layout.time_scale;
-        for (std::size_t k = 0; k < layout.channels.size(); ++k) row[k] = cells[layout.channels[k]];
-        if (layout.period) row[period_target] = cells[*layout.period];
-      } else if (is_blank(p, e)) {
-        continue;
-      } else {
-      std::fill(row.begin(), row.end(), kNaN);
+    // The line [p, e) cell by cell, with the errors named.
+    auto general_row = [&](const char* p, const char* e) {
+      auto column = [&](const char* at) { return static_cast<std::size_t>(at - p) + 1; };
       const char* q = p;
       for (std::size_t j = 0; j < ncols; ++j) {
         // One cell: optional spaces and quotes around a number, "NaN" or nothing.
@@ -598,7 +580,7 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
         const char* num_end = q;
         if (q < e && *q != delimiter && *q != '\r') {
           const char* s = q + (*q == '+');
-          const char* stop = fast_number(s, e, decimal_comma ? ',' : '.', v);
+          const char* stop = fast_number(s, e, mark, v);
           auto ends_cell = [&](const char* at) {
             return at >= e || *at == delimiter || *at == '"' || *at == ' ' || *at == '\r';
           };
@@ -641,9 +623,7 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
         }
         q = num_end;
         while (q < e && (*q == ' ' || *q == '"' || *q == '\r')) ++q;
-        if (std::isnan(v)) missing |= target[j] >= -1 && target[j] != period_target;
-        if (target[j] == -1) time = v * layout.time_scale;
-        else if (target[j] >= 0) row[target[j]] = v;
+        cells[j] = v;
         if (j + 1 < ncols) {
           if (q >= e || *q != delimiter) {
             fail(file, line_no, column(q),
@@ -657,15 +637,26 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
                    " columns of the header (mixed delimiters, or a decimal comma in a comma-separated file?)");
         }
       }
+    };
+    for (const char* e = nullptr; p < end; p = e < end ? e + 1 : end, ++line_no) {
+      const char* plain = plain_row(p);
+      if (plain) {
+        e = plain;
+      } else {
+        e = line_end(p);
+        if (is_blank(p, e)) continue;
+        general_row(p, e);
       }
       ++out.rows;
-      if (layout.period && !std::isnan(row[period_target])) {
-        out.periods.push_back(row[period_target] * layout.time_scale);
+      if (layout.period && !std::isnan(cells[*layout.period])) {
+        out.periods.push_back(cells[*layout.period] * layout.time_scale);
       }
-      if (missing || std::isnan(time)) {
+      // The fast path's numbers are never NaN: only a general row can miss one.
+      if (!plain && std::any_of(needed.begin(), needed.end(), [&](std::size_t j) { return std::isnan(cells[j]); })) {
         ++out.dropped;
         continue;
       }
+      const double time = cells[layout.time] * layout.time_scale;
       if (!(time > last_time)) {
         fail(file, line_no, 1,
              "time going backwards: " + std::to_string(time) + " s after " + std::to_string(last_time) +
@@ -675,7 +666,9 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
       last_time = time;
       last_time_line = line_no;
       out.time.push_back(time);
-      for (std::size_t k = 0; k < out.channels.size(); ++k) out.channels[k].push_back(row[k] * layout.channel_scale);
+      for (std::size_t k = 0; k < out.channels.size(); ++k) {
+        out.channels[k].push_back(cells[layout.channels[k]] * layout.channel_scale);
+      }
     }
   };
 

@@ -340,10 +340,10 @@ TEST_CASE("A gyroscope's amplitudes follow the exact ones by the energy relation
              Catch::Matchers::WithinAbs(2.0 * M_PI / sim.omega0, 3.0 * a.period.uncertainty + 4.4e-7 * 1.8));
 }
 
-TEST_CASE("A large file is read in slices with the same numbers and line numbers", "[recordings]") {
-  // 450 000 rows (about 18 MiB, so more than one slice of 8 MiB): the values
-  // are read exactly (i/1000 s and i/8 rad/s are exact in decimal), and a
-  // bad cell in the last slice is reported at its own line.
+TEST_CASE("A large file is read with exact numbers and line numbers", "[recordings]") {
+  // 450 000 rows (about 18 MiB): the values are read exactly (i/1000 s and
+  // i/8 rad/s are exact in decimal), and a bad cell near the end is reported
+  // at its own line.
   std::string text = "\"Time (s)\",\"Gyroscope x (rad/s)\",\"Gyroscope y (rad/s)\",\"Gyroscope z (rad/s)\"\n";
   const int n = 450000;
   char row[96];

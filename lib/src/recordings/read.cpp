@@ -10,13 +10,11 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <exception>
 #include <cstdio>
 #include <cstdint>
 #include <cstring>
 #include <limits>
 #include <optional>
-#include <thread>
 
 #include "pendulum/input_error.hpp"
 #include "../text.hpp"
@@ -547,13 +545,8 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
   const std::size_t ncols = cols.size();
   const char mark = decimal_comma ? ',' : '.';
 
-  // The rows of [p, end), whose first line is line_no.
-  struct Slice {
-    std::size_t rows = 0, dropped = 0;
-    std::vector<double> time, periods;
-    std::vector<std::vector<double>> channels;
-  };
-  auto parse_rows = [&](const char* p, const char* end, std::size_t line_no, Slice& out) {
+  // The rows of [p, end), whose first line is line_no, into rec.
+  auto parse_rows = [&](const char* p, const char* end, std::size_t line_no) {
     double last_time = -std::numeric_limits<double>::infinity();
     std::size_t last_time_line = 0;
     char buffer[64];
@@ -650,13 +643,13 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
         if (is_blank(p, e)) continue;
         general_row(p, e);
       }
-      ++out.rows;
+      ++rec.rows;
       if (layout.period && !std::isnan(cells[*layout.period])) {
-        out.periods.push_back(cells[*layout.period] * layout.time_scale);
+        rec.periods.push_back(cells[*layout.period] * layout.time_scale);
       }
       // The fast path's numbers are never NaN: only a general row can miss one.
       if (!plain && std::any_of(needed.begin(), needed.end(), [&](std::size_t j) { return std::isnan(cells[j]); })) {
-        ++out.dropped;
+        ++rec.dropped;
         continue;
       }
       const double time = cells[layout.time] * layout.time_scale;
@@ -668,79 +661,25 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
       if (!std::isfinite(time)) fail(file, line_no, 1, "an infinite time");
       last_time = time;
       last_time_line = line_no;
-      out.time.push_back(time);
-      for (std::size_t k = 0; k < out.channels.size(); ++k) {
-        out.channels[k].push_back(cells[layout.channels[k]] * layout.channel_scale);
+      rec.time.push_back(time);
+      for (std::size_t k = 0; k < rec.channels.size(); ++k) {
+        rec.channels[k].push_back(cells[layout.channels[k]] * layout.channel_scale);
       }
     }
   };
 
-  // Slices of at least 8 MiB, one per core (up to 4), parsed at once; the
-  // first slice's columns are reserved for the whole file and take the others.
-  const char* const data = p;
-  const unsigned cores = std::max(1u, std::min(4u, std::thread::hardware_concurrency()));
-  const std::size_t slices = std::clamp<std::size_t>(static_cast<std::size_t>(end - data) >> 23, 1, cores);
-  std::vector<const char*> cut{data};
-  for (std::size_t k = 1; k < slices; ++k) {
-    const char* c = line_end(data + (end - data) * k / slices);
-    cut.push_back(c < end ? c + 1 : end);
-  }
-  cut.push_back(end);
+  // One allocation per column: rows from the first row's length, 5 % spare.
+  // One thread: the reader's figure of merit is the CPU time it takes, and
+  // on a shared machine threads add to it (docs/recordings.md, Speed).
   const double bytes_per_row = static_cast<double>(std::max<std::size_t>(first_data.size() + 1, 4));
-  std::vector<Slice> parts(slices);
-  for (std::size_t k = 0; k < slices; ++k) {
-    // One allocation per column: rows from the first row's length, 5 % spare.
-    const double span = static_cast<double>(k == 0 ? end - cut[0] : cut[k + 1] - cut[k]);
-    const std::size_t guess = static_cast<std::size_t>(1.05 * span / bytes_per_row) + 16;
-    parts[k].time.reserve(guess);
-    parts[k].channels.resize(layout.channels.size());
-    for (auto& c : parts[k].channels) c.reserve(guess);
-    detail::huge_pages(parts[k].time);
-    for (auto& c : parts[k].channels) detail::huge_pages(c);
+  const std::size_t guess = static_cast<std::size_t>(1.05 * static_cast<double>(end - p) / bytes_per_row) + 16;
+  rec.time.reserve(guess);
+  detail::huge_pages(rec.time);
+  for (auto& c : rec.channels) {
+    c.reserve(guess);
+    detail::huge_pages(c);
   }
-  std::vector<std::exception_ptr> errors(slices);
-  std::vector<std::thread> pool;
-  auto work = [&](std::size_t k) {
-    try {
-      parse_rows(cut[k], cut[k + 1], line_no, parts[k]);  // line numbers right for slice 0 only
-    } catch (...) {
-      errors[k] = std::current_exception();
-    }
-  };
-  for (std::size_t k = 1; k < slices; ++k) pool.emplace_back(work, k);
-  work(0);
-  for (auto& t : pool) t.join();
-  // The first line of slice k, counted only when a message needs it.
-  auto first_line = [&](std::size_t k) {
-    return line_no + static_cast<std::size_t>(std::count(data, cut[k], '\n'));
-  };
-  for (std::size_t k = 0; k < slices; ++k) {
-    if (!errors[k]) continue;
-    if (k > 0) {
-      Slice again;
-      again.channels.resize(layout.channels.size());
-      parse_rows(cut[k], cut[k + 1], first_line(k), again);  // throws with the right line
-    }
-    std::rethrow_exception(errors[k]);
-  }
-  rec.time = std::move(parts[0].time);
-  rec.channels = std::move(parts[0].channels);
-  for (std::size_t k = 0; k < slices; ++k) {
-    const Slice& s = parts[k];
-    if (k > 0 && !s.time.empty()) {
-      if (!rec.time.empty() && !(s.time.front() > rec.time.back())) {
-        fail(file, first_line(k), 1, "time going backwards: " + std::to_string(s.time.front()) + " s after " +
-                                         std::to_string(rec.time.back()) + " s; expected increasing times");
-      }
-      rec.time.insert(rec.time.end(), s.time.begin(), s.time.end());
-      for (std::size_t c = 0; c < rec.channels.size(); ++c) {
-        rec.channels[c].insert(rec.channels[c].end(), s.channels[c].begin(), s.channels[c].end());
-      }
-    }
-    rec.rows += s.rows;
-    rec.dropped += s.dropped;
-    rec.periods.insert(rec.periods.end(), s.periods.begin(), s.periods.end());
-  }
+  parse_rows(p, end, line_no);
   if (layout.angle_unit_unknown) {
     // Tracker writes "θ" without its unit: more than a turn means degrees.
     const auto& a = rec.channels[0];

@@ -231,6 +231,11 @@ TEST_CASE("Readers name the file, line and column of a bad row", "[recordings]")
   CHECK_THROWS_WITH(parse_recording("Time (s);Gyroscope x (rad/s)\n1;2\n2\t3\n", "f"),
                     Contains("f:3:2") && Contains("mixed delimiters"));
   CHECK_THROWS_WITH(parse_recording(h + "1,2\n" + std::string("\x00\x01", 2), "f"), Contains("binary"));
+  // A NUL in a cell, or after another fault: the file is named binary at its NUL.
+  CHECK_THROWS_WITH(parse_recording(h + "1,2\n2,3\n3," + std::string("\x00", 1) + "4\n", "f"),
+                    Contains("f:4:3") && Contains("a NUL byte"));
+  CHECK_THROWS_WITH(parse_recording(h + "1,2\n0.5,3\n3,4\n4," + std::string("\x00", 1) + "\n", "f"),
+                    Contains("f:5:3") && Contains("a NUL byte"));
   CHECK_THROWS_WITH(parse_recording("a,b\n1,2\n", "f"), Contains("unrecognised header"));
   RecordingLimits small;
   small.max_bytes = 10;

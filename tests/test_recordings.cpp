@@ -232,6 +232,11 @@ TEST_CASE("Readers name the file, line and column of a bad row", "[recordings]")
   CHECK_THROWS_WITH(parse_recording("Time (s);Gyroscope x (rad/s)\n1;2\n2\t3\n", "f"),
                     Contains("f:3:2") && Contains("mixed delimiters"));
   CHECK_THROWS_WITH(parse_recording(h + "1,2\n" + std::string("\x00\x01", 2), "f"), Contains("binary"));
+  // A NUL in a cell, or after another fault: the file is named binary at its NUL.
+  CHECK_THROWS_WITH(parse_recording(h + "1,2\n2,3\n3," + std::string("\x00", 1) + "4\n", "f"),
+                    Contains("f:4:3") && Contains("a NUL byte"));
+  CHECK_THROWS_WITH(parse_recording(h + "1,2\n0.5,3\n3,4\n4," + std::string("\x00", 1) + "\n", "f"),
+                    Contains("f:5:3") && Contains("a NUL byte"));
   CHECK_THROWS_WITH(parse_recording("a,b\n1,2\n", "f"), Contains("unrecognised header"));
   RecordingLimits small;
   small.max_bytes = 10;
@@ -341,10 +346,10 @@ TEST_CASE("A gyroscope's amplitudes follow the exact ones by the energy relation
              Catch::Matchers::WithinAbs(2.0 * M_PI / sim.omega0, 3.0 * a.period.uncertainty + 4.4e-7 * 1.8));
 }
 
-TEST_CASE("A large file is read in slices with the same numbers and line numbers", "[recordings]") {
-  // 450 000 rows (about 18 MiB, so more than one slice of 8 MiB): the values
-  // are read exactly (i/1000 s and i/8 rad/s are exact in decimal), and a
-  // bad cell in the last slice is reported at its own line.
+TEST_CASE("A large file is read with exact numbers and line numbers", "[recordings]") {
+  // 450 000 rows (about 18 MiB): the values are read exactly (i/1000 s and
+  // i/8 rad/s are exact in decimal), and a bad cell near the end is reported
+  // at its own line.
   std::string text = "\"Time (s)\",\"Gyroscope x (rad/s)\",\"Gyroscope y (rad/s)\",\"Gyroscope z (rad/s)\"\n";
   const int n = 450000;
   char row[96];

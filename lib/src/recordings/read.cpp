@@ -10,13 +10,11 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <exception>
 #include <cstdio>
 #include <cstdint>
 #include <cstring>
 #include <limits>
 #include <optional>
-#include <thread>
 
 #include "pendulum/input_error.hpp"
 #include "../text.hpp"
@@ -308,6 +306,9 @@ inline const char* parse_decimal(const char* s, const char* e, char mark, double
     p += (!kBounded || p < e) && (*p == '-' || *p == '+');
     const char* first = p;
     int x = 0;
+    if (!kBounded && digit(p, first) && digit(p + 1, first) && !digit(p + 2, first)) {
+      x = (p[0] - '0') * 10 + (p[1] - '0'), p += 2;  // the common two digits, without a loop
+    }
     for (; digit(p, first) && p - first < 6; ++p) x = x * 10 + (*p - '0');
     if (p == first) return nullptr;
     power += minus ? -x : x;
@@ -329,6 +330,19 @@ inline const char* fast_number(const char* s, const char* e, char mark, double& 
   return e - s >= 64 ? parse_decimal<false>(s, e, mark, v) : parse_decimal<true>(s, e, mark, v);
 }
 
+/// Throws, naming its line and column, if [text, text + size) holds a NUL byte.
+void refuse_binary(std::string_view text, std::size_t size, const std::string& file) {
+  if (const void* nul = std::memchr(text.data(), '\0', size)) {
+    const std::size_t at = static_cast<const char*>(nul) - text.data();
+    const std::size_t line = 1 + std::count(text.data(), text.data() + at, '\n');
+    const std::size_t bol = text.substr(0, at).rfind('\n');
+    fail(file, line, at - (bol == std::string_view::npos ? 0 : bol + 1) + 1,
+         "a NUL byte: this is a binary file, not a text export");
+  }
+}
+
+Recording parse_text(std::string_view text, const std::string& file, RecordingFormat format, const std::string& set);
+
 }  // namespace
 
 Recording parse_recording(std::string_view text, const std::string& file, RecordingFormat format,
@@ -336,13 +350,22 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
   if (looks_like_zip(text)) {
     fail(file, 1, 1, "a zip archive; expected a text export here (a zip is unpacked when read from its file: read_recording)");
   }
-  if (const void* nul = std::memchr(text.data(), '\0', text.size())) {
-    const std::size_t at = static_cast<const char*>(nul) - text.data();
-    const std::size_t line = 1 + std::count(text.data(), text.data() + at, '\n');
-    const std::size_t bol = text.substr(0, at).rfind('\n');
-    fail(file, line, at - (bol == std::string_view::npos ? 0 : bol + 1) + 1,
-         "a NUL byte: this is a binary file, not a text export");
+  // A binary file is named as such wherever its NUL byte is. parse_text
+  // checks the lines before the data; in the data a NUL fits no cell, so the
+  // rows refuse it, and the text is searched for it only then (a search of
+  // the whole text up front took 3 % of reading a large file).
+  try {
+    return parse_text(text, file, format, set);
+  } catch (const InputError&) {
+    refuse_binary(text, text.size(), file);
+    throw;
   }
+}
+
+namespace {
+
+Recording parse_text(std::string_view text, const std::string& file, RecordingFormat format, const std::string& set) {
+  const std::string_view original = text;
   if (starts_with(text, "\xef\xbb\xbf")) text.remove_prefix(3);  // UTF-8 byte-order mark
 
   const char* const begin = text.data();
@@ -385,6 +408,7 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
     p = e + (e < end);
     if (line_no > 100) fail(file, line_no, 1, "no numbers in the first 100 lines; expected a data export");
   }
+  refuse_binary(original, p - original.data(), file);  // the header and what precedes it
   if (p >= end) fail(file, line_no + 1, 1, "no data rows; expected a recording");
   const std::string_view first_data(p, line_end(p) - p);
 
@@ -514,30 +538,19 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
   rec.kind = layout.kind;
   for (std::size_t j : layout.channels) rec.channel_names.push_back(cols[j].name);
   rec.channels.resize(layout.channels.size());
-  // Where each column goes: -2 ignored, -1 time, k channel k.
-  std::vector<int> target(cols.size(), -2);
-  target[layout.time] = -1;
-  for (std::size_t k = 0; k < layout.channels.size(); ++k) target[layout.channels[k]] = static_cast<int>(k);
-  const int period_target = static_cast<int>(layout.channels.size());
-  if (layout.period) target[*layout.period] = period_target;
+  // The columns a row needs: without its time or a channel it is dropped.
+  std::vector<std::size_t> needed{layout.time};
+  needed.insert(needed.end(), layout.channels.begin(), layout.channels.end());
   const char other_delimiters[] = {'\t', ';', delimiter == ',' ? '\0' : ','};
   const std::size_t ncols = cols.size();
   const char mark = decimal_comma ? ',' : '.';
 
-  // The rows of [p, end), whose first line is line_no, stored from index
-  // `offset` on (the caller sized the columns for every line).
-  struct Slice {
-    std::size_t rows = 0, dropped = 0;
-    std::vector<double> time, periods;
-    std::vector<std::vector<double>> channels;
-  };
-  auto parse_rows = [&](const char* p, const char* end, std::size_t line_no, Slice& out) {
-    std::vector<double> row(layout.channels.size() + 1);
-
+  // The rows of [p, end), whose first line is line_no, into rec.
+  auto parse_rows = [&](const char* p, const char* end, std::size_t line_no) {
     double last_time = -std::numeric_limits<double>::infinity();
     std::size_t last_time_line = 0;
     char buffer[64];
-    std::vector<double> cells(ncols);
+    std::vector<double> cells(ncols);  // this row's values, NaN for an empty or "NaN" cell
     // The common row: plain numbers between single delimiters, read up to its
     // newline, which it returns (no search for the line's end first). Anything
     // else (quotes, spaces, empty or NaN cells, errors) takes the general path.
@@ -552,22 +565,9 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
       q += q < end && *q == '\r';
       return q >= end || *q == '\n' ? q : nullptr;
     };
-    for (const char* e = nullptr; p < end; p = e < end ? e + 1 : end, ++line_no) {
-      const char* plain = plain_row(p);
-      e = plain ? plain : line_end(p);
-      const char* line_begin = p;
-      auto column = [&](const char* at) { return static_cast<std::size_t>(at - line_begin) + 1; };
-      double time = kNaN;
-      bool missing = false;
-      if (plain) {
-        time = cells[layout.time] * layout.time_scale;
-        for (std::size_t j = 0; j < ncols; ++j) {
-          if (target[j] >= 0) row[target[j]] = cells[j];
-        }
-      } else if (is_blank(p, e)) {
-        continue;
-      } else {
-      std::fill(row.begin(), row.end(), kNaN);
+    // The line [p, e) cell by cell, with the errors named.
+    auto general_row = [&](const char* p, const char* e) {
+      auto column = [&](const char* at) { return static_cast<std::size_t>(at - p) + 1; };
       const char* q = p;
       for (std::size_t j = 0; j < ncols; ++j) {
         // One cell: optional spaces and quotes around a number, "NaN" or nothing.
@@ -576,7 +576,7 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
         const char* num_end = q;
         if (q < e && *q != delimiter && *q != '\r') {
           const char* s = q + (*q == '+');
-          const char* stop = fast_number(s, e, decimal_comma ? ',' : '.', v);
+          const char* stop = fast_number(s, e, mark, v);
           auto ends_cell = [&](const char* at) {
             return at >= e || *at == delimiter || *at == '"' || *at == ' ' || *at == '\r';
           };
@@ -619,9 +619,7 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
         }
         q = num_end;
         while (q < e && (*q == ' ' || *q == '"' || *q == '\r')) ++q;
-        if (std::isnan(v)) missing |= target[j] >= -1 && target[j] != period_target;
-        if (target[j] == -1) time = v * layout.time_scale;
-        else if (target[j] >= 0) row[target[j]] = v;
+        cells[j] = v;
         if (j + 1 < ncols) {
           if (q >= e || *q != delimiter) {
             fail(file, line_no, column(q),
@@ -635,15 +633,26 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
                    " columns of the header (mixed delimiters, or a decimal comma in a comma-separated file?)");
         }
       }
+    };
+    for (const char* e = nullptr; p < end; p = e < end ? e + 1 : end, ++line_no) {
+      const char* plain = plain_row(p);
+      if (plain) {
+        e = plain;
+      } else {
+        e = line_end(p);
+        if (is_blank(p, e)) continue;
+        general_row(p, e);
       }
-      ++out.rows;
-      if (layout.period && !std::isnan(row[period_target])) {
-        out.periods.push_back(row[period_target] * layout.time_scale);
+      ++rec.rows;
+      if (layout.period && !std::isnan(cells[*layout.period])) {
+        rec.periods.push_back(cells[*layout.period] * layout.time_scale);
       }
-      if (missing || std::isnan(time)) {
-        ++out.dropped;
+      // The fast path's numbers are never NaN: only a general row can miss one.
+      if (!plain && std::any_of(needed.begin(), needed.end(), [&](std::size_t j) { return std::isnan(cells[j]); })) {
+        ++rec.dropped;
         continue;
       }
+      const double time = cells[layout.time] * layout.time_scale;
       if (!(time > last_time)) {
         fail(file, line_no, 1,
              "time going backwards: " + std::to_string(time) + " s after " + std::to_string(last_time) +
@@ -652,77 +661,25 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
       if (!std::isfinite(time)) fail(file, line_no, 1, "an infinite time");
       last_time = time;
       last_time_line = line_no;
-      out.time.push_back(time);
-      for (std::size_t k = 0; k < out.channels.size(); ++k) out.channels[k].push_back(row[k] * layout.channel_scale);
+      rec.time.push_back(time);
+      for (std::size_t k = 0; k < rec.channels.size(); ++k) {
+        rec.channels[k].push_back(cells[layout.channels[k]] * layout.channel_scale);
+      }
     }
   };
 
-  // Slices of at least 8 MiB, one per core (up to 4), parsed at once; the
-  // first slice's columns are reserved for the whole file and take the others.
-  const char* const data = p;
-  const unsigned cores = std::max(1u, std::min(4u, std::thread::hardware_concurrency()));
-  const std::size_t slices = std::clamp<std::size_t>(static_cast<std::size_t>(end - data) >> 23, 1, cores);
-  std::vector<const char*> cut{data};
-  for (std::size_t k = 1; k < slices; ++k) {
-    const char* c = line_end(data + (end - data) * k / slices);
-    cut.push_back(c < end ? c + 1 : end);
-  }
-  cut.push_back(end);
+  // One allocation per column: rows from the first row's length, 5 % spare.
+  // One thread: the reader's figure of merit is the CPU time it takes, and
+  // on a shared machine threads add to it (docs/recordings.md, Speed).
   const double bytes_per_row = static_cast<double>(std::max<std::size_t>(first_data.size() + 1, 4));
-  std::vector<Slice> parts(slices);
-  for (std::size_t k = 0; k < slices; ++k) {
-    // One allocation per column: rows from the first row's length, 5 % spare.
-    const double span = static_cast<double>(k == 0 ? end - cut[0] : cut[k + 1] - cut[k]);
-    const std::size_t guess = static_cast<std::size_t>(1.05 * span / bytes_per_row) + 16;
-    parts[k].time.reserve(guess);
-    parts[k].channels.resize(layout.channels.size());
-    for (auto& c : parts[k].channels) c.reserve(guess);
-    detail::huge_pages(parts[k].time);
-    for (auto& c : parts[k].channels) detail::huge_pages(c);
+  const std::size_t guess = static_cast<std::size_t>(1.05 * static_cast<double>(end - p) / bytes_per_row) + 16;
+  rec.time.reserve(guess);
+  detail::huge_pages(rec.time);
+  for (auto& c : rec.channels) {
+    c.reserve(guess);
+    detail::huge_pages(c);
   }
-  std::vector<std::exception_ptr> errors(slices);
-  std::vector<std::thread> pool;
-  auto work = [&](std::size_t k) {
-    try {
-      parse_rows(cut[k], cut[k + 1], line_no, parts[k]);  // line numbers right for slice 0 only
-    } catch (...) {
-      errors[k] = std::current_exception();
-    }
-  };
-  for (std::size_t k = 1; k < slices; ++k) pool.emplace_back(work, k);
-  work(0);
-  for (auto& t : pool) t.join();
-  // The first line of slice k, counted only when a message needs it.
-  auto first_line = [&](std::size_t k) {
-    return line_no + static_cast<std::size_t>(std::count(data, cut[k], '\n'));
-  };
-  for (std::size_t k = 0; k < slices; ++k) {
-    if (!errors[k]) continue;
-    if (k > 0) {
-      Slice again;
-      again.channels.resize(layout.channels.size());
-      parse_rows(cut[k], cut[k + 1], first_line(k), again);  // throws with the right line
-    }
-    std::rethrow_exception(errors[k]);
-  }
-  rec.time = std::move(parts[0].time);
-  rec.channels = std::move(parts[0].channels);
-  for (std::size_t k = 0; k < slices; ++k) {
-    const Slice& s = parts[k];
-    if (k > 0 && !s.time.empty()) {
-      if (!rec.time.empty() && !(s.time.front() > rec.time.back())) {
-        fail(file, first_line(k), 1, "time going backwards: " + std::to_string(s.time.front()) + " s after " +
-                                         std::to_string(rec.time.back()) + " s; expected increasing times");
-      }
-      rec.time.insert(rec.time.end(), s.time.begin(), s.time.end());
-      for (std::size_t c = 0; c < rec.channels.size(); ++c) {
-        rec.channels[c].insert(rec.channels[c].end(), s.channels[c].begin(), s.channels[c].end());
-      }
-    }
-    rec.rows += s.rows;
-    rec.dropped += s.dropped;
-    rec.periods.insert(rec.periods.end(), s.periods.begin(), s.periods.end());
-  }
+  parse_rows(p, end, line_no);
   if (layout.angle_unit_unknown) {
     // Tracker writes "θ" without its unit: more than a turn means degrees.
     const auto& a = rec.channels[0];
@@ -733,6 +690,8 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
   }
   return rec;
 }
+
+}  // namespace
 
 Recording read_recording(const std::string& path, RecordingFormat format, const RecordingLimits& limits,
                          const std::string& set) {

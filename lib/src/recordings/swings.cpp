@@ -235,33 +235,48 @@ std::pair<double, double> peak(const std::vector<double>& t, const std::vector<d
   return {mid + u * half, std::fabs(value)};
 }
 
+/// The largest |s| and the root mean square of s, in one pass.
+struct Extent {
+  double peak = 0.0, rms = 0.0;
+};
+
+Extent extent(const std::vector<double>& s) {
+  Extent e;
+  for (double x : s) e.peak = std::max(e.peak, std::fabs(x)), e.rms += x * x;
+  e.rms = std::sqrt(e.rms / s.size());
+  return e;
+}
+
 /// Crossings of a sampled signal with adaptive hysteresis.
-std::vector<Crossing> find_crossings(const std::vector<double>& t, const Signal& sig, double noise,
+std::vector<Crossing> find_crossings(const std::vector<double>& t, const Signal& sig, double rms, double noise,
                                      double fraction, std::vector<std::size_t>& at) {
   const auto& s = sig.s;
-  double rms = 0.0;
-  for (double x : s) rms += x * x;
-  rms = std::sqrt(rms / s.size());
   const double floor = 5.0 * noise;
   double h = std::max(fraction * std::sqrt(2.0) * rms, floor);
   std::vector<Crossing> out;
   int state = 0;              // -1: beyond -h, +1: beyond +h
   std::size_t last_beyond = 0;  // last sample beyond the threshold of `state`
-  double half_peak = 0.0;
   for (std::size_t k = 0; k < s.size(); ++k) {
-    const double x = s[k];
-    half_peak = std::max(half_peak, std::fabs(x));
-    if (x < -h || x > h) {
-      const int side = x > 0 ? 1 : -1;
-      if (state == -side) {
-        out.push_back(line_zero(t, s, last_beyond, k));
-        at.push_back(last_beyond);
-        h = std::max(fraction * half_peak, floor);
-        half_peak = 0.0;
+    // The samples up to the first beyond the threshold opposite `state`, in
+    // a loop of their own: it makes no call, so the running peak stays in a
+    // register (across the push_backs below it went through memory).
+    double half_peak = 0.0;
+    for (; k < s.size(); ++k) {
+      const double x = s[k];
+      half_peak = std::max(half_peak, std::fabs(x));
+      if (x < -h || x > h) {
+        const int side = x > 0 ? 1 : -1;
+        if (state == -side) break;
+        state = side;
+        last_beyond = k;
       }
-      state = side;
-      last_beyond = k;
     }
+    if (k == s.size()) break;
+    out.push_back(line_zero(t, s, last_beyond, k));
+    at.push_back(last_beyond);
+    h = std::max(fraction * half_peak, floor);
+    state = -state;
+    last_beyond = k;
   }
   return out;
 }
@@ -402,13 +417,12 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
     out.axis = sig.axis;
     out.crossings_per_period = sig.crossings_per_period;
     out.noise = noise_sigma(sig.s);
-    double peak_abs = 0.0;
-    for (double x : sig.s) peak_abs = std::max(peak_abs, std::fabs(x));
-    if (!(peak_abs > 10.0 * out.noise) || peak_abs == 0.0) {
-      throw InputError(file, "no oscillation: the signal's largest excursion is " + std::to_string(peak_abs) +
+    const Extent e = extent(sig.s);
+    if (!(e.peak > 10.0 * out.noise) || e.peak == 0.0) {
+      throw InputError(file, "no oscillation: the signal's largest excursion is " + std::to_string(e.peak) +
                                  ", within 10 times its noise (" + std::to_string(out.noise) + ")");
     }
-    out.crossings = find_crossings(r.time, sig, out.noise, options.hysteresis_fraction, at);
+    out.crossings = find_crossings(r.time, sig, e.rms, out.noise, options.hysteresis_fraction, at);
   }
   const int cpp = out.crossings_per_period;
   const int periods = out.crossings.empty() ? 0 : static_cast<int>((out.crossings.size() - 1) / cpp);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 
 #include <Eigen/Dense>
 #include <ceres/ceres.h>

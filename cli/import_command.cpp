@@ -35,8 +35,13 @@ nlohmann::ordered_json summary_json(const RecordingSummary& r) {
   } else {
     // start: the scene's `amplitude`, at the first crossing, where the timing starts.
     const auto [lo, hi] = std::minmax_element(a.decay.amplitudes.begin(), a.decay.amplitudes.end());
-    out["amplitude_range"] = {{"start", a.start_amplitude * kDeg}, {"end", a.end_amplitude * kDeg},
-                              {"min", *lo * kDeg}, {"max", *hi * kDeg}, {"unit", "deg"}};
+    // null where the recording cannot say (swings.hpp, start_amplitude_uncertainty).
+    const nlohmann::ordered_json start_uncertainty =
+        std::isfinite(a.start_amplitude_uncertainty) ? nlohmann::ordered_json(a.start_amplitude_uncertainty * kDeg)
+                                                     : nlohmann::ordered_json(nullptr);
+    out["amplitude_range"] = {{"start", a.start_amplitude * kDeg}, {"start_uncertainty", start_uncertainty},
+                              {"end", a.end_amplitude * kDeg},     {"min", *lo * kDeg},
+                              {"max", *hi * kDeg},                 {"unit", "deg"}};
   }
   // One trial of all the periods: its uncertainty is used as is (docs/scene.md).
   out["timing"] = {{"oscillations_per_trial", n},

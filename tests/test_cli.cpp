@@ -676,6 +676,33 @@ TEST_CASE("import: phyphox's zip export reads its best set, or the one named", "
         json::parse(run("import " + recordings + "phyphox_linear_acceleration.csv").out).at("period").at("value"));
 }
 
+TEST_CASE("A scene's amplitude from a video track carries the track's uncertainty into g's budget",
+          "[cli][import]") {
+  // import's amplitude_range.start_uncertainty (deg) is the scene's amplitude
+  // uncertainty; a gyroscope's is null, and its amplitude stays without one.
+  for (const std::string file : {"tracker_xy.txt", "phyphox_gyroscope.csv"}) {
+    INFO(file);
+    const std::string recording = std::string(PENDULUM_DATA_DIR) + "/recordings/" + file;
+    const json imported = json::parse(run("import " + recording).out);
+    const json& sigma = imported.at("amplitude_range").at("start_uncertainty");
+    const std::string scene = temporary_file();
+    std::ofstream(scene) << json{{"timing", {{"recording", recording}}},
+                                 {"length", {{"value", 0.8}, {"unit", "m"}, {"uncertainty", 0.001}}}}
+                                .dump();
+    const Run reduced = run("reduce " + scene);
+    std::remove(scene.c_str());
+    REQUIRE(reduced.status == 0);
+    const json result = json::parse(reduced.out);
+    bool in_budget = false;
+    for (const auto& row : result.at("g").at("budget")) in_budget |= row.at("input") == "amplitude";
+    CHECK(in_budget == sigma.is_number());
+    if (sigma.is_number()) {
+      CHECK(sigma.get<double>() > 0.0);
+      CHECK_THAT(reduced.out, Contains("from its swings' scatter and its circle's radius"));
+    }
+  }
+}
+
 TEST_CASE("A scene naming a named pipe or an unreadable file fails at once, naming both", "[cli][import][errors]") {
   namespace fs = std::filesystem;
   const fs::path dir = fs::path(temporary_file() + ".d");

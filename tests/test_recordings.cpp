@@ -124,6 +124,9 @@ TEST_CASE("Each family's recording in data/recordings/ is read and reduced", "[r
     // bottom), and the period drifts by 3e-5 s per second with the amplitude.
     CHECK(std::fabs(p.value - true_period) < 4.0 * p.uncertainty + 2e-5);
     CHECK(r.swings.decay.amplitudes.empty() == (f.spread < 0.0));
+    // An uncertainty of the start amplitude where the angle itself is measured.
+    const bool measured_angle = f.kind == SignalKind::angle || f.kind == SignalKind::position;
+    CHECK(std::isfinite(r.swings.start_amplitude_uncertainty) == measured_angle);
     for (double a : r.swings.decay.amplitudes) {
       // theta0 decays from 0.2495 rad (the first swing) to 0.2365 rad (the
       // last) over the record (Eq. 25).
@@ -290,6 +293,60 @@ TEST_CASE("The period's uncertainty is honest and near the crossing method's Cra
   // The rms of 400 errors is within 3.6 % (one sigma) of its expectation: an
   // error far below the bound would mean the truth leaked into the estimate.
   CHECK(ratio > 0.85);
+}
+
+TEST_CASE("The start amplitude's uncertainty is honest where the recording measures the angle",
+          "[recordings][coverage]") {
+  // 200 recordings each (seeds 1..200, 20 s, l = 0.80 m, theta0 = 0.25 rad,
+  // alpha = 2e-3 1/s, beta = 4e-3 1/(s rad), jitter 0.2 ms): a tracked
+  // angle at 30 frames/s with 1.5 mm / 0.8 m of noise, and a video track's x
+  // and y with 1.5 mm each. The truth: the noise-free turning amplitudes,
+  // log-interpolated to the first crossing. A rotary sensor's angle in steps
+  // of 0.00153 rad (PASCO's) without noise errs less than its uncertainty
+  // says: the steps are not noise, and the uncertainty is an upper bound there.
+  const auto truth_at = [](const test::SimulatedRecording& sim, double t) {
+    const auto it = std::upper_bound(sim.turning_times.begin(), sim.turning_times.end(), t);
+    const std::size_t i = std::max<std::size_t>(1, it - sim.turning_times.begin());
+    const double ta = sim.turning_times[i - 1], tb = sim.turning_times[i];
+    const double la = std::log(sim.turning_amplitudes[i - 1]), lb = std::log(sim.turning_amplitudes[i]);
+    return std::exp(la + (lb - la) * (t - ta) / (tb - ta));
+  };
+  enum Sensor { tracked_angle, video, rotary };
+  for (const Sensor sensor : {tracked_angle, video, rotary}) {
+    constexpr int kRuns = 200;
+    int covered = 0;
+    for (int seed = 1; seed <= kRuns; ++seed) {
+      test::RecordingSimulation s;
+      s.duration = 20.0, s.drop = 0.0, s.noise = 0.0, s.seed = static_cast<std::uint64_t>(seed);
+      s.rate_hz = sensor == rotary ? 50.0 : 30.0;
+      const auto sim = simulate_recording(s);
+      NormalDeviates noise(static_cast<std::uint64_t>(seed));
+      Recording r;
+      r.time = sim.t;
+      r.kind = sensor == video ? SignalKind::position : SignalKind::angle;
+      r.channels.resize(sensor == video ? 2 : 1);
+      for (double th : sim.theta) {
+        if (sensor == video) {
+          r.channels[0].push_back(s.length * std::sin(th) + 0.0015 * noise.next());
+          r.channels[1].push_back(-s.length * std::cos(th) + 0.0015 * noise.next());
+        } else {
+          r.channels[0].push_back(sensor == rotary ? std::round(th / 0.00153) * 0.00153
+                                                   : th + 0.0015 / s.length * noise.next());
+        }
+      }
+      const SwingAnalysis a = analyse_swings(r, "sim");
+      REQUIRE(std::isfinite(a.start_amplitude_uncertainty));
+      covered += std::fabs(a.start_amplitude - truth_at(sim, a.crossings.front().time)) <= a.start_amplitude_uncertainty;
+    }
+    const double coverage = static_cast<double>(covered) / kRuns, p = 0.6826894921370859;
+    const double tolerance = 3.0 * std::sqrt(p * (1.0 - p) / kRuns);  // 3 binomial sigmas: 0.099
+    WARN("sensor " << sensor << ": coverage " << coverage);
+    if (sensor == rotary) {
+      CHECK(coverage > p - tolerance);
+    } else {
+      CHECK(std::fabs(coverage - p) < tolerance);
+    }
+  }
 }
 
 TEST_CASE("The decay record of a recording gives the true alpha and beta", "[recordings][decay]") {

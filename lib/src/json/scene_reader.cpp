@@ -74,11 +74,16 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
                      "missing, and the recording " + r.file + " gives no amplitudes (a photogate gives them with "
                      "timing.bob_width); expected the amplitude at the start of the timing");
     v.amplitude = r.swings.start_amplitude;
-    u.amplitude = 0.0;
+    const bool known = std::isfinite(r.swings.start_amplitude_uncertainty);
+    u.amplitude = known ? r.swings.start_amplitude_uncertainty : 0.0;
     source.amplitude_raw = v.amplitude * 180.0 / kPi;
     source.amplitude_unit = "deg";
-    out.assumptions.push_back(prefix + "amplitude: " + format_number(source.amplitude_raw, 5) +
-                              " deg, the recording's at the start of its timing (no uncertainty)");
+    out.assumptions.push_back(
+        prefix + "amplitude: " + format_number(source.amplitude_raw, 5) +
+        " deg, the recording's at the start of its timing " +
+        (known ? "(+- " + format_number(u.amplitude * 180.0 / kPi, 2) + " deg from its swings' scatter" +
+                     (r.kind == SignalKind::position ? " and its circle's radius)" : ")")
+               : std::string("(no uncertainty: a gyroscope's scale, g or a beam's width would set it)")));
   } else {
     put(amplitude_owner, "amplitude", Dimension::angle, Range::positive, v.amplitude, u.amplitude);
     const json& amplitude = amplitude_owner.at("amplitude");

@@ -115,6 +115,14 @@ struct SwingAnalysis {
   /// NaN without amplitudes. The scene's `amplitude` is the start one.
   double start_amplitude = 0.0;
   double end_amplitude = 0.0;
+  /// Standard uncertainty (rad) of start_amplitude where the recording
+  /// measures the angle itself (an angle, a video track): the smooth curve's
+  /// at the first crossing (its coefficients' covariance from the swings'
+  /// scatter) and, for a video track, its circle's radius, which scales
+  /// every angle. NaN for the other families, whose amplitudes rest on
+  /// what no recording gives (a gyroscope's scale, g for an acceleration, the
+  /// bob's speed through a beam taken as constant): docs/recordings.md.
+  double start_amplitude_uncertainty = 0.0;
   /// Amplitude of each swing against time from the first crossing (empty
   /// when the recording gives no amplitudes); no sigmas, so the decay fit
   /// scales its covariance by the residual variance.

@@ -14,8 +14,6 @@ using namespace json_reader;
 
 namespace {
 
-constexpr const char* kClockSceneSchema = "pendulum-g/clock-scene/1";
-
 /// One of `choices` under `key`, by name.
 std::string choice(Object& o, const std::string& key, const std::vector<std::string>& choices) {
   const std::string v = o.text(key);
@@ -74,7 +72,7 @@ ClockScene parse_clock_scene(const std::string& text) {
   const std::string schema = top.text("schema");
   if (schema != kClockSceneSchema) {
     throw InputError("schema", "got " + shown(top.at("schema")) + "; expected \"" + kClockSceneSchema + "\"" +
-                                   (schema == "pendulum-g/scene/1" ? " (a pendulum-g/scene/1 file is for pendulum-g reduce)" : ""));
+                                   (schema == kSceneSchema ? " (a pendulum-g/scene/1 file is for pendulum-g reduce)" : ""));
   }
   if (top.has("title")) s.title = top.text("title");
   if (top.has("source")) s.source = top.text("source");

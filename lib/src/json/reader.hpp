@@ -17,6 +17,11 @@
 
 namespace pendulum::json_reader {
 
+/// The documents' "schema": a scene (pendulum-g reduce) and a clock scene
+/// (pendulum-g clock); each reader names the other's in its refusal.
+inline constexpr const char* kSceneSchema = "pendulum-g/scene/1";
+inline constexpr const char* kClockSceneSchema = "pendulum-g/clock-scene/1";
+
 using nlohmann::json;
 
 /// A JSON value fit for a one-line message (at most 60 characters).

@@ -18,8 +18,6 @@ using namespace json_reader;
 
 namespace {
 
-constexpr const char* kSceneSchema = "pendulum-g/scene/1";
-
 /// Where an observation's `key` is read from: its own object, or the series'
 /// top level where the key is given once for every observation.
 Object& owner(Object& o, Object* shared, const char* key, ObservationSource& source) {
@@ -212,8 +210,10 @@ void check_geometry(const ParsedScene& out) {
 /// schema, title, source, notes: what every document may say about itself.
 void read_header(Object& top, ParsedScene& out) {
   if (top.has("schema")) {
-    PENDULUM_FAIL_IF(top.text("schema") != kSceneSchema, "schema",
-                     "got " + shown(top.at("schema")) + "; expected \"" + kSceneSchema + "\"");
+    const std::string schema = top.text("schema");
+    PENDULUM_FAIL_IF(schema != kSceneSchema, "schema",
+                     "got " + shown(top.at("schema")) + "; expected \"" + kSceneSchema + "\"" +
+                         (schema == kClockSceneSchema ? " (a clock scene is for pendulum-g clock)" : ""));
   }
   if (top.has("title")) {
     // The table prints the title as is: no control character may reach the terminal.

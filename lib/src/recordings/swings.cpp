@@ -173,7 +173,8 @@ Signal make_signal(const Recording& r) {
     case SignalKind::angle: return remove_mean(r.channels[0]);
     case SignalKind::position: return track_angle(r);
     case SignalKind::gate_states:
-    case SignalKind::blocking_times: break;
+    case SignalKind::blocking_times:
+    case SignalKind::event_stamps: break;
   }
   return {};
 }
@@ -534,7 +535,8 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
           });
         }
         break;
-      case SignalKind::blocking_times: break;
+      case SignalKind::blocking_times:
+      case SignalKind::event_stamps: break;
     }
   };
   amplitudes();

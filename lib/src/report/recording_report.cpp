@@ -45,6 +45,7 @@ SignalMeaning signal_meaning(SignalKind kind, bool has_amplitudes) {
     case SignalKind::gate_states:
       return {"photogate events (the middle of each blocking)", "beam: blocked (1) or open (0)", 1.0};
     case SignalKind::blocking_times: return {"photogate blocking times", "", 1.0};
+    case SignalKind::event_stamps: return {"event stamps", "", 1.0};
   }
   return {};
 }

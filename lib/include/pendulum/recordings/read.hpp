@@ -41,6 +41,16 @@ enum class SignalKind {
   position,        ///< x, y of the bob in any length unit (video track)
   gate_states,     ///< gate state (0 or 1) per event row; the state held for the shorter total time is "blocked"
   blocking_times,  ///< times at which the gate was blocked
+  /// Event stamps: one time per period or per passage, as a hand-triggered
+  /// timer or a photogate's pendulum mode logs them; `counts` holds the
+  /// logger's own event numbers where the file has a counter column.
+  event_stamps,
+};
+
+/// Something the reader decided or dropped, said where it happened.
+struct RecordingNote {
+  std::size_t line = 0;  ///< line of the file (from 1); 0 for the whole file
+  std::string text;      ///< one sentence: what was done and why
 };
 
 /// A recording in SI units, samples in time order.
@@ -54,6 +64,16 @@ struct Recording {
   /// A period column of a photogate's pendulum timing (s), its non-empty
   /// cells in order; empty when the file has none.
   std::vector<double> periods;
+  /// The clock's resolution (s): the smallest step between distinct time
+  /// stamps when stamps repeat (a logger printing fewer decimals than its
+  /// rate needs); 0 where every stamp is distinct.
+  double time_quantum = 0.0;
+  /// The event numbers of a counter column beside event stamps (as written,
+  /// one per time); empty without one.
+  std::vector<double> counts;
+  /// What the reader decided (roles, units, ignored columns) and dropped
+  /// (repeated or out-of-order samples, gaps), in file order.
+  std::vector<RecordingNote> notes;
   std::size_t rows = 0;     ///< data rows read
   std::size_t dropped = 0;  ///< rows skipped for an empty or NaN cell
   /// The CSV inside a zip archive it was read from ("Gyroscope.csv"), the

@@ -43,6 +43,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pendulum/decay_fit.hpp"
@@ -93,6 +94,9 @@ struct SwingOptions {
   /// (m) pivot to bob centre: a photogate's amplitudes use sqrt(g l) = 2 pi l / T0
   /// from it; without it g is taken as standard gravity.
   std::optional<double> length;
+  /// Only the samples or events with time in [first, second] (s, the file's
+  /// own clock) are analysed: `import --range`, a scene's `"range"`.
+  std::optional<std::pair<double, double>> range;
 };
 
 struct SwingAnalysis {

@@ -6,15 +6,16 @@
 #include <chrono>
 #include <condition_variable>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <sstream>
 #include <thread>
 
 #include "commands.hpp"
 #include "pendulum/analysis.hpp"
+#include "pendulum/files.hpp"
 #include "pendulum/output.hpp"
 #include "pendulum/report/html_report.hpp"
 #include "pendulum/scene_json.hpp"
@@ -24,8 +25,11 @@ namespace {
 
 /// One scene of the batch: a file to read, or a line of standard input.
 struct Job {
-  std::string name;
+  std::string name;                 ///< as given: the file opened
   std::optional<std::string> text;  ///< set for standard input
+  /// `name` as printed (printable_name(): escaped, and distinct for
+  /// distinct names).
+  std::string shown() const { return printable_name(name); }
 };
 
 /// ".json" in any case: CLARK.JSON is a scene too.
@@ -39,7 +43,8 @@ bool json_extension(const std::filesystem::path& p) {
 /// on: one a line (JSON lines), or pretty-printed over many (cat *.json).
 /// A scene ends where its outermost braces close, outside strings; text
 /// outside braces is a scene to the end of its line (and fails as such).
-std::vector<Job> split_documents(std::istream& in) {
+std::vector<Job> split_documents(const std::string& input) {
+  std::istringstream in(input);
   std::vector<Job> documents;
   std::string line, text;
   int depth = 0, start = 0;
@@ -97,6 +102,8 @@ std::vector<Job> gather(const std::vector<std::string>& paths, const std::string
           skipped.push_back({f.string(), json_extension(f.stem()) ? "not a .json file; rename it to " +
                                                                         f.stem().filename().string() + " to reduce it"
                                                                   : std::string("not a .json file")});
+        } else if (entry.is_symlink(ec) && !fs::exists(entry.status(ec))) {
+          skipped.push_back({f.string(), "a symbolic link to nothing (" + printable_name(fs::read_symlink(f, ec).string()) + ")"});
         } else if (!entry.is_regular_file(ec)) {
           // A named pipe would block the reader forever, a device feed it junk.
           skipped.push_back({f.string(), "not a regular file (a named pipe, a device or a socket)"});
@@ -106,7 +113,9 @@ std::vector<Job> gather(const std::vector<std::string>& paths, const std::string
       }
       std::sort(files.begin(), files.end());
       std::sort(skipped.begin(), skipped.end());
-      for (const auto& [f, why] : skipped) std::cerr << "pendulum-g: note: skipped " << f << ": " << why << "\n";
+      for (const auto& [f, why] : skipped) {
+        std::cerr << "pendulum-g: note: skipped " << printable_name(f) << ": " << why << "\n";
+      }
       for (auto& f : files) jobs.push_back({std::move(f), std::nullopt});
     } else {
       jobs.push_back({p, std::nullopt});
@@ -117,11 +126,12 @@ std::vector<Job> gather(const std::vector<std::string>& paths, const std::string
       add_path(p);
       continue;
     }
-    for (auto& document : split_documents(std::cin)) jobs.push_back(std::move(document));
+    for (auto& document : split_documents(read_text("-", kMaxSceneBytes, "scenes"))) {
+      jobs.push_back(std::move(document));
+    }
   }
   if (!list.empty()) {
-    std::ifstream in(list);
-    if (!in) throw InputError("", "cannot open the list " + list);
+    std::istringstream in(read_text(list, kMaxSceneBytes, "a list of scene files"));
     std::string line;
     while (std::getline(in, line)) {
       // Surrounding spaces (and a CR) are no part of a file name.
@@ -133,24 +143,28 @@ std::vector<Job> gather(const std::vector<std::string>& paths, const std::string
   return jobs;
 }
 
-/// The summary line of one scene and, for --report, its report; never throws.
+/// The summary line of one scene, the recordings it read and, for
+/// --report, its report; never throws.
 struct Outcome {
   BatchLine line;
   report::ClassEntry entry;
+  std::vector<std::string> recordings;
 };
-Outcome process(const Job& job, const AnalysisOptions& options, bool with_report) {
+Outcome process(const Job& job, const AnalysisOptions& options, bool with_report, bool allow_outside) {
+  const std::string name = job.shown();
   try {
     const ParsedScene scene = parse_scene(job.text ? *job.text : read_input(job.name),
-                                            {job.text ? std::string(".") : scene_directory(job.name)});
+                                          job.text ? SceneFiles{".", allow_outside} : scene_files(job.name, allow_outside));
     const Analysis analysis = analyse(scene, options);
-    Outcome out{batch_line(job.name, scene, analysis), {job.name, std::nullopt, ""}};
-    if (with_report) out.entry.report = report::make_scene_report(job.name, scene, analysis);
+    Outcome out{batch_line(name, scene, analysis), {name, std::nullopt, ""}, {}};
+    for (const auto& r : scene.recordings) out.recordings.push_back(r.summary.file);
+    if (with_report) out.entry.report = report::make_scene_report(name, scene, analysis);
     return out;
   } catch (const InputError& e) {
-    return {batch_failure(job.name, e.what()), {job.name, std::nullopt, e.what()}};
+    return {batch_failure(name, e.what()), {name, std::nullopt, e.what()}, {}};
   } catch (const std::exception& e) {
     const std::string error = std::string("internal error: ") + e.what();
-    return {batch_failure(job.name, error), {job.name, std::nullopt, error}};
+    return {batch_failure(name, error), {name, std::nullopt, error}, {}};
   }
 }
 
@@ -163,6 +177,7 @@ Command add_batch_command(CLI::App& app) {
     std::string format = "jsonl";
     std::string report;
     unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
+    bool allow_outside = false;
   };
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
@@ -186,10 +201,20 @@ Command add_batch_command(CLI::App& app) {
                   "each scene's section");
   cmd->add_option("--jobs", o->jobs, "Scenes reduced at once (default: the number of cores)")
       ->check(CLI::Range(1u, 256u));
+  add_allow_outside_option(*cmd, o->allow_outside);
 
   return {cmd, [o] {
+    std::vector<std::string> inputs{o->list};
+    for (const auto& p : o->paths) inputs.push_back(p);
+    refuse_output_over_inputs(o->report, inputs);  // a folder is no file, but --list is
     const std::vector<Job> jobs = gather(o->paths, o->list);
     if (jobs.empty()) throw InputError("", "no scenes: give files, folders, --list, or - for standard input");
+    inputs.clear();
+    for (const auto& job : jobs) {
+      if (!job.text) inputs.push_back(job.name);
+    }
+    refuse_output_over_inputs(o->report, inputs);
+    std::vector<std::string> recordings;
     const AnalysisOptions options;
     std::vector<std::optional<Outcome>> results(jobs.size());
     std::vector<report::ClassEntry> entries;
@@ -198,7 +223,7 @@ Command add_batch_command(CLI::App& app) {
     std::atomic<std::size_t> next{0};
     auto work = [&] {
       for (std::size_t i = next++; i < jobs.size(); i = next++) {
-        auto outcome = process(jobs[i], options, !o->report.empty());
+        auto outcome = process(jobs[i], options, !o->report.empty(), o->allow_outside);
         std::lock_guard<std::mutex> lock(mutex);
         results[i] = std::move(outcome);
         ready.notify_one();
@@ -221,6 +246,7 @@ Command add_batch_command(CLI::App& app) {
         ready.wait(lock, [&] { return results[i].has_value(); });
         line = std::move(results[i]->line);
         if (!o->report.empty()) entries.push_back(std::move(results[i]->entry));
+        for (auto& r : results[i]->recordings) recordings.push_back(std::move(r));
       }
       failed += !line.ok;
       std::cout << (o->format == "csv" ? line.csv : line.json + "\n");
@@ -237,7 +263,10 @@ Command add_batch_command(CLI::App& app) {
     if (progress) std::cerr << "\n";
     const ClassSummary summary = summarise_class(printed);
     std::cout << (o->format == "csv" ? batch_class_csv(summary) : batch_class_json(summary) + "\n");
-    if (!o->report.empty()) write_output(o->report, report::class_report_html(entries));
+    if (!o->report.empty()) {
+      refuse_output_over_inputs(o->report, recordings);
+      write_output(o->report, report::class_report_html(entries));
+    }
     return failed ? 1 : 0;
   }};
 }

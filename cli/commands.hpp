@@ -7,12 +7,14 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "pendulum/amplitude.hpp"
+#include "pendulum/scene_json.hpp"
 
 namespace pendulum {
 struct AnalysisOptions;
@@ -24,6 +26,20 @@ namespace pendulum::cli {
 
 /// Exit status of `reduce --strict` on a suspect result (docs/output.md).
 inline constexpr int kExitSuspect = 4;
+/// Exit status when an output (standard output, a report) could not be
+/// written whole (docs/output.md).
+inline constexpr int kExitOutput = 5;
+
+/// An output that could not be written: what() is "cannot write NAME: reason".
+struct OutputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Arguments that make no sense together (an output that is an input):
+/// exit status 2, as for the argument parser's errors.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 /// A registered subcommand and the function that runs it.
 struct Command {
@@ -31,8 +47,29 @@ struct Command {
   std::function<int()> run;
 };
 
-/// The text of a file, or of standard input for "-".
+/// The text of a scene file, or of standard input for "-", at most
+/// kMaxSceneBytes; a pipe or device named is refused (cli/files.cpp).
 std::string read_input(const std::string& file);
+
+/// Where a scene file's recordings are looked for: its folder, and nowhere
+/// else unless `allow_outside` (--allow-outside).
+SceneFiles scene_files(const std::string& file, bool allow_outside);
+
+/// The option --allow-outside of the commands that read a scene.
+void add_allow_outside_option(CLI::App& cmd, bool& allow_outside);
+
+/// Throws UsageError when `output` (not "-") is, by device and inode, one of
+/// `inputs`: `report x.json -o x.json`, or through a link.
+void refuse_output_over_inputs(const std::string& output, const std::vector<std::string>& inputs);
+
+/// Puts /dev/null in place of a closed standard input, output or error, the
+/// wrong way round for the first two, so that using them fails by name
+/// instead of reaching the next file opened.
+void guard_standard_streams();
+
+/// Empty when everything written to standard output got there; else why
+/// not ("No space left on device").
+std::string standard_output_error();
 
 /// Each warning on stderr, prefixed "pendulum-g: warning: ".
 void print_warnings(const std::vector<std::string>& warnings);

@@ -1,10 +1,9 @@
 // pendulum-g: reduce a pendulum experiment to g. Parses arguments, runs one
 // subcommand, reports errors. Exit status: 0 success, 1 bad input, 2 bad
-// usage, 3 internal error, 4 a suspect result under reduce --strict. Nothing reaches stdout unless a whole result does.
+// usage, 3 internal error, 4 a suspect result under reduce --strict, 5 an
+// output that could not be written. Nothing reaches stdout unless a whole
+// result does.
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
 #include <iostream>
 #include <vector>
 
@@ -12,24 +11,10 @@
 
 #include "commands.hpp"
 #include "pendulum/analysis.hpp"
+#include "pendulum/files.hpp"
 #include "pendulum/scene_json.hpp"
 
 namespace pendulum::cli {
-
-// stdio, not iostreams: a directory opens as an empty stream there, and
-// errno says what went wrong. Reading stops one byte past the largest scene,
-// so that parse_scene refuses /dev/zero or a huge file instead of slurping it.
-std::string read_input(const std::string& file) {
-  std::FILE* in = file == "-" ? stdin : std::fopen(file.c_str(), "rb");
-  if (!in) throw InputError("", std::string("cannot open the file: ") + std::strerror(errno));
-  std::string text(kMaxSceneBytes + 1, '\0');
-  text.resize(std::fread(text.data(), 1, text.size(), in));
-  const bool failed = std::ferror(in);
-  const int error = errno;
-  if (in != stdin) std::fclose(in);
-  if (failed) throw InputError("", std::string("cannot read the file: ") + std::strerror(error));
-  return text;
-}
 
 void print_warnings(const std::vector<std::string>& warnings) {
   for (const auto& w : warnings) std::cerr << "pendulum-g: warning: " << w << "\n";
@@ -63,6 +48,7 @@ void add_analysis_options(CLI::App& cmd, AnalysisOptions& options) {
 
 int main(int argc, char** argv) {
   constexpr int kExitInput = 1, kExitUsage = 2, kExitInternal = 3;
+  pendulum::cli::guard_standard_streams();
   // Ceres reports through glog; pendulum-g reports through its own messages.
   FLAGS_minloglevel = google::GLOG_FATAL;
   CLI::App app{
@@ -109,14 +95,26 @@ int main(int argc, char** argv) {
     if (!command.app->parsed()) continue;
     // The subcommand's input file, named in error messages.
     const CLI::Option* scene = command.app->get_option_no_throw("scene");
-    const std::string file = scene && scene->count() ? scene->as<std::string>() : "";
+    const std::string file = scene && scene->count() ? pendulum::printable_name(scene->as<std::string>()) : "";
+    auto output_failed = [] {
+      const std::string why = pendulum::cli::standard_output_error();
+      if (!why.empty()) std::cerr << "pendulum-g: error: output: cannot write standard output: " << why << "\n";
+      return !why.empty();
+    };
     try {
       const int status = command.run();
-      std::cout.flush();
-      return std::cout ? status : kExitInternal;
+      return output_failed() ? pendulum::cli::kExitOutput : status;
+    } catch (const pendulum::cli::OutputError& e) {
+      output_failed();
+      std::cerr << "pendulum-g: error: output: " << e.what() << "\n";
+      return pendulum::cli::kExitOutput;
+    } catch (const pendulum::cli::UsageError& e) {
+      std::cerr << "pendulum-g: error: " << e.what() << "\n";
+      return kExitUsage;
     } catch (const pendulum::InputError& e) {
       // Not twice: a recording's errors name their file (and line) already.
-      const bool named = !file.empty() && (e.path() == file || e.path().rfind(file + ":", 0) == 0);
+      const bool named = !file.empty() && (e.path() == file || e.path().rfind(file + ":", 0) == 0 ||
+                                           (file == "-" && e.path() == "stdin"));
       std::cerr << "pendulum-g: error: " << (file.empty() || named ? "" : file + ": ") << e.what() << "\n";
       return kExitInput;
     } catch (const std::exception& e) {

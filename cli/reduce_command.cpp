@@ -14,6 +14,7 @@ Command add_reduce_command(CLI::App& app) {
     std::string file;
     std::string format = "json";
     bool strict = false;
+    bool allow_outside = false;
     AnalysisOptions analysis;
   };
   auto o = std::make_shared<Options>();
@@ -26,9 +27,10 @@ Command add_reduce_command(CLI::App& app) {
                "Exit with status 4 when the result is suspect (g far from the expected value, or an input "
                "that looks like a slip); the result is printed all the same");
   add_analysis_options(*cmd, o->analysis);
+  add_allow_outside_option(*cmd, o->allow_outside);
 
   return {cmd, [o] {
-    const ParsedScene scene = parse_scene(read_input(o->file), {scene_directory(o->file)});
+    const ParsedScene scene = parse_scene(read_input(o->file), scene_files(o->file, o->allow_outside));
     const Analysis analysis = analyse(scene, o->analysis);
     const std::string text =
         o->format == "table"

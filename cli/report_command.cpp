@@ -1,17 +1,12 @@
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <fstream>
 #include <iostream>
 #include <memory>
 
 #include "commands.hpp"
 #include "pendulum/analysis.hpp"
+#include "pendulum/files.hpp"
 #include "pendulum/report/html_report.hpp"
 #include "pendulum/recordings/swings.hpp"
 #include "pendulum/report/plots.hpp"
@@ -21,61 +16,6 @@
 
 namespace pendulum::cli {
 
-void write_output(const std::string& path, const std::string& text) {
-  if (path == "-") {
-    std::cout << text;
-    return;
-  }
-  auto fail = [&](int error) { return InputError("output", "cannot write " + path + ": " + std::strerror(error)); };
-  struct stat existing;
-  const bool exists = ::stat(path.c_str(), &existing) == 0;
-  if (exists && S_ISDIR(existing.st_mode)) throw fail(EISDIR);
-  if (exists && !S_ISREG(existing.st_mode)) {
-    // A device or a pipe (/dev/stdout): written in place, never replaced.
-    std::FILE* out = std::fopen(path.c_str(), "wb");
-    if (!out) throw fail(errno);
-    const bool ok = std::fwrite(text.data(), 1, text.size(), out) == text.size();
-    const int error = errno;
-    if (std::fclose(out) != 0 || !ok) throw fail(ok ? errno : error);
-    return;
-  }
-  // A regular file: a temporary file beside it (beside the link's target for
-  // a symbolic link), renamed over it once whole, so that a failure leaves no
-  // partial file and an old report stays as it was.
-  std::string target = path;
-  if (exists) {
-    if (char* resolved = ::realpath(path.c_str(), nullptr)) {
-      target = resolved;
-      std::free(resolved);
-    }
-  }
-  std::string temporary = target + ".XXXXXX";
-  const int fd = mkstemp(temporary.data());
-  if (fd < 0) throw fail(errno);
-  int error = 0;  // the first failure's errno
-  for (std::size_t written = 0; written < text.size();) {
-    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      error = n < 0 ? errno : EIO;
-      break;
-    }
-    written += static_cast<std::size_t>(n);
-  }
-  // mkstemp makes the file 0600; a report is for others to read. umask is
-  // read by setting it, and no other thread runs here.
-  const mode_t mask = umask(0);
-  umask(mask);
-  if (!error && fchmod(fd, 0666 & ~mask) != 0) error = errno;
-  if (!error && fsync(fd) != 0) error = errno;
-  if (::close(fd) != 0 && !error) error = errno;
-  if (!error && std::rename(temporary.c_str(), target.c_str()) != 0) error = errno;
-  if (error) {
-    std::remove(temporary.c_str());
-    throw fail(error);
-  }
-}
-
 namespace {
 
 /// A recording, not a scene: a regular file (a pipe is not read ahead) whose
@@ -83,12 +23,15 @@ namespace {
 /// recording has fewer; a short or empty file gets the scene reader's
 /// message, as from reduce).
 bool looks_like_recording(const std::string& file) {
-  struct stat st;
-  if (file == "-" || ::stat(file.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return false;
-  std::ifstream in(file, std::ios::binary);
+  if (file == "-") return false;
   std::string head(65536, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
+  try {
+    const InputFile in(file, "a scene or a recording");
+    const ssize_t n = ::read(in.fd(), head.data(), head.size());
+    head.resize(n > 0 ? static_cast<std::size_t>(n) : 0);
+  } catch (const InputError&) {
+    return false;  // the scene reader says why
+  }
   std::size_t at = head.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
   at = head.find_first_not_of(" \t\r\n", at);
   if (at == std::string::npos || head[at] == '{' || head[at] == '[') return false;
@@ -106,6 +49,7 @@ Command add_report_command(CLI::App& app) {
     AnalysisOptions analysis;
     SwingOptions swing;
     std::string set;
+    bool allow_outside = false;
   };
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
@@ -131,6 +75,7 @@ Command add_report_command(CLI::App& app) {
           {"corrections", "budget", "decay", "series", "pivot-scan", "signal", "amplitude", "period-amplitude"}));
   add_analysis_options(*cmd, o->analysis);
   add_recording_options(*cmd, o->swing, o->set);
+  add_allow_outside_option(*cmd, o->allow_outside);
 
   return {cmd, [o, cmd] {
     std::string format = "html";
@@ -149,6 +94,7 @@ Command add_report_command(CLI::App& app) {
       std::cerr << cmd->get_name() << ": --plot makes one SVG; it does not go with --format " << format << "\n";
       return 2;
     }
+    refuse_output_over_inputs(o->output, {o->file});
     const std::optional<RecordingFormat> family = recording_family(o->formats);
     if (family || looks_like_recording(o->file)) {
       const Recording samples = read_recording(o->file, family.value_or(RecordingFormat::automatic), {}, o->set);
@@ -159,7 +105,10 @@ Command add_report_command(CLI::App& app) {
       write_output(o->output, svg ? report::recording_plot_svg(r, o->plot) : report::recording_report_html(r));
       return 0;
     }
-    const ParsedScene scene = parse_scene(read_input(o->file), {scene_directory(o->file)});
+    const ParsedScene scene = parse_scene(read_input(o->file), scene_files(o->file, o->allow_outside));
+    std::vector<std::string> recordings;
+    for (const auto& r : scene.recordings) recordings.push_back(r.summary.file);
+    refuse_output_over_inputs(o->output, recordings);
     const Analysis analysis = analyse(scene, o->analysis);
     // The recordings the scene names, read again for their signal plots
     // (once each: the report draws a recording named twice once).

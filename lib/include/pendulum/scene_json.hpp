@@ -26,6 +26,10 @@ struct SceneFiles {
   /// parsing text opens no file unless the caller says where from (the
   /// fuzzer parses arbitrary text and passes none).
   std::optional<std::string> directory;
+  /// Whether a name may lead out of `directory` (absolute, "..", a symbolic
+  /// link pointing out): refused by default, so that a scene reads no file
+  /// but its own recordings (docs/robustness.md, "Recordings a scene names").
+  bool allow_outside = false;
 };
 
 /// The directory of the scene file at `path`: "." for "-" (standard input)

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <set>
 
+#include "pendulum/files.hpp"
+
 namespace pendulum {
 
 InputError::InputError(std::string path, const std::string& message)
@@ -115,8 +117,7 @@ json parse_json(const std::string& given, std::size_t max_bytes) {
   const bool utf16_be = given.size() >= 2 && given[0] == '\xfe' && given[1] == '\xff';
   const std::string text = utf16_le || utf16_be ? utf16_to_utf8(given, utf16_le) : given;
   if (text.size() > max_bytes) {
-    throw InputError("", "got more than " + std::to_string(max_bytes) +
-                             " bytes; expected a scene file of at most " + std::to_string(max_bytes >> 20) + " MiB");
+    throw InputError("", too_large(max_bytes));  // as the files' reader says it
   }
   struct Frame {
     bool array = false;

@@ -25,6 +25,26 @@ RecordingFormat format_at(Object& o) {
   throw InputError(o.path("format"), "got " + shown(o.at("format")) + "; expected a recording format: " + names);
 }
 
+/// Why the recording `name`, resolved to `file`, is not in `directory` or
+/// below; null when it is. By its name first (absolute, ".."), then by where
+/// its links lead: the deepest part that exists, resolved, must lie in the
+/// directory's resolved path.
+const char* leads_out(const std::string& directory, const std::string& name, const std::string& file) {
+  namespace fs = std::filesystem;
+  const fs::path given(name);
+  if (given.is_absolute()) return "an absolute name leads out of it";
+  const fs::path normal = given.lexically_normal();
+  if (!normal.empty() && *normal.begin() == "..") return "\"..\" leads out of it";
+  std::error_code ec;
+  const fs::path root = fs::weakly_canonical(fs::absolute(directory, ec), ec);
+  if (ec) return nullptr;  // no folder to leave: opening the file says what is wrong
+  const fs::path target = fs::weakly_canonical(fs::absolute(file, ec), ec);
+  if (ec) return nullptr;
+  const fs::path inside = target.lexically_relative(root);
+  if (inside.empty() || *inside.begin() == "..") return "a symbolic link leads out of it";
+  return nullptr;
+}
+
 }  // namespace
 
 std::size_t RecordingReader::read(Object& o, ParsedScene& out) {
@@ -46,6 +66,12 @@ std::size_t RecordingReader::read(Object& o, ParsedScene& out) {
 
   // Relative to the scene's directory; an absolute name stays as it is.
   const std::string file = (std::filesystem::path(*files_.directory) / name).lexically_normal().string();
+  if (!files_.allow_outside) {
+    const char* why = leads_out(*files_.directory, name, file);
+    PENDULUM_FAIL_IF(why, at,
+                     "got " + shown(o.at("recording")) + "; expected a file in the scene's folder or below (" +
+                         (why ? why : "") + "): a scene's recordings are read from elsewhere only with --allow-outside");
+  }
   const auto same = [&](const Done& d) {
     return d.file == file && d.format == recording_format_name(format) && d.set == set &&
            d.bob_width == options.bob_width;

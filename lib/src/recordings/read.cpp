@@ -1,13 +1,7 @@
 #include "pendulum/recordings/read.hpp"
 
-#include <fcntl.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +13,7 @@
 #include "pendulum/input_error.hpp"
 #include "../text.hpp"
 #include "huge_pages.hpp"
+#include "../io/mapped_file.hpp"
 #include "zip.hpp"
 
 namespace pendulum {
@@ -695,45 +690,30 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
 
 Recording read_recording(const std::string& path, RecordingFormat format, const RecordingLimits& limits,
                          const std::string& set) {
-  auto refuse_unless_regular = [&](const struct stat& st) {
-    if (S_ISREG(st.st_mode)) return;
-    throw InputError(path, S_ISDIR(st.st_mode) ? "a directory; expected a recording file"
-                                               : "not a regular file (a pipe or a device); expected a recording file");
+  const InputFile file(path, "a recording file");
+  if (file.size() > limits.max_bytes) {
+    throw InputError(file.path(), "the file has " + std::to_string(file.size()) + " bytes; expected at most " +
+                                      std::to_string(limits.max_bytes) + " (RecordingLimits::max_bytes)");
+  }
+  // Mapped, not read: no copy of the text (docs/robustness.md says what a
+  // copy would cost). A file cut or rewritten while it is read is refused,
+  // whatever the parser made of it.
+  const detail::MappedFile map(file);
+  auto check_unchanged = [&] {
+    if (!map.shrank() && !file.changed()) return;
+    throw InputError(file.path(), "the file changed while it was read (it had " + std::to_string(file.size()) +
+                                      " bytes; is it still being written or synchronised?); expected a "
+                                      "complete recording: read it again once it is whole");
   };
-  // A pipe or a device is refused before it is opened; what is opened is
-  // checked again, and opened without waiting, so that a pipe swapped in
-  // between cannot block the reader either.
-  struct stat st {};
-  if (::stat(path.c_str(), &st) != 0) {
-    throw InputError(path, std::string("cannot open the file: ") + std::strerror(errno));
+  try {
+    Recording r = looks_like_zip(map.text()) ? read_zip_recording(map.text(), path, format, set, limits)
+                                             : parse_recording(map.text(), path, format, set);
+    check_unchanged();
+    return r;
+  } catch (const InputError&) {
+    check_unchanged();
+    throw;
   }
-  refuse_unless_regular(st);
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-  if (fd < 0) throw InputError(path, std::string("cannot open the file: ") + std::strerror(errno));
-  struct Close {
-    int fd;
-    ~Close() { ::close(fd); }
-  } close_fd{fd};
-  if (::fstat(fd, &st) != 0) throw InputError(path, std::string("cannot read the file: ") + std::strerror(errno));
-  refuse_unless_regular(st);
-  if (static_cast<std::size_t>(st.st_size) > limits.max_bytes) {
-    throw InputError(path, "the file has " + std::to_string(st.st_size) + " bytes; expected at most " +
-                               std::to_string(limits.max_bytes) + " (RecordingLimits::max_bytes)");
-  }
-  // Mapped, not read: no copy of the text and no zero-filled buffer.
-  const std::size_t size = static_cast<std::size_t>(st.st_size);
-  void* map = size ? ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0) : nullptr;
-  if (map == MAP_FAILED) throw InputError(path, std::string("cannot read the file: ") + std::strerror(errno));
-  struct Unmap {
-    void* p;
-    std::size_t n;
-    ~Unmap() {
-      if (p) ::munmap(p, n);
-    }
-  } unmap{map, size};
-  const std::string_view text(static_cast<const char*>(map), size);
-  if (looks_like_zip(text)) return read_zip_recording(text, path, format, set, limits);
-  return parse_recording(text, path, format, set);
 }
 
 }  // namespace pendulum

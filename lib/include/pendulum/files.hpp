@@ -1,0 +1,71 @@
+#pragma once
+/// \file files.hpp
+/// \brief Opening and reading the files pendulum-g is given (docs/robustness.md,
+/// "Files"): without waiting (a named pipe or a device named is refused at
+/// once, not read), within one limit, every error naming the file and why.
+
+#include <sys/types.h>
+
+#include <cstddef>
+#include <optional>
+#include <string>
+
+namespace pendulum {
+
+/// A file's device and inode: one file, whatever link or hard link names it.
+struct FileId {
+  dev_t device = 0;
+  ino_t inode = 0;
+  friend bool operator==(const FileId& a, const FileId& b) { return a.device == b.device && a.inode == b.inode; }
+};
+
+/// The file `path` names, links followed; none where nothing is there (or
+/// it cannot be looked at).
+std::optional<FileId> file_id(const std::string& path);
+
+/// A regular file open for reading. Opened with O_NONBLOCK, so that a named
+/// pipe without a writer cannot block, then refused unless regular (what is
+/// opened is what is checked: a pipe swapped in for the file is refused too).
+class InputFile {
+ public:
+  /// Throws InputError(path, "cannot open the file: <reason>"), or (path,
+  /// "a directory; expected <expected>"), (path, "not a regular file (a
+  /// named pipe ...); expected <expected>") for a pipe, device or socket.
+  /// `path` in the errors as printable_name() writes it.
+  InputFile(const std::string& path, const std::string& expected);
+  ~InputFile();
+  InputFile(const InputFile&) = delete;
+  InputFile& operator=(const InputFile&) = delete;
+
+  int fd() const { return fd_; }
+  const std::string& path() const { return path_; }
+  /// Size (bytes) when opened.
+  std::size_t size() const { return size_; }
+  /// True when the file's size or modification time differs from when it
+  /// was opened: it changed while it was read.
+  bool changed() const;
+
+ private:
+  std::string path_;
+  int fd_ = -1;
+  std::size_t size_ = 0;
+  struct timespec mtime_ {};
+};
+
+/// The text of the file `path`, or of standard input for "-", at most
+/// `max_bytes`: more is refused as soon as it is read, with the same
+/// message whatever is read (too_large()). Throws InputError naming `path`
+/// ("stdin" for "-") and the read's error; `expected` as for InputFile.
+std::string read_text(const std::string& path, std::size_t max_bytes, const std::string& expected);
+
+/// The message of a read past `max_bytes`: "got more than N bytes; expected
+/// at most M MiB (...)".
+std::string too_large(std::size_t max_bytes);
+
+/// A file name fit for a message or an `input` key: control characters,
+/// bytes that are not UTF-8 and the backslash itself escaped (\n, \x1b,
+/// \xff, \\), so that a name cannot move the terminal's cursor and two
+/// names stay two.
+std::string printable_name(const std::string& name);
+
+}  // namespace pendulum

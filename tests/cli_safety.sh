@@ -1,0 +1,182 @@
+#!/bin/sh
+# File- and process-level safety of pendulum-g (issue 22, docs/robustness.md,
+# "Files"): one case per run, as ctest calls it:
+#   cli_safety.sh PENDULUM_G FAULT_INJECTION_SO DATA_DIR CASE
+# Each case builds its own files in a fresh temporary folder from the
+# bundled scene and recordings (data/, made by tests/tools/make_*), runs the
+# command, and checks the exit status, the message and what is on disk.
+set -u
+G=$1 SHIM=$2 DATA=$3 CASE=$4
+T=$(mktemp -d /tmp/pendulum-g-safety-XXXXXX)
+trap 'rm -rf "$T"' EXIT
+cd "$T" || exit 1
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+# expect STATUS GREP-PATTERN COMMAND...: the status and a line of stderr.
+expect() {
+  want=$1 pattern=$2
+  shift 2
+  "$@" >out 2>err
+  got=$?
+  [ "$got" = "$want" ] || fail "$*: exit $got, expected $want; stderr: $(cat err)"
+  grep -q -- "$pattern" err || fail "$*: stderr lacks '$pattern': $(cat err)"
+}
+cp "$DATA/nelson_olsson_1986.json" x.json
+cp "$DATA/recordings/phyphox_pendulum_raw.tsv" rec.tsv
+sed 's/phyphox_pendulum_raw.tsv/rec.tsv/g' "$DATA/recordings/phyphox_pendulum_raw_from_file.json" > scene.json
+
+case $CASE in
+output_over_input)
+  cp x.json x.before
+  expect 2 "the output x.json is the input x.json" "$G" report x.json -o x.json
+  cmp -s x.json x.before || fail "report x.json -o x.json changed x.json"
+  ln -s x.json link.json
+  ln x.json hard.json
+  expect 2 "the output link.json is the input x.json (the same file, through a link)" "$G" report x.json -o link.json
+  expect 2 "the output x.json is the input hard.json" "$G" report hard.json -o x.json
+  cp rec.tsv rec.before
+  expect 2 "the output rec.tsv is the input rec.tsv" "$G" report rec.tsv -o rec.tsv
+  # A scene's recording as the output: found once the scene names it, before
+  # anything is written.
+  expect 2 "the output rec.tsv is the input rec.tsv" "$G" report scene.json -o rec.tsv
+  cmp -s rec.tsv rec.before || fail "report scene.json -o rec.tsv changed the recording"
+  mkdir class && cp x.json class/a.json && cp x.json class/b.json
+  cp class/a.json a.before
+  expect 2 "the output class/a.json is the input class/a.json" "$G" batch class --report class/a.json
+  cmp -s class/a.json a.before || fail "batch class --report class/a.json changed a.json"
+  [ ! -s out ] || fail "batch printed results before refusing its report: $(cat out)"
+  mkdir rclass && cp rec.tsv rclass/rec.tsv && cp scene.json rclass/scene.json
+  expect 2 "the output rclass/rec.tsv is the input rclass/rec.tsv" "$G" batch rclass --report rclass/rec.tsv
+  cmp -s rclass/rec.tsv rec.before || fail "batch --report over a recording changed it"
+  echo class/a.json > list.txt
+  expect 2 "the output list.txt is the input list.txt" "$G" batch --list list.txt --report list.txt
+  ;;
+truncated_in_batch)
+  # Three scenes, each with its own copy of the recording; the second is cut
+  # to half while it is read.
+  mkdir class
+  for s in a b c; do
+    cp rec.tsv class/$s.tsv
+    sed "s/rec.tsv/$s.tsv/g" scene.json > class/$s.json
+  done
+  LD_PRELOAD=$SHIM PENDULUM_TEST_TRUNCATE=b.tsv ASAN_OPTIONS=verify_asan_link_order=0 \
+    "$G" batch --jobs 1 class/a.json class/b.json class/c.json >out 2>err
+  got=$?
+  [ "$got" = 1 ] || fail "batch with a recording truncated while read: exit $got, expected 1: $(cat err)"
+  [ "$(grep -c '"ok":true' out)" = 2 ] || fail "expected two results: $(cat out)"
+  grep '"input":"class/b.json"' out | grep -q 'b.tsv: the file changed while it was read' ||
+    fail "no clear failure for b.json: $(cat out)"
+  grep -q '"class":true' out || fail "no class line: $(cat out)"
+  [ "$(wc -c < class/b.tsv)" -lt "$(wc -c < rec.tsv)" ] || fail "the shim did not truncate b.tsv"
+  ;;
+write_errors)
+  expect 5 "output: cannot write standard output: No space left on device" sh -c "'$G' reduce x.json > /dev/full"
+  expect 5 "output: cannot write standard output: Bad file descriptor" sh -c "'$G' reduce x.json >&-"
+  expect 5 "output: cannot write standard output: No space left on device" sh -c "'$G' batch x.json > /dev/full"
+  expect 5 "output: cannot write /dev/full: No space left on device" "$G" report x.json -o /dev/full
+  # A full disk, as a file-size limit makes it (EFBIG; SIGXFSZ ignored, so
+  # that the write fails instead of killing the process): the old report
+  # stays whole, no temporary file is left, and a shell's file says so too.
+  echo earlier > report.html
+  expect 5 "output: cannot write report.html: File too large" \
+    sh -c "trap '' XFSZ; ulimit -f 8; exec '$G' report x.json -o report.html"
+  [ "$(cat report.html)" = earlier ] || fail "a failed report replaced the earlier one"
+  expect 5 "output: cannot write standard output: File too large" \
+    sh -c "trap '' XFSZ; ulimit -f 8; exec '$G' report x.json > shell.html"
+  [ -z "$(ls | grep 'report.html.')" ] || fail "a temporary file was left: $(ls)"
+  ;;
+interrupted_report)
+  # SIGTERM and SIGINT while the report is written (at its fsync): the
+  # process ends by that signal and leaves no temporary file.
+  for sig in 15 2; do
+    LD_PRELOAD=$SHIM PENDULUM_TEST_SIGNAL_ON_FSYNC=$sig ASAN_OPTIONS=verify_asan_link_order=0 \
+      "$G" batch x.json --report class.html >out 2>err
+    got=$?
+    [ "$got" = $((128 + sig)) ] || fail "signal $sig during the report: exit $got, expected $((128 + sig))"
+    [ "$(ls | grep -c 'class.html')" = 0 ] || fail "signal $sig left a file: $(ls)"
+  done
+  # A report written over keeps its mode; a new one gets the umask's.
+  echo earlier > private.html && chmod 600 private.html
+  "$G" report x.json -o private.html || fail "report -o private.html"
+  [ "$(stat -c %a private.html)" = 600 ] || fail "the 0600 report became $(stat -c %a private.html)"
+  (umask 022 && "$G" report x.json -o new.html) || fail "report -o new.html"
+  [ "$(stat -c %a new.html)" = 644 ] || fail "a new report is $(stat -c %a new.html), expected 644 under umask 022"
+  ;;
+fifo_by_name)
+  mkfifo pipe.json
+  expect 1 "pipe.json: not a regular file (a named pipe" timeout 10 "$G" reduce pipe.json
+  expect 1 "pipe.json: not a regular file (a named pipe" timeout 10 "$G" report pipe.json
+  expect 1 "pipe.json: not a regular file (a named pipe" timeout 10 "$G" fit-decay pipe.json
+  # batch: the pipe's line says why, the good scene's result is there.
+  printf 'x.json\npipe.json\n' > list.txt
+  for args in "x.json pipe.json" "--list list.txt"; do
+    timeout 10 "$G" batch $args >out 2>err
+    got=$?
+    [ "$got" = 1 ] || fail "batch $args: exit $got, expected 1"
+    grep '"input":"pipe.json"' out | grep -q 'not a regular file (a named pipe' || fail "batch $args: $(cat out)"
+    grep -q '"input":"x.json","ok":true' out || fail "batch $args lost the good scene: $(cat out)"
+  done
+  expect 1 "pipe.json: not a regular file (a named pipe" timeout 10 "$G" batch --list pipe.json
+  expect 1 "/dev/zero: not a regular file (a device)" timeout 10 "$G" reduce /dev/zero
+  ;;
+read_limits)
+  # 1 GiB on standard input: refused once 1 MiB (kMaxSceneBytes) + 1 byte is
+  # read, within bounded memory (the address space capped at 1 GiB, less
+  # than the input) and quickly.
+  limit="got more than 1048576 bytes; expected at most 1 MiB"
+  start=$(date +%s)
+  expect 1 "stdin: $limit" sh -c "head -c 1073741824 /dev/zero | (ulimit -v 1048576; exec '$G' batch -)"
+  expect 1 "stdin: $limit" sh -c "head -c 1073741824 /dev/zero | (ulimit -v 1048576; exec '$G' reduce -)"
+  [ $(($(date +%s) - start)) -lt 20 ] || fail "1 GiB on stdin took $(($(date +%s) - start)) s to refuse"
+  truncate -s 1G big.txt
+  expect 1 "big.txt: $limit" "$G" batch --list big.txt
+  expect 1 "big.txt: $limit" "$G" reduce big.txt
+  expect 1 "stdin: cannot read standard input: Bad file descriptor" sh -c "'$G' batch - <&-"
+  expect 1 "stdin: cannot read standard input: Bad file descriptor" sh -c "'$G' reduce - <&-"
+  ;;
+recording_outside)
+  mkdir class
+  cp rec.tsv outside.tsv
+  ln -s ../outside.tsv class/link.tsv
+  for name in ../outside.tsv "$T/outside.tsv" /etc/passwd /proc/self/environ link.tsv; do
+    sed "s#rec.tsv#$name#g" scene.json > class/s.json
+    expect 1 "timing.recording: got \"$name\"; expected a file in the scene's folder or below" "$G" reduce class/s.json
+    grep -q "root:" err && fail "a message quoted /etc/passwd: $(cat err)"
+    "$G" batch class/s.json >out 2>err
+    grep -q "\"ok\":false.*timing.recording: got .*; expected a file in the scene's folder or below" out ||
+      fail "batch with $name: $(cat out)"
+    expect 1 "expected a file in the scene's folder or below" "$G" report class/s.json -o r.html
+    expect 1 "expected a file in the scene's folder or below" "$G" fit-decay class/s.json
+  done
+  sed "s#rec.tsv#../outside.tsv#g" scene.json > class/s.json
+  "$G" reduce --allow-outside class/s.json >out 2>err || fail "reduce --allow-outside: $(cat err)"
+  "$G" batch --allow-outside class/s.json >out 2>err || fail "batch --allow-outside: $(cat err)"
+  mkdir class/sub && cp rec.tsv class/sub/rec.tsv
+  sed "s#rec.tsv#sub/../sub/rec.tsv#g" scene.json > class/s.json
+  "$G" reduce class/s.json >out 2>err || fail "a recording below the scene's folder was refused: $(cat err)"
+  ;;
+names)
+  # A newline, an escape sequence and bytes that are not UTF-8 in file names.
+  mkdir class
+  cp x.json "class/new
+line.json"
+  cp x.json "$(printf 'class/\033[2Jx.json')"
+  cp x.json "$(printf 'class/\377.json')"
+  cp x.json "$(printf 'class/\376.json')"
+  ln -s nowhere.json class/dangling.json
+  "$G" batch class >out 2>err
+  grep -q '"input":"class/new\\\\x0aline.json"' out || fail "a newline in a name: $(cat out)"
+  grep -q '"input":"class/\\\\x1b\[2Jx.json"' out || fail "an escape in a name: $(cat out)"
+  grep -q '"input":"class/\\\\xff.json"' out && grep -q '"input":"class/\\\\xfe.json"' out ||
+    fail "names not UTF-8 are not distinct: $(cat out)"
+  grep -q "$(printf '\033')" out err && fail "an escape reached the terminal"
+  grep -q "skipped class/dangling.json: a symbolic link to nothing (nowhere.json)" err ||
+    fail "the dangling link's note: $(cat err)"
+  expect 1 "^pendulum-g: error: class/\\\\xff-missing.json: cannot open the file" "$G" reduce "$(printf 'class/\377-missing.json')"
+  ;;
+*)
+  fail "no case $CASE"
+  ;;
+esac
+[ "$failures" = 0 ] && echo "$CASE: passed"
+[ "$failures" = 0 ]

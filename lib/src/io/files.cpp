@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "pendulum/input_error.hpp"
+#include "../text.hpp"
 
 namespace pendulum {
 
@@ -19,7 +20,7 @@ std::string reason(int error) { return std::strerror(error); }
 /// What a file that is not regular is, for the message refusing it.
 std::string kind_of(mode_t mode) {
   if (S_ISDIR(mode)) return "a directory";
-  if (S_ISFIFO(mode)) return "not a regular file (a named pipe: give its text on standard input, as -)";
+  if (S_ISFIFO(mode)) return "not a regular file (a named pipe)";
   if (S_ISSOCK(mode)) return "not a regular file (a socket)";
   return "not a regular file (a device)";
 }
@@ -102,33 +103,16 @@ std::string read_text(const std::string& path, std::size_t max_bytes, const std:
 std::string printable_name(const std::string& name) {
   static const char hex[] = "0123456789abcdef";
   std::string out;
-  const auto* s = reinterpret_cast<const unsigned char*>(name.data());
-  const std::size_t n = name.size();
-  for (std::size_t i = 0; i < n;) {
-    const unsigned char c = s[i];
-    // The length of a well-formed UTF-8 sequence starting at i (RFC 3629:
-    // no overlong forms, no surrogates, nothing above U+10FFFF); 0 if none.
-    std::size_t length = 0;
-    if (c >= 0x20 && c < 0x7f) {
-      length = 1;
-    } else if (c >= 0xc2 && c <= 0xf4) {
-      const std::size_t want = c < 0xe0 ? 2 : c < 0xf0 ? 3 : 4;
-      const unsigned char low = c == 0xe0 ? 0xa0 : c == 0xf0 ? 0x90 : 0x80;
-      const unsigned char high = c == 0xed ? 0x9f : c == 0xf4 ? 0x8f : 0xbf;
-      bool ok = i + want <= n && s[i + 1] >= low && s[i + 1] <= high;
-      for (std::size_t k = 2; ok && k < want; ++k) ok = (s[i + k] & 0xc0) == 0x80;
-      if (ok) length = want;
-    }
+  for (std::size_t i = 0; i < name.size();) {
+    const unsigned char c = static_cast<unsigned char>(name[i]);
+    const std::size_t length = c < 0x20 || c == 0x7f || c == '\\' ? 0 : utf8_length(name, i);
     if (c == '\\') {
       out += "\\\\";
-      ++i;
-    } else if (length) {
-      out.append(name, i, length);
-      i += length;
-    } else {
+    } else if (!length) {
       out += {'\\', 'x', hex[c >> 4], hex[c & 15]};
-      ++i;
     }
+    out.append(name, i, length);
+    i += length ? length : 1;
   }
   return out;
 }

@@ -4,6 +4,7 @@
 
 #include "commands.hpp"
 #include "pendulum/clock_scene.hpp"
+#include "pendulum/files.hpp"
 #include "pendulum/output.hpp"
 #include "pendulum/scene_json.hpp"
 
@@ -35,7 +36,7 @@ Command add_clock_command(CLI::App& app) {
     }
     const ClockAnalysis analysis = analyse_clock(scene, route);
     const std::string text =
-        o->format == "table" ? clock_table(scene, analysis) : clock_json(scene, analysis, o->file) + "\n";
+        o->format == "table" ? clock_table(scene, analysis) : clock_json(scene, analysis, printable_name(o->file)) + "\n";
     print_warnings(analysis.warnings);
     std::cout << text;
     return 0;

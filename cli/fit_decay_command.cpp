@@ -4,6 +4,7 @@
 
 #include "commands.hpp"
 #include "pendulum/analysis.hpp"
+#include "pendulum/files.hpp"
 #include "pendulum/output.hpp"
 #include "pendulum/scene_json.hpp"
 
@@ -46,7 +47,7 @@ Command add_fit_decay_command(CLI::App& app) {
       std::cout << decay_fit_table(scene, fit, warnings);  // the warnings are in the table
       return 0;
     }
-    const std::string text = decay_fit_json(o->file, scene, fit, warnings);
+    const std::string text = decay_fit_json(printable_name(o->file), scene, fit, warnings);
     print_warnings(warnings);
     std::cout << text << "\n";
     return 0;

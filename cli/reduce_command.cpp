@@ -4,6 +4,7 @@
 
 #include "commands.hpp"
 #include "pendulum/analysis.hpp"
+#include "pendulum/files.hpp"
 #include "pendulum/output.hpp"
 #include "pendulum/scene_json.hpp"
 
@@ -35,7 +36,7 @@ Command add_reduce_command(CLI::App& app) {
     const std::string text =
         o->format == "table"
             ? result_table(scene, analysis)
-            : result_json(scene, analysis, o->analysis, o->file) + "\n";
+            : result_json(scene, analysis, o->analysis, printable_name(o->file)) + "\n";
     // The table holds the warnings and the status: not twice on a terminal.
     if (o->format != "table") {
       print_warnings(scene.warnings);

@@ -110,6 +110,41 @@ constexpr const char* kRecording = R"({
   "length": {"value": 80.0, "uncertainty": 0.1, "unit": "cm", "measured_to": "center"},
 )";
 
+/// A phone hung by a string from its top, its face swinging in its plane,
+/// at three string lengths (docs/phone.md). Its trials are such a phone's
+/// (16 x 7.5 x 0.8 cm, 190 g) at standard gravity in this air: the exact
+/// slow mode of the body on the string, the exact amplitude factor at the
+/// pendulum's angle (0.93 to 0.97 of the phone's 10 deg), buoyancy; 10
+/// oscillations per trial, N(0, 0.004 s) read to 0.001 s (Python's random,
+/// seed 23; the generator is in docs/phone.md).
+constexpr const char* kPhone = R"({
+  "schema": "pendulum-g/scene/1",
+  "title": "A phone on a string at three lengths",
+  "notes": "Replace every number with yours. Tie the string to the top of the phone and measure each length from the pivot to the knot (measured_to top_of_bob adds half the phone's height); fit length_offset finds how far the knot's mark is from that. bob: width along the swing, height vertical, depth along the axis the phone turns about (its thickness when its face swings in its own plane). amplitude of body: the angle the phone's own sensor (phyphox's gyroscope) shows, which on a string is larger than the string's; the corrections take the pendulum's.",
+  "fit": ["length_offset"],
+  "amplitude": {"value": 10, "uncertainty": 1, "unit": "deg", "of": "body"},
+  "bob": {
+    "shape": "box",
+    "width": {"value": 7.5, "uncertainty": 0.05, "unit": "cm"},
+    "height": {"value": 16.0, "uncertainty": 0.05, "unit": "cm"},
+    "depth": {"value": 0.8, "uncertainty": 0.05, "unit": "cm"},
+    "mass": {"value": 190, "uncertainty": 1, "unit": "g"}
+  },
+  "air": {
+    "pressure": {"value": 1013, "unit": "hPa"},
+    "temperature": {"value": 21, "unit": "degC"}
+  },
+  "observations": [
+    {"length": {"value": 30.0, "uncertainty": 0.2, "unit": "cm", "measured_to": "top_of_bob"},
+     "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.001, "trials": [12.52, 12.507, 12.513]}},
+    {"length": {"value": 50.0, "uncertainty": 0.2, "unit": "cm", "measured_to": "top_of_bob"},
+     "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.001, "trials": [15.372, 15.37, 15.371]}},
+    {"length": {"value": 80.0, "uncertainty": 0.2, "unit": "cm", "measured_to": "top_of_bob"},
+     "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.001, "trials": [18.892, 18.893, 18.895]}}
+  ]
+}
+)";
+
 }  // namespace
 
 Command add_template_command(CLI::App& app) {
@@ -122,13 +157,15 @@ Command add_template_command(CLI::App& app) {
                   "ball (default): a ball on a string timed with a phone; series: the same ball at several "
                   "lengths, with the offset from the measured mark to the ball's centre fitted; pivot-scan: a "
                   "metre stick hung at several holes (a physical pendulum); recording: a ball timed by a phone's "
-                  "or a photogate's file")
-      ->check(CLI::IsMember({"ball", "series", "pivot-scan", "recording"}));
+                  "or a photogate's file; phone: a phone on a string at several lengths (docs/phone.md)")
+      ->check(CLI::IsMember({"ball", "series", "pivot-scan", "recording", "phone"}));
   return {cmd, [kind] {
     if (*kind == "series") {
       std::cout << kSeries << kBobAndAir << kSeriesObservations;
     } else if (*kind == "pivot-scan") {
       std::cout << kPivotScan;
+    } else if (*kind == "phone") {
+      std::cout << kPhone;
     } else if (*kind == "recording") {
       std::cout << kRecording << kBobAndAir << "\n}\n";
     } else {

@@ -11,8 +11,7 @@
 #include <ceres/jet.h>
 
 #include "pendulum/input_error.hpp"
-#include "pendulum/models/physical_pendulum.hpp"
-#include "pendulum/models/simple_pendulum.hpp"
+#include "pendulum/models/registry.hpp"
 #include "pendulum/period_fit.hpp"
 #include "plausibility.hpp"
 #include "text.hpp"
@@ -65,9 +64,10 @@ std::vector<std::string> review_decay_fit(const DecayFit& fit) {
 }
 
 void use_fitted_decay(ParsedScene& scene, const DecayFit& fit) {
-  scene.apparatus.decay = Decay<double>{fit.alpha.value, fit.beta.value};
+  const AngleOf of = scene.decay_data ? scene.decay_data->angle_of : AngleOf::pendulum;  // beta is of this angle
+  scene.apparatus.decay = Decay<double>{fit.alpha.value, fit.beta.value, of};
   scene.apparatus_uncertainty.decay =
-      Decay<double>{fit.alpha.uncertainty.value_or(0.0), fit.beta.uncertainty.value_or(0.0)};
+      Decay<double>{fit.alpha.uncertainty.value_or(0.0), fit.beta.uncertainty.value_or(0.0), of};
   if (fit.alpha.uncertainty && fit.beta.uncertainty) {
     scene.input_covariances.push_back({"decay.alpha", "decay.beta", fit.covariance[1]});
   }
@@ -558,6 +558,11 @@ class Fit {
         r.effective_uncertainty = 1.0 / weights_[k];
       }
       r.negligible_below = options_.negligible_fraction * sigma;
+      r.amplitude_of = o.amplitude_of;
+      if (o.amplitude_of == AngleOf::body) {
+        const Swing<double> s = Model::swing_at(p_.data(), Model::swing(o), scene_.apparatus);
+        r.amplitude_pendulum = pendulum_over_body_angle(scene_.apparatus, s.length) * o.amplitude;
+      }
       for (int i = 0; i < kCorrectionCount; ++i) {
         const Term<double>& term = b.terms[i];
         CorrectionRow row;
@@ -850,10 +855,7 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
   if (scene.apparatus.decay && scene.observations.size() == 1) {
     out.drag = predict_drag(scene.apparatus, scene.observations[0]);
   }
-  switch (scene.model) {
-    case PeriodModelKind::simple_pendulum: Fit<SimplePendulum>(scene, options, out).run(); break;
-    case PeriodModelKind::physical_pendulum: Fit<PhysicalPendulum>(scene, options, out).run(); break;
-  }
+  visit_period_model(scene.model, [&](auto model) { Fit<decltype(model)>(scene, options, out).run(); });
   for (auto& w : warn_about_skipped_parts(scene, options.negligible_fraction)) out.warnings.push_back(std::move(w));
 
   if (scene.site) out.expected_g = expected_gravity(*scene.site);

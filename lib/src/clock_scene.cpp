@@ -14,7 +14,7 @@ ClockAnalysis analyse_clock(const ClockScene& s, std::optional<ClockRoute> route
   const bool circular = s.path == ClockPath::circular;
   const double theta0 = s.semi_amplitude.value, q = s.q.value;
   a.location = s.relative_location ? s.location.value * theta0 : s.location.value;
-  a.small_amplitude_period = s.nominal_period ? *s.nominal_period : small_amplitude_period(s.length.value, s.g.value);
+  a.small_amplitude_period = s.nominal_period ? *s.nominal_period : ideal_period(s.length.value, s.g.value);
   a.circular_error_rate = circular ? circular_error_rate(theta0) : 0.0;
   a.circular_error = {circular ? circular_error(theta0) : 0.0, a.circular_error_rate * s.semi_amplitude.sigma};
   a.impulsed_amplitude = circular ? impulsed_amplitude(theta0, q)

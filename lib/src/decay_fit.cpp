@@ -66,11 +66,8 @@ void decay_residuals(const DecayData& data, const double* p, double* residuals,
 namespace {
 
 /// Eq. (25) over the whole record as one Ceres residual block of four
-/// "compressed" residuals. With J = Q R (R^T R = J^T J, 3x3) the block
-/// returns q = Q^T r and sqrt(|r|^2 - |q|^2), with Jacobian [R; 0]: the same
-/// cost |r|^2, gradient J^T r and Gauss-Newton matrix J^T J as the full
-/// problem, so the Levenberg-Marquardt iterates are the same, while Ceres's
-/// work per iteration no longer grows with the number of points and the
+/// compressed residuals (compress_residuals, newton_decrement.hpp): Ceres's
+/// work per iteration no longer grows with the number of points, and the
 /// record is read once per evaluation (kernel::decay_sums).
 /// Every evaluation computes the Jacobian sums and keeps them, because Ceres
 /// asks for the Jacobian at a trial point right after accepting it.
@@ -94,30 +91,18 @@ class CompressedDecayCost final : public ceres::CostFunction {
   bool Evaluate(double const* const* parameters, double* residuals,
                 double** jacobians) const override {
     sums_at(parameters[0]);
-    if (!std::isfinite(sums_.rr)) return false;
-    // R from the column-scaled Gram matrix, whose condition is that of the
-    // parameters' correlations alone.
     Eigen::Matrix3d gram;
     for (int a = 0; a < 3; ++a) {
       for (int b = 0; b < 3; ++b) gram(a, b) = sums_.jtj[a][b];
     }
-    if (!gram.allFinite()) return false;
-    Eigen::Array3d scale = gram.diagonal().array().sqrt();
-    scale = (scale > 0.0).select(1.0 / scale, 1.0);
-    Eigen::LLT<Eigen::Matrix3d> llt(scale.matrix().asDiagonal() * gram * scale.matrix().asDiagonal());
-    if (llt.info() != Eigen::Success) return false;
-    const Eigen::Matrix3d r_factor = Eigen::Matrix3d(llt.matrixU()) * scale.inverse().matrix().asDiagonal();
     const Eigen::Vector3d jtr(sums_.jtr[0], sums_.jtr[1], sums_.jtr[2]);
-    const Eigen::Vector3d q = r_factor.transpose().triangularView<Eigen::Lower>().solve(jtr);
-    for (int i = 0; i < 3; ++i) residuals[i] = q[i];
-    residuals[3] = std::sqrt(std::max(sums_.rr - q.squaredNorm(), 0.0));
-    if (jacobians && jacobians[0]) {
-      decrement_ = q.squaredNorm();
+    double* jacobian = jacobians ? jacobians[0] : nullptr;
+    const double q2 = compress_residuals<3>(gram, jtr, sums_.rr, residuals, jacobian);
+    if (q2 < 0.0) return false;
+    if (jacobian) {
+      decrement_ = q2;
       rr_ = sums_.rr;
       std::copy(parameters[0], parameters[0] + 3, judged_.begin());
-      Eigen::Map<Eigen::Matrix<double, 4, 3, Eigen::RowMajor>> jac(jacobians[0]);
-      jac.topRows<3>() = r_factor;
-      jac.row(3).setZero();
     }
     return true;
   }

@@ -1,12 +1,52 @@
 #pragma once
-// The stopping rule of pendulum-g's compressed least-squares fits (the decay
-// fit, the period fit).
+// pendulum-g's compressed least-squares fits (the decay fit, the period
+// fit): their residuals from the normal sums, and their stopping rule.
 
 #include <algorithm>
+#include <cmath>
 
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
 #include <ceres/iteration_callback.h>
 
 namespace pendulum {
+
+/// A least-squares problem of N parameters "compressed": with J^T J = R^T R
+/// (N x N), the N + 1 residuals q = R^-T J^T r and sqrt(|r|^2 - |q|^2),
+/// whose Jacobian is [R; 0], have the same cost |r|^2, gradient J^T r and
+/// Gauss-Newton matrix J^T J as the full problem, so Levenberg-Marquardt
+/// takes the same steps while Ceres's own work no longer grows with the
+/// number of residuals (docs/decay_fit.md). R is the Cholesky factor of the
+/// column-scaled J^T J, whose condition is that of the parameters'
+/// correlations alone, with a ridge of 1e-14 on its unit diagonal so that a
+/// singular problem (identical observations) still steps; the gradient
+/// R^T q = J^T r stays exact. Writes the residuals, and where `jacobian` is
+/// given Ceres's row-major (N + 1) x N block; returns |q|^2 (twice the cost
+/// a full Gauss-Newton step would remove), or a negative number where the
+/// sums are not finite or J^T J is not positive definite.
+template <int N>
+double compress_residuals(const Eigen::Matrix<double, N, N>& jtj, const Eigen::Matrix<double, N, 1>& jtr, double rr,
+                          double* residuals, double* jacobian) {
+  using Matrix = Eigen::Matrix<double, N, N>;
+  if (!jtj.allFinite() || !jtr.allFinite() || !std::isfinite(rr)) return -1.0;
+  Eigen::Matrix<double, N, 1> scale = jtj.diagonal().cwiseSqrt();
+  scale = (scale.array() > 0.0).select(scale.cwiseInverse(), 1.0);
+  Matrix scaled = scale.asDiagonal() * jtj * scale.asDiagonal();
+  scaled.diagonal().array() += 1e-14;
+  const Eigen::LLT<Matrix> llt(scaled);
+  if (llt.info() != Eigen::Success) return -1.0;
+  const Matrix r_factor = Matrix(llt.matrixU()) * scale.cwiseInverse().asDiagonal();
+  const Eigen::Matrix<double, N, 1> q = r_factor.transpose().template triangularView<Eigen::Lower>().solve(jtr);
+  for (int i = 0; i < N; ++i) residuals[i] = q[i];
+  residuals[N] = std::sqrt(std::max(rr - q.squaredNorm(), 0.0));
+  if (jacobian) {
+    constexpr int kLayout = N == 1 ? Eigen::ColMajor : Eigen::RowMajor;  // one column: the same either way
+    Eigen::Map<Eigen::Matrix<double, N + 1, N, kLayout>> jac(jacobian);
+    jac.template topRows<N>() = r_factor;
+    jac.row(N).setZero();
+  }
+  return q.squaredNorm();
+}
 
 /// Stops when a full Gauss-Newton step would lower the sum of squares by
 /// less than 1e-14 of the residual variance s^2 = |r|^2/dof: the parameters

@@ -7,8 +7,7 @@
 #include <ceres/ceres.h>
 
 #include "newton_decrement.hpp"
-#include "pendulum/models/physical_pendulum.hpp"
-#include "pendulum/models/simple_pendulum.hpp"
+#include "pendulum/models/registry.hpp"
 
 namespace pendulum {
 
@@ -225,16 +224,12 @@ class ProjectedPeriods {
   mutable Point point_;
 };
 
-/// The projected problem handed to Ceres "compressed" as in the decay fit
-/// (docs/decay_fit.md): with J^T J = R^T R, the Q + 1 residuals
-/// q = R^-T J^T r and sqrt(|r|^2 - |q|^2), whose Jacobian is [R; 0], have the
-/// same cost, gradient and Gauss-Newton matrix as the K residuals, so the
-/// iterates are the same while Ceres's own work no longer grows with K.
+/// The projected problem handed to Ceres compressed to Q + 1 residuals
+/// (compress_residuals, newton_decrement.hpp), as the decay fit is.
 template <class Model>
 class CompressedPeriodResiduals : public ceres::CostFunction {
  public:
   static constexpr int Q = Model::kParameters - 1;
-  using Matrix = Eigen::Matrix<double, Q, Q>;
 
   explicit CompressedPeriodResiduals(const ProjectedPeriods<Model>& projected) : projected_(projected) {
     set_num_residuals(Q + 1);
@@ -243,29 +238,13 @@ class CompressedPeriodResiduals : public ceres::CostFunction {
 
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
     const NormalSums<Q>& s = projected_.at(parameters[0]).sums;
-    if (!s.jtj.allFinite() || !s.jtr.allFinite() || !std::isfinite(s.rr)) return false;
-    // R from the Cholesky factor of the column-scaled J^T J, with a ridge of
-    // 1e-14 on its unit diagonal so that a singular problem (identical
-    // observations) still steps; the gradient R^T q = J^T r stays exact.
-    Eigen::Matrix<double, Q, 1> scale = s.jtj.diagonal().cwiseSqrt();
-    scale = (scale.array() > 0.0).select(scale.cwiseInverse(), 1.0);
-    Matrix scaled = scale.asDiagonal() * s.jtj * scale.asDiagonal();
-    scaled.diagonal().array() += 1e-14;
-    const Eigen::LLT<Matrix> llt(scaled);
-    if (llt.info() != Eigen::Success) return false;
-    const Matrix r_factor = Matrix(llt.matrixU()) * scale.cwiseInverse().asDiagonal();
-    const Eigen::Matrix<double, Q, 1> q = r_factor.transpose().template triangularView<Eigen::Lower>().solve(s.jtr);
-    for (int i = 0; i < Q; ++i) residuals[i] = q[i];
-    residuals[Q] = std::sqrt(std::max(s.rr - q.squaredNorm(), 0.0));
-    if (jacobians && jacobians[0]) {
-      decrement_ = q.squaredNorm();
+    double* jacobian = jacobians ? jacobians[0] : nullptr;
+    const double q2 = compress_residuals<Q>(s.jtj, s.jtr, s.rr, residuals, jacobian);
+    if (q2 < 0.0) return false;
+    if (jacobian) {
+      decrement_ = q2;
       rr_ = s.rr;
       std::copy(parameters[0], parameters[0] + Q, judged_.begin());
-      // Ceres's row-major (Q + 1) x Q block (one column: the same either way).
-      constexpr int kLayout = Q == 1 ? Eigen::ColMajor : Eigen::RowMajor;
-      Eigen::Map<Eigen::Matrix<double, Q + 1, Q, kLayout>> jac(jacobians[0]);
-      jac.template topRows<Q>() = r_factor;
-      jac.row(Q).setZero();
     }
     return true;
   }
@@ -292,6 +271,7 @@ PeriodFitSolution fit_periods(const PeriodFitProblem<Model>& problem,
   constexpr int P = Model::kParameters;
   constexpr int Q = P - 1;
   static_assert(Q >= 1, "a period model has parameters besides g");
+  static_assert(is_period_model<Model>(), "Model has every piece of a period model (models/registry.hpp)");
   std::array<double, Q> q;
   std::copy(initial.begin() + 1, initial.end(), q.begin());
   const ProjectedPeriods<Model> projected(problem, initial);

@@ -32,7 +32,7 @@ constexpr double kSmallAngleLab = 20.0;  // (deg)
 /// when the scene does not give them.
 std::optional<double> expected_period(const ParsedScene& scene, const Observation<double>& o) {
   if (scene.model == PeriodModelKind::simple_pendulum) {
-    return 2.0 * kPi * std::sqrt(o.length / kStandardGravity) * (1.0 + reduce(scene.apparatus, o).total_ratio);
+    return ideal_period(o.length, kStandardGravity) * (1.0 + reduce(scene.apparatus, o).total_ratio);
   }
   Apparatus<double> app = scene.apparatus;
   if (!app.body) return std::nullopt;
@@ -100,7 +100,7 @@ void check_observation(ParsedScene& scene, std::size_t k, const std::optional<do
   // Against the finite-amplitude correction alone, so that a wrong unit is
   // named as such before it drives a correction out of its range.
   const double swing = scene.model == PeriodModelKind::simple_pendulum
-                           ? 2.0 * kPi * std::sqrt(o.length / kStandardGravity) * (1.0 + finite_amplitude_agm(o.amplitude))
+                           ? ideal_period(o.length, kStandardGravity) * (1.0 + finite_amplitude_agm(o.amplitude))
                            : expected;
   if (!(o.period / swing > 1.0 / kPeriodFactor && o.period / swing < kPeriodFactor)) {
     // g = 4 pi^2 l / T^2 would be (swing / period)^2 times standard gravity.
@@ -151,7 +151,7 @@ std::vector<std::string> warn_about_skipped_parts(const ParsedScene& scene, doub
     const double temperature = 293.15;
     typical.air = Air<double>{101325.0, temperature, kDryAirMolarMass, air_viscosity(temperature)};
   }
-  if (!typical.bob->mass) typical.bob->mass = 7850.0 * sphere_volume(typical.bob->diameter / 2.0);
+  if (!typical.bob->mass) typical.bob->mass = 7850.0 * typical.bob->volume();
   double worst = 0.0, worst_delta = 0.0, worst_threshold = 0.0;
   for (std::size_t k = 0; k < scene.observations.size(); ++k) {
     const Observation<double>& o = scene.observations[k];

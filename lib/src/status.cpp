@@ -102,20 +102,22 @@ void judge_g(const Analysis& a, bool bob_slip, const std::string& settings, std:
 
 std::optional<std::string> bob_density_slip(const Apparatus<double>& app) {
   if (!app.bob || !app.bob->mass) return std::nullopt;
-  const double density = *app.bob->mass / sphere_volume(app.bob->diameter / 2.0);
+  const double density = *app.bob->mass / app.bob->volume();
+  const bool sphere = app.bob->shape == BobShape::sphere;
   const double air = app.air ? air_density(app.air->pressure, app.air->temperature, app.air->molar_mass) : 0.0;
   if (density >= kLightestBob && density > air) return std::nullopt;
   std::string why = "bob.mass: a density of " + format_number(density, 3) +
-                    " kg/m^3 (the mass over the sphere of bob.diameter), ";
+                    " kg/m^3 (the mass over the " + (sphere ? "sphere of bob.diameter), " : "bob's volume), ");
   why += density <= air ? "less than the air's " + format_number(air, 3) + " kg/m^3: the bob would float"
                         : "lighter than any solid ball a pendulum swings (a ping-pong ball: about 80 kg/m^3), "
                           "which makes buoyancy and added mass implausibly large";
   const double thousandfold = density * 1000.0;
   if (thousandfold >= kLightestSolid && thousandfold <= kDensestBob) {
     why += "; a mass in kg written as g, or a diameter in mm written as cm? Either gives " +
-           std::to_string(std::lround(thousandfold)) + " kg/m^3 (steel: 7850): fix bob.mass.unit or bob.diameter.unit";
+           std::to_string(std::lround(thousandfold)) + " kg/m^3 (steel: 7850): fix bob.mass.unit or bob." +
+           (sphere ? "diameter" : "width, height or depth") + ".unit";
   } else {
-    why += "; check bob.mass, bob.diameter and their units";
+    why += std::string("; check bob.mass, bob.") + (sphere ? "diameter" : "width, height, depth") + " and their units";
   }
   return why;
 }

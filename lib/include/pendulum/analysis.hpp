@@ -78,7 +78,10 @@ struct Estimate {
 struct ObservationResult {
   std::string path;  ///< "" or "observations[3]."
   double length;     ///< as measured (m)
-  double amplitude;  ///< (rad)
+  double amplitude;  ///< (rad), of `amplitude_of`
+  AngleOf amplitude_of = AngleOf::pendulum;
+  /// The pendulum's angle the corrections took (rad), where `amplitude` is the bob's.
+  std::optional<double> amplitude_pendulum;
   int trials = 0;
   int oscillations_per_trial = 1;
   ValueWithUncertainty period_measured;  ///< (s)

@@ -17,17 +17,66 @@
 
 #include "pendulum/body_parts.hpp"
 #include "pendulum/fields.hpp"
+#include "pendulum/air.hpp"
+#include "pendulum/numeric.hpp"
+#include "pendulum/observation.hpp"
 
 namespace pendulum {
 
-/// Sphere of uniform density hanging at the end of the suspension.
+/// The bob's shape (docs/phone.md): a sphere (Nelson & Olsson's), or a box
+/// or an upright cylinder such as a phone or a plumb bob.
+enum class BobShape { sphere, box, cylinder };
+
+/// How the bob hangs: from a string or wire about which it turns (the double
+/// pendulum's slow mode), or clamped to a rigid rod (a physical pendulum).
+enum class Suspension { flexible, rigid };
+
+/// A uniform bob hanging at the end of the suspension, its top at the knot.
+///
+/// A sphere has its diameter; a box its width (along the swing), height
+/// (vertical) and depth (along the axis of rotation); a cylinder hangs with
+/// its axis vertical and has its diameter and height. Only a shape's own
+/// fields are visited (a box's diameter is 0 and no field).
 template <class T>
 struct Bob {
-  T diameter;             ///< (m)
+  T diameter{};           ///< sphere, cylinder (m)
   std::optional<T> mass;  ///< (kg); the corrections of the other parts need it
+  BobShape shape = BobShape::sphere;
+  Suspension suspension = Suspension::flexible;
+  T width{};   ///< box: along the swing (m)
+  T height{};  ///< box, cylinder: vertical (m)
+  T depth{};   ///< box: along the axis of rotation (m)
+
+  /// The knot (the bob's top, where the suspension holds it) to its centre (m).
+  T knot_to_center() const { return shape == BobShape::sphere ? T(diameter / 2.0) : T(height / 2.0); }
+  /// k^2 (m^2): the bob's moment of inertia about the horizontal axis through
+  /// its centre along the swing's axis, over its mass. Sphere (2/5) a^2; box
+  /// (w^2 + h^2)/12; upright cylinder a^2/4 + h^2/12 (a = diameter/2).
+  T gyration_squared() const {
+    switch (shape) {
+      case BobShape::box: return (width * width + height * height) / 12.0;
+      case BobShape::cylinder: return diameter * diameter / 16.0 + height * height / 12.0;
+      case BobShape::sphere: break;
+    }
+    return 0.1 * diameter * diameter;  // (2/5) (d/2)^2
+  }
+  /// The volume (m^3): what displaces the air.
+  T volume() const {
+    switch (shape) {
+      case BobShape::box: return width * height * depth;
+      case BobShape::cylinder: return kPi / 4.0 * diameter * diameter * height;
+      case BobShape::sphere: break;
+    }
+    return sphere_volume(T(diameter / 2.0));
+  }
+
   template <class A, class B, class F>
   static void zip(A& a, B& b, F& f) {
-    f({"bob.diameter", "m"}, a.diameter, b.diameter);
+    if constexpr (!std::is_const_v<B>) b.shape = a.shape, b.suspension = a.suspension;
+    if (a.shape != BobShape::box) f({"bob.diameter", "m"}, a.diameter, b.diameter);
+    if (a.shape == BobShape::box) f({"bob.width", "m"}, a.width, b.width);
+    if (a.shape != BobShape::sphere) f({"bob.height", "m"}, a.height, b.height);
+    if (a.shape == BobShape::box) f({"bob.depth", "m"}, a.depth, b.depth);
     f({"bob.mass", "kg"}, a.mass, b.mass);
   }
 };
@@ -121,9 +170,11 @@ struct Support {
 template <class T>
 struct Decay {
   T alpha;  ///< (1/s)
-  T beta;   ///< (1/(s rad))
+  T beta;   ///< (1/(s rad)), of the angle `angle_of`
+  AngleOf angle_of = AngleOf::pendulum;  ///< whose angle the decay record followed
   template <class A, class B, class F>
   static void zip(A& a, B& b, F& f) {
+    if constexpr (!std::is_const_v<B>) b.angle_of = a.angle_of;
     f({"decay.alpha", "1/s"}, a.alpha, b.alpha);
     f({"decay.beta", "1/(s rad)"}, a.beta, b.beta);
   }

@@ -160,8 +160,7 @@ T equivalent_length(const T& k, const T& h) {
 /// (no air, no flexure).
 template <class T>
 T physical_pendulum_period(const T& g, const T& k, const T& h, const T& theta0) {
-  using std::sqrt;
-  const T t0 = 2.0 * kPi * sqrt(equivalent_length(k, h) / g);
+  const T t0 = ideal_period(equivalent_length(k, h), g);
   return t0 * (1.0 + finite_amplitude_agm(theta0));  // Eq. (56)
 }
 

@@ -151,12 +151,6 @@ T length_for_period(const T& p, const T& g) {
   return p * p * g / (4.0 * kPi * kPi);  // Feinstein Eq. (B-1)
 }
 
-/// Small-amplitude period T0 = 2 pi sqrt(l/g) (s); l (m), g (m/s^2).
-template <class T>
-T small_amplitude_period(const T& length, const T& g) {
-  using std::sqrt;
-  return 2.0 * kPi * sqrt(length / g);
-}
 
 /// Speed at the bottom of the swing, v = sqrt(2 g h), h = l (1 - cos theta0)
 /// = 2 l sin^2(theta0/2): v = 2 sqrt(g l) sin(theta0/2) (m/s).
@@ -324,7 +318,7 @@ T cycloid_angle_at_equal_energy(const T& theta) {
 template <class T>
 T clock_period(const T& g, const T& length, const T& theta0, const T& q, const T& location,
                ImpulseDirection direction) {
-  const T free = small_amplitude_period(length, g) * (1.0 + finite_amplitude_agm(theta0));  // Eq. (E-3)
+  const T free = ideal_period(length, g) * (1.0 + finite_amplitude_agm(theta0));  // Eq. (E-3)
   const T impulse = direction_sign(direction) * impulse_error_elliptic(theta0, location, q).error;
   return free * (1.0 + impulse / kSecondsPerDay);  // Eq. (D-1), one impulse a swing
 }

@@ -123,6 +123,16 @@ struct Term {
 template <class T>
 using Terms = std::array<Term<T>, kCorrectionCount>;
 
+/// The pendulum's angle (the line from the pivot to the bob's centre) over
+/// the bob's own, for `app` at length l (m): the slow mode's ratio on a
+/// flexible suspension (mass.hpp, slow_mode_line_over_body), 1 on a rigid
+/// one (the bob turns with the line) or without a bob (a point).
+template <class T>
+T pendulum_over_body_angle(const Apparatus<T>& app, const T& l) {
+  if (!app.bob || app.bob->suspension == Suspension::rigid) return T(1.0);
+  return slow_mode_line_over_body(app.bob->gyration_squared(), app.bob->knot_to_center(), l);
+}
+
 /// Every correction for `app` swinging as `s`, handed to `sink` as
 /// sink.set(id, ratio, method) or sink.skip({ids...}, reason): a correction
 /// whose part the apparatus lacks is skipped with the reason. The
@@ -134,18 +144,36 @@ void visit_corrections(const Apparatus<T>& app, const Swing<T>& s, const Amplitu
   auto skip = [&](std::initializer_list<Id> ids, const char* reason) { sink.skip(ids, reason); };
 
   const T& l = s.length;
-  const T& theta0 = s.amplitude;
   const T& omega0 = s.omega;
+  // The corrections take the pendulum's angle; a sensor in the bob saw the bob's.
+  const bool body_decay = app.decay && app.decay->angle_of == AngleOf::body;
+  const T c = s.amplitude_of == AngleOf::body || body_decay ? pendulum_over_body_angle(app, l) : T(1.0);
+  const T theta0 = s.amplitude_of == AngleOf::body ? T(c * s.amplitude) : s.amplitude;
 
   set(Id::finite_amplitude, finite_amplitude(amplitude.method, theta0, amplitude.terms),
       method_name(amplitude.method));
 
   if (!app.bob) {
     skip({Id::bob_radius, Id::bob_rotation}, "the scene has no bob");
-  } else {
+  } else if (app.bob->shape == BobShape::sphere) {
+    // The slow mode's first orders in a/l (mass.hpp, slow_mode): Nelson & Olsson's rows.
     const T a = app.bob->diameter / 2.0;
     set(Id::bob_radius, bob_radius(a, l), "eq10");
-    set(Id::bob_rotation, bob_rotation(a, l), "eq10_rotation");
+    if (app.bob->suspension == Suspension::rigid) {
+      skip({Id::bob_rotation}, "a rigid suspension turns with the bob");
+    } else {
+      set(Id::bob_rotation, bob_rotation(a, l), "eq10_rotation");
+    }
+  } else {
+    // Exact at any size: the rigid body, and the flexible suspension's slow mode beyond it.
+    const T k2 = app.bob->gyration_squared();
+    const T rigid = rigid_bob(k2, l);
+    set(Id::bob_radius, rigid, "eq9_rigid_body");
+    if (app.bob->suspension == Suspension::rigid) {
+      skip({Id::bob_rotation}, "a rigid suspension turns with the bob");
+    } else {
+      set(Id::bob_rotation, T(slow_mode(k2, app.bob->knot_to_center(), l) - rigid), "slow_mode");
+    }
   }
   // The other parts' corrections are their mass (or the air's) relative to the bob's.
   const T* m = app.bob && app.bob->mass ? &*app.bob->mass : nullptr;
@@ -186,7 +214,11 @@ void visit_corrections(const Apparatus<T>& app, const Swing<T>& s, const Amplitu
   } else {
     const auto& w = *app.wire;
     set(Id::wire_mass, wire_mass(w.mass, *m), "eq13");
-    set(Id::wire_flexibility, wire_flexibility(w.mass, *m), "second_order_flexible_minus_rigid");
+    if (app.bob->suspension == Suspension::rigid) {
+      skip({Id::wire_flexibility}, "a rigid suspension does not bend");
+    } else {
+      set(Id::wire_flexibility, wire_flexibility(w.mass, *m), "second_order_flexible_minus_rigid");
+    }
     if (w.diameter && w.youngs_modulus) {
       const T& d = *w.diameter;
       const T area = kPi * d * d / 4.0;
@@ -202,16 +234,21 @@ void visit_corrections(const Apparatus<T>& app, const Swing<T>& s, const Amplitu
     skip({Id::buoyancy, Id::added_mass}, "needs the bob's diameter and mass (bob)");
   } else {
     const auto& air = *app.air;
-    const T a = app.bob->diameter / 2.0;
     const T rho = air_density(air.pressure, air.temperature, air.molar_mass);
-    T volume = sphere_volume(a);
+    T volume = app.bob->volume();
     if (app.cap && app.cap->volume) volume += *app.cap->volume;
     const T m_air = rho * volume;
     set(Id::buoyancy, buoyancy(m_air, *m), "eq16");
-    const T x = inverse_acceleration_modulus(app.bob->diameter, l, theta0);
-    const T delta = penetration_depth(air.viscosity, omega0, rho);
-    const T kappa = added_mass_factor(added_mass_coefficient(x), history_coefficient(x), delta, a);
-    set(Id::added_mass, added_mass(kappa, m_air, *m), "eq54_eq62");
+    if (app.bob->shape != BobShape::sphere) {
+      skip({Id::added_mass}, "Eqs. (54)-(62) are for a sphere; a box's or cylinder's added mass is not modelled "
+                             "(docs/phone.md)");
+    } else {
+      const T a = app.bob->diameter / 2.0;
+      const T x = inverse_acceleration_modulus(app.bob->diameter, l, theta0);
+      const T delta = penetration_depth(air.viscosity, omega0, rho);
+      const T kappa = added_mass_factor(added_mass_coefficient(x), history_coefficient(x), delta, a);
+      set(Id::added_mass, added_mass(kappa, m_air, *m), "eq54_eq62");
+    }
   }
 
   if (!app.decay) {
@@ -219,9 +256,11 @@ void visit_corrections(const Apparatus<T>& app, const Swing<T>& s, const Amplitu
          "the scene gives no decay (alpha, beta)");
   } else {
     const auto& d = *app.decay;
+    // d theta/dt = -beta theta^2 with theta = c psi: the line's beta is the bob's over c (alpha is either's).
+    const T beta = body_decay ? T(d.beta / c) : d.beta;
     set(Id::linear_damping, linear_damping(d.alpha, omega0), "eq34");
-    set(Id::quadratic_damping, quadratic_damping(d.beta, omega0, theta0), "eq48");
-    set(Id::amplitude_decay, amplitude_decay(theta0, d.alpha, d.beta, s.trial_duration), "eq50");
+    set(Id::quadratic_damping, quadratic_damping(beta, omega0, theta0), "eq48");
+    set(Id::amplitude_decay, amplitude_decay(theta0, d.alpha, beta, s.trial_duration), "eq50");
   }
 
   if (!app.support) {

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "pendulum/observation.hpp"
+
 namespace pendulum {
 
 /// A decay record in SI units.
@@ -21,6 +23,8 @@ struct DecayData {
   std::vector<double> sigmas;
   /// theta0m at t = 0 (rad); fitted when empty, held fixed when given.
   std::optional<double> initial_amplitude;
+  /// Whose angle the amplitudes are: a sensor in the bob follows the bob's (observation.hpp).
+  AngleOf angle_of = AngleOf::pendulum;
 };
 
 /// Which terms of d theta0/dt = -alpha theta0 - beta theta0^2 are fitted.

@@ -91,13 +91,13 @@ struct DragPrediction {
 };
 
 /// Predicted drag constants of `app` swinging as observed in `o`; empty in
-/// vacuum or without the bob's mass. The wire's quadratic drag needs its
+/// vacuum, without the bob's mass, or for a bob that is not a sphere. The wire's quadratic drag needs its
 /// diameter; its linear drag does not (Eq. 67).
 /// The velocity scale is the observation's amplitude, as in the paper (R = 1100).
 template <class T>
 std::optional<DragPrediction<T>> predict_drag(const Apparatus<T>& app, const Observation<T>& o) {
   using std::sqrt;
-  if (!app.air || !app.bob || !app.bob->mass) return std::nullopt;
+  if (!app.air || !app.bob || !app.bob->mass || app.bob->shape != BobShape::sphere) return std::nullopt;
   const auto& air = *app.air;
   const auto& bob = *app.bob;
   const T omega0 = 2.0 * kPi / o.period;

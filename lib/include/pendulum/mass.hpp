@@ -35,6 +35,60 @@ T bob_rotation(const T& a, const T& l) {
   return 2.0 / 25.0 * r * r * r;
 }
 
+/// A bob of any shape clamped to a rigid, massless rod: the physical
+/// pendulum T = 2 pi sqrt((l^2 + k^2)/(g l)) (Nelson & Olsson Eq. 9), so
+/// DeltaT/T0 = sqrt(1 + k^2/l^2) - 1, exactly (T0 = 2 pi sqrt(l/g)).
+/// \param k2 the bob's k^2 about its centre (m^2), >= 0 (Bob::gyration_squared).
+/// \param l pivot to the bob's centre (m), > 0.
+/// Its first order is Eq. (10): (1/2) k^2/l^2 = (1/5)(a/l)^2 for a sphere.
+template <class T>
+T rigid_bob(const T& k2, const T& l) {
+  using std::sqrt;
+  const T u = k2 / (l * l);
+  return u / (sqrt(1.0 + u) + 1.0);  // sqrt(1 + u) - 1 without cancellation
+}
+
+/// A bob of any shape on a flexible, massless string from the pivot to its
+/// knot, the bob's centre d below the knot: the slow mode of the double
+/// pendulum, exact for small oscillations (docs/phone.md). With s = l - d the
+/// string's length, the string's angle phi and the bob's psi obey
+///   M [[s^2, s d], [s d, d^2 + k^2]] (phi, psi)'' = -M g [[s, 0], [0, d]] (phi, psi),
+/// whose eigenvalues lambda = omega^2/g solve s k^2 lambda^2 - (d l + k^2) lambda + d = 0;
+/// the slow mode's, lambda = 2d/(B + R) with B = d l + k^2 and
+/// R = sqrt(B^2 - 4 s d k^2), gives T/T0 = 1/sqrt(lambda l) = sqrt(1 + u), where
+///   u = k^2 N / (2 d l (R + d l)),  N = 4 d^2 + k^2 + k^2 (k^2 + 4 d^2 - 2 d l)/(R + d l)
+/// is 1/(lambda l) - 1 rearranged so that no step cancels. DeltaT/T0 = sqrt(1 + u) - 1.
+/// In a/l for a sphere (k^2 = (2/5) a^2, d = a) it is
+///   (1/5)(a/l)^2 + (2/25)(a/l)^3 - (17/250)(a/l)^4 + ...,
+/// Eq. (10) times 1 + (2/5)(a/l): Nelson & Olsson's rows bob_radius and bob_rotation.
+/// \param k2 the bob's k^2 about its centre (m^2), >= 0.
+/// \param d knot to the bob's centre (m), > 0.
+/// \param l pivot to the bob's centre (m), > d.
+/// Reference: Nelson & Olsson (1986) Sec. III.B.3, Ref. 14; the eigenproblem of any
+/// double pendulum (Landau & Lifshitz, Mechanics, Sec. 23).
+template <class T>
+T slow_mode(const T& k2, const T& d, const T& l) {
+  using std::sqrt;
+  const T dl = d * l, b = dl + k2, s = l - d;
+  const T r = sqrt(b * b - 4.0 * s * d * k2);
+  const T n = 4.0 * d * d + k2 + k2 * (k2 + 4.0 * d * d - 2.0 * dl) / (r + dl);
+  const T u = k2 * n / (2.0 * dl * (r + dl));
+  return u / (sqrt(1.0 + u) + 1.0);
+}
+
+/// The slow mode's angle of the line from the pivot to the bob's centre over
+/// the bob's own angle (what a phone's gyroscope turns with): from the
+/// eigenvector, phi/psi = lambda d/(1 - lambda s), so
+///   theta/psi = (s phi + d psi)/(l psi) = d/(l (1 - lambda s)),
+/// with lambda l = 1/(1 + u) (slow_mode). 1 for a point bob; below 1 for a
+/// body, which turns more than the line to its centre. Same arguments.
+template <class T>
+T slow_mode_line_over_body(const T& k2, const T& d, const T& l) {
+  const T r = slow_mode(k2, d, l);  // sqrt(1 + u) - 1
+  const T lambda_l = 1.0 / ((1.0 + r) * (1.0 + r));
+  return d / (l - lambda_l * (l - d));
+}
+
 /// Moment of inertia of the suspension ring about the pivot, the ring being
 /// a flat annulus whose plane contains the swing axis:
 /// I_r = m_r [d_r^2 + (r_i^2 + r_o^2)/4].

@@ -3,6 +3,7 @@
 /// \brief Small helpers that let the physics run on `double` and on
 /// automatic-differentiation scalars (ceres::Jet) alike.
 
+#include <cmath>
 #include <type_traits>
 
 namespace pendulum {
@@ -24,5 +25,16 @@ inline constexpr double kPi = 3.14159265358979323846;
 
 /// Standard gravity (m/s^2), used only to judge plausibility, never in g.
 inline constexpr double kStandardGravity = 9.80665;
+
+/// T0 = 2 pi sqrt(l/g) (s): the small-amplitude period of the ideal
+/// pendulum of length l (m; a rigid body's equivalent length) in gravity g
+/// (m/s^2). Nelson & Olsson (1986) Eq. (3); Kelley (1993) Eq. (56) without
+/// K. g may be a plain number where the scalar T is a dual number (the fit
+/// evaluates at g = 1).
+template <class T, class G>
+T ideal_period(const T& l, const G& g) {
+  using std::sqrt;
+  return 2.0 * kPi * sqrt(l / g);  // Eq. (3)
+}
 
 }  // namespace pendulum

@@ -19,6 +19,18 @@ enum class Setting {
   pivot_position,  ///< the pivot's place along the body, from a mark on it
 };
 
+/// Whose angle an amplitude is. The corrections take the pendulum's (the
+/// line from the pivot to the bob's centre); a sensor in the bob (a phone's
+/// gyroscope or accelerometer) turns with the bob, which on a string swings
+/// further than that line (docs/phone.md, What the sensor sees).
+enum class AngleOf {
+  pendulum,  ///< the line from the pivot to the bob's centre (a typed amplitude, a tracked bob)
+  body,      ///< the bob's own tilt, what a sensor in it measures
+};
+
+/// The output's name of whose angle.
+inline const char* angle_of_name(AngleOf a) { return a == AngleOf::body ? "body" : "pendulum"; }
+
 /// The scene's key of a setting, which is also its JSON path.
 inline const char* setting_key(Setting s) {
   switch (s) {
@@ -40,6 +52,7 @@ struct Observation {
   T amplitude;  ///< amplitude at the start of each timing (rad)
   int oscillations_per_trial = 1;  ///< oscillations in one timing
   Setting setting = Setting::length;
+  AngleOf amplitude_of = AngleOf::pendulum;
 
   template <class A, class B, class F>
   static void zip(A& a, B& b, F& f) {
@@ -57,6 +70,7 @@ void zip_observation(A& a, B& b, F&& f) {
   if constexpr (!std::is_const_v<B>) {
     b.oscillations_per_trial = a.oscillations_per_trial;
     b.setting = a.setting;
+    b.amplitude_of = a.amplitude_of;
   }
   std::decay_t<A>::zip(a, b, z);
 }
@@ -84,11 +98,12 @@ struct Swing {
   /// What `length` is until a model makes it a pendulum's length (a rigid
   /// body's pivot position or distance, models/physical_pendulum.hpp).
   Setting setting = Setting::length;
+  AngleOf amplitude_of = AngleOf::pendulum;  ///< whose angle `amplitude` is
 
   /// The swing of an observation whose length is off by `length_offset` (m).
   static Swing of(const Observation<T>& o, const T& length_offset) {
     return {o.length + length_offset, o.amplitude, 2.0 * kPi / o.period,
-            double(o.oscillations_per_trial) * o.period, o.setting};
+            double(o.oscillations_per_trial) * o.period, o.setting, o.amplitude_of};
   }
   /// g from the working frequency, omega^2 l (m/s^2).
   T working_g() const { return omega * omega * length; }

@@ -10,6 +10,7 @@
 #include "pendulum/apparatus.hpp"
 #include "pendulum/decay_fit.hpp"
 #include "pendulum/observation.hpp"
+#include "pendulum/period_model.hpp"
 #include "pendulum/recordings/swings.hpp"
 #include "pendulum/site.hpp"
 
@@ -53,9 +54,6 @@ struct SceneRecording {
   std::string name;  ///< as written in the scene; summary.file is the path opened
   RecordingSummary summary;
 };
-
-/// The period model a scene is reduced with (models/).
-enum class PeriodModelKind { simple_pendulum, physical_pendulum };
 
 struct ParsedScene {
   PeriodModelKind model = PeriodModelKind::simple_pendulum;

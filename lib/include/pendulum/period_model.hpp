@@ -3,7 +3,15 @@
 /// \brief What every period model shares: its parameters' names and units,
 /// and what it predicts for one observation.
 ///
-/// A period model is a struct with
+/// A period model is a struct with (models/registry.hpp checks every piece
+/// at compile time; docs/core.md):
+///   kName: its name in the output ("fit.model"),
+///   kKind: its PeriodModelKind, its place in the registry,
+///   kSettings: the observation keys it reads (Setting), by which the reader
+///       knows a scene's kind,
+///   kCorrectionUse: per row of kCorrections, whether it applies, is
+///       replaced by the model's own, or does not apply (a test checks
+///       predict() against it),
 ///   kParameters, kParameterInfo, kDefaults (g is parameter 0),
 ///   canonicalise(double* p): the fitted parameters in their reported form
 ///       (a sign only the square of which matters),
@@ -31,22 +39,20 @@
 
 namespace pendulum {
 
+/// The period model a scene is reduced with: one per registered kind, in
+/// the registry's order (models/registry.hpp).
+enum class PeriodModelKind { simple_pendulum, physical_pendulum };
+
+/// How a model treats one row of kCorrections (its kCorrectionUse, one per
+/// CorrectionId): the row as visit_corrections computes it, its own formula
+/// in its place, or a row that does not describe it (skipped with a reason).
+enum class CorrectionUse { applies, replaced, not_applicable };
+
 struct ParameterInfo {
   const char* name;  ///< as in the scene's "fit" and the output
   const char* unit;  ///< SI
   const char* description;
 };
-
-/// T0 = 2 pi sqrt(l/g) (s): the small-amplitude period of the ideal
-/// pendulum of length l (m; a rigid body's equivalent length) in gravity g
-/// (m/s^2). Nelson & Olsson (1986) Eq. (3); Kelley (1993) Eq. (56) without
-/// K. g may be a plain number where the scalar T is a dual number (the fit
-/// evaluates at g = 1).
-template <class T, class G>
-T ideal_period(const T& l, const G& g) {
-  using std::sqrt;
-  return 2.0 * kPi * sqrt(l / g);  // Eq. (3)
-}
 
 /// The period (s) `Model` predicts at parameters p (SI, g first) from a
 /// measured swing (Model::swing): predict()'s period without the rows.

@@ -240,16 +240,36 @@ void read_parts(Object& top, ParsedScene& out) {
     Object bob(top.at("bob"), "bob");
     auto& bv = v.bob.emplace();
     auto& bu = u.bob.emplace();
-    put(bob, "diameter", Dimension::length, Range::positive, bv.diameter, bu.diameter);
+    if (bob.has("shape")) {
+      const std::string shape = bob.text("shape");
+      PENDULUM_FAIL_IF(shape != "sphere" && shape != "box" && shape != "cylinder", "bob.shape",
+                       "got " + shown(bob.at("shape")) + "; expected \"sphere\", \"box\" or \"cylinder\"");
+      bv.shape = bu.shape = shape == "box" ? BobShape::box : shape == "cylinder" ? BobShape::cylinder : BobShape::sphere;
+    }
+    // A shape's own dimensions (apparatus.hpp, Bob), each required.
+    if (bv.shape != BobShape::box) put(bob, "diameter", Dimension::length, Range::positive, bv.diameter, bu.diameter);
+    if (bv.shape == BobShape::box) put(bob, "width", Dimension::length, Range::positive, bv.width, bu.width);
+    if (bv.shape != BobShape::sphere) put(bob, "height", Dimension::length, Range::positive, bv.height, bu.height);
+    if (bv.shape == BobShape::box) put(bob, "depth", Dimension::length, Range::positive, bv.depth, bu.depth);
     put(bob, "mass", Dimension::mass, Range::positive, bv.mass, bu.mass);
     bob.finish();
     if (bv.mass) {
-      const double density = *bv.mass / sphere_volume(bv.diameter / 2.0);
+      const double density = *bv.mass / bv.volume();
       PENDULUM_FAIL_IF(density > kMaxDensity, "bob.mass.value",
                        "got " + format_number(*bv.mass) + " kg, a density of " + format_number(density) +
-                           " kg/m^3 for this diameter; expected at most " + format_number(kMaxDensity) +
+                           " kg/m^3 for this " + (bv.shape == BobShape::sphere ? "diameter" : "size") +
+                           "; expected at most " + format_number(kMaxDensity) +
                            " kg/m^3 (osmium, the densest element)");
     }
+  }
+  if (top.has("suspension")) {
+    const std::string suspension = top.text("suspension");
+    PENDULUM_FAIL_IF(suspension != "flexible" && suspension != "rigid", "suspension",
+                     "got " + shown(top.at("suspension")) + "; expected \"flexible\" (a string or wire, the "
+                     "default) or \"rigid\" (a rod clamped to the bob)");
+    PENDULUM_FAIL_IF(!v.bob, "suspension", "got " + shown(top.at("suspension")) + " but no bob; expected a bob "
+                     "that hangs from it");
+    v.bob->suspension = u.bob->suspension = suspension == "rigid" ? Suspension::rigid : Suspension::flexible;
   }
   // A part's fields are read into `pv` (values) and `pu` (uncertainties); its
   // consistency is checked once no unknown key is left. Every part but the
@@ -295,6 +315,9 @@ void read_parts(Object& top, ParsedScene& out) {
        },
        [&](const CapScrew<double>& pv) {
          lighter_than_bob(std::abs(pv.mass_deficit), "cap_screw.mass_deficit.value", "a mass deficit");
+         PENDULUM_FAIL_IF(v.bob->shape != BobShape::sphere, "cap_screw",
+                          "got a cap screw on a bob.shape other than \"sphere\"; expected it only in a sphere "
+                          "(Nelson & Olsson's bob, Sec. III.B.2)");
          PENDULUM_FAIL_IF(pv.center_distance >= v.bob->diameter / 2.0, "cap_screw.center_distance.value",
                           "got " + format_number(pv.center_distance) +
                               " m; expected less than the bob radius (" + format_number(v.bob->diameter / 2.0) +
@@ -307,9 +330,10 @@ void read_parts(Object& top, ParsedScene& out) {
   }, [&](const Wire<double>& pv) {
     lighter_than_bob(pv.mass, "wire.mass.value", "a wire");
     if (pv.diameter) {
-      PENDULUM_FAIL_IF(*pv.diameter >= v.bob->diameter, "wire.diameter.value",
+      const double across = v.bob->shape == BobShape::box ? std::min(v.bob->width, v.bob->depth) : v.bob->diameter;
+      PENDULUM_FAIL_IF(*pv.diameter >= across, "wire.diameter.value",
                        "got " + format_number(*pv.diameter) + " m; expected a wire thinner than the bob (" +
-                           format_number(v.bob->diameter) + " m)");
+                           format_number(across) + " m)");
     }
     if (!pv.youngs_modulus) return;
     within(*pv.youngs_modulus, 0.0, kMaxYoungsModulus, "wire.youngs_modulus.value", "Pa",
@@ -378,6 +402,13 @@ void read_decay(Object& top, ParsedScene& out, RecordingReader& recordings) {
     if (d.has("initial_amplitude")) {
       data.initial_amplitude =
           quantity(d, "initial_amplitude", Dimension::angle, Range::positive).value;
+    }
+    if (d.has("of")) {
+      // Whose angle the amplitudes are, as an amplitude's "of" (docs/phone.md).
+      const std::string of = d.text("of");
+      PENDULUM_FAIL_IF(of != "pendulum" && of != "body", d.path("of"),
+                       "got \"" + of + "\"; expected \"pendulum\" (the default) or \"body\" (a sensor in the bob)");
+      data.angle_of = of == "body" ? AngleOf::body : AngleOf::pendulum;
     }
     if (d.has("source")) d.text("source");
     if (d.has("generator")) d.at("generator");  // free-form metadata

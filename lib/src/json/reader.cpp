@@ -274,7 +274,8 @@ void within(double x, double lo, double hi, const std::string& path, const char*
   PENDULUM_FAIL_IF(!(x >= lo && x <= hi), path, "got " + format_number(x) + " " + unit + "; expected " + what);
 }
 
-Measured quantity(Object& parent, const std::string& key, Dimension dim, Range range, std::string* measured_to) {
+Measured quantity(Object& parent, const std::string& key, Dimension dim, Range range, std::string* qualifier,
+                  const char* qualifier_key) {
   Object q(parent.at(key), parent.path(key),
            "an object {\"value\": ..., \"unit\": ...}");
   const double raw = finite_number(q.at("value"), [&] { return q.path("value"); }, "a number");
@@ -291,7 +292,7 @@ Measured quantity(Object& parent, const std::string& key, Dimension dim, Range r
           "got " + format_number(u) + "; expected a non-negative uncertainty");
   const double sigma = u * unit->factor;
   if (q.has("source")) q.text("source");
-  if (measured_to && q.has("measured_to")) *measured_to = q.text("measured_to");
+  if (qualifier && q.has(qualifier_key)) *qualifier = q.text(qualifier_key);
   q.finish();
   const double si = raw * unit->factor + unit->offset;
   const bool ok = range == Range::any || (range == Range::positive ? si > 0.0 : si >= 0.0);

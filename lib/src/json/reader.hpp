@@ -107,10 +107,11 @@ struct Measured {
 };
 
 /// {"value": x, "unit": "cm", "uncertainty": u, "source": "..."} under `key`.
-/// With `measured_to`, the quantity may also hold "measured_to" (a length's
-/// reference point, read as text into it).
+/// With `qualifier`, the quantity may also hold the text `qualifier_key`
+/// ("measured_to", a length's reference point; "of", whose angle an
+/// amplitude is), read into it.
 Measured quantity(Object& parent, const std::string& key, Dimension dim, Range range,
-                  std::string* measured_to = nullptr);
+                  std::string* qualifier = nullptr, const char* qualifier_key = "measured_to");
 
 /// A required quantity into a field and its uncertainty.
 void put(Object& parent, const std::string& key, Dimension dim, Range range, double& value, double& sigma);

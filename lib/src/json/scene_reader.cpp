@@ -8,8 +8,7 @@
 #include "../plausibility.hpp"
 #include "parts.hpp"
 #include "recording_reader.hpp"
-#include "pendulum/models/physical_pendulum.hpp"
-#include "pendulum/models/simple_pendulum.hpp"
+#include "pendulum/models/registry.hpp"
 #include "pendulum/scene_json.hpp"
 
 namespace pendulum {
@@ -51,11 +50,13 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
                    std::string("got both length and ") + key + "; expected one");
   PENDULUM_FAIL_IF(physical && shared && shared->has("length"), "length",
                    std::string("got both length and ") + prefix + key + "; expected one");
-  PENDULUM_FAIL_IF(!out.observations.empty() && physical != (out.model == PeriodModelKind::physical_pendulum),
+  // The kind is the registered model's that reads this setting (models/registry.hpp).
+  const PeriodModelKind kind = kind_of_setting(v.setting);
+  PENDULUM_FAIL_IF(!out.observations.empty() && kind != out.model,
                    prefix + key, "got a mix of length and pivot keys; expected every observation to give length "
                    "(a ball on a wire) or every one pivot_distance or pivot_position (a rigid body)");
+  out.model = kind;
   if (physical) {
-    out.model = PeriodModelKind::physical_pendulum;
     put(o, key, Dimension::length, position ? Range::any : Range::non_negative, v.length, u.length);
     within(std::abs(v.length), 0.0, 1e3, prefix + key + ".value", "m", "a laboratory body's pivot, within 1 km");
   } else {
@@ -72,6 +73,10 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
                      "missing, and the recording " + r.file + " gives no amplitudes (a photogate gives them with "
                      "timing.bob_width); expected the amplitude at the start of the timing");
     v.amplitude = r.swings.start_amplitude;
+    // A gyroscope or accelerometer turns with the bob it is in (docs/phone.md).
+    const bool in_bob = r.kind == SignalKind::angular_rate || r.kind == SignalKind::acceleration ||
+                        r.kind == SignalKind::linear_acceleration;
+    if (in_bob) v.amplitude_of = u.amplitude_of = AngleOf::body;
     const bool known = std::isfinite(r.swings.start_amplitude_uncertainty);
     u.amplitude = known ? r.swings.start_amplitude_uncertainty : 0.0;
     source.amplitude_raw = v.amplitude * 180.0 / kPi;
@@ -83,7 +88,14 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
                      (r.kind == SignalKind::position ? " and its circle's radius)" : ")")
                : std::string("(no uncertainty: a gyroscope's scale, g or a beam's width would set it)")));
   } else {
-    put(amplitude_owner, "amplitude", Dimension::angle, Range::positive, v.amplitude, u.amplitude);
+    std::string of = "pendulum";
+    const Measured m = quantity(amplitude_owner, "amplitude", Dimension::angle, Range::positive, &of, "of");
+    v.amplitude = m.value;
+    u.amplitude = m.sigma;
+    PENDULUM_FAIL_IF(of != "pendulum" && of != "body", source.path_of("amplitude") + ".of",
+                     "got \"" + of + "\"; expected \"pendulum\" (the line from the pivot to the bob's centre, "
+                     "the default) or \"body\" (the bob's own tilt, what a sensor in it measures)");
+    if (of == "body") v.amplitude_of = u.amplitude_of = AngleOf::body;
     const json& amplitude = amplitude_owner.at("amplitude");
     source.amplitude_raw = amplitude.at("value").get<double>();
     source.amplitude_unit = find_unit(amplitude.at("unit").get<std::string>(), Dimension::angle)->name;
@@ -164,15 +176,50 @@ void refer_lengths_to_centre(ParsedScene& out) {
     PENDULUM_FAIL_IF(!bob, path,
                      "got \"" + to + "\" but no bob; expected bob.diameter, whose half is " +
                          (sign > 0 ? "added to" : "subtracted from") + " the length");
-    const double radius = bob->diameter / 2.0, sigma = out.apparatus_uncertainty.bob->diameter / 2.0;
+    const double radius = bob->knot_to_center(), sigma = out.apparatus_uncertainty.bob->knot_to_center();
     out.observations[k].length += sign * radius;
     double& u = out.observation_uncertainties[k].length;
     u = std::hypot(u, sigma);
     if (k > 0 && out.sources[k].is_shared("length")) continue;  // said once
     out.assumptions.push_back(out.sources[k].path_of("length") + ": measured to the " +
-                              (sign > 0 ? "top" : "bottom") + " of the bob; its radius " +
+                              (sign > 0 ? "top" : "bottom") + " of the bob; its " +
+                              (bob->shape == BobShape::sphere ? "radius " : "half height ") +
                               format_number(radius * 1e3, 4) + " mm is " + (sign > 0 ? "added" : "subtracted"));
   }
+}
+
+/// Says, for each amplitude that is the bob's (a sensor in it, or "of":
+/// "body"), what the corrections take instead: the pendulum's angle, the slow
+/// mode's ratio times it at the measured length (docs/phone.md).
+void note_body_amplitudes(ParsedScene& out) {
+  for (std::size_t k = 0; k < out.observations.size(); ++k) {
+    const Observation<double>& o = out.observations[k];
+    if (o.amplitude_of != AngleOf::body || (k > 0 && out.sources[k].is_shared("amplitude"))) continue;
+    const double c = pendulum_over_body_angle(out.apparatus, o.length);
+    out.assumptions.push_back(out.sources[k].path_of("amplitude") + ": the bob's own angle; the corrections take " +
+                              "the pendulum's (pivot to the bob's centre), " + format_number(c, 6) + " times it" +
+                              (c == 1.0 ? (out.apparatus.bob || out.apparatus.body ? " (rigid: the bob turns with the line)" : " (no bob: a point)")
+                                        : std::string(" (the slow mode on the string)")));
+  }
+}
+
+/// Refuses a part none of whose corrections the scene's kind uses (its
+/// kCorrectionUse, models/registry.hpp): a ball's ring or wire on a rigid body.
+void check_parts_apply(Object& top, const ParsedScene& out) {
+  visit_period_model(out.model, [&](auto model) {
+    using M = decltype(model);
+    for (const CorrectionInfo& info : kCorrections) {
+      const std::string part = info.part;
+      if (!top.has(part) || !top.at(part).is_object()) continue;
+      bool used = false;
+      for (const CorrectionInfo& other : kCorrections) {
+        used |= part == other.part && M::kCorrectionUse[static_cast<int>(other.correction)] != CorrectionUse::not_applicable;
+      }
+      PENDULUM_FAIL_IF(!used, part,
+                       "got a " + part + " in a scene of a " + M::kName + "; expected none: no correction of a " +
+                           M::kName + " uses it (docs/core.md)");
+    }
+  });
 }
 
 /// ", a and b" or " and a": the unknowns besides g, for a message.
@@ -189,9 +236,10 @@ void check_geometry(const ParsedScene& out) {
     const double length = out.observations[k].length;
     const std::string at = out.sources[k].path_of("length") + ".value";
     if (!v.bob) continue;
-    const double radius = v.bob->diameter / 2.0;
+    const double radius = v.bob->knot_to_center();
     PENDULUM_FAIL_IF(radius >= length, at,
-                     "got " + format_number(length) + " m; expected more than the bob radius " +
+                     "got " + format_number(length) + " m; expected more than the bob " +
+                         (v.bob->shape == BobShape::sphere ? "radius " : "half height ") +
                          format_number(radius) + " m");
     if (v.ring) {
       PENDULUM_FAIL_IF(v.ring->pivot_distance + v.ring->outer_radius >= length - radius, "ring.outer_radius.value",
@@ -250,8 +298,9 @@ ParsedScene parse_scene(const std::string& text, const SceneFiles& files) {
   if (top.has("decay")) read_decay(top, out, recordings);
   if (top.has("site")) read_site(top, out);
   const bool physical = out.model == PeriodModelKind::physical_pendulum;
-  if (top.has("fit")) physical ? read_fit<PhysicalPendulum>(top, out) : read_fit<SimplePendulum>(top, out);
+  if (top.has("fit")) visit_period_model(out.model, [&](auto model) { read_fit<decltype(model)>(top, out); });
   if (physical) read_physical(top, out);
+  check_parts_apply(top, out);
   top.finish();
   const std::size_t unknowns = out.fit.size() + 1;
   PENDULUM_FAIL_IF(out.observations.size() < unknowns, out.series ? "observations" : "fit",
@@ -261,6 +310,7 @@ ParsedScene parse_scene(const std::string& text, const SceneFiles& files) {
                        "as unknowns");
   refer_lengths_to_centre(out);
   if (!physical) check_geometry(out);
+  note_body_amplitudes(out);
   check_plausibility(out);
   return out;
 }

@@ -147,6 +147,13 @@ json correction_json(const CorrectionRow& row) {
   return c;
 }
 
+/// Where the amplitude is the bob's (a sensor in it): whose it is, and the
+/// pendulum's that the corrections took (docs/phone.md).
+void amplitude_of_json(const ObservationResult& o, json& out) {
+  out["amplitude_of"] = angle_of_name(o.amplitude_of);
+  out["amplitude_pendulum_rad"] = *o.amplitude_pendulum;
+}
+
 json corrections_json(const ObservationResult& o) {
   json corrections = json::array();
   for (const auto& row : o.corrections) corrections.push_back(correction_json(row));
@@ -212,6 +219,7 @@ json fit_json(const ParsedScene& scene, const Analysis& a) {
          {"total_delta_T_s", o.total_delta_T},
          {"negligible_threshold_delta_T_s", o.negligible_below},
          {"corrections", corrections_json(o)}});
+    if (o.amplitude_pendulum) amplitude_of_json(o, observations.back());
   }
   json textbook = nullptr;  // the lengths determine no line
   if (f.textbook) {
@@ -312,6 +320,7 @@ std::string result_json(const ParsedScene& scene, const Analysis& a, const Analy
     out["negligible_threshold"] = {{"fraction_of_period_uncertainty", options.negligible_fraction},
                                    {"delta_T_s", o.negligible_below}};
     out["corrections"] = corrections_json(o);
+    if (o.amplitude_pendulum) amplitude_of_json(o, out);
   }
   out["assumptions"] = scene.assumptions;
   out["warnings"] = warnings_json(scene, a);

@@ -152,8 +152,7 @@ std::optional<PivotScanRecord> pivot_scan_record(const ParsedScene& given, const
   r.textbook_k = app.body && app.body->radius_of_gyration ? *app.body->radius_of_gyration : t[M::radius_of_gyration];
   r.textbook_center = positions ? t[M::center_of_mass_position] : 0.0;
   auto textbook_at = [&](double h) {
-    using std::sqrt;
-    return 2.0 * kPi * sqrt(equivalent_length(r.textbook_k, h) / r.textbook_g);  // Kelley Eqs. (55)-(56), no K
+    return ideal_period(equivalent_length(r.textbook_k, h), r.textbook_g);  // Kelley Eqs. (55)-(56), no K
   };
 
   for (const double side : positions ? std::vector<double>{-1.0, 1.0} : std::vector<double>{1.0}) {

@@ -12,7 +12,7 @@ namespace pendulum::report {
 namespace {
 constexpr double kMicro = 1e6;   // s -> us
 constexpr double kMilli = 1e3;   // m/s^2 -> mm/s^2
-constexpr double kDegree = 180.0 / kPi;
+constexpr double kDegreesPerRadian = 180.0 / kPi;
 }  // namespace
 
 Figure fit_figure(const FitPlotData& d) {
@@ -184,26 +184,26 @@ Figure decay_figure(const DecayRecord& d, const std::string& id) {
   p.observations.name = d.sigmas.empty() ? "measured amplitude" : "measured amplitude \u00B1 \u03C3";
   p.observations.x = d.times;
   p.observations.size = d.times.size() > 100 ? 2.2 : 4.0;
-  for (double a : d.amplitudes) p.observations.y.push_back(a * kDegree);
-  for (double s : d.sigmas) p.observations.y_error.push_back(s * kDegree);
+  for (double a : d.amplitudes) p.observations.y.push_back(a * kDegreesPerRadian);
+  for (double s : d.sigmas) p.observations.y_error.push_back(s * kDegreesPerRadian);
   // A dense record light, the fit dark over it: they differ in greyscale too.
   const bool dense = d.times.size() > 100;
   p.observations.colour = dense ? Colour::sky_blue : Colour::black;
-  for (double a : d.fitted) p.model_at_x.push_back(a * kDegree);
+  for (double a : d.fitted) p.model_at_x.push_back(a * kDegreesPerRadian);
   const bool band_known = !d.grid_uncertainty.empty();
   p.model.name = band_known ? "fit of Eq. (25)"
                             : std::string("fit of Eq. (25); ") + kUncertaintyUnknown + " (singular covariance): no band";
   p.model.x = d.grid;
   p.model.colour = dense ? Colour::black : Colour::vermillion;
   p.model.width = 2.5;
-  for (double a : d.grid_fit) p.model.y.push_back(a * kDegree);
+  for (double a : d.grid_fit) p.model.y.push_back(a * kDegreesPerRadian);
   if (band_known) {
     Band band;
     band.name = "fit \u00B1 1\u03C3 (from the covariance)";
     band.x = d.grid;
     for (std::size_t i = 0; i < d.grid.size(); ++i) {
-      band.lower.push_back((d.grid_fit[i] - d.grid_uncertainty[i]) * kDegree);
-      band.upper.push_back((d.grid_fit[i] + d.grid_uncertainty[i]) * kDegree);
+      band.lower.push_back((d.grid_fit[i] - d.grid_uncertainty[i]) * kDegreesPerRadian);
+      band.upper.push_back((d.grid_fit[i] + d.grid_uncertainty[i]) * kDegreesPerRadian);
     }
     band.colour = Colour::orange;
     p.model_band = band;

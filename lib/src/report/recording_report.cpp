@@ -15,7 +15,7 @@ namespace pendulum::report {
 
 namespace {
 
-constexpr double kDegree = 180.0 / kPi;
+constexpr double kDegreesPerRadian = 180.0 / kPi;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// Slices of the drawn signal: the figure's width in px, at least one per
 /// pixel column of its plotting area.
@@ -38,9 +38,9 @@ SignalMeaning signal_meaning(SignalKind kind, bool has_amplitudes) {
     case SignalKind::acceleration:
       return {"magnitude of the acceleration with gravity, less its mean (swings at twice the frequency)",
               "|a| \u2212 mean |a| (m/s\u00B2)", 1.0};
-    case SignalKind::angle: return {"angle", "angle \u03B8 \u2212 mean (\u00B0)", kDegree};
+    case SignalKind::angle: return {"angle", "angle \u03B8 \u2212 mean (\u00B0)", kDegreesPerRadian};
     case SignalKind::position:
-      if (has_amplitudes) return {"angle about the centre of the track's circle", "angle about the centre (\u00B0)", kDegree};
+      if (has_amplitudes) return {"angle about the centre of the track's circle", "angle about the centre (\u00B0)", kDegreesPerRadian};
       return {"position along the track's principal axis", "position on the principal axis (track unit)", 1.0};
     case SignalKind::gate_states:
       return {"photogate events (the middle of each blocking)", "beam: blocked (1) or open (0)", 1.0};
@@ -219,7 +219,7 @@ std::optional<Figure> amplitude_figure(const RecordingRecord& r, const std::stri
   Points points;
   points.name = "amplitude of a swing";
   points.x = r.swing_times;
-  for (double a : r.swing_amplitudes) points.y.push_back(a * kDegree);
+  for (double a : r.swing_amplitudes) points.y.push_back(a * kDegreesPerRadian);
   points.size = r.swing_times.size() > 100 ? 2.2 : 4.0;
   p.points.push_back(points);
   f.panels = {p};
@@ -255,7 +255,7 @@ std::optional<Figure> period_amplitude_figure(const RecordingRecord& r, const st
     }
     if (!known) continue;
     amplitude /= static_cast<double>(m);
-    d.observations.x.push_back(amplitude * kDegree);
+    d.observations.x.push_back(amplitude * kDegreesPerRadian);
     d.observations.y.push_back(period / static_cast<double>(m));
     d.observations.y_error.push_back(std::hypot(r.crossing_sigmas[i * cpp], r.crossing_sigmas[(i + m) * cpp]) /
                                       static_cast<double>(m));
@@ -275,7 +275,7 @@ std::optional<Figure> period_amplitude_figure(const RecordingRecord& r, const st
   constexpr int kGrid = 121;
   for (int i = 0; i < kGrid; ++i) {
     const double theta = lo + (hi - lo) * i / (kGrid - 1);
-    d.model.x.push_back(theta * kDegree);
+    d.model.x.push_back(theta * kDegreesPerRadian);
     d.model.y.push_back(t0 * ratio(theta));
   }
   d.model.name = "exact period T\u2080(1 + \u0394T/T\u2080(\u03B8\u2080)), T\u2080 = " + format_fixed(t0, 7) +

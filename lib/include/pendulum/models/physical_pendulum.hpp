@@ -22,8 +22,7 @@ namespace pendulum {
 /// d/dh (k^2 + h^2)/h = 0 (Kelley Eq. 55).
 template <class T>
 T minimum_period(const T& g, const T& k) {
-  using std::sqrt;
-  return 2.0 * kPi * sqrt(2.0 * k / g);
+  return ideal_period(T(2.0 * k), g);
 }
 
 /// The pivot distance (m) with the same period as h (m), k the radius of
@@ -50,6 +49,21 @@ T bessel_g(const T& t1, const T& t2, const T& h1, const T& h2) {
 
 struct PhysicalPendulum {
   static constexpr const char* kName = "physical_pendulum";
+  static constexpr PeriodModelKind kKind = PeriodModelKind::physical_pendulum;
+  static constexpr std::array<Setting, 2> kSettings{{Setting::pivot_distance, Setting::pivot_position}};
+  /// The finite amplitude and the damping rows hold for any body; buoyancy is
+  /// the body's own (predict); the ball pendulum's parts and its sphere's added
+  /// mass do not describe a rigid body, whose moment of inertia holds them.
+  static constexpr std::array<CorrectionUse, kCorrectionCount> kCorrectionUse = [] {
+    std::array<CorrectionUse, kCorrectionCount> use{};
+    for (auto& u : use) u = CorrectionUse::not_applicable;
+    for (CorrectionId id : {CorrectionId::finite_amplitude, CorrectionId::linear_damping,
+                            CorrectionId::quadratic_damping, CorrectionId::amplitude_decay}) {
+      use[static_cast<int>(id)] = CorrectionUse::applies;
+    }
+    use[static_cast<int>(CorrectionId::buoyancy)] = CorrectionUse::replaced;
+    return use;
+  }();
   static constexpr int kParameters = 3;
   enum Parameter { g, radius_of_gyration, center_of_mass_position };
   static constexpr std::array<ParameterInfo, kParameters> kParameterInfo{{

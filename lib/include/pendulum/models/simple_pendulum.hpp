@@ -14,6 +14,15 @@ namespace pendulum {
 
 struct SimplePendulum {
   static constexpr const char* kName = "simple_pendulum";
+  static constexpr PeriodModelKind kKind = PeriodModelKind::simple_pendulum;
+  /// A bob of any shape on a string (docs/phone.md) is set by its length.
+  static constexpr std::array<Setting, 1> kSettings{{Setting::length}};
+  /// Every row as visit_corrections computes it.
+  static constexpr std::array<CorrectionUse, kCorrectionCount> kCorrectionUse = [] {
+    std::array<CorrectionUse, kCorrectionCount> use{};
+    for (auto& u : use) u = CorrectionUse::applies;
+    return use;
+  }();
   static constexpr int kParameters = 2;
   enum Parameter { g, length_offset };
   static constexpr std::array<ParameterInfo, kParameters> kParameterInfo{{

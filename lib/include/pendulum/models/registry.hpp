@@ -1,0 +1,108 @@
+#pragma once
+/// \file models/registry.hpp
+/// \brief The experiment kinds pendulum-g reduces: one registry of period
+/// models, each checked at compile time for every piece of the interface
+/// (period_model.hpp), that the reader, the fit and the output consult
+/// instead of switching on a kind (docs/core.md).
+
+#include <algorithm>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+#include "pendulum/models/physical_pendulum.hpp"
+#include "pendulum/models/simple_pendulum.hpp"
+#include "pendulum/parsed_scene.hpp"
+
+namespace pendulum {
+
+namespace detail {
+
+template <class M, class = void>
+struct HasModelPieces : std::false_type {};
+
+// Every piece a period model declares (period_model.hpp); a kind that lacks
+// one does not compile as a registered model.
+template <class M>
+struct HasModelPieces<
+    M, std::void_t<decltype(M::kName), decltype(M::kKind), decltype(M::kSettings), decltype(M::kParameters),
+                   decltype(M::kParameterInfo), decltype(M::kDefaults), decltype(M::kCorrectionUse),
+                   decltype(M::canonicalise(std::declval<double*>())),
+                   decltype(M::predict(std::declval<const double*>(), std::declval<const Observation<double>&>(),
+                                       std::declval<const Apparatus<double>&>(),
+                                       std::declval<const AmplitudeChoice&>())),
+                   decltype(M::swing(std::declval<const Observation<double>&>())),
+                   decltype(M::swing_at(std::declval<const double*>(), std::declval<Swing<double>>(),
+                                        std::declval<const Apparatus<double>&>())),
+                   decltype(M::composition(std::declval<const Apparatus<double>&>(),
+                                           std::declval<const Swing<double>&>(),
+                                           std::declval<const AmplitudeChoice&>())),
+                   decltype(M::solve_g(std::declval<const double*>(), std::declval<const Observation<double>&>(),
+                                       std::declval<const Apparatus<double>&>(),
+                                       std::declval<const AmplitudeChoice&>()))>> : std::true_type {};
+
+}  // namespace detail
+
+/// Whether M is a period model: every piece of the interface, with g its
+/// first parameter and one table row per correction.
+template <class M>
+constexpr bool is_period_model() {
+  if constexpr (!detail::HasModelPieces<M>::value) {
+    return false;
+  } else {
+    return M::kParameters >= 1 && M::kParameterInfo.size() == std::size_t(M::kParameters) &&
+           M::kDefaults.size() == std::size_t(M::kParameters) && M::kCorrectionUse.size() == kCorrectionCount &&
+           !M::kSettings.empty();
+  }
+}
+
+/// The registered kinds, in PeriodModelKind's order.
+using PeriodModels = std::tuple<SimplePendulum, PhysicalPendulum>;
+
+namespace detail {
+template <std::size_t... I>
+constexpr bool registry_is_complete(std::index_sequence<I...>) {
+  return ((is_period_model<std::tuple_element_t<I, PeriodModels>>() &&
+           static_cast<std::size_t>(std::tuple_element_t<I, PeriodModels>::kKind) == I) &&
+          ...);
+}
+}  // namespace detail
+static_assert(detail::registry_is_complete(std::make_index_sequence<std::tuple_size_v<PeriodModels>>{}),
+              "every registered period model has every piece of the interface (period_model.hpp), in "
+              "PeriodModelKind's order");
+
+/// Calls f(Model{}) for each registered model.
+template <class F>
+void for_each_period_model(F&& f) {
+  std::apply([&](auto... model) { (f(model), ...); }, PeriodModels{});
+}
+
+/// Calls f(Model{}) for the model of `kind` and returns its result.
+template <class F>
+decltype(auto) visit_period_model(PeriodModelKind kind, F&& f) {
+  using R = decltype(f(SimplePendulum{}));
+  if constexpr (std::is_void_v<R>) {
+    for_each_period_model([&](auto model) {
+      if (decltype(model)::kKind == kind) f(model);
+    });
+  } else {
+    R out{};
+    for_each_period_model([&](auto model) {
+      if (decltype(model)::kKind == kind) out = f(model);
+    });
+    return out;
+  }
+}
+
+/// The kind whose observations are set by `setting` (a model's kSettings):
+/// the reader infers a scene's kind from its observations' keys this way.
+inline PeriodModelKind kind_of_setting(Setting setting) {
+  PeriodModelKind kind = PeriodModelKind::simple_pendulum;
+  for_each_period_model([&](auto model) {
+    const auto& settings = decltype(model)::kSettings;
+    if (std::find(settings.begin(), settings.end(), setting) != settings.end()) kind = decltype(model)::kKind;
+  });
+  return kind;
+}
+
+}  // namespace pendulum

@@ -1,0 +1,102 @@
+// The registry of experiment kinds (models/registry.hpp, docs/core.md): every
+// registered period model declares each piece of the interface, and what it
+// declares is what it does. A kind added without a piece fails here (or does
+// not compile: registry.hpp's static_assert).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <set>
+#include <string>
+
+#include "pendulum/models/registry.hpp"
+#include "pendulum/scene_json.hpp"
+#include "scene_files.hpp"
+
+using namespace pendulum;
+
+namespace {
+
+/// An apparatus with every part a scene of `kind` may have: Nelson & Olsson's
+/// for a bob on a string; for a rigid body, a body with mass and volume in
+/// their air with their decay (the reader refuses a ball's parts there:
+/// check_parts_apply, scene_reader.cpp).
+Apparatus<double> full_apparatus(PeriodModelKind kind) {
+  Apparatus<double> app = parse_scene(test::nelson_olsson_text()).apparatus;
+  if (kind == PeriodModelKind::physical_pendulum) {
+    const Apparatus<double> ball = app;
+    app = Apparatus<double>{};
+    app.air = ball.air;
+    app.decay = ball.decay;
+    app.body.emplace();
+    app.body->mass = 0.5;
+    app.body->volume = 6e-5;
+    app.body->radius_of_gyration = 0.29;
+    app.body->center_of_mass_position = 0.5;
+  }
+  return app;
+}
+
+}  // namespace
+
+TEST_CASE("Every registered kind names its parameters, units, defaults and settings, each once", "[models]") {
+  std::set<std::string> names;
+  std::set<int> settings;
+  int kinds = 0;
+  for_each_period_model([&](auto model) {
+    using M = decltype(model);
+    INFO(M::kName);
+    ++kinds;
+    CHECK(names.insert(M::kName).second);
+    CHECK(std::string(M::kParameterInfo[0].name) == "g");
+    std::set<std::string> parameters;
+    for (const ParameterInfo& p : M::kParameterInfo) {
+      CHECK(parameters.insert(p.name).second);
+      CHECK(std::string(p.unit).size() > 0);
+      CHECK(std::string(p.description).size() > 0);
+    }
+    for (double x : M::kDefaults) CHECK(std::isfinite(x));
+    // One kind per setting: the reader knows the kind from an observation's key.
+    for (Setting s : M::kSettings) {
+      CHECK(settings.insert(static_cast<int>(s)).second);
+      CHECK(kind_of_setting(s) == M::kKind);
+    }
+  });
+  CHECK(kinds == static_cast<int>(std::tuple_size_v<PeriodModels>));
+  // Every setting belongs to a kind.
+  for (Setting s : {Setting::length, Setting::pivot_distance, Setting::pivot_position}) {
+    CHECK(settings.count(static_cast<int>(s)) == 1);
+  }
+}
+
+TEST_CASE("Every registered kind's rows are what its kCorrectionUse declares", "[models][corrections]") {
+  for_each_period_model([&](auto model) {
+    using M = decltype(model);
+    const Apparatus<double> app = full_apparatus(M::kKind);
+    Observation<double> o{2.0, 0.3, 0.05, 10, M::kSettings[0]};
+    std::array<double, M::kParameters> p = M::kDefaults;
+    const AmplitudeChoice amplitude{AmplitudeMethod::agm, 0, 0.0};
+    const PeriodPrediction<double> predicted = M::predict(p.data(), o, app, amplitude);
+    const Terms<double> plain = correction_terms(app, M::swing_at(p.data(), M::swing(o), app), amplitude);
+    for (int i = 0; i < kCorrectionCount; ++i) {
+      INFO(M::kName << " " << kCorrections[i].id);
+      const Term<double>& row = predicted.terms[i];
+      switch (M::kCorrectionUse[i]) {
+        case CorrectionUse::applies:
+          CHECK(row.ratio.has_value() == plain[i].ratio.has_value());
+          CHECK(std::string(row.method) == plain[i].method);
+          break;
+        case CorrectionUse::replaced:
+          REQUIRE(row.ratio);
+          CHECK(std::string(row.method) != plain[i].method);
+          break;
+        case CorrectionUse::not_applicable:
+          CHECK(!row.ratio);
+          CHECK(std::string(row.skip_reason).size() > 0);
+          break;
+      }
+    }
+    // The composition without rows is the rows' composition.
+    CHECK(M::composition(app, M::swing_at(p.data(), M::swing(o), app), amplitude).total ==
+          Approx(predicted.composition.total).epsilon(1e-15));
+  });
+}

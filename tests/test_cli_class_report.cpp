@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <regex>
 #include <sstream>
@@ -340,4 +341,52 @@ TEST_CASE("import --format table prints the amplitude_range.start that the docs 
   char expected[32];
   std::snprintf(expected, sizeof expected, "%.3f deg at the first crossing", start);
   CHECK_THAT(run("import --format table " + recording).out, Contains(expected));
+}
+
+TEST_CASE("template kater: Kater's pendulum with Bessel's formula, as the bundled scene", "[cli][template]") {
+  const Folder out;
+  const Run help = run("template --help");
+  CHECK_THAT(help.out, Contains("kater") && Contains("Kinds: ball, series, pivot-scan, kater, recording"));
+  CHECK_THAT(run("template kater --help").out, Contains("Usage:"));
+  REQUIRE(run("template kater > " + out.path + "/kater.json").status == 0);
+  const Run r = run("reduce --strict " + out.path + "/kater.json");
+  REQUIRE(r.status == 0);
+  const json result = json::parse(r.out);
+  CHECK(result.at("status") == "ok");
+  // The numbers are data/kater_reversible_pendulum.json's: the same g, to the
+  // last bit, and the same one warning (the bar's buoyancy, unknown without its parts).
+  const json bundled = json::parse(run("reduce " + std::string(PENDULUM_DATA_DIR) + "/kater_reversible_pendulum.json").out);
+  CHECK(result.at("g") == bundled.at("g"));
+  CHECK(result.at("warnings") == bundled.at("warnings"));
+  CHECK_THAT(run("reduce --format table " + out.path + "/kater.json").out, Contains("Bessel's formula"));
+}
+
+TEST_CASE("A missing key: its unit and an example, the allowed values, and when its part may be left out",
+          "[cli][first-steps]") {
+  const Folder out;
+  const json base = {{"length", {{"value", 1}, {"unit", "m"}}},
+                     {"amplitude", {{"value", 5}, {"unit", "deg"}}},
+                     {"timing", {{"oscillations_per_trial", 10}, {"unit", "s"}, {"trials", {20.1, 20.0}}}}};
+  struct Case {
+    json patch;
+    std::vector<const char*> words;
+  };
+  const Case cases[] = {
+      {{{"air", {{"temperature", {{"value", 21}, {"unit", "degC"}}}}}},
+       {"air.pressure: missing", "\"unit\": \"hPa\"", "air may be left out", "\"vacuum\""}},
+      {{{"site", {{"latitude", {{"value", 51}, {"unit", "deg"}}}, {"height", {{"value", 100}, {"unit", "m"}}}}}},
+       {"site.height_reference: missing", "\"sea_level\" or \"ellipsoid\""}},
+      {{{"bob", {{"mass", {{"value", 67}, {"unit", "g"}}}}}}, {"bob.diameter: missing", "\"unit\": \"mm\"", "bob may be left out"}},
+  };
+  for (const auto& c : cases) {
+    json scene = base;
+    scene.merge_patch(c.patch);
+    {
+      std::ofstream(out.path + "/scene.json") << scene.dump();
+    }
+    const Run r = run("reduce " + out.path + "/scene.json");
+    INFO(r.err);
+    CHECK(r.status == 1);
+    for (const char* w : c.words) CHECK_THAT(r.err, Contains(w));
+  }
 }

@@ -54,6 +54,13 @@ int decimals_for(double u) {
   return std::clamp(1 - static_cast<int>(std::floor(std::log10(u))), 0, 9);
 }
 
+/// An estimate rounded to its uncertainty, as a lab report writes it:
+/// "9.693 ± 0.020 m/s²"; `decimals` fixed digits where it is unknown.
+std::string rounded_estimate(const Estimate& e, int decimals, const std::string& unit) {
+  if (!e.uncertainty || !(*e.uncertainty > 0.0) || !std::isfinite(*e.uncertainty)) return estimate_text(e, decimals, unit);
+  return value_with_uncertainty(e.value, *e.uncertainty, false) + (unit.empty() ? "" : " " + unit);
+}
+
 std::string signed_fixed(double v, int decimals) { return (v > 0.0 ? "+" : "") + format_fixed(v, decimals); }
 
 std::string optional_fixed(const std::optional<double>& v, double scale, int decimals, bool sign) {
@@ -113,14 +120,14 @@ std::string g_comparison(const SceneReport& r) {
     row("g of the textbook curve (no corrections)", format_fixed(r.pivot_scan->textbook_g, 5) + " m/s\u00B2");
   } else {
     row(r.series ? "g of the textbook line (no corrections)" : "g uncorrected (Eq. 5)",
-        r.g_uncorrected ? estimate_text(*r.g_uncorrected, 5, "m/s\u00B2")
+        r.g_uncorrected ? rounded_estimate(*r.g_uncorrected, 5, "m/s\u00B2")
                         : "undefined: the lengths do not determine a line");
   }
   if (r.series) return s + "</table>\n";  // the periods are in the series' table
-  row("measured period T", format_fixed(r.period_measured.value, 6) + " \u00B1 " +
-                               format_fixed(r.period_measured.uncertainty, 6) + " s (" + std::to_string(r.trials) +
+  row("measured period T", rounded_estimate({r.period_measured.value, r.period_measured.uncertainty}, 6, "s") + " (" +
+                               std::to_string(r.trials) +
                                " trials of " + std::to_string(r.oscillations_per_trial) + " oscillations)");
-  row("ideal period T\u2080", estimate_text(r.period_ideal, 6, "s"));
+  row("ideal period T\u2080", rounded_estimate(r.period_ideal, 6, "s"));
   return s + "</table>\n";
 }
 
@@ -285,7 +292,7 @@ std::string scene_section(const SceneReport& r, const std::string& anchor) {
                   esc(r.title.empty() ? r.input : r.title) + "</h2>\n<p class=\"meta\">Scene file: <code>" +
                   esc(r.input) + "</code>";
   if (!r.source.empty()) s += "<br/>Source: " + esc(r.source);
-  s += "</p>\n" + verdict_html(r) + "<p class=\"g\">g = " + esc(estimate_text(r.g, 5, "m/s\u00B2")) + "</p>\n";
+  s += "</p>\n" + verdict_html(r) + "<p class=\"g\">g = " + esc(rounded_estimate(r.g, 5, "m/s\u00B2")) + "</p>\n";
   s += g_comparison(r);
   if (!r.warnings.empty()) {
     s += "<h3>Warnings</h3>\n<ul class=\"warnings\">\n";

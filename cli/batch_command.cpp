@@ -189,13 +189,17 @@ Command add_batch_command(CLI::App& app) {
       "Output: one line per scene, in the order given (folders: by file name), then a class line.\n"
       "Columns (CSV; JSON lines have the same keys): input, ok (a result exists), g_m_s2,\n"
       "g_uncertainty_m_s2, largest_budget_input and largest_budget_m_s2 (the input that dominates\n"
-      "g's uncertainty), expected_g_m_s2 and z (with a site), warnings (their texts), error,\n"
-      "status (ok, suspect or failed), status_reasons (the likely slip and the input to fix), title.\n"
-      "Class line: JSON {\"class\": true, \"counts\": ..., \"g_of_ok\": ...}; CSV \"# class: ...\".\n"
+      "g's uncertainty), expected_g_m_s2 and z (with a site), warnings (JSON: their texts; CSV: the\n"
+      "first), error, status (ok, suspect or failed), status_reasons (the likely slip and the input\n"
+      "to fix), title; CSV only: warning_count.\n"
+      "Table: file, status, g rounded to its uncertainty, z, the first reason (or the error) in brief.\n"
+      "Class line: JSON {\"class\": true, \"counts\": ...}; CSV \"# class: ...\"; table \"class: ...\".\n"
       "Exit status 1 when any scene failed. docs/instructors.md has an example.");
   cmd->add_option("--list", o->list, "A file naming one scene file per line (# starts a comment)");
-  cmd->add_option("--format", o->format, "Summary: jsonl (default, one JSON object per scene) or csv")
-      ->check(CLI::IsMember({"jsonl", "csv"}));
+  cmd->add_option("--format", o->format,
+                  "Summary: jsonl (default, one JSON object per scene), csv (the warnings counted, the first given), "
+                  "or table (for people: file, status, g, z, the reason in brief)")
+      ->check(CLI::IsMember({"jsonl", "csv", "table"}));
   cmd->add_option("--report", o->report,
                   "Also write an HTML class report to this file: every g against the expected g, the failures, "
                   "each scene's section");
@@ -238,7 +242,10 @@ Command add_batch_command(CLI::App& app) {
     std::size_t failed = 0;
     std::vector<BatchLine> printed;
     printed.reserve(jobs.size());
+    std::size_t file_width = 4;
+    for (const Job& j : jobs) file_width = std::max(file_width, j.name.size());
     if (o->format == "csv") std::cout << batch_csv_header();
+    if (o->format == "table") std::cout << batch_table_header(file_width);
     for (std::size_t i = 0; i < jobs.size(); ++i) {
       BatchLine line;
       {
@@ -249,7 +256,11 @@ Command add_batch_command(CLI::App& app) {
         for (auto& r : results[i]->recordings) recordings.push_back(std::move(r));
       }
       failed += !line.ok;
-      std::cout << (o->format == "csv" ? line.csv : line.json + "\n");
+      if (o->format == "table") {
+        std::cout << line.table.insert(0, jobs[i].name + std::string(file_width + 2 - jobs[i].name.size(), ' ')) << "\n";
+      } else {
+        std::cout << (o->format == "csv" ? line.csv : line.json + "\n");
+      }
       printed.push_back(std::move(line));
       const auto now = std::chrono::steady_clock::now();
       if (progress && (now - last_progress > std::chrono::milliseconds(100) || i + 1 == jobs.size())) {
@@ -262,7 +273,9 @@ Command add_batch_command(CLI::App& app) {
     for (auto& w : workers) w.join();
     if (progress) std::cerr << "\n";
     const ClassSummary summary = summarise_class(printed);
-    std::cout << (o->format == "csv" ? batch_class_csv(summary) : batch_class_json(summary) + "\n");
+    std::cout << (o->format == "csv"     ? batch_class_csv(summary)
+                  : o->format == "table" ? batch_class_table(summary)
+                                         : batch_class_json(summary) + "\n");
     if (!o->report.empty()) {
       refuse_output_over_inputs(o->report, recordings);
       write_output(o->report, report::class_report_html(entries));

@@ -84,8 +84,8 @@ std::string summary_table(const RecordingSummary& r) {
     put("%-22s %.7f s\n", "small-amplitude T0", a.small_amplitude_period);
   }
   if (!a.decay.amplitudes.empty()) {
-    put("%-22s %.3f deg at %.1f s -> %.3f deg at %.1f s\n", "amplitude", a.decay.amplitudes.front() * kDeg,
-        a.decay.times.front(), a.decay.amplitudes.back() * kDeg, a.decay.times.back());
+    put("%-22s %.3f deg at the first crossing (amplitude_range.start) -> %.3f deg at the last\n", "amplitude",
+        a.start_amplitude * kDeg, a.end_amplitude * kDeg);
   }
   // The period against amplitude in ten slices of the record.
   const auto& c = a.period_curve;

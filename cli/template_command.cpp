@@ -98,6 +98,42 @@ constexpr const char* kPivotScan = R"({
 }
 )";
 
+/// Kater's reversible pendulum: two knife edges on opposite sides of the
+/// centre of mass, each a pivot_position from the same end (a pivot_distance
+/// is positive on both sides, so it cannot say "opposite"), the centre of
+/// mass given so that Bessel's formula applies (docs/physical.md). Its
+/// numbers are data/kater_reversible_pendulum.json's (make_physical_scenes
+/// kater, seed 1011): it reduces to g = 9.81206 +- 0.00037 m/s^2, Bessel's
+/// g beside it, status ok.
+constexpr const char* kKater = R"({
+  "schema": "pendulum-g/scene/1",
+  "title": "Kater's reversible pendulum, knife edges 0.994 m apart",
+  "notes": "Replace every number with yours. pivot_position: each knife edge measured from the same end of the bar, one on each side of the centre of mass (a pivot_distance is positive on both sides, so it cannot say which side). center_of_mass_position: where the bar balances, from the same end; with it the report adds Bessel's formula. Time each edge the same way: oscillations_per_trial full oscillations (there and back) in each trial. temperature, reference_temperature and material correct the bar's thermal expansion; leave all three out if you do not know them.",
+  "fit": ["radius_of_gyration"],
+  "center_of_mass_position": {"value": 0.8, "uncertainty": 0.001, "unit": "m"},
+  "temperature": {"value": 23.0, "uncertainty": 0.5, "unit": "degC"},
+  "reference_temperature": {"value": 20.0, "unit": "degC"},
+  "material": "steel",
+  "air": {
+    "pressure": {"value": 99.5, "uncertainty": 0.3, "unit": "kPa"},
+    "temperature": {"value": 23.0, "uncertainty": 0.5, "unit": "degC"}
+  },
+  "site": {
+    "latitude": {"value": 52.0, "unit": "deg"},
+    "height": {"value": 60.0, "unit": "m"},
+    "height_reference": "sea_level"
+  },
+  "observations": [
+    {"pivot_position": {"value": 0.02711, "uncertainty": 2.1e-05, "unit": "m"},
+     "amplitude": {"value": 1.0, "uncertainty": 0.2, "unit": "deg"},
+     "timing": {"oscillations_per_trial": 50, "unit": "s", "resolution": 0.0001, "trials": [99.9932, 99.9936, 99.9935]}},
+    {"pivot_position": {"value": 1.02158, "uncertainty": 2.1e-05, "unit": "m"},
+     "amplitude": {"value": 1.0, "uncertainty": 0.2, "unit": "deg"},
+     "timing": {"oscillations_per_trial": 50, "unit": "s", "resolution": 0.0001, "trials": [99.9306, 99.9309, 99.9303]}}
+  ]
+}
+)";
+
 /// A ball timed by a phone's or a photogate's recording (docs/recordings.md):
 /// timing and the decay record come from the file, named relative to this
 /// scene's folder.
@@ -156,14 +192,18 @@ Command add_template_command(CLI::App& app) {
   cmd->add_option("kind", *kind,
                   "ball (default): a ball on a string timed with a phone; series: the same ball at several "
                   "lengths, with the offset from the measured mark to the ball's centre fitted; pivot-scan: a "
-                  "metre stick hung at several holes (a physical pendulum); recording: a ball timed by a phone's "
-                  "or a photogate's file; phone: a phone on a string at several lengths (docs/phone.md)")
-      ->check(CLI::IsMember({"ball", "series", "pivot-scan", "recording", "phone"}));
+                  "metre stick hung at several holes (a physical pendulum); kater: Kater's reversible pendulum, "
+                  "two knife edges, with Bessel's formula; recording: a ball timed by a phone's or a photogate's "
+                  "file; phone: a phone on a string at several lengths (docs/phone.md)")
+      ->check(CLI::IsMember({"ball", "series", "pivot-scan", "kater", "recording", "phone"}));
+  cmd->footer("Kinds: ball, series, pivot-scan, kater, recording, phone. Example: pendulum-g template kater > kater.json");
   return {cmd, [kind] {
     if (*kind == "series") {
       std::cout << kSeries << kBobAndAir << kSeriesObservations;
     } else if (*kind == "pivot-scan") {
       std::cout << kPivotScan;
+    } else if (*kind == "kater") {
+      std::cout << kKater;
     } else if (*kind == "phone") {
       std::cout << kPhone;
     } else if (*kind == "recording") {

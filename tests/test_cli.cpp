@@ -1076,7 +1076,7 @@ TEST_CASE("report: one self-contained HTML page, the same bytes twice", "[cli][r
     CHECK(occurrences(page, "<title id=") == c.plots);
     CHECK(occurrences(page, "<desc id=") == c.plots);
     // The numbers of `reduce --format table` (README): g and the comparison.
-    CHECK_THAT(page, Contains("g = 9.80340 \u00B1 0.00148 m/s\u00B2"));
+    CHECK_THAT(page, Contains("g = 9.8034 \u00B1 0.0015 m/s\u00B2"));
     CHECK_THAT(page, Contains("+0.00080 m/s\u00B2 = +0.54 combined standard uncertainties"));
     CHECK_THAT(page, Contains("Nelson &amp; Olsson (1986)"));
     CHECK_THAT(page, Contains("<td>Finite amplitude</td><td class=\"num\">+596.00"));

@@ -102,6 +102,20 @@ void check_observation(ParsedScene& scene, std::size_t k, const std::optional<do
   const double swing = scene.model == PeriodModelKind::simple_pendulum
                            ? ideal_period(o.length, kStandardGravity) * (1.0 + finite_amplitude_agm(o.amplitude))
                            : expected;
+  // A frequency (1/s) typed where the trial times belong: its inverse is the
+  // pendulum's period, or the time of the oscillations per trial.
+  const double trial = o.period * o.oscillations_per_trial;  // (s) the mean trial, as typed
+  if (std::abs(1.0 / (trial * expected) - 1.0) <= kPeriodWarning && std::abs(ratio - 1.0) > kPeriodWarning) {
+    const std::string why = at + "timing.trials: the mean trial " + format_number(trial, 4) + " s is 1/" +
+                            format_number(1.0 / trial, 4) + ", and " + format_number(1.0 / trial, 4) +
+                            " s is the period this pendulum has at " + standard +
+                            ": " + kFrequencyTyped + " Give the time of " +
+                            std::to_string(o.oscillations_per_trial) +
+                            (o.oscillations_per_trial == 1 ? " oscillation" : " oscillations") +
+                            " in s in each trial (the period is 1/frequency)";
+    if (!(o.period / swing > 1.0 / kPeriodFactor && o.period / swing < kPeriodFactor)) throw InputError(at + "timing.trials", why);
+    scene.suspicions.push_back(why);
+  }
   if (!(o.period / swing > 1.0 / kPeriodFactor && o.period / swing < kPeriodFactor)) {
     // g = 4 pi^2 l / T^2 would be (swing / period)^2 times standard gravity.
     const auto slip = name_slip((swing / o.period) * (swing / o.period));
@@ -137,10 +151,48 @@ void check_first_order(const ParsedScene& scene) {
   for (const auto& o : scene.observations) check_first_order(scene.apparatus, o);
 }
 
+namespace {
+
+/// Buoyancy and added mass in room air (20 degC, 101.325 kPa) of a 25.4 mm
+/// ball of `density` (kg/m^3) on observation k (s): they hardly depend on
+/// the diameter, on the density as rho_air / rho_bob (Eqs. 54, 61, 62).
+double air_share(const ParsedScene& scene, std::size_t k, double density) {
+  Apparatus<double> typical = scene.apparatus;
+  const double temperature = 293.15, diameter = 0.0254;
+  typical.air = Air<double>{101325.0, temperature, kDryAirMolarMass, air_viscosity(temperature)};
+  typical.bob = Bob<double>{diameter, density * sphere_volume(diameter / 2.0)};
+  const Reduction<double> r = reduce(typical, scene.observations[k]);
+  return (*r.terms[static_cast<int>(CorrectionId::buoyancy)].ratio +
+          *r.terms[static_cast<int>(CorrectionId::added_mass)].ratio) * r.period_ideal;
+}
+
+/// A scene with neither bob nor air: the air's share for a steel ball and
+/// for a wooden one (700 kg/m^3), when the wooden one's is not negligible.
+std::optional<std::string> warn_about_unknown_ball(const ParsedScene& scene, double negligible_fraction) {
+  double steel = 0.0, wood = 0.0, threshold = 0.0;
+  for (std::size_t k = 0; k < scene.observations.size(); ++k) {
+    const double w = air_share(scene, k, 700.0), t = negligible_fraction * scene.observation_uncertainties[k].period;
+    if (k == 0 || std::abs(w) / t > std::abs(wood) / threshold) wood = w, steel = air_share(scene, k, 7850.0), threshold = t;
+  }
+  if (!(std::abs(wood) > threshold)) return std::nullopt;
+  return "air and bob: not given, so buoyancy and added mass are skipped; in room air (20 degC, 101.325 kPa) they "
+         "would change the period by " + format_number(steel * 1e6, 3) + " us for a steel ball, " +
+         format_number(wood * 1e6, 3) + " us for a wooden one (700 kg/m^3), against the " +
+         format_number(threshold * 1e6, 3) + " us below which a correction is negligible; give the bob's diameter "
+         "and mass and the air's pressure and temperature, or \"air\": \"vacuum\"";
+}
+
+}  // namespace
+
 std::vector<std::string> warn_about_skipped_parts(const ParsedScene& scene, double negligible_fraction) {
   const Apparatus<double>& app = scene.apparatus;
   std::vector<std::string> warnings;
-  if (!app.bob) return warnings;  // nothing to estimate the air's share with
+  if (!app.bob) {
+    if (!app.air && !app.vacuum && scene.model == PeriodModelKind::simple_pendulum) {
+      if (auto w = warn_about_unknown_ball(scene, negligible_fraction)) warnings.push_back(std::move(*w));
+    }
+    return warnings;
+  }
   const bool no_air = !app.air && !app.vacuum;
   const bool no_mass = app.air && !app.bob->mass;
   if (!no_air && !no_mass) return warnings;

@@ -10,6 +10,10 @@
 
 namespace pendulum {
 
+/// The words of the suspicion that the trials hold a frequency: the status
+/// then names no slip for the ratio of g it makes (status.cpp).
+inline constexpr const char* kFrequencyTyped = "a frequency (Hz) typed where trial times belong?";
+
 /// Throws InputError naming the part whose correction leaves its
 /// first-order range (|DeltaT/T0| >= its limit in kCorrections) for any
 /// observation. The analysis runs it again on a fitted decay.

@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pendulum/analysis.hpp"
@@ -38,12 +39,17 @@ struct BatchLine {
   ResultStatus status;
   std::optional<double> g;  ///< (m/s^2), when ok
   std::string json;      ///< one line, no newline
-  std::string csv;       ///< one row, with its newline
+  std::string csv;       ///< one row, with its newline: the warnings counted, the first given
+  /// One row of `batch --format table` after the file column, no newline:
+  /// status, g rounded to its uncertainty, z, the first reason in brief.
+  std::string table;
 };
 BatchLine batch_line(const std::string& input, const ParsedScene& scene, const Analysis& analysis);
 /// The line of a scene that failed: its input and the error.
 BatchLine batch_failure(const std::string& input, const std::string& error);
 std::string batch_csv_header();
+/// The table's header, its file column `file_width` wide (and 2 spaces).
+std::string batch_table_header(std::size_t file_width);
 
 /// The class at a glance: scenes by status, and the mean and sample
 /// standard deviation of g over the scenes whose status is ok.
@@ -54,10 +60,14 @@ struct ClassSummary {
   std::optional<double> ok_g_standard_deviation;  ///< (m/s^2), with two or more
 };
 ClassSummary summarise_class(const std::vector<BatchLine>& lines);
+/// The same from each scene's status and g (empty when it failed).
+ClassSummary summarise_class(const std::vector<std::pair<ResultStatus, std::optional<double>>>& results);
 /// The summary's last line: a JSON line with "class": true...
 std::string batch_class_json(const ClassSummary& summary);
 /// ...or a CSV comment line "# class: ...", with its newline.
 std::string batch_class_csv(const ClassSummary& summary);
+/// ...or the table's last line "class: ...", with its newline.
+std::string batch_class_table(const ClassSummary& summary);
 
 /// The result of `pendulum-g clock` (docs/clock.md) as JSON and as a table;
 /// `input` names the scene file as the user gave it.

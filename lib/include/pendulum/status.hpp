@@ -55,4 +55,14 @@ struct Verdict {
 };
 Verdict judge(const ParsedScene& scene, const Analysis& analysis);
 
+/// A status reason (or an error) in a few words, for a table's cell: the
+/// comparison of g and the slip, or the JSON path and the slip guessed:
+/// "g 4.01 times the expected g: half swings are counted as oscillations",
+/// "g 17.3 sigma from the expected g", "air.pressure: a barometer's 1013 hPa
+/// written as Pa?". At most
+/// kBriefReasonLength characters (UTF-8 code points), cut at a word with
+/// "...". The full reason stays in status_reasons.
+inline constexpr std::size_t kBriefReasonLength = 96;
+std::string brief_reason(const std::string& reason);
+
 }  // namespace pendulum

@@ -25,9 +25,14 @@ void read_air(const json& air, ParsedScene& out) {
   auto& pu = out.apparatus_uncertainty.air.emplace();
   put(o, "pressure", Dimension::pressure, Range::positive, pv.pressure, pu.pressure);
   put(o, "temperature", Dimension::temperature, Range::positive, pv.temperature, pu.temperature);
-  // A laboratory's gas: 25 "K" meant degC, 28.96 "kg/mol" meant g/mol.
+  // A laboratory's gas: 25 "K" meant degC, 296 "degC" meant K, 28.96 "kg/mol" meant g/mol.
+  const double as_kelvin = pv.temperature - 273.15;  // the value typed, were it in K
+  const bool kelvin = as_kelvin - 273.15 >= 5.0 && as_kelvin - 273.15 <= 40.0;
   within(pv.temperature, 150.0, 500.0, "air.temperature.value", "K",
-         "the temperature of a laboratory's air, 150 K to 500 K (-123 degC to 227 degC)");
+         "the temperature of a laboratory's air, 150 K to 500 K (-123 degC to 227 degC)" +
+             (kelvin ? "; " + format_number(as_kelvin, 5) + " K is " + format_number(as_kelvin - 273.15, 3) +
+                           " degC: kelvin written as degC? fix air.temperature.unit (\"K\")"
+                     : std::string()));
   // Thinner air is a vacuum; and its density would near a double's underflow.
   within(pv.pressure, 1e-12, HUGE_VAL, "air.pressure.value", "Pa",
          "at least 1e-12 Pa, an ultra-high vacuum (for less, \"air\": \"vacuum\")");
@@ -121,6 +126,59 @@ void warn_about_trials(const std::string& path, const std::vector<double>& times
                      "; a miscounted oscillation or a typo?");
 }
 
+/// Trials that are a stopwatch's lap totals, each the sum of the laps
+/// before it: increasing, and their differences (the first trial the first
+/// difference) within 15% of their median. Refused, as no mean of them
+/// means anything, with the differences to give instead.
+void refuse_lap_totals(const std::string& path, const std::vector<double>& times, const std::string& unit) {
+  constexpr double kLapTolerance = 0.15;
+  if (times.size() < 2) return;
+  std::vector<double> laps{times.front()};
+  for (std::size_t i = 1; i < times.size(); ++i) laps.push_back(times[i] - times[i - 1]);
+  std::vector<double> sorted = laps;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+  const double lap = sorted[sorted.size() / 2];
+  for (double d : laps) {
+    if (!(std::abs(d / lap - 1.0) <= kLapTolerance)) return;
+  }
+  std::string differences;
+  for (double d : laps) differences += (differences.empty() ? "" : ", ") + format_number(d, 6);
+  throw InputError(path, "these look like a stopwatch's lap totals: give differences, the time of each trial: [" +
+                             differences + "] (got " + format_number(times.front()) + ", " + format_number(times[1]) +
+                             (times.size() > 2 ? ", ..." : "") + " " + unit + ", each about " + format_number(lap, 4) +
+                             " " + unit + " more than the one before: the time since the start, not since the last "
+                             "lap)");
+}
+
+/// Trials pasted rather than timed, on a hand's timer, whose reaction-time
+/// scatter (kReactionTime) spans many of its digits: every one of 4 or more
+/// trials the same to the last digit, or a run of 4 equal ones among 6 or
+/// more (a paste down a column). Four equal among five anywhere is not enough:
+/// 3 of 300 clean hand-timed scenes (tests/test_status.cpp's, 0.05 s scatter
+/// read to 0.01 s) hold that by chance.
+void suspect_pasted_trials(const std::string& path, const std::vector<double>& times, std::optional<double> resolution,
+                           const std::string& unit, double seconds, std::vector<std::string>& suspicions) {
+  const bool by_hand = !resolution || *resolution * seconds >= kHandTimerResolution * (1.0 - 1e-9);
+  if (!by_hand || times.size() < 4) return;
+  constexpr std::size_t kPastedRun = 4, kTrialsForRun = 6;
+  std::size_t most = 0, run = 1, longest = 1;
+  double value = times.front();
+  for (double x : times) {
+    const auto same = static_cast<std::size_t>(std::count(times.begin(), times.end(), x));
+    if (same > most) most = same, value = x;
+  }
+  for (std::size_t i = 1; i < times.size(); ++i) {
+    run = times[i] == times[i - 1] ? run + 1 : 1;
+    longest = std::max(longest, run);
+  }
+  if (most != times.size() && !(times.size() >= kTrialsForRun && longest >= kPastedRun)) return;
+  suspicions.push_back(path + ".trials: " + std::to_string(most) + " of " + std::to_string(times.size()) +
+                       " trials are " + format_number(value) + " " + unit +
+                       ", the same to the last digit, while a hand on a stopwatch scatters by about " +
+                       format_number(kReactionTime) + " s: pasted? Give each trial as timed, else the period's "
+                       "uncertainty is too small");
+}
+
 }  // namespace
 
 void read_timing(Object& parent, const std::string& prefix, Observation<double>& value, Observation<double>& sigma,
@@ -192,6 +250,7 @@ void read_timing(Object& parent, const std::string& prefix, Observation<double>&
           "got " + in_unit(trial_sigma.value_or(0.0)) +
               "; expected a one-trial uncertainty below a third of the mean trial (" +
               in_unit(mean) + ")");
+  refuse_lap_totals(t.path("trials"), times, unit_name);
   double sigma_trial = 0.0;
   if (times.size() >= 2) {
     double ss = 0.0;
@@ -213,6 +272,7 @@ void read_timing(Object& parent, const std::string& prefix, Observation<double>&
     }
     warn_about_trials(t.path(), times, spread, resolution, trial_sigma, unit_name, unit->factor, out.warnings,
                       out.suspicions);
+    suspect_pasted_trials(t.path(), times, resolution, unit_name, unit->factor, out.suspicions);
   } else if (trial_sigma) {
     sigma_trial = *trial_sigma;
     out.assumptions.push_back(
@@ -255,11 +315,16 @@ void read_parts(Object& top, ParsedScene& out) {
     bob.finish();
     if (bv.mass) {
       const double density = *bv.mass / bv.volume();
+      // A thousandth of it a metal's (aluminium 2700 kg/m^3 and up): a mass in g written as kg.
+      const bool grams = density / 1000.0 >= 2000.0 && density / 1000.0 <= kMaxDensity;
       PENDULUM_FAIL_IF(density > kMaxDensity, "bob.mass.value",
                        "got " + format_number(*bv.mass) + " kg, a density of " + format_number(density) +
                            " kg/m^3 for this " + (bv.shape == BobShape::sphere ? "diameter" : "size") +
                            "; expected at most " + format_number(kMaxDensity) +
-                           " kg/m^3 (osmium, the densest element)");
+                           " kg/m^3 (osmium, the densest element)" +
+                           (grams ? "; a mass in g written as kg? It gives " + format_number(density / 1000.0, 4) +
+                                        " kg/m^3 (brass: 8500, steel: 7850): fix bob.mass.unit (\"g\")"
+                                  : std::string()));
     }
   }
   if (top.has("suspension")) {

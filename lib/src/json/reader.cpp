@@ -246,6 +246,48 @@ void Object::finish() const {
   }
 }
 
+namespace {
+
+/// What a missing required key takes: its unit and an example, the values
+/// allowed where they are few, and when its part may be left out instead.
+/// By the key's path without an observation's prefix ("observations[2].").
+std::string missing_hint(std::string path) {
+  if (path.compare(0, 13, "observations[") == 0) path = path.substr(path.find("].") + 2);
+  struct Hint {
+    const char* path;
+    const char* text;
+  };
+  static const Hint hints[] = {
+      {"timing", "the trials, e.g. \"timing\": {\"oscillations_per_trial\": 10, \"unit\": \"s\", \"resolution\": "
+                 "0.01, \"trials\": [20.09, 20.03, 20.12]} (pendulum-g template prints a whole scene)"},
+      {"timing.oscillations_per_trial", "the full oscillations (there and back) timed in each trial, e.g. 10"},
+      {"timing.trials", "the times read off the stopwatch, one per trial, in timing.unit, e.g. [20.09, 20.03, 20.12]"},
+      {"length", "the length from the pivot to the ball's centre, e.g. {\"value\": 100.0, \"uncertainty\": 0.2, "
+                 "\"unit\": \"cm\"}"},
+      {"amplitude", "the angle the ball was pulled aside at the start, e.g. {\"value\": 5, \"uncertainty\": 1, "
+                    "\"unit\": \"deg\"}"},
+      {"bob.diameter", "the ball's diameter, e.g. {\"value\": 25.4, \"uncertainty\": 0.1, \"unit\": \"mm\"}; bob may "
+                       "be left out (then the corrections that need the ball are skipped)"},
+      {"air.pressure", "a pressure, e.g. {\"value\": 1013, \"unit\": \"hPa\"} (hPa, kPa, Pa, mbar, mmHg, ...); air may be "
+                       "left out (buoyancy and added mass are then skipped), or be \"vacuum\""},
+      {"air.temperature", "a temperature, e.g. {\"value\": 21, \"unit\": \"degC\"} (degC, K, degF); air may be left "
+                          "out (buoyancy and added mass are then skipped), or be \"vacuum\""},
+      {"site.latitude", "the latitude, e.g. {\"value\": 51.0, \"unit\": \"deg\"}; site may be left out (then g is "
+                        "compared with standard gravity alone)"},
+      {"site.height_reference", "what site.height is measured from: \"sea_level\" or \"ellipsoid\" (a GPS height)"},
+  };
+  for (const Hint& h : hints) {
+    if (path == h.path) return std::string("; expected ") + h.text;
+  }
+  const std::size_t dot = path.rfind('.');
+  const std::string last = dot == std::string::npos ? path : path.substr(dot + 1);
+  if (last == "value") return "; expected the number, e.g. \"value\": 25.4, beside its \"unit\"";
+  if (last == "unit") return "; expected the value's unit as a string, e.g. \"unit\": \"mm\"";
+  return "";
+}
+
+}  // namespace
+
 const json& Object::at(const std::string& key) {
   remember(key);
   const auto it = j_.find(key);
@@ -255,7 +297,7 @@ const json& Object::at(const std::string& key) {
       if (std::find(known_.begin(), known_.end(), item.key()) != known_.end()) continue;
       if (misspelt(item.key()) == key) throw InputError(path(item.key()), "unknown key; did you mean " + key + "?");
     }
-    throw InputError(path(key), "missing; it is required here");
+    throw InputError(path(key), "missing; it is required here" + missing_hint(path(key)));
   }
   return *it;
 }

@@ -64,6 +64,13 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
     v.length = length.value;
     u.length = length.sigma;
     within(v.length, 1e-3, 1e3, source.path_of("length.value"), "m", "a laboratory pendulum, 1 mm to 1 km long");
+    // Left out, an uncertainty is unknown and said so; written as 0, it claims a perfect tape.
+    const auto& written = length_owner.at("length");
+    if (written.contains("uncertainty") && written.at("uncertainty") == 0) {
+      out.suspicions.push_back(source.path_of("length.uncertainty") +
+                               ": 0, but no tape reads a length exactly: give the tape's reading uncertainty "
+                               "(about 1 mm read by eye, more where the ball's centre is judged), or leave it out");
+    }
   }
   Object& amplitude_owner = owner(o, shared, "amplitude", source);
   if (!amplitude_owner.has("amplitude") && source.recording) {

@@ -108,7 +108,7 @@ std::string csv_field(const json& v) {
 // New columns go at the end: scripts may read the columns by position.
 constexpr const char* kCsvColumns[] = {"input", "ok", "g_m_s2", "g_uncertainty_m_s2", "largest_budget_input",
                                        "largest_budget_m_s2", "expected_g_m_s2", "z", "warnings", "error",
-                                       "status", "status_reasons", "title"};
+                                       "status", "status_reasons", "title", "warning_count"};
 /// A list of messages in one CSV field.
 constexpr const char* kCsvSeparator = "; ";
 
@@ -360,6 +360,61 @@ std::string decay_fit_json(const std::string& input, const ParsedScene& scene, c
   return json_text(out, 2);
 }
 
+namespace {
+
+std::string format_fixed(double x, int decimals) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, x);
+  return text;
+}
+
+/// "+- 0.00148" or "(no uncertainty: singular fit)"
+std::string plus_minus(const std::optional<double>& u, const char* format) {
+  if (!u) return "+- ? (singular fit)";
+  char text[64];
+  std::snprintf(text, sizeof text, format, *u);
+  return std::string("+- ") + text;
+}
+
+/// Decimals that show `u` to two significant digits, as a lab report
+/// rounds a value to its uncertainty.
+int decimals_of(double u) {
+  if (!(u > 0.0) || !std::isfinite(u)) return 5;
+  return std::clamp(1 - static_cast<int>(std::floor(std::log10(u))), 0, 12);
+}
+
+/// "9.8034 +- 0.0015": the value rounded to its uncertainty.
+std::string rounded(double value, const std::optional<double>& u) {
+  if (!u) return plus_minus(u, "%.5f").insert(0, format_fixed(value, 5) + " ");
+  const int d = decimals_of(*u);
+  return format_fixed(value, d) + " +- " + format_fixed(*u, d);
+}
+
+/// A batch's table row after the file column: status, g rounded to its
+/// uncertainty, z, and the first reason (or the error) in brief.
+std::string table_row(const std::string& status, const std::optional<double>& g, const std::optional<double>& u,
+                      const std::optional<double>& z, const std::string& reason) {
+  char line[256];
+  std::snprintf(line, sizeof line, "%-8s %-22s %8s  ", status.c_str(), g ? rounded(*g, u).c_str() : "-",
+                z ? format_fixed(*z, 1).insert(0, *z >= 0.0 ? "+" : "").c_str() : "-");
+  std::string row = line + (reason.empty() ? std::string() : brief_reason(reason));
+  while (!row.empty() && row.back() == ' ') row.pop_back();
+  return row;
+}
+
+/// The CSV row of a summary line: its warnings counted, the first given
+/// (the rest are in the JSON line).
+std::string csv_of(json line) {
+  if (line.contains("warnings")) {
+    const json w = line["warnings"];
+    line["warning_count"] = w.size();
+    line["warnings"] = w.empty() ? json("") : w.front();
+  }
+  return csv_row(line);
+}
+
+}  // namespace
+
 BatchLine batch_line(const std::string& input, const ParsedScene& scene, const Analysis& a) {
   const json line = {{"input", input},
                      {"ok", true},
@@ -373,7 +428,9 @@ BatchLine batch_line(const std::string& input, const ParsedScene& scene, const A
                      {"expected_g_m_s2", a.expected_g ? json(a.expected_g->value) : json(nullptr)},
                      {"z", optional_number(a.z_score)},
                      {"warnings", warnings_json(scene, a)}};
-  return {true, a.status, a.g.value, json_text(line, -1), csv_row(line)};
+  return {true, a.status, a.g.value, json_text(line, -1), csv_of(line),
+          table_row(result_status_name(a.status), a.g.value, a.g.uncertainty, a.z_score,
+                    a.status_reasons.empty() ? "" : a.status_reasons.front())};
 }
 
 BatchLine batch_failure(const std::string& input, const std::string& error) {
@@ -382,19 +439,26 @@ BatchLine batch_failure(const std::string& input, const std::string& error) {
                      {"status", result_status_name(ResultStatus::failed)},
                      {"status_reasons", json::array()},
                      {"error", error}};
-  return {false, ResultStatus::failed, std::nullopt, json_text(line, -1), csv_row(line)};
+  return {false, ResultStatus::failed, std::nullopt, json_text(line, -1), csv_of(line),
+          table_row(result_status_name(ResultStatus::failed), std::nullopt, std::nullopt, std::nullopt, error)};
 }
 
 ClassSummary summarise_class(const std::vector<BatchLine>& lines) {
+  std::vector<std::pair<ResultStatus, std::optional<double>>> results;
+  for (const BatchLine& l : lines) results.emplace_back(l.status, l.g);
+  return summarise_class(results);
+}
+
+ClassSummary summarise_class(const std::vector<std::pair<ResultStatus, std::optional<double>>>& results) {
   ClassSummary c;
   double mean = 0.0, m2 = 0.0;  // Welford's running mean and sum of squares
-  for (const BatchLine& l : lines) {
-    ++c.count[static_cast<int>(l.status)];
-    if (l.status != ResultStatus::ok || !l.g) continue;
+  for (const auto& [status, g] : results) {
+    ++c.count[static_cast<int>(status)];
+    if (status != ResultStatus::ok || !g) continue;
     ++c.ok_g_count;
-    const double d = *l.g - mean;
+    const double d = *g - mean;
     mean += d / c.ok_g_count;
-    m2 += d * (*l.g - mean);
+    m2 += d * (*g - mean);
   }
   if (c.ok_g_count > 0) c.ok_g_mean = mean;
   if (c.ok_g_count > 1) c.ok_g_standard_deviation = std::sqrt(m2 / (c.ok_g_count - 1));
@@ -426,6 +490,14 @@ std::string batch_class_csv(const ClassSummary& c) {
   return line + " (" + std::to_string(c.ok_g_count) + (c.ok_g_count == 1 ? " scene)\n" : " scenes)\n");
 }
 
+std::string batch_class_table(const ClassSummary& c) { return batch_class_csv(c).substr(2); }
+
+std::string batch_table_header(std::size_t file_width) {
+  char line[128];
+  std::snprintf(line, sizeof line, "%-8s %-22s %8s  %s", "status", "g (m/s^2)", "z", "reason (in brief; in full in the JSON lines)");
+  return std::string("file").append(file_width + 2 - 4, ' ') + line + "\n";
+}
+
 std::string batch_csv_header() {
   std::string line;
   for (const char* c : kCsvColumns) line += (line.empty() ? "" : ",") + std::string(c);
@@ -433,34 +505,6 @@ std::string batch_csv_header() {
 }
 
 namespace {
-
-std::string format_fixed(double x, int decimals) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, x);
-  return text;
-}
-
-/// "+- 0.00148" or "(no uncertainty: singular fit)"
-std::string plus_minus(const std::optional<double>& u, const char* format) {
-  if (!u) return "+- ? (singular fit)";
-  char text[64];
-  std::snprintf(text, sizeof text, format, *u);
-  return std::string("+- ") + text;
-}
-
-/// Decimals that show `u` to two significant digits, as a lab report
-/// rounds a value to its uncertainty.
-int decimals_of(double u) {
-  if (!(u > 0.0) || !std::isfinite(u)) return 5;
-  return std::clamp(1 - static_cast<int>(std::floor(std::log10(u))), 0, 12);
-}
-
-/// "9.8034 +- 0.0015": the value rounded to its uncertainty.
-std::string rounded(double value, const std::optional<double>& u) {
-  if (!u) return plus_minus(u, "%.5f").insert(0, format_fixed(value, 5) + " ");
-  const int d = decimals_of(*u);
-  return format_fixed(value, d) + " +- " + format_fixed(*u, d);
-}
 
 void correction_table(std::ostringstream& os, const ObservationResult& o) {
   char line[320];

@@ -5,6 +5,8 @@
 #include <utility>
 
 #include "pendulum/numeric.hpp"
+#include "pendulum/output.hpp"
+#include "pendulum/status.hpp"
 #include "pendulum/report/plots.hpp"
 #include "pendulum/report/svg_plot.hpp"
 
@@ -34,10 +36,30 @@ figure { margin: 1rem 0 1.5rem; }
 svg { max-width: 100%; height: auto; display: block; }
 figcaption { font-size: 0.85rem; color: #333333; margin-top: 0.3rem; }
 ul.warnings li { color: #8B2500; }
-code { font-size: 0.9em; }
+div.verdict { border: 2px solid #767676; border-left-width: 0.6rem; padding: 0.3rem 0.8rem; margin: 0.8rem 0; }
+div.verdict.suspect { border-color: #D55E00; background: #FFF4EC; }
+div.verdict.failed { border-color: #8B2500; background: #FBECE8; }
+div.verdict p { margin: 0.3rem 0; }
+div.verdict li { margin: 0.2rem 0; }
+code { font-size: 0.9em; overflow-wrap: anywhere; }
+tr.suspect td { background: #FFF4EC; }
 @media print { body { max-width: none; } section.scene { break-before: page; } h1 + section.scene { break-before: auto; }
   h2, h3 { break-after: avoid; } figure, table { break-inside: avoid; } }
 )";
+
+/// Decimals that show `u` to two significant digits, as a lab report rounds
+/// a value to its uncertainty (5 for none, at most 9).
+int decimals_for(double u) {
+  if (!(u > 0.0) || !std::isfinite(u)) return 5;
+  return std::clamp(1 - static_cast<int>(std::floor(std::log10(u))), 0, 9);
+}
+
+/// An estimate rounded to its uncertainty, as a lab report writes it:
+/// "9.693 ± 0.020 m/s²"; `decimals` fixed digits where it is unknown.
+std::string rounded_estimate(const Estimate& e, int decimals, const std::string& unit) {
+  if (!e.uncertainty || !(*e.uncertainty > 0.0) || !std::isfinite(*e.uncertainty)) return estimate_text(e, decimals, unit);
+  return value_with_uncertainty(e.value, *e.uncertainty, false) + (unit.empty() ? "" : " " + unit);
+}
 
 std::string signed_fixed(double v, int decimals) { return (v > 0.0 ? "+" : "") + format_fixed(v, decimals); }
 
@@ -60,6 +82,24 @@ std::string page(const std::string& title, const std::string& body) {
          "</body>\n</html>\n";
 }
 
+/// The verdict in words, first on a scene's page: the status, each reason
+/// (the likely slip and the input to fix), or why the result is ok.
+std::string verdict_html(const SceneReport& r) {
+  std::string s = "<div class=\"verdict " + esc(r.status) + "\" role=\"status\">\n<p><strong>Status: " + esc(r.status) +
+                  "</strong> \u2014 ";
+  if (r.status_reasons.empty()) {
+    s += r.z ? "g agrees with the expected g (z = " + signed_fixed(*r.z, 2) + ") and no input looks like a slip."
+             : "no input looks like a slip (the scene gives no site to compare g with).";
+    if (!r.warnings.empty()) s += " " + std::to_string(r.warnings.size()) + (r.warnings.size() == 1 ? " warning" : " warnings") + " below.";
+    return s + "</p>\n</div>\n";
+  }
+  s += r.status_reasons.size() == 1 ? "the result below is printed, but it looks like a slip. Reason and fix:"
+                                    : "the result below is printed, but it looks like a slip. Reasons and fixes:";
+  s += "</p>\n<ul>\n";
+  for (const auto& reason : r.status_reasons) s += "<li>" + esc(reason) + "</li>\n";
+  return s + "</ul>\n</div>\n";
+}
+
 std::string g_comparison(const SceneReport& r) {
   std::string s = "<table class=\"summary\">\n";
   auto row = [&](const std::string& name, const std::string& value) {
@@ -80,14 +120,14 @@ std::string g_comparison(const SceneReport& r) {
     row("g of the textbook curve (no corrections)", format_fixed(r.pivot_scan->textbook_g, 5) + " m/s\u00B2");
   } else {
     row(r.series ? "g of the textbook line (no corrections)" : "g uncorrected (Eq. 5)",
-        r.g_uncorrected ? estimate_text(*r.g_uncorrected, 5, "m/s\u00B2")
+        r.g_uncorrected ? rounded_estimate(*r.g_uncorrected, 5, "m/s\u00B2")
                         : "undefined: the lengths do not determine a line");
   }
   if (r.series) return s + "</table>\n";  // the periods are in the series' table
-  row("measured period T", format_fixed(r.period_measured.value, 6) + " \u00B1 " +
-                               format_fixed(r.period_measured.uncertainty, 6) + " s (" + std::to_string(r.trials) +
+  row("measured period T", rounded_estimate({r.period_measured.value, r.period_measured.uncertainty}, 6, "s") + " (" +
+                               std::to_string(r.trials) +
                                " trials of " + std::to_string(r.oscillations_per_trial) + " oscillations)");
-  row("ideal period T\u2080", estimate_text(r.period_ideal, 6, "s"));
+  row("ideal period T\u2080", rounded_estimate(r.period_ideal, 6, "s"));
   return s + "</table>\n";
 }
 
@@ -98,8 +138,8 @@ std::string short_equation(const std::string& equation) {
 }
 
 std::string corrections_table(const SceneReport& r) {
-  std::string s = "<p>A correction smaller than " + format_significant(r.negligible_below * 1e6, 3) +
-                  " \u00B5s (a tenth of the period's uncertainty) is negligible; it is still applied.</p>\n"
+  std::string s = "<p>A correction smaller than " + duration_text(r.negligible_below, 3) +
+                  " (a tenth of the period's uncertainty) is negligible; it is still applied.</p>\n"
                   "<table class=\"corrections\">\n<thead><tr><th scope=\"col\">correction</th>"
                   "<th scope=\"col\" class=\"num\">\u0394T (\u00B5s)</th><th scope=\"col\" class=\"num\">u(\u0394T) (\u00B5s)</th>"
                   "<th scope=\"col\" class=\"num\">\u0394g (10\u207B\u2075 m/s\u00B2)</th><th scope=\"col\">status</th>"
@@ -168,19 +208,27 @@ std::string decay_table(const DecayRecord& d) {
 }
 
 /// `setting` heads the settings' column: "L (m)", "pivot position x (m)".
+/// Residuals as the plots draw them, measured - model, over the effective
+/// uncertainty that reduce weighs them with and warns by.
 std::string series_table(const SeriesRecord& d, const std::string& setting) {
   std::string s = parameters_table("series", d.parameters);
   s += "<table class=\"observations\">\n<thead><tr><th scope=\"col\" class=\"num\">" + esc(setting) + "</th>"
-       "<th scope=\"col\" class=\"num\">T measured (s)</th><th scope=\"col\" class=\"num\">\u03C3 (s)</th>"
-       "<th scope=\"col\" class=\"num\">T model (s)</th><th scope=\"col\" class=\"num\">residual (\u03C3)</th></tr></thead>\n<tbody>\n";
+       "<th scope=\"col\" class=\"num\">T measured (s)</th><th scope=\"col\" class=\"num\">u(T) (s)</th>"
+       "<th scope=\"col\" class=\"num\">T model (s)</th><th scope=\"col\" class=\"num\">\u03C3<sub>eff</sub> (s)</th>"
+       "<th scope=\"col\" class=\"num\">residual (\u03C3<sub>eff</sub>)</th></tr></thead>\n<tbody>\n";
   for (std::size_t k = 0; k < d.lengths.size(); ++k) {
-    const double sigma = d.period_uncertainties[k];
+    const double u = d.period_uncertainties[k], sigma = d.effective_uncertainties[k];
+    const int decimals = decimals_for(std::min(u, sigma));
     s += "<tr><td class=\"num\">" + format_fixed(d.lengths[k], 4) + "</td><td class=\"num\">" +
-         format_fixed(d.periods[k], 5) + "</td><td class=\"num\">" + format_fixed(sigma, 5) +
-         "</td><td class=\"num\">" + format_fixed(d.periods_model[k], 5) + "</td><td class=\"num\">" +
-         (sigma > 0.0 ? signed_fixed((d.periods_model[k] - d.periods[k]) / sigma, 2) : "\u2014") + "</td></tr>\n";
+         format_fixed(d.periods[k], decimals) + "</td><td class=\"num\">" + format_significant(u, 2) +
+         "</td><td class=\"num\">" + format_fixed(d.periods_model[k], decimals) + "</td><td class=\"num\">" +
+         format_significant(sigma, 2) + "</td><td class=\"num\">" +
+         (sigma > 0.0 ? signed_fixed((d.periods[k] - d.periods_model[k]) / sigma, 2) : "\u2014") + "</td></tr>\n";
   }
-  s += "</tbody>\n</table>\n<p class=\"meta\">\u03C7\u00B2 = " + format_significant(d.chi2, 4) + " for " +
+  s += "</tbody>\n</table>\n<p class=\"meta\">Residual: (T measured \u2212 T model) / \u03C3<sub>eff</sub>, as the "
+       "plot draws it; \u03C3<sub>eff</sub> is u(T) with the setting's and the amplitude's uncertainties carried to "
+       "the period, the weight of the fit and of reduce's warnings (reduce's <code>residual_sigma</code> is the same "
+       "with the opposite sign, model \u2212 measured). \u03C7\u00B2 = " + format_significant(d.chi2, 4) + " for " +
        std::to_string(d.dof) + " degrees of freedom" +
        (d.probability ? ", P(\u03C7\u00B2 \u2265 this) = " + format_significant(*d.probability, 3) : "") +
        ". The corrections above are those of the first observation.</p>\n";
@@ -199,7 +247,14 @@ std::string recording_part(const RecordingRecord& r, const std::string& anchor, 
                   "<p class=\"meta\">Recording file: <code>" + esc(r.input) + "</code><br/>Format: " + esc(r.format) +
                   ", " + esc(r.signal) + "; " + std::to_string(r.rows) + " rows read, " +
                   std::to_string(r.dropped) + " skipped (a cell empty or not a number).</p>\n";
-  s += "<p class=\"g\">T = " + value_with_uncertainty(r.period.value, r.period.uncertainty, false) + " s</p>\n";
+  const bool below_resolution = r.period.uncertainty < r.period_resolution;
+  s += "<p class=\"g\">T = " +
+       value_with_uncertainty(r.period.value, std::max(r.period.uncertainty, r.period_resolution), false) + " s</p>\n";
+  if (below_resolution) {
+    s += "<p class=\"meta\">The period's standard uncertainty, " + format_significant(r.period.uncertainty, 2) +
+         " s, is below the clock's resolution spread over the " + std::to_string(r.period.periods) +
+         " periods; the period is rounded to that, " + format_significant(r.period_resolution, 2) + " s.</p>\n";
+  }
   s += "<table class=\"summary\">\n";
   auto row = [&](const std::string& name, const std::string& value) {
     s += "<tr><th scope=\"row\">" + esc(name) + "</th><td>" + esc(value) + "</td></tr>\n";
@@ -237,7 +292,7 @@ std::string scene_section(const SceneReport& r, const std::string& anchor) {
                   esc(r.title.empty() ? r.input : r.title) + "</h2>\n<p class=\"meta\">Scene file: <code>" +
                   esc(r.input) + "</code>";
   if (!r.source.empty()) s += "<br/>Source: " + esc(r.source);
-  s += "</p>\n<p class=\"g\">g = " + esc(estimate_text(r.g, 5, "m/s\u00B2")) + "</p>\n";
+  s += "</p>\n" + verdict_html(r) + "<p class=\"g\">g = " + esc(rounded_estimate(r.g, 5, "m/s\u00B2")) + "</p>\n";
   s += g_comparison(r);
   if (!r.warnings.empty()) {
     s += "<h3>Warnings</h3>\n<ul class=\"warnings\">\n";
@@ -257,11 +312,8 @@ std::string scene_section(const SceneReport& r, const std::string& anchor) {
   }
   if (auto f = pivot_scan_figure(r, anchor + "-pivot-scan")) {
     const std::string setting = r.pivot_scan->setting == Setting::pivot_position ? "pivot position x (m)" : "pivot distance h (m)";
-    // sigma is the fit's, with the pivot's uncertainty, which dominates where T is steep: reduce's residuals.
-    SeriesRecord rows = *r.series;
-    rows.period_uncertainties = r.pivot_scan->uncertainties;
     s += std::string(r.pivot_scan->bessel_g ? "<h3>Kater's pendulum</h3>\n" : "<h3>Pivot scan</h3>\n") +
-         figure_html(to_svg(*f, false), f->description) + series_table(rows, setting);
+         figure_html(to_svg(*f, false), f->description) + series_table(*r.series, setting);
   }
   if (auto d = decay_figure(r, anchor + "-decay")) {
     s += "<h3>Decay record</h3>\n" + figure_html(to_svg(*d, false), d->description) + decay_table(*r.decay);
@@ -285,43 +337,66 @@ std::string recording_report_html(const RecordingRecord& r) {
 
 std::string class_report_html(const std::vector<ClassEntry>& entries) {
   std::vector<ClassPoint> points;
-  std::size_t failed = 0;
+  std::vector<std::pair<ResultStatus, std::optional<double>>> results;
   std::vector<std::pair<double, std::string>> rows;  // by g, as the chart
   std::string failures;
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const ClassEntry& e = entries[i];
     const std::string anchor = "scene-" + std::to_string(i + 1);
     if (!e.report) {
-      ++failed;
+      results.emplace_back(ResultStatus::failed, std::nullopt);
       failures += "<tr class=\"failed\"><td><code>" + esc(e.input) + "</code></td><td>" + esc(e.error) + "</td></tr>\n";
       continue;
     }
     const SceneReport& r = *e.report;
+    const bool ok = r.status == "ok";
+    results.emplace_back(ok ? ResultStatus::ok : ResultStatus::suspect, r.g.value);
     const std::size_t slash = e.input.find_last_of('/');
     points.push_back({slash == std::string::npos ? e.input : e.input.substr(slash + 1), "#" + anchor, r.g.value,
-                      r.g.uncertainty, r.expected_g, r.z});
-    rows.emplace_back(r.g.value, "<tr><td><a href=\"#" + anchor + "\"><code>" + esc(e.input) + "</code></a></td><td class=\"num\">" +
-            esc(estimate_text(r.g, 5, "")) + "</td><td class=\"num\">" +
+                      r.g.uncertainty, r.expected_g, r.z, ok});
+    const std::string reason = r.status_reasons.empty() ? "" : brief_reason(r.status_reasons.front()) +
+        (r.status_reasons.size() > 1 ? " (+" + std::to_string(r.status_reasons.size() - 1) + " more)" : "");
+    rows.emplace_back(r.g.value, "<tr class=\"" + esc(r.status) + "\"><td><a href=\"#" + anchor + "\"><code>" +
+            esc(e.input) + "</code></a></td><td><strong>" + esc(r.status) + "</strong>" +
+            (reason.empty() ? "" : ": " + esc(reason)) + "</td><td class=\"num\">" +
+            esc(r.g.uncertainty ? value_with_uncertainty(r.g.value, *r.g.uncertainty, false)
+                                : estimate_text(r.g, 5, "")) + "</td><td class=\"num\">" +
             (r.expected_g ? format_fixed(r.expected_g->value, 5) : "\u2014") + "</td><td class=\"num\">" +
             (r.z ? signed_fixed(*r.z, 2) : "\u2014") + "</td><td>" +
             (r.budget.empty() ? "\u2014" : "<code>" + esc(r.budget.front().input) + "</code>") + "</td><td class=\"num\">" +
             std::to_string(r.warnings.size()) + "</td></tr>\n");
   }
-  std::string body = "<h1>pendulum-g class report</h1>\n<p class=\"meta\">" + std::to_string(entries.size()) +
-                     " scenes: " + std::to_string(entries.size() - failed) + " reduced, " + std::to_string(failed) +
-                     " failed. Each row links to the scene's own section below.</p>\n";
+  const ClassSummary summary = summarise_class(results);
+  std::string body = "<h1>pendulum-g class report</h1>\n<div class=\"verdict class\" role=\"status\">\n<p><strong>" +
+                     std::to_string(entries.size()) + " scenes: " + std::to_string(entries.size() - summary.count[2]) +
+                     " reduced, " + std::to_string(summary.count[2]) + " failed. Status: " +
+                     std::to_string(summary.count[0]) + " ok, " + std::to_string(summary.count[1]) + " suspect, " +
+                     std::to_string(summary.count[2]) + " failed.</strong></p>\n<p>g of the ok results: ";
+  if (!summary.ok_g_mean) {
+    body += "none.";
+  } else {
+    body += "mean " + format_fixed(*summary.ok_g_mean, 4) + " m/s\u00B2";
+    if (summary.ok_g_standard_deviation) {
+      body += ", standard deviation " + format_fixed(*summary.ok_g_standard_deviation, 4) +
+              " m/s\u00B2 (the spread of one result), standard error of the mean " +
+              format_fixed(*summary.ok_g_standard_deviation / std::sqrt(summary.ok_g_count), 4) + " m/s\u00B2";
+    }
+    body += " (" + std::to_string(summary.ok_g_count) + (summary.ok_g_count == 1 ? " result)." : " results).");
+  }
+  body += " A suspect result is printed but looks like a slip: its row gives the reason in brief, its section the "
+          "reasons in full with the fix. Each row links to the scene's own section below.</p>\n</div>\n";
   if (!points.empty()) {
     const CategoryChart chart = class_chart(points, "class-g");
     body += figure_html(to_svg(chart, false), chart.description);
-    body += "<table class=\"class\">\n<thead><tr><th scope=\"col\">scene</th><th scope=\"col\" class=\"num\">g (m/s\u00B2)"
-            "</th><th scope=\"col\" class=\"num\">expected g (m/s\u00B2)</th><th scope=\"col\" class=\"num\">z</th>"
-            "<th scope=\"col\">largest in the budget</th><th scope=\"col\" class=\"num\">warnings</th></tr></thead>\n"
-            "<tbody>\n";
+    body += "<table class=\"class\">\n<thead><tr><th scope=\"col\">scene</th><th scope=\"col\">status</th>"
+            "<th scope=\"col\" class=\"num\">g (m/s\u00B2)</th><th scope=\"col\" class=\"num\">expected g (m/s\u00B2)</th>"
+            "<th scope=\"col\" class=\"num\">z</th><th scope=\"col\">largest in the budget</th>"
+            "<th scope=\"col\" class=\"num\">warnings</th></tr></thead>\n<tbody>\n";
     std::stable_sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     for (const auto& row : rows) body += row.second;
     body += "</tbody>\n</table>\n";
   }
-  if (failed) {
+  if (summary.count[2]) {
     body += "<h2>Files that failed</h2>\n<table class=\"failures\">\n<thead><tr><th scope=\"col\">file</th>"
             "<th scope=\"col\">error</th></tr></thead>\n<tbody>\n" + failures + "</tbody>\n</table>\n";
   }

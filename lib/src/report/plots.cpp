@@ -90,7 +90,16 @@ std::string value_with_uncertainty(double value, double uncertainty, bool sign) 
   const double scale = std::pow(10.0, e);
   const int d = std::max(0, e - ku + 1);
   return "(" + plus + format_fixed(value / scale, d) + " \u00B1 " + format_fixed(uncertainty / scale, d) + ")" +
-         times_ten_to(e);
+         (e == 0 ? std::string() : times_ten_to(e));
+}
+
+std::string duration_text(double seconds, int significant) {
+  static const std::pair<double, const char*> units[] = {
+      {1.0, "s"}, {1e-3, "ms"}, {1e-6, "\u00B5s"}, {1e-9, "ns"}, {1e-12, "ps"}, {1e-15, "fs"}};
+  for (const auto& [scale, unit] : units) {
+    if (std::abs(seconds) >= scale || scale == 1e-15) return format_significant(seconds / scale, significant) + " " + unit;
+  }
+  return "";
 }
 
 std::optional<CategoryChart> corrections_chart(const SceneReport& r, const std::string& id) {
@@ -124,7 +133,7 @@ std::optional<CategoryChart> corrections_chart(const SceneReport& r, const std::
   ch.series = {applied, negligible};
   if (r.negligible_below > 0.0) {
     Reference threshold;
-    threshold.name = "negligible below " + format_significant(r.negligible_below * kMicro, 3) + " \u00B5s";
+    threshold.name = "negligible below " + duration_text(r.negligible_below, 3);
     threshold.value = r.negligible_below * kMicro;
     threshold.colour = Colour::vermillion;
     ch.references.push_back(threshold);
@@ -287,6 +296,7 @@ CategoryChart class_chart(std::vector<ClassPoint> points, const std::string& id)
     std::string note =
         p.z ? "z = " + std::string(*p.z > 0.0 ? "+" : "") + format_fixed(*p.z, 2) : p.expected ? "" : "no expected g";
     if (!p.uncertainty) note += std::string(note.empty() ? "" : ", ") + kUncertaintyUnknown;
+    if (!p.ok) note += std::string(note.empty() ? "" : ", ") + "suspect";
     ch.notes.push_back(note);
     g.values.push_back(p.g);
     g.errors.push_back(p.uncertainty);
@@ -305,13 +315,30 @@ CategoryChart class_chart(std::vector<ClassPoint> points, const std::string& id)
   } else if (std::any_of(expected.values.begin(), expected.values.end(), [](const auto& v) { return v.has_value(); })) {
     ch.series.push_back(expected);
   }
+  // The scale: the ok results and the expected g (standard gravity when no
+  // row has one), each with its uncertainty.
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  auto hold = [&](double v, double u) { lo = std::min(lo, v - u), hi = std::max(hi, v + u); };
+  bool any_expected = false;
+  for (const auto& p : points) {
+    if (p.ok) hold(p.g, p.uncertainty.value_or(0.0));
+    if (p.expected) hold(p.expected->value, p.expected->uncertainty), any_expected = true;
+  }
+  if (!any_expected) hold(kStandardGravity, 0.0);
+  ch.range = std::pair{lo, hi};
+  const bool off_scale = std::any_of(points.begin(), points.end(), [&](const ClassPoint& p) {
+    return p.g < lo || p.g > hi;
+  });
   ch.description = std::to_string(points.size()) +
                    " measured values of g with their standard uncertainties, sorted from smallest to largest, "
                    "against the g expected at the site; the z-score of each is written at the right of its row." +
                    (std::all_of(points.begin(), points.end(), [](const ClassPoint& p) { return p.uncertainty.has_value(); })
                         ? std::string()
                         : std::string(" Where an uncertainty is unknown (a singular fit) the row says so and has no "
-                                      "error bar."));
+                                      "error bar.")) +
+                   (off_scale ? " The axis spans the results whose status is ok and the expected g; a result beyond "
+                                "it is drawn at the edge, open, with its value."
+                              : "");
   return ch;
 }
 

@@ -109,6 +109,9 @@ RecordingRecord make_recording_record(const RecordingSummary& summary, const Rec
   r.dropped = summary.dropped;
   r.period = a.period;
   r.crossings_per_period = a.crossings_per_period;
+  constexpr double kFinestStamp = 1e-6;  // (s)
+  const double dt = samples && samples->time_quantum > 0.0 ? samples->time_quantum : kFinestStamp;
+  r.period_resolution = std::sqrt(2.0) * dt / std::max(1, a.period.periods);
   // The crossing fit's weights w_i = slope_i^2 samples_i / mean (1 for gate
   // events), and its residual variance s^2: sigma_i^2 = s^2 / w_i.
   double mean_weight = 0.0;

@@ -75,6 +75,8 @@ SceneReport make_scene_report(const std::string& input, const ParsedScene& scene
   r.input = input;
   r.title = scene.title;
   r.source = scene.source;
+  r.status = result_status_name(a.status);
+  r.status_reasons = a.status_reasons;
   r.g = a.g;
   if (a.fit.textbook) r.g_uncorrected = a.fit.textbook->g;
   r.period_measured = {first.period_measured.value, first.period_measured.uncertainty};
@@ -104,6 +106,8 @@ SceneReport make_scene_report(const std::string& input, const ParsedScene& scene
       s.length_uncertainties.push_back(scene.observation_uncertainties[k].length);
       s.periods.push_back(o.period_measured.value);
       s.period_uncertainties.push_back(o.period_measured.uncertainty);
+      s.effective_uncertainties.push_back(o.effective_uncertainty > 0.0 ? o.effective_uncertainty
+                                                                        : o.period_measured.uncertainty);
       s.periods_model.push_back(o.period_model);
     }
     for (const auto& p : a.fit.parameters) s.parameters.push_back({p.name, p.unit, p.value, p.uncertainty, p.fitted});

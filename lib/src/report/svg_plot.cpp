@@ -279,7 +279,7 @@ Ticks axis_ticks(const Axis& axis, Range r, int max_intervals) {
 std::string tick_label(const Ticks& t, const Axis& axis, double v) {
   if (axis.scale == Scale::log) {
     const int k = static_cast<int>(std::lround(std::log10(v)));
-    return std::abs(k) <= 4 ? format_fixed(v, std::max(0, -k)) : "10" + times_ten_to(k).substr(3);
+    return std::abs(k) <= 4 ? format_fixed(v, std::max(0, -k)) : times_ten_to(k).substr(2);  // "10⁵": the "×" (2 bytes in UTF-8) dropped
   }
   const double largest = std::max(std::abs(t.lo), std::abs(t.hi));
   if (t.decimals <= 6 && largest < 1e6) return format_fixed(v, t.decimals);
@@ -581,11 +581,13 @@ std::string to_svg(const CategoryChart& ch, bool standalone) {
   std::vector<std::vector<std::size_t>> in_row(rows);
   Range vr;
   vr.log = log;
+  const bool clipped = ch.range && !log;
   for (std::size_t s = 0; s < ch.series.size(); ++s) {
     const auto& se = ch.series[s];
     for (std::size_t r = 0; r < rows && r < se.values.size(); ++r) {
       if (!se.values[r] || !std::isfinite(*se.values[r]) || (log && *se.values[r] <= 0.0)) continue;
       in_row[r].push_back(s);
+      if (clipped) continue;
       const double v = *se.values[r];
       const double e = se.errors.empty() || !se.errors[r] ? 0.0 : *se.errors[r];
       vr.add(v);
@@ -593,9 +595,14 @@ std::string to_svg(const CategoryChart& ch, bool standalone) {
       if (!log || v - e > 0.0) vr.add(v - e);
     }
   }
-  for (const auto& r : ch.references) {
-    vr.add(r.value - r.half_width);
-    vr.add(r.value + r.half_width);
+  if (clipped) {
+    vr.add(ch.range->first);
+    vr.add(ch.range->second);
+  } else {
+    for (const auto& r : ch.references) {
+      vr.add(r.value - r.half_width);
+      vr.add(r.value + r.half_width);
+    }
   }
   Axis value_axis = ch.value;
   const bool bars = std::any_of(ch.series.begin(), ch.series.end(),
@@ -673,6 +680,15 @@ std::string to_svg(const CategoryChart& ch, bool standalone) {
       if (log && v < t.lo) continue;
       const double e = se.errors.empty() || !se.errors[r] ? 0.0 : *se.errors[r];
       const double y = row_top + 4.0 + slot * (static_cast<double>(k) + 0.5);
+      if (clipped && (v < t.lo || v > t.hi)) {
+        // Off the scale: an open marker at the edge, its value inside the plot beside it.
+        const bool low = v < t.lo;
+        const double edge = mv(low ? t.lo : t.hi);
+        c.marker(se.marker, edge, y, kChartMarker, colour, false);
+        c.text(edge + (low ? 10.0 : -10.0), y + 4.5, (low ? "\u25C0 " : "") + format_significant(v, 4) + (low ? "" : " \u25B6"),
+               kTickFont, low ? "start" : "end");
+        continue;
+      }
       if (se.mark == CategorySeries::Mark::bar) {
         const double h = std::min(16.0, slot - 2.0);
         const double a = std::min(mv(base), mv(v)), b = std::max(mv(base), mv(v));

@@ -52,6 +52,11 @@ std::string estimate_text(const Estimate& e, int decimals, const std::string& un
 /// "9.8034 ± 0.0015"; `sign` prints a + on positive values.
 std::string value_with_uncertainty(double value, double uncertainty, bool sign);
 
+/// A duration with the SI prefix that puts `significant` digits of it
+/// between 1 and 1000: "2.53 \u00B5s", "0.253 fs" at most (below 1 fs);
+/// no power of ten.
+std::string duration_text(double seconds, int significant);
+
 /// |DeltaT| of every correction not skipped, with its uncertainty, on a log
 /// axis in microseconds, applied and negligible told apart, and the
 /// negligible threshold; empty when no correction has a size.
@@ -86,10 +91,15 @@ struct ClassPoint {
   std::optional<double> uncertainty; ///< (m/s^2); empty when unknown
   std::optional<Measured> expected;  ///< (m/s^2)
   std::optional<double> z;
+  bool ok = true;  ///< status ok: the chart's scale is the ok results'
 };
 
 /// Every g with its error bar, sorted by g, against the expected g and its
 /// band (one line when the class shares it, a marker per row otherwise).
+/// The axis spans the ok results with their error bars and the expected g
+/// with its band (standard gravity without one), so that a slip 4 times off
+/// does not squeeze the class into one column; a result beyond is drawn at
+/// the edge with its value.
 CategoryChart class_chart(std::vector<ClassPoint> points, const std::string& id);
 
 /// The plots the scene's data allow, by name: corrections, budget, decay,

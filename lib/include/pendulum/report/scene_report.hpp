@@ -39,6 +39,10 @@ struct SeriesRecord {
   std::vector<double> lengths, length_uncertainties;  ///< (m)
   std::vector<double> periods;              ///< measured (s)
   std::vector<double> period_uncertainties; ///< of the measured periods (s)
+  /// The fit's effective uncertainty of each period (s): its own, its
+  /// setting's and its amplitude's carried to it, as reduce weighs the
+  /// residuals and warns about them.
+  std::vector<double> effective_uncertainties;
   std::vector<double> periods_model;        ///< the fitted model's T at each (s)
   std::vector<FitParameterText> parameters;
   double chi2 = 0.0;
@@ -104,6 +108,10 @@ struct PivotScanRecord {
 struct SceneReport {
   std::string input;  ///< the file as the user named it
   std::string title, source;
+  /// The verdict (status.hpp): "ok" or "suspect", each reason naming the
+  /// likely slip and the input to fix; the page shows it first.
+  std::string status = "ok";
+  std::vector<std::string> status_reasons;
   /// An uncertainty is empty when unknown (a singular fit): the report draws
   /// no error bar and says "uncertainty unknown".
   Estimate g;                 ///< (m/s^2)

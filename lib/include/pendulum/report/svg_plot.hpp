@@ -11,6 +11,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pendulum::report {
@@ -159,6 +160,10 @@ struct CategoryChart {
   Axis value;
   std::vector<CategorySeries> series;
   std::vector<Reference> references;  ///< vertical lines
+  /// Linear axes: when set, the axis spans [first, second] (widened to its
+  /// ticks) whatever the values; a point beyond is drawn at the axis's edge,
+  /// open, with its value written beside it and no error bar.
+  std::optional<std::pair<double, double>> range;
   double width = 720.0;
 };
 

@@ -95,7 +95,7 @@ std::string summary_table(const RecordingSummary& r) {
     const std::string name = c.name.empty() ? "" : " \"" + c.name + "\"";
     const std::string unit = c.unit.empty() ? "" : " (" + c.unit + ")";
     put("%-22s ", ("column " + std::to_string(c.index)).c_str());
-    o << c.role << unit << name << ", by the " << c.decided_by << ": " << c.why << "\n";
+    o << c.role << unit << name << ", by the " << c.decided_by << (c.why.empty() ? "" : ": " + c.why) << "\n";
   }
   for (const RecordingNote& n : r.notes) {
     put("%-22s ", n.line ? ("line " + std::to_string(n.line)).c_str() : "note");

@@ -273,8 +273,9 @@ std::optional<Layout> layout_for(RecordingFormat format, const std::vector<Colum
 /// The quoted names of `cols` (at most 300 bytes).
 std::string quoted_names(const std::vector<Column>& cols) {
   std::string names;
-  for (const auto& c : cols) {
-    if (names.size() < 300) names += (names.empty() ? "\"" : ", \"") + one_line(c.name, 40, true) + "\"";
+  for (std::size_t j = 0; j < cols.size(); ++j) {
+    const std::string name = cols[j].name.empty() ? "column " + std::to_string(j + 1) : one_line(cols[j].name, 40, true);
+    if (names.size() < 300) names += (names.empty() ? "\"" : ", \"") + name + "\"";
   }
   return names;
 }
@@ -619,38 +620,39 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
     c.name = cols[j].name;
     c.decided_by = cols[j].decided;
     const auto used = std::find(layout.channels.begin(), layout.channels.end(), j);
-    const std::string how = c.decided_by == "header"   ? "from the header"
-                            : c.decided_by == "option" ? "as declared"
-                                                       : "from the numbers";
+    // Why, in words the file's reader can check; "by the header" needs none.
+    std::vector<std::string> why;
     if (j == layout.time) {
       c.role = layout.kind == SignalKind::blocking_times ? "blocking time"
                : layout.kind == SignalKind::event_stamps ? "event stamp"
                                                          : "time";
       c.unit = cols[j].unit.empty() ? "s" : cols[j].unit;
-      c.why = how + (c.decided_by == "content" ? ": increasing, not a counter" : "") +
-              (cols[j].unit.empty() ? "; no unit given, read as seconds" : "");
+      if (c.decided_by == "content") why.emplace_back("increasing, not a counter");
+      if (cols[j].unit.empty()) why.emplace_back("no unit given, read as seconds");
     } else if (used != layout.channels.end()) {
       c.role = signal_role(layout.kind, cols[j].role);
-      c.unit = layout.kind == SignalKind::acceleration || layout.kind == SignalKind::linear_acceleration ? "m/s^2"
-               : layout.kind == SignalKind::gate_states ? "" : layout.channel_unit;
-      c.why = how;
+      c.unit = layout.kind == SignalKind::gate_states ? "" : layout.channel_unit;
       if (!layout.unit_why.empty() && layout.kind == SignalKind::angle) {
         c.decided_by = "content";
-        c.why = "the role " + how + "; " + layout.unit_why;
+        why.push_back("the role by the " + cols[j].decided + "; " + layout.unit_why);
       }
-      if (layout.kind == SignalKind::position && c.decided_by == "content") c.why += ": two varying columns beside the time, neither the rate of the other";
-      if (layout.kind == SignalKind::angle && cols[j].decided == "content") c.why += ": the other varying column is its rate of change";
+      if (layout.kind == SignalKind::position && cols[j].decided == "content") {
+        why.emplace_back("two varying columns beside the time, neither the rate of the other");
+      }
+      if (layout.kind == SignalKind::angle && cols[j].decided == "content") {
+        why.emplace_back("the other varying column is its rate of change");
+      }
     } else if (layout.counter && j == *layout.counter) {
       c.role = "counter";
-      c.why = how + (c.decided_by == "content" ? ": whole numbers stepping by one" : "");
+      if (c.decided_by == "content") why.emplace_back("whole numbers stepping by one");
     } else if (layout.period && j == *layout.period) {
       c.role = "period";
       c.unit = "s";
-      c.why = how;
     } else {
       c.role = "unused";
-      c.why = unused_why(cols[j], table.columns[j], layout, cols);
+      why.push_back(unused_why(cols[j], table.columns[j], layout, cols));
     }
+    for (const auto& w : why) c.why += (c.why.empty() ? "" : "; ") + w;
     rec.columns.push_back(std::move(c));
   }
   if (!layout.unit_why.empty()) rec.notes.push_back({0, "\"" + names[layout.channels[0]] + "\": " + layout.unit_why});

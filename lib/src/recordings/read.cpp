@@ -668,7 +668,7 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
   needed.insert(needed.end(), layout.channels.begin(), layout.channels.end());
   if (layout.counter) needed.push_back(*layout.counter);
   std::vector<std::size_t> rows;  // the rows kept when some are dropped; empty: all
-  const bool complete = std::all_of(needed.begin(), needed.end(), [&](std::size_t j) {
+  const bool complete = !table.any_nan || std::all_of(needed.begin(), needed.end(), [&](std::size_t j) {
     return std::none_of(table.columns[j].begin(), table.columns[j].end(), [](double v) { return std::isnan(v); });
   });
   auto take = [&](std::size_t j, double scale) {

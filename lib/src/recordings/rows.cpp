@@ -203,6 +203,7 @@ Table read_rows(const char* p, const char* end, std::size_t line_no, const Diale
       q = num_end;
       while (q < e && (*q == ' ' || *q == '"' || *q == '\r')) ++q;
       table.columns[j].push_back(v);
+      table.any_nan |= std::isnan(v);
       if (j + 1 < ncols) {
         // Runs of spaces: the spaces just skipped were the delimiter.
         if (spaces ? q >= e || q == num_end : q >= e || *q != delimiter) {

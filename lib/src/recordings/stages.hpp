@@ -133,6 +133,7 @@ std::vector<std::optional<Column>> parse_column_spec(const std::string& spec, co
 struct Table {
   std::vector<std::vector<double>> columns;
   std::size_t rows = 0;
+  bool any_nan = false;  ///< some cell is empty or NaN (only a row off the fast path can hold one)
   /// (row, line) where the line numbering jumps (blank lines); the first
   /// pair is the first row's.
   std::vector<std::pair<std::size_t, std::size_t>> jumps;

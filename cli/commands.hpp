@@ -120,7 +120,7 @@ std::vector<std::string> recording_family_names();
 std::optional<RecordingFormat> recording_family(const std::vector<std::string>& formats);
 
 /// --bob-width-m and --length-m, a photogate's amplitudes (import and report).
-void add_recording_options(CLI::App& cmd, SwingOptions& options, std::string& set);
+void add_recording_options(CLI::App& cmd, SwingOptions& options, std::string& set, std::string& columns);
 
 /// `pendulum-g clock SCENE`: circular and impulse error of a clock
 /// pendulum (cli/clock_command.cpp).

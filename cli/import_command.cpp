@@ -62,6 +62,21 @@ nlohmann::ordered_json summary_json(const RecordingSummary& r) {
                       {"amplitudes", degrees},
                       {"source", source}}}};
   }
+  nlohmann::ordered_json columns = nlohmann::ordered_json::array();
+  for (const RecordingColumn& c : r.columns) {
+    columns.push_back({{"column", c.index},
+                       {"name", c.name},
+                       {"role", c.role},
+                       {"unit", c.unit.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(c.unit)},
+                       {"decided_by", c.decided_by},
+                       {"why", c.why}});
+  }
+  out["columns"] = columns;
+  nlohmann::ordered_json notes = nlohmann::ordered_json::array();
+  for (const RecordingNote& n : r.notes) {
+    notes.push_back({{"line", n.line == 0 ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(n.line)}, {"note", n.text}});
+  }
+  out["notes"] = notes;
   return out;
 }
 
@@ -76,6 +91,16 @@ std::string summary_table(const RecordingSummary& r) {
   put("%-22s %s (%zu rows, %zu skipped)\n", "recording", r.file.c_str(), r.rows, r.dropped);
   put("%-22s %s\n", "format", recording_format_name(r.format));
   if (!r.set.empty()) put("%-22s %s\n", "set", r.set.c_str());
+  for (const RecordingColumn& c : r.columns) {
+    const std::string name = c.name.empty() ? "" : " \"" + c.name + "\"";
+    const std::string unit = c.unit.empty() ? "" : " (" + c.unit + ")";
+    put("%-22s ", ("column " + std::to_string(c.index)).c_str());
+    o << c.role << unit << name << ", by the " << c.decided_by << (c.why.empty() ? "" : ": " + c.why) << "\n";
+  }
+  for (const RecordingNote& n : r.notes) {
+    put("%-22s ", n.line ? ("line " + std::to_string(n.line)).c_str() : "note");
+    o << n.text << "\n";
+  }
   put("%-22s %d (%zu crossings)\n", "full periods", a.period.periods, a.crossings.size());
   put("%-22s %.7f s +- %.2g s\n", "period", a.period.value, a.period.uncertainty);
   put("%-22s %.3g s rms, lag-1 correlation %.2f\n", "crossing residuals", a.period.residual_rms,
@@ -129,7 +154,7 @@ std::optional<RecordingFormat> recording_family(const std::vector<std::string>& 
   return family;
 }
 
-void add_recording_options(CLI::App& cmd, SwingOptions& options, std::string& set) {
+void add_recording_options(CLI::App& cmd, SwingOptions& options, std::string& set, std::string& columns) {
   cmd.add_option("--bob-width-m", options.bob_width,
                  "Photogates: the bob's width across the beam (m), for the amplitudes")
       ->check(CLI::PositiveNumber);
@@ -141,6 +166,10 @@ void add_recording_options(CLI::App& cmd, SwingOptions& options, std::string& se
                  "signal, a rate, then linear acceleration, then acceleration). PASCO: the run (\"Run #2\"; "
                  "default run 1). Tracker's export of several tracks: the pendulum's track by its name "
                  "(\"mass B\")");
+  cmd.add_option("--columns", columns,
+                 "Each column's role and unit in file order, where the file cannot tell (a headerless file, an "
+                 "angle without its unit): \"t:s,theta:deg\"; roles t, theta, omega, x, y, n (counter), state, "
+                 "period, gyro, a, linear_a; - for a column not used (docs/recordings.md, Columns)");
 }
 
 Command add_import_command(CLI::App& app) {
@@ -149,6 +178,7 @@ Command add_import_command(CLI::App& app) {
     std::vector<std::string> formats;
     SwingOptions swing;
     std::string set;
+    std::string columns;
   };
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
@@ -164,7 +194,7 @@ Command add_import_command(CLI::App& app) {
       ->check(CLI::IsMember(formats))
       ->allow_extra_args(false)  // one value each time: the file after it is not a format
       ->take_all();
-  add_recording_options(*cmd, o->swing, o->set);
+  add_recording_options(*cmd, o->swing, o->set, o->columns);
 
   return {cmd, [o] {
     bool table = false;
@@ -172,7 +202,7 @@ Command add_import_command(CLI::App& app) {
       if (f == "table" || f == "json") table = f == "table";
     }
     const RecordingSummary summary = analyse_recording(
-        o->file, recording_family(o->formats).value_or(RecordingFormat::automatic), o->swing, {}, o->set);
+        o->file, recording_family(o->formats).value_or(RecordingFormat::automatic), o->swing, {}, o->set, o->columns);
     std::cout << (table ? summary_table(summary) : summary_json(summary).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     return 0;
   }};

@@ -50,6 +50,7 @@ Command add_report_command(CLI::App& app) {
     SwingOptions swing;
     std::string set;
     bool allow_outside = false;
+    std::string columns;
   };
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
@@ -74,7 +75,7 @@ Command add_report_command(CLI::App& app) {
       ->check(CLI::IsMember(
           {"corrections", "budget", "decay", "series", "pivot-scan", "signal", "amplitude", "period-amplitude"}));
   add_analysis_options(*cmd, o->analysis);
-  add_recording_options(*cmd, o->swing, o->set);
+  add_recording_options(*cmd, o->swing, o->set, o->columns);
   add_allow_outside_option(*cmd, o->allow_outside);
 
   return {cmd, [o, cmd] {
@@ -97,10 +98,10 @@ Command add_report_command(CLI::App& app) {
     refuse_output_over_inputs(o->output, {o->file});
     const std::optional<RecordingFormat> family = recording_family(o->formats);
     if (family || looks_like_recording(o->file)) {
-      const Recording samples = read_recording(o->file, family.value_or(RecordingFormat::automatic), {}, o->set);
+      const Recording samples = read_recording(o->file, family.value_or(RecordingFormat::automatic), {}, o->set, o->columns);
       const RecordingSummary summary{o->file,      samples.format,  samples.kind,
                                      samples.rows, samples.dropped, analyse_swings(samples, o->file, o->swing),
-                                     samples.set};
+                                     samples.set,  samples.columns, samples.notes, o->columns};
       const report::RecordingRecord r = report::make_recording_record(summary, &samples);
       write_output(o->output, svg ? report::recording_plot_svg(r, o->plot) : report::recording_report_html(r));
       return 0;
@@ -118,7 +119,7 @@ Command add_report_command(CLI::App& app) {
       const bool named_before = std::any_of(scene.recordings.begin(), scene.recordings.begin() + i, [&](const auto& o) {
         return o.summary.file == s.file && o.summary.set == s.set;
       });
-      samples.push_back(named_before ? Recording{} : read_recording(s.file, s.format, {}, s.set));
+      samples.push_back(named_before ? Recording{} : read_recording(s.file, s.format, {}, s.set, s.column_spec));
     }
     const report::SceneReport r = report::make_scene_report(o->file, scene, analysis, samples);
     const std::string text = svg ? report::plot_svg(r, o->plot) : report::scene_report_html(r);

@@ -50,6 +50,7 @@ struct SimulatedRecording {
   std::vector<double> omega;                // noise-free theta' at t (rad/s)
   std::vector<double> turning_times;        // exact theta' = 0 (s), the release excluded
   std::vector<double> turning_amplitudes;   // |theta| there (rad)
+  std::vector<double> zero_times;           // exact theta = 0 (s): an angle's or a track's crossings
   double omega0 = 0.0;                      // sqrt(g/l)
 };
 
@@ -84,6 +85,8 @@ inline SimulatedRecording simulate_recording(const RecordingSimulation& s) {
         out.turning_times.push_back(now + u * h);
         out.turning_amplitudes.push_back(std::fabs(th + u * (th_next - th)));
       }
+      // Linear within a 1 ms sub-step: theta'' = -w0^2 sin(theta) vanishes at the zero.
+      if (now > 0.0 && ((th < 0.0) != (th_next < 0.0))) out.zero_times.push_back(now + th / (th - th_next) * h);
       th = th_next, om = om_next, now += h;
     }
     const double noise[3] = {normal.next(), normal.next(), normal.next()};
@@ -119,6 +122,97 @@ inline std::string phyphox_gyroscope_csv(const SimulatedRecording& r, bool decim
     }
     out.append(line, n);
   }
+  return out;
+}
+
+}  // namespace pendulum::test
+
+namespace pendulum::test {
+
+/// The layouts students published (issue 19), each with its quirk, written
+/// from a simulated swing: `theta` (rad, noise-free, at `t`) plus `noise`
+/// (rad for an angle; m of the bob for a track, at 1000 px/m) drawn from
+/// `seed`. Times as the simulation sampled them unless the layout says.
+enum class PublishedLayout {
+  rotary_degrees,      ///< "Time (s),Angle (Degrees)": a rotary-motion sensor's log in degrees
+  opencv_angle,        ///< "time,angle": an OpenCV script's angle in degrees, no unit
+  pixel_track,         ///< "frame,time (s),x (px),y (px)": a phone video's pixels, y down, a frame counter
+  tracker_degrees,     ///< "mass A" / "t<TAB>θ": Tracker's angle in degrees, no unit
+  logger_pro_video,    ///< "VideoAnalysis: Time (s)<TAB>VideoAnalysis: X (m)<TAB>VideoAnalysis: Y (m)"
+  headerless_txy,      ///< "t x y" by tabs, no header (Tracker's data copied)
+  headerless_timer,    ///< "n<TAB>t", no header: one stamp per period (theta up through 0)
+  spaces,              ///< "   t      theta (rad)" and columns aligned by runs of spaces
+  repeated_stamps,     ///< "Time (s),Angle (rad)": stamps of a 100 Hz clock printed with 3 decimals at 500 Hz
+};
+
+inline std::string published_csv(const SimulatedRecording& r, double length, PublishedLayout layout, double noise,
+                                 std::uint64_t seed) {
+  NormalDeviates normal(seed);
+  std::string out;
+  char line[200];
+  auto put = [&](const char* fmt, auto... args) { out.append(line, std::snprintf(line, sizeof line, fmt, args...)); };
+  constexpr double kDeg = 180.0 / M_PI;
+  switch (layout) {
+    case PublishedLayout::rotary_degrees: put("Time (s),Angle (Degrees)\n"); break;
+    case PublishedLayout::opencv_angle: put("time,angle\n"); break;
+    case PublishedLayout::pixel_track: put("frame,time (s),x (px),y (px)\n"); break;
+    case PublishedLayout::tracker_degrees: put("mass A\nt\t\xce\xb8\n"); break;
+    case PublishedLayout::logger_pro_video:
+      put("VideoAnalysis: Time (s)\tVideoAnalysis: X (m)\tVideoAnalysis: Y (m)\n");
+      break;
+    case PublishedLayout::spaces: put("%10s %14s\n", "t", "theta (rad)"); break;
+    case PublishedLayout::repeated_stamps: put("Time (s),Angle (rad)\n"); break;
+    case PublishedLayout::headerless_txy:
+    case PublishedLayout::headerless_timer: break;
+  }
+  if (layout == PublishedLayout::headerless_timer) {
+    for (std::size_t k = 0, n = 1; k < r.zero_times.size(); ++k) {
+      // Up through zero: the release is at +theta0, so the odd zeros.
+      if (k % 2 == 1) put("%zu\t%.4f\n", n++, r.zero_times[k] + noise * normal.next());
+    }
+    return out;
+  }
+  for (std::size_t k = 0; k < r.t.size(); ++k) {
+    const double t = r.t[k], th = r.theta[k];
+    const double e1 = noise * normal.next(), e2 = noise * normal.next();
+    const double x = length * std::sin(th) + e1, y = -length * std::cos(th) + e2;
+    switch (layout) {
+      case PublishedLayout::rotary_degrees: put("%.3f,%.3f\n", t, (th + e1) * kDeg); break;
+      case PublishedLayout::opencv_angle: put("%.4f,%.4f\n", t, (th + e1) * kDeg); break;
+      case PublishedLayout::pixel_track: put("%zu,%.5f,%.1f,%.1f\n", k, t, 640.0 + 1000.0 * x, 200.0 - 1000.0 * y); break;
+      case PublishedLayout::tracker_degrees: put("%.4f\t%.3f\n", t, (th + e1) * kDeg); break;
+      case PublishedLayout::logger_pro_video: put("%.4f\t%.5f\t%.5f\n", t, x, y); break;
+      case PublishedLayout::headerless_txy: put("%.4f\t%.5f\t%.5f\n", t, x, y); break;
+      case PublishedLayout::spaces: put("%10.4f %14.6f\n", t, th + e1); break;
+      case PublishedLayout::repeated_stamps: put("%.3f,%.6f\n", std::floor(t * 100.0) / 100.0, th + e1); break;
+      case PublishedLayout::headerless_timer: break;
+    }
+  }
+  return out;
+}
+
+/// A phyphox gyroscope export with a phone's glitches: `repeats` samples
+/// written twice and `swaps` pairs of neighbours written in the wrong order,
+/// at seeded random rows (never the first or last ten).
+inline std::string glitchy_phyphox_csv(const SimulatedRecording& r, int repeats, int swaps, std::uint64_t seed) {
+  std::string clean = phyphox_gyroscope_csv(r, false);
+  std::vector<std::string> rows;
+  for (std::size_t at = clean.find('\n') + 1; at < clean.size();) {
+    const std::size_t nl = clean.find('\n', at);
+    rows.push_back(clean.substr(at, nl + 1 - at));
+    at = nl + 1;
+  }
+  std::mt19937_64 random(seed);
+  for (int k = 0; k < swaps; ++k) {
+    const std::size_t i = 10 + random() % (rows.size() - 21);
+    std::swap(rows[i], rows[i + 1]);
+  }
+  for (int k = 0; k < repeats; ++k) {
+    const std::size_t i = 10 + random() % (rows.size() - 21);
+    rows.insert(rows.begin() + static_cast<std::ptrdiff_t>(i), rows[i]);
+  }
+  std::string out = clean.substr(0, clean.find('\n') + 1);
+  for (const auto& row : rows) out += row;
   return out;
 }
 

@@ -186,5 +186,10 @@ int main(int argc, char** argv) {
     }
     write(dir + "/tracker_two_tracks.txt", out);
   }
+  // The same track copied out of Tracker's table without its header: t, x,
+  // y by tabs, 1.5 mm per coordinate (seed 19); the reader finds the roles
+  // from the numbers (docs/recordings.md, Columns).
+  write(dir + "/tracker_headerless_xy.txt",
+        pendulum::test::published_csv(v, video.length, pendulum::test::PublishedLayout::headerless_txy, 0.0015, 19));
   return 0;
 }

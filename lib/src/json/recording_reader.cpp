@@ -59,6 +59,9 @@ std::size_t RecordingReader::read(Object& o, ParsedScene& out) {
   const RecordingFormat format = format_at(o);
   const std::string set = o.has("set") ? o.text("set") : std::string();
   PENDULUM_FAIL_IF(o.has("set") && set.empty(), o.path("set"), "got \"\"; expected the name of a set: a CSV in a zip archive, a PASCO run, a Tracker track");
+  const std::string columns = o.has("columns") ? o.text("columns") : std::string();
+  PENDULUM_FAIL_IF(o.has("columns") && columns.empty(), o.path("columns"),
+                   "got \"\"; expected each column's role and unit in file order (\"t:s,theta:deg\")");
   SwingOptions options;
   if (o.has("bob_width")) options.bob_width = quantity(o, "bob_width", Dimension::length, Range::positive).value;
   if (o.has("source")) o.text("source");
@@ -74,13 +77,13 @@ std::size_t RecordingReader::read(Object& o, ParsedScene& out) {
   }
   const auto same = [&](const Done& d) {
     return d.file == file && d.format == recording_format_name(format) && d.set == set &&
-           d.bob_width == options.bob_width;
+           d.bob_width == options.bob_width && d.summary.column_spec == columns;
   };
   auto it = std::find_if(done_.begin(), done_.end(), same);
   if (it == done_.end()) {
     try {
       done_.push_back({file, recording_format_name(format), set, options.bob_width,
-                       analyse_recording(file, format, options, {}, set)});
+                       analyse_recording(file, format, options, {}, set, columns)});
     } catch (const InputError& e) {
       throw InputError(at, e.what());  // "file: message" or "file:line:column: message"
     }

@@ -1,19 +1,21 @@
+// Reading a recording's text: the stages of stages.hpp put together, the
+// roles of its columns decided (a family's layout, else the header's words,
+// else the numbers), and the Recording assembled; and the file's opening.
 #include "pendulum/recordings/read.hpp"
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <optional>
 
 #include "pendulum/input_error.hpp"
+#include "pendulum/numeric.hpp"
 #include "../text.hpp"
-#include "huge_pages.hpp"
 #include "../io/mapped_file.hpp"
+#include "stages.hpp"
 #include "zip.hpp"
 
 namespace pendulum {
@@ -26,31 +28,14 @@ const char* recording_format_name(RecordingFormat format) {
     case RecordingFormat::pasco: return "pasco";
     case RecordingFormat::plain: return "plain";
     case RecordingFormat::tracker: return "tracker";
+    case RecordingFormat::columns: return "columns";
   }
   return "";
 }
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-/// Messages quote the file's own text (header cells, names): one line.
-[[noreturn]] void fail(const std::string& file, std::size_t line, std::size_t column,
-                       const std::string& message) {
-  throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(column), one_line(message, 800, true));
-}
-
-/// What a header cell names.
-enum class Role { time, rate, acceleration, linear_acceleration, angle, omega, x, y, state, period, other };
-
-struct Column {
-  std::string name;  ///< as in the file, quotes removed
-  Role role = Role::other;
-  std::string unit;  ///< text in the last parentheses, lower case
-  int run = 0;       ///< PASCO's "Run #n", else 0
-  int track = 0;     ///< Tracker's track in an export of several (1, 2, ... by the names above the header), else 0
-  bool prefixed = false;  ///< Vernier's "Latest: " or "Run 1: "
-};
+using namespace recording_text;
 
 std::string lower(std::string_view s) {
   std::string out(s);
@@ -66,42 +51,6 @@ std::string_view trim(std::string_view s) {
 
 bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
 
-Column classify(std::string_view raw) {
-  Column c;
-  c.name = std::string(trim(raw));
-  std::string s = lower(c.name);
-  if (const auto pos = s.find(" run #"); pos != std::string::npos) {
-    c.run = std::atoi(s.c_str() + pos + 6);
-    s.erase(pos);
-  }
-  if (const auto colon = s.find(": "); colon != std::string::npos &&
-      (starts_with(s, "latest") || starts_with(s, "run "))) {
-    c.prefixed = true;
-    s.erase(0, colon + 2);
-  }
-  if (const auto open = s.rfind('('); open != std::string::npos) {
-    const auto close = s.find(')', open);
-    c.unit = s.substr(open + 1, close == std::string::npos ? std::string::npos : close - open - 1);
-    s.erase(open);
-  }
-  while (!s.empty() && s.back() == ' ') s.pop_back();
-  auto axis = [&](std::string_view stem) {
-    return s.size() == stem.size() + 2 && starts_with(s, stem) && s[stem.size()] == ' ' &&
-           (s.back() == 'x' || s.back() == 'y' || s.back() == 'z');
-  };
-  if (s == "time" || s == "t") c.role = Role::time;
-  else if (axis("gyroscope") || axis("rotation")) c.role = Role::rate;
-  else if (axis("linear acceleration")) c.role = Role::linear_acceleration;
-  else if (axis("acceleration")) c.role = Role::acceleration;
-  else if (s == "angle" || s == "theta" || s == "\xce\xb8") c.role = Role::angle;  // θ
-  else if (s == "angular velocity" || s == "omega" || s == "\xcf\x89") c.role = Role::omega;  // ω
-  else if (s == "x") c.role = Role::x;
-  else if (s == "y") c.role = Role::y;
-  else if (s == "gatestate" || s == "gate state" || s == "state") c.role = Role::state;
-  else if (s == "period") c.role = Role::period;
-  return c;
-}
-
 /// Which columns hold what, and their scale to SI.
 struct Layout {
   RecordingFormat format = RecordingFormat::automatic;
@@ -109,22 +58,43 @@ struct Layout {
   std::size_t time = 0;
   std::vector<std::size_t> channels;
   std::optional<std::size_t> period;
+  std::optional<std::size_t> counter;  ///< event numbers beside event stamps
   double time_scale = 1.0;
   double channel_scale = 1.0;
-  bool angle_unit_unknown = false;
+  std::string channel_unit;  ///< as read ("deg", "rad/s", "px"); empty where the kind has one unit
+  std::string unit_why;      ///< how an angle's unit was decided, when not from the header
 };
 
-std::optional<double> time_scale(const std::string& unit) {
-  if (unit.empty() || unit == "s") return 1.0;
-  if (unit == "ms") return 1e-3;
-  if (unit == "us" || unit == "\xc2\xb5s" || unit == "\xce\xbcs") return 1e-6;  // µs, μs
-  return std::nullopt;
+/// True if the column holds one number throughout, or none (stops at the first other).
+bool is_constant(const std::vector<double>& column) {
+  const auto first = std::find_if(column.begin(), column.end(), [](double v) { return std::isfinite(v); });
+  return first == column.end() ||
+         std::all_of(first, column.end(), [&](double v) { return !std::isfinite(v) || v == *first; });
 }
 
-/// The first column of `role`, of PASCO run `run` and Tracker track `track` (-1: any).
-std::optional<std::size_t> find(const std::vector<Column>& cols, Role role, int run = -1, int track = -1) {
+/// The columns' numbers, and what each says, for the decisions a header
+/// leaves open; a column's facts are found when first asked for (a named
+/// family's file needs none, and its reading costs no more).
+struct Content {
+  const Table& table;
+  bool skip_constant = true;  ///< pass over constant columns (a second try takes them)
+  mutable std::vector<std::optional<ColumnFacts>> cache = std::vector<std::optional<ColumnFacts>>(table.columns.size());
+  const ColumnFacts& facts(std::size_t j) const {
+    if (!cache[j]) cache[j] = examine(table.columns[j]);
+    return *cache[j];
+  }
+  bool constant(std::size_t j) const { return skip_constant && is_constant(table.columns[j]); }
+};
+
+/// The first column of `role`, of PASCO run `run` and Tracker track `track`
+/// (-1: any), skipping columns that the content shows constant.
+std::optional<std::size_t> find(const std::vector<Column>& cols, Role role, int run = -1, int track = -1,
+                                const Content* content = nullptr) {
   for (std::size_t j = 0; j < cols.size(); ++j) {
-    if (cols[j].role == role && (run < 0 || cols[j].run == run) && (track < 0 || cols[j].track == track)) return j;
+    if (cols[j].role == role && (run < 0 || cols[j].run == run) && (track < 0 || cols[j].track == track) &&
+        !(content && content->constant(j))) {
+      return j;
+    }
   }
   return std::nullopt;
 }
@@ -137,17 +107,36 @@ std::vector<std::size_t> find_all(const std::vector<Column>& cols, Role role) {
   return out;
 }
 
-/// The layout of `format` for these columns, or nullopt if they do not fit it.
+/// An angle column's scale to radians: by its unit, or, without one, by its
+/// numbers once they are read.
+double angle_scale(const Column& c, Layout& l, const Content* content, std::size_t j) {
+  l.channel_unit = c.unit;
+  if (c.unit == "deg") return kPi / 180.0;
+  if (c.unit == "rad") return 1.0;
+  if (!content) return 1.0;
+  const ColumnFacts& f = content->facts(j);
+  auto [unit, why] = unitless_angle(f);
+  // A value beyond a turn is no tracked angle in radians either.
+  if (unit == "rad" && std::max(std::fabs(f.lo), std::fabs(f.hi)) > 2.0 * kPi) {
+    unit = "deg", why = "holds values beyond a turn in radians: read as degrees";
+  }
+  l.channel_unit = unit;
+  l.unit_why = "no unit in the header; " + why;
+  return unit == "deg" ? kPi / 180.0 : 1.0;
+}
+
+double rate_scale(const Column& c, Layout& l) {
+  l.channel_unit = c.unit.empty() ? "rad/s" : c.unit;
+  return c.unit == "deg/s" ? kPi / 180.0 : 1.0;
+}
+
+/// The layout of `format` for these columns, or nullopt if they do not fit
+/// it. With `content`, a constant column is passed over (an all-zero angle
+/// beside a track's x and y) and a unitless angle's unit decided.
 std::optional<Layout> layout_for(RecordingFormat format, const std::vector<Column>& cols, bool preamble, int run,
-                                 int track) {
+                                 int track, const Content* content) {
   Layout l;
   l.format = format;
-  auto angle_scale = [&](const Column& c) {
-    if (c.unit == "rad") return 1.0;
-    if (c.unit == "deg" || c.unit == "\xc2\xb0") return 3.14159265358979323846 / 180.0;  // °
-    l.angle_unit_unknown = true;
-    return 1.0;
-  };
   switch (format) {
     case RecordingFormat::phyphox: {
       if (cols.empty() || cols[0].role != Role::time || cols[0].unit != "s") return std::nullopt;
@@ -156,6 +145,7 @@ std::optional<Layout> layout_for(RecordingFormat format, const std::vector<Colum
                                 {Role::acceleration, SignalKind::acceleration}}) {
         l.channels = find_all(cols, role);
         l.kind = kind;
+        l.channel_unit = kind == SignalKind::angular_rate ? "rad/s" : "m/s^2";
         if (!l.channels.empty()) return l;
       }
       return std::nullopt;
@@ -181,12 +171,11 @@ std::optional<Layout> layout_for(RecordingFormat format, const std::vector<Colum
       if (const auto a = find(cols, Role::angle, run)) {
         l.kind = SignalKind::angle;
         l.channels = {*a};
-        l.channel_scale = angle_scale(cols[*a]);
+        l.channel_scale = angle_scale(cols[*a], l, content, *a);
       } else if (const auto w = find(cols, Role::omega, run)) {
         l.kind = SignalKind::angular_rate;
         l.channels = {*w};
-        l.channel_scale = cols[*w].unit.find("deg") != std::string::npos || cols[*w].unit[0] == '\xc2'
-                              ? 3.14159265358979323846 / 180.0 : 1.0;
+        l.channel_scale = rate_scale(cols[*w], l);
       } else if (const auto s = find(cols, Role::state, run)) {
         l.kind = SignalKind::gate_states;
         l.channels = {*s};
@@ -200,26 +189,75 @@ std::optional<Layout> layout_for(RecordingFormat format, const std::vector<Colum
       const auto t = find(cols, Role::time);
       if (!t || (!preamble && cols[*t].name != "t")) return std::nullopt;
       l.time = *t;
-      if (const auto a = find(cols, Role::angle, -1, track)) {
+      if (const auto a = find(cols, Role::angle, -1, track, content)) {
         l.kind = SignalKind::angle;
         l.channels = {*a};
-        l.channel_scale = angle_scale(cols[*a]);
-      } else if (const auto w = find(cols, Role::omega, -1, track)) {
+        l.channel_scale = angle_scale(cols[*a], l, content, *a);
+      } else if (const auto w = find(cols, Role::omega, -1, track, content)) {
         l.kind = SignalKind::angular_rate;
         l.channels = {*w};
+        l.channel_scale = rate_scale(cols[*w], l);
       } else if (const auto x = find(cols, Role::x, -1, track), y = find(cols, Role::y, -1, track); x && y) {
         l.kind = SignalKind::position;
         l.channels = {*x, *y};
+        l.channel_unit = cols[*x].unit;
       } else {
         return std::nullopt;
       }
       return l;
     }
     case RecordingFormat::plain: {
-      const auto scale = time_scale(cols.empty() ? std::string() : cols[0].unit);
+      // One column of blocking times; of several, the one named time.
+      const auto t = cols.size() == 1 ? std::optional<std::size_t>(0) : find(cols, Role::time);
+      if (!t) return std::nullopt;
+      const auto scale = time_scale(cols[*t].unit);
       if (!scale) return std::nullopt;
+      l.time = *t;
       l.kind = SignalKind::blocking_times;
       l.time_scale = *scale;
+      return l;
+    }
+    case RecordingFormat::columns: {
+      // By roles alone: a time, then the first signal that varies.
+      const auto t = find(cols, Role::time);
+      if (!t || !time_scale(cols[*t].unit)) return std::nullopt;
+      l.time = *t;
+      l.time_scale = *time_scale(cols[*t].unit);
+      if (const auto a = find(cols, Role::angle, -1, -1, content)) {
+        l.kind = SignalKind::angle;
+        l.channels = {*a};
+        l.channel_scale = angle_scale(cols[*a], l, content, *a);
+      } else if (const auto w = find(cols, Role::omega, -1, -1, content)) {
+        l.kind = SignalKind::angular_rate;
+        l.channels = {*w};
+        l.channel_scale = rate_scale(cols[*w], l);
+      } else if (auto rates = find_all(cols, Role::rate); !rates.empty()) {
+        l.kind = SignalKind::angular_rate;
+        l.channels = rates;
+        l.channel_scale = rate_scale(cols[rates[0]], l);
+      } else if (auto lin = find_all(cols, Role::linear_acceleration); !lin.empty()) {
+        l.kind = SignalKind::linear_acceleration;
+        l.channels = lin;
+      } else if (auto acc = find_all(cols, Role::acceleration); !acc.empty()) {
+        l.kind = SignalKind::acceleration;
+        l.channels = acc;
+      } else if (const auto x = find(cols, Role::x), y = find(cols, Role::y);
+                 x && y && !(content && content->constant(*x) && content->constant(*y))) {
+        l.kind = SignalKind::position;
+        l.channels = {*x, *y};
+        l.channel_unit = cols[*x].unit;
+      } else if (const auto s = find(cols, Role::state)) {
+        l.kind = SignalKind::gate_states;
+        l.channels = {*s};
+        l.period = find(cols, Role::period);
+      } else if (find(cols, Role::counter) ||
+                 std::none_of(cols.begin(), cols.end(), [](const Column& c) { return c.role == Role::other && !c.known; })) {
+        // Stamps, with the logger's event numbers beside them or alone.
+        l.kind = SignalKind::event_stamps;
+        l.counter = find(cols, Role::counter);
+      } else {
+        return std::nullopt;
+      }
       return l;
     }
     case RecordingFormat::automatic: break;
@@ -227,121 +265,162 @@ std::optional<Layout> layout_for(RecordingFormat format, const std::vector<Colum
   return std::nullopt;
 }
 
-Layout detect(RecordingFormat forced, const std::vector<Column>& cols, bool preamble, bool has_header,
-              const std::string& file, std::size_t header_line, int run, int track) {
-  if (forced != RecordingFormat::automatic) {
-    if (auto l = layout_for(forced, cols, preamble, run, track)) return *l;
-    fail(file, header_line, 1,
-         std::string("the header does not fit a ") + recording_format_name(forced) +
-             " export (docs/recordings.md lists the columns each format needs)");
+/// The quoted names of `cols` (at most 300 bytes).
+std::string quoted_names(const std::vector<Column>& cols) {
+  std::string names;
+  for (std::size_t j = 0; j < cols.size(); ++j) {
+    const std::string name = cols[j].name.empty() ? "column " + std::to_string(j + 1) : one_line(cols[j].name, 40, true);
+    if (names.size() < 300) names += (names.empty() ? "\"" : ", \"") + name + "\"";
   }
-  // The first family whose columns the header has; the most specific first
-  // (a PASCO gate file also has what a Vernier one needs).
-  if (!has_header || cols.size() == 1) {
-    if (auto l = layout_for(RecordingFormat::plain, cols, preamble, run, track)) return *l;
+  return names;
+}
+
+/// The family whose layout the columns fit: the forced one, else the first
+/// of the named families (the most specific first: a PASCO gate file also
+/// has what a Vernier one needs), else by roles.
+Layout detect(RecordingFormat forced, const std::vector<Column>& cols, bool preamble, bool headerless,
+              const std::string& file, std::size_t header_line, int run, int track, const Content* content) {
+  // With the numbers read: constant columns passed over, then, if nothing
+  // else fits, taken (the swing analysis then says there is no oscillation).
+  auto fit = [&](RecordingFormat family) {
+    auto l = layout_for(family, cols, preamble, run, track, content);
+    if (!l && content) {
+      Content all = *content;
+      all.skip_constant = false;
+      l = layout_for(family, cols, preamble, run, track, &all);
+    }
+    return l;
+  };
+  if (forced != RecordingFormat::automatic) {
+    if (auto l = fit(forced)) return *l;
+    if (forced == RecordingFormat::plain) {
+      fail(file, header_line, 1,
+           std::to_string(cols.size()) + " numeric columns (" + quoted_names(cols) +
+               "); --format plain reads one column of blocking times: name it with --columns (\"-,t:s\" takes the "
+               "second) or leave the format to the header");
+    }
+    fail(file, header_line, 1,
+         std::string("the header does not fit a ") + recording_format_name(forced) + " export: " +
+             (forced == RecordingFormat::phyphox   ? "expected \"Time (s)\" first and gyroscope, linear acceleration or acceleration axes"
+              : forced == RecordingFormat::vernier ? "expected a time and a gate state column"
+              : forced == RecordingFormat::pasco   ? "expected \"Time (s) Run #n\" and that run's angle, angular velocity or state"
+              : forced == RecordingFormat::tracker ? "expected \"t\" and an angle (θ), angular velocity (ω) or x and y"
+                                                   : "expected a time and a signal column") +
+             "; got " + quoted_names(cols) + " (docs/recordings.md lists the columns each format needs)");
+  }
+  if (cols.size() == 1) {
+    if (auto l = fit(RecordingFormat::plain)) return *l;
   } else {
     for (auto family : {RecordingFormat::pasco, RecordingFormat::vernier, RecordingFormat::tracker,
-                        RecordingFormat::phyphox}) {
-      if (auto l = layout_for(family, cols, preamble, run, track)) return *l;
+                        RecordingFormat::phyphox, RecordingFormat::columns}) {
+      if (auto l = fit(family)) return *l;
     }
   }
-  std::string names;
-  for (const auto& c : cols) {
-    if (names.size() < 300) names += (names.empty() ? "\"" : ", \"") + one_line(c.name, 40, true) + "\"";
+  if (headerless) {
+    // Reached with content only: the numbers did not say enough.
+    fail(file, header_line, 1,
+         "a headerless file of " + std::to_string(cols.size()) + " columns whose roles its numbers do not tell (" +
+             quoted_names(cols) + "); name them with --columns (a scene's \"columns\"), e.g. \"t:s,theta:deg\"");
   }
   fail(file, header_line, 1,
-       "unrecognised header " + names +
-           "; expected a phyphox, Vernier, PASCO or Tracker export or one column of blocking "
-           "times (docs/recordings.md), or name the format with --format");
+       "unrecognised header " + quoted_names(cols) +
+           "; expected a phyphox, Vernier, PASCO or Tracker export, a time with an angle, angular velocity, "
+           "x and y or gate state, or one column of blocking times (docs/recordings.md), or name the format "
+           "with --format or the columns with --columns");
 }
 
-/// Eight ASCII digits at p as a number, if they are all digits (SWAR: the
-/// bytes of one 64-bit word combined pairwise, then by fours; little-endian).
-inline bool eight_digits(const char* p, std::uint64_t& out) {
-  std::uint64_t v;
-  std::memcpy(&v, p, 8);
-  if ((((v + 0x4646464646464646ULL) | (v - 0x3030303030303030ULL)) & 0x8080808080808080ULL) != 0) return false;
-  v -= 0x3030303030303030ULL;
-  v = v * 10 + (v >> 8);  // pairs: 2-digit values in bytes 0, 2, 4, 6
-  v = ((v & 0x000000FF000000FFULL) * (100 + (1000000ULL << 32)) +
-       ((v >> 16) & 0x000000FF000000FFULL) * (1 + (10000ULL << 32))) >> 32;
-  out = v;
-  return true;
-}
-
-/// The body of fast_number; kBounded checks every read against e. Without
-/// it each digit run stops after 20 characters, so no read goes more than 58
-/// bytes past s: the caller guarantees 64 (most numbers of a large file).
-template <bool kBounded>
-inline const char* parse_decimal(const char* s, const char* e, char mark, double& v) {
-  static constexpr double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
-                                      1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
-  auto digit = [&](const char* at, const char* from) {
-    return (kBounded ? at < e : at - from < 20) && static_cast<unsigned>(*at - '0') < 10u;
-  };
-  const char* p = s;
-  const bool negative = (!kBounded || p < e) && *p == '-';
-  p += negative;
-  std::uint64_t m = 0;
-  const char* start = p;
-  for (; digit(p, start); ++p) m = m * 10 + static_cast<unsigned>(*p - '0');
-  int digits = static_cast<int>(p - start), power = 0;
-  if ((!kBounded || p < e) && *p == mark) {
-    const char* fraction = ++p;
-    std::uint64_t chunk;
-    if (digits <= 11 && (!kBounded || e - p >= 8) && eight_digits(p, chunk)) m = m * 100000000 + chunk, p += 8;
-    for (const char* run = p; digit(p, run); ++p) m = m * 10 + static_cast<unsigned>(*p - '0');
-    digits += static_cast<int>(p - fraction);
-    power = -static_cast<int>(p - fraction);
+/// Roles of a headerless file's columns from their numbers: a counter steps
+/// by one, the first other increasing column is the time, a constant is
+/// unused; of two that remain, one the rate of the other is an angle and its
+/// angular velocity, else they are a track's x and y.
+void roles_from_content(std::vector<Column>& cols, const Content& content) {
+  std::optional<std::size_t> time;
+  std::vector<std::size_t> signals;
+  for (std::size_t j = 0; j < cols.size(); ++j) {
+    const ColumnFacts& f = content.facts(j);
+    Column& c = cols[j];
+    c.decided = "content";
+    c.known = true;
+    if (f.counter) c.role = Role::counter;
+    else if (f.constant) c.role = Role::other;
+    else if (f.increasing && !time) c.role = Role::time, time = j;
+    else signals.push_back(j);
   }
-  if (digits == 0 || digits > 19) return nullptr;
-  if ((!kBounded || p < e) && (*p == 'e' || *p == 'E')) {
-    ++p;
-    const bool minus = (!kBounded || p < e) && *p == '-';
-    p += (!kBounded || p < e) && (*p == '-' || *p == '+');
-    const char* first = p;
-    int x = 0;
-    if (!kBounded && digit(p, first) && digit(p + 1, first) && !digit(p + 2, first)) {
-      x = (p[0] - '0') * 10 + (p[1] - '0'), p += 2;  // the common two digits, without a loop
+  for (std::size_t j : signals) cols[j].known = false;
+  if (!time || signals.size() > 2 || signals.size() == 1) return;  // detect() refuses, naming them
+  if (signals.size() == 2) {
+    const auto& t = content.table.columns[*time];
+    const auto& a = content.table.columns[signals[0]];
+    const auto& b = content.table.columns[signals[1]];
+    if (is_rate_of(t, a, b)) {
+      cols[signals[0]].role = Role::angle, cols[signals[1]].role = Role::omega;
+    } else if (is_rate_of(t, b, a)) {
+      cols[signals[1]].role = Role::angle, cols[signals[0]].role = Role::omega;
+    } else {
+      cols[signals[0]].role = Role::x, cols[signals[1]].role = Role::y;
     }
-    for (; digit(p, first) && p - first < 6; ++p) x = x * 10 + (*p - '0');
-    if (p == first) return nullptr;
-    power += minus ? -x : x;
   }
-  if (m > (std::uint64_t{1} << 53) || power < -22 || power > 22) return nullptr;
-  const double magnitude = power < 0 ? static_cast<double>(m) / kPow10[-power] : static_cast<double>(m) * kPow10[power];
-  v = negative ? -magnitude : magnitude;
-  return p;
+  for (std::size_t j : signals) cols[j].known = true;
 }
 
-/// Reads a decimal number at [s, e) with `mark` as its decimal mark; returns
-/// the end of the number, or nullptr when the fast path does not apply.
-/// Clinger's fast path: a mantissa m < 2^53 of at most 19 digits and a power
-/// p with |p| <= 22 give m * 10^p or m / 10^-p, one correctly rounded
-/// operation on exact doubles, hence the same double as std::from_chars
-/// (phyphox's 1.234567890E-1 always qualifies). Anything else (more digits,
-/// larger powers, "NaN", "inf") is left to std::from_chars.
-inline const char* fast_number(const char* s, const char* e, char mark, double& v) {
-  return e - s >= 64 ? parse_decimal<false>(s, e, mark, v) : parse_decimal<true>(s, e, mark, v);
+/// Why a column the layout does not use is left out.
+std::string unused_why(const Column& c, const std::vector<double>& numbers, const Layout& l,
+                       const std::vector<Column>& cols) {
+  const auto first = std::find_if(numbers.begin(), numbers.end(), [](double v) { return std::isfinite(v); });
+  if (first == numbers.end()) return "no numbers";
+  if (is_constant(numbers)) return "constant (" + format_number(*first, 6) + "): no signal";
+  switch (c.role) {
+    case Role::uncertainty: return "an uncertainty of another column";
+    case Role::derivative: return "a derivative of the track (velocity, acceleration): the positions or the angle are used";
+    case Role::counter: return "a counter or index";
+    case Role::other: return c.name.empty() || c.decided != "header" ? "not needed" : "a word the reader does not know";
+    case Role::time: return "a second time column";
+    default: break;
+  }
+  if (c.track > 0 && !l.channels.empty() && cols[l.channels[0]].track != c.track) return "another track's";
+  if (c.run > 0 && cols[l.time].run != c.run) return "another run's";
+  return std::string("a ") + role_name(c.role) + " signal: the " + role_name(cols[l.channels.empty() ? l.time : l.channels[0]].role) +
+         " is used";
 }
+
+/// A role each track of a Tracker export has once: its signals.
+bool tracked(Role role) {
+  return role != Role::time && role != Role::other && role != Role::derivative && role != Role::uncertainty &&
+         role != Role::counter;
+}
+
+std::string signal_role(SignalKind kind, Role role) {
+  switch (kind) {
+    case SignalKind::angle: return "angle";
+    case SignalKind::angular_rate: return role == Role::omega ? "angular velocity" : "angular rate";
+    case SignalKind::position: return role == Role::x ? "x" : "y";
+    case SignalKind::gate_states: return "gate state";
+    case SignalKind::acceleration: return "acceleration";
+    case SignalKind::linear_acceleration: return "linear acceleration";
+    case SignalKind::blocking_times:
+    case SignalKind::event_stamps: break;
+  }
+  return role_name(role);
+}
+
+Recording parse_text(std::string_view text, const std::string& file, RecordingFormat format, const std::string& set,
+                     const std::string& column_spec);
 
 /// Throws, naming its line and column, if [text, text + size) holds a NUL byte.
 void refuse_binary(std::string_view text, std::size_t size, const std::string& file) {
   if (const void* nul = std::memchr(text.data(), '\0', size)) {
-    const std::size_t at = static_cast<const char*>(nul) - text.data();
-    const std::size_t line = 1 + std::count(text.data(), text.data() + at, '\n');
+    const std::size_t at = static_cast<std::size_t>(static_cast<const char*>(nul) - text.data());
+    const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.data(), text.data() + at, '\n'));
     const std::size_t bol = text.substr(0, at).rfind('\n');
     fail(file, line, at - (bol == std::string_view::npos ? 0 : bol + 1) + 1,
          "a NUL byte: this is a binary file, not a text export");
   }
 }
 
-Recording parse_text(std::string_view text, const std::string& file, RecordingFormat format, const std::string& set);
-
 }  // namespace
 
 Recording parse_recording(std::string_view text, const std::string& file, RecordingFormat format,
-                          const std::string& set) {
+                          const std::string& set, const std::string& columns) {
   if (looks_like_zip(text)) {
     fail(file, 1, 1, "a zip archive; expected a text export here (a zip is unpacked when read from its file: read_recording)");
   }
@@ -350,7 +429,7 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
   // rows refuse it, and the text is searched for it only then (a search of
   // the whole text up front took 3 % of reading a large file).
   try {
-    return parse_text(text, file, format, set);
+    return parse_text(text, file, format, set, columns);
   } catch (const InputError&) {
     refuse_binary(text, text.size(), file);
     throw;
@@ -359,75 +438,25 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
 
 namespace {
 
-Recording parse_text(std::string_view text, const std::string& file, RecordingFormat format, const std::string& set) {
+Recording parse_text(std::string_view text, const std::string& file, RecordingFormat format, const std::string& set,
+                     const std::string& column_spec) {
   const std::string_view original = text;
-  if (starts_with(text, "\xef\xbb\xbf")) text.remove_prefix(3);  // UTF-8 byte-order mark
+  text = strip_bom(text);
+  const HeaderLines lines = find_header(text, file);
+  const std::optional<std::string_view>& header = lines.header;
+  const std::size_t header_line = lines.header_line;
+  const bool preamble = lines.preamble;
+  refuse_binary(original, static_cast<std::size_t>(text.data() - original.data()) + lines.data_offset, file);
+  const char* p = text.data() + lines.data_offset;
+  const char* const end = text.data() + text.size();
+  if (p >= end) fail(file, lines.data_line + 1, 1, "no data rows; expected a recording");
+  const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
+  const std::string_view first_data(p, static_cast<std::size_t>((nl ? static_cast<const char*>(nl) : end) - p));
+  const Dialect dialect = sniff(header, first_data);
+  const auto cells = [&](std::string_view line) { return split_cells(line, dialect); };
+  const std::optional<std::string_view> above_header = lines.above;
+  const bool several_tracks = lines.several_tracks;
 
-  const char* const begin = text.data();
-  const char* const end = begin + text.size();
-  // Lines: [p, eol), eol at '\n' or end.
-  auto line_end = [&](const char* p) {
-    const void* nl = std::memchr(p, '\n', end - p);
-    return nl ? static_cast<const char*>(nl) : end;
-  };
-  auto is_blank = [](const char* p, const char* e) {
-    for (; p < e; ++p) {
-      if (*p != ' ' && *p != '\t' && *p != '\r' && *p != ',' && *p != ';') return false;
-    }
-    return true;
-  };
-  // A line is data when its first cell starts like a number.
-  auto is_data = [](const char* p, const char* e) {
-    while (p < e && (*p == ' ' || *p == '"')) ++p;
-    if (p < e && (*p == '-' || *p == '+')) ++p;
-    return p < e && (std::isdigit(static_cast<unsigned char>(*p)) || *p == '.');
-  };
-
-  // Header: the last non-data line before the first data line; lines before
-  // it are a preamble (Tracker's track name).
-  const char* p = begin;
-  std::size_t line_no = 0;
-  std::optional<std::string_view> header, above_header;
-  std::size_t header_line = 1;
-  bool preamble = false, several_tracks = false;
-  while (p < end) {
-    const char* e = line_end(p);
-    ++line_no;
-    if (!is_blank(p, e)) {
-      if (is_data(p, e)) break;
-      if (header) preamble = true, above_header = header;
-      several_tracks |= starts_with(std::string_view(p, e - p), "#multi");
-      header = std::string_view(p, e - p);
-      header_line = line_no;
-    }
-    p = e + (e < end);
-    if (line_no > 100) fail(file, line_no, 1, "no numbers in the first 100 lines; expected a data export");
-  }
-  refuse_binary(original, p - original.data(), file);  // the header and what precedes it
-  if (p >= end) fail(file, line_no + 1, 1, "no data rows; expected a recording");
-  const std::string_view first_data(p, line_end(p) - p);
-
-  // Delimiter: tab, then semicolon, then comma, as found in the header (or
-  // the first row when there is none). A comma then is a decimal comma.
-  const std::string_view probe = header ? *header : first_data;
-  char delimiter = '\0';
-  for (char d : {'\t', ';', ','}) {
-    if (probe.find(d) != std::string_view::npos) {
-      delimiter = d;
-      break;
-    }
-  }
-  const bool decimal_comma = delimiter != ',' && first_data.find(',') != std::string_view::npos;
-
-  auto cells = [&](std::string_view line) {
-    std::vector<std::string_view> out;
-    for (std::size_t start = 0;;) {
-      const std::size_t d = delimiter ? line.find(delimiter, start) : std::string_view::npos;
-      out.push_back(trim(line.substr(start, d == std::string_view::npos ? d : d - start)));
-      if (d == std::string_view::npos) return out;
-      start = d + 1;
-    }
-  };
   std::vector<Column> cols;
   // Tracker's export of several tracks: "#multi:", then each track's name
   // above its first column, then the header (one time column for all).
@@ -451,8 +480,8 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
         const auto twice = std::find_if(cols.begin(), cols.begin() + j, [&](const Column& b) {
           return b.track == c.track && b.role == c.role;
         });
-        const bool unnamed = c.track == 0 && c.role != Role::time && c.role != Role::other;
-        if (unnamed || (c.role != Role::other && c.track > 0 && twice != cols.begin() + j)) {
+        const bool unnamed = c.track == 0 && tracked(c.role);
+        if (unnamed || (tracked(c.role) && c.track > 0 && twice != cols.begin() + j)) {
           fail(file, header_line - 1, 1,
                "the track names are out of line with the columns: column " + std::to_string(j + 1) + " (\"" +
                    c.name + "\") " +
@@ -463,9 +492,32 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
       }
     }
   } else {
-    std::size_t n = 1;
-    if (delimiter) n += std::count(first_data.begin(), first_data.end(), delimiter);
-    cols.resize(n);
+    cols.resize(cells(first_data).size());
+    for (std::size_t j = 0; j < cols.size(); ++j) cols[j].decided = "content";
+  }
+  std::vector<std::string> names(cols.size());
+  for (std::size_t j = 0; j < cols.size(); ++j) {
+    names[j] = cols[j].name.empty() ? "column " + std::to_string(j + 1) : cols[j].name;
+  }
+  // What the option declares replaces what the header says, column by column.
+  const bool declared = !column_spec.empty();
+  if (declared) {
+    const auto spec = parse_column_spec(column_spec, file);
+    if (spec.size() > cols.size()) {
+      throw InputError(file, "got " + std::to_string(spec.size()) + " columns in \"" + one_line(column_spec, 80) +
+                                 "\"; expected at most the file's " + std::to_string(cols.size()));
+    }
+    for (std::size_t j = 0; j < cols.size(); ++j) {
+      const std::string name = cols[j].name;
+      const int track = cols[j].track, run = cols[j].run;
+      if (j < spec.size() && spec[j]) {
+        cols[j] = *spec[j];
+      } else {
+        cols[j] = Column{};
+        cols[j].decided = "option";
+      }
+      cols[j].name = name, cols[j].track = track, cols[j].run = run;
+    }
   }
   // Which of several Tracker tracks, by its name.
   int track = -1;
@@ -519,169 +571,140 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
                                      (runs.empty() ? std::string() : " (its runs: " + runs + ")"));
     }
   }
-  const Layout layout = detect(format, cols, preamble, header.has_value(), file, header_line, run, track);
+  const bool headerless = !header && !declared;
+  // A header no layout fits is refused before its rows are read.
+  if (!headerless) (void)detect(format, cols, preamble, false, file, header_line, run, track, nullptr);
+
+  Table table = read_rows(p, end, lines.data_line, dialect, names, file);
+  if (headerless) {
+    // A trailing delimiter on every row is no column.
+    while (cols.size() > 1 && is_constant(table.columns.back()) &&
+           std::none_of(table.columns.back().begin(), table.columns.back().end(), [](double v) { return std::isfinite(v); })) {
+      cols.pop_back(), names.pop_back(), table.columns.pop_back();
+    }
+  }
+  const Content content{table};
+  if (headerless && cols.size() > 1 && format != RecordingFormat::plain) roles_from_content(cols, content);
+  const Layout layout = detect(format, cols, preamble, headerless, file, header_line, run, track, &content);
   const bool holds_sets = layout.format == RecordingFormat::pasco || (layout.format == RecordingFormat::tracker && !tracks.empty());
   if (!set.empty() && !holds_sets) {
     fail(file, header_line, 1, "got the set \"" + set + "\", but this " + recording_format_name(layout.format) +
                                    " export holds a single set; expected a set in a zip archive, a PASCO file or a Tracker export of "
                                    "several tracks");
   }
+  // An angle labelled radians that swings beyond 180 deg is degrees mislabelled.
+  if (layout.kind == SignalKind::angle && layout.unit_why.empty() && layout.channel_unit == "rad" &&
+      content.facts(layout.channels[0]).half_range() > kPi) {
+    fail(file, header_line, 1,
+         "the column \"" + names[layout.channels[0]] + "\" is in radians by its " +
+             (cols[layout.channels[0]].decided == "option" ? "declared unit" : "header") + " but swings by +-" +
+             format_number(content.facts(layout.channels[0]).half_range(), 3) +
+             ", over 180 deg: it holds degrees? Declare them with --columns (a scene's \"columns\"), e.g. "
+             "\"t:s,theta:deg\"");
+  }
 
+  // The columns' report, before the numbers move into the recording.
   Recording rec;
   rec.set = track > 0 ? tracks[static_cast<std::size_t>(track - 1)] : set;  // a track as Tracker names it
   rec.format = layout.format;
   rec.kind = layout.kind;
+  rec.rows = table.rows;
+  for (std::size_t j = 0; j < cols.size(); ++j) {
+    RecordingColumn c;
+    c.index = j + 1;
+    c.name = cols[j].name;
+    c.decided_by = cols[j].decided;
+    const auto used = std::find(layout.channels.begin(), layout.channels.end(), j);
+    // Why, in words the file's reader can check; "by the header" needs none.
+    std::vector<std::string> why;
+    if (j == layout.time) {
+      c.role = layout.kind == SignalKind::blocking_times ? "blocking time"
+               : layout.kind == SignalKind::event_stamps ? "event stamp"
+                                                         : "time";
+      c.unit = cols[j].unit.empty() ? "s" : cols[j].unit;
+      if (c.decided_by == "content") why.emplace_back("increasing, not a counter");
+      if (cols[j].unit.empty()) why.emplace_back("no unit given, read as seconds");
+    } else if (used != layout.channels.end()) {
+      c.role = signal_role(layout.kind, cols[j].role);
+      c.unit = layout.kind == SignalKind::gate_states ? "" : layout.channel_unit;
+      if (!layout.unit_why.empty() && layout.kind == SignalKind::angle) {
+        c.decided_by = "content";
+        why.push_back("the role by the " + cols[j].decided + "; " + layout.unit_why);
+      }
+      if (layout.kind == SignalKind::position && cols[j].decided == "content") {
+        why.emplace_back("two varying columns beside the time, neither the rate of the other");
+      }
+      if (layout.kind == SignalKind::angle && cols[j].decided == "content") {
+        why.emplace_back("the other varying column is its rate of change");
+      }
+    } else if (layout.counter && j == *layout.counter) {
+      c.role = "counter";
+      if (c.decided_by == "content") why.emplace_back("whole numbers stepping by one");
+    } else if (layout.period && j == *layout.period) {
+      c.role = "period";
+      c.unit = "s";
+    } else {
+      c.role = "unused";
+      why.push_back(unused_why(cols[j], table.columns[j], layout, cols));
+    }
+    for (const auto& w : why) c.why += (c.why.empty() ? "" : "; ") + w;
+    rec.columns.push_back(std::move(c));
+  }
+  if (!layout.unit_why.empty()) rec.notes.push_back({0, "\"" + names[layout.channels[0]] + "\": " + layout.unit_why});
+
   for (std::size_t j : layout.channels) rec.channel_names.push_back(cols[j].name);
-  rec.channels.resize(layout.channels.size());
-  // The columns a row needs: without its time or a channel it is dropped.
+  if (layout.period) {
+    for (double v : table.columns[*layout.period]) {
+      if (!std::isnan(v)) rec.periods.push_back(v * layout.time_scale);
+    }
+  }
+  // The columns a row needs: without its time, a channel or its count it is dropped.
   std::vector<std::size_t> needed{layout.time};
   needed.insert(needed.end(), layout.channels.begin(), layout.channels.end());
-  const char other_delimiters[] = {'\t', ';', delimiter == ',' ? '\0' : ','};
-  const std::size_t ncols = cols.size();
-  const char mark = decimal_comma ? ',' : '.';
-
-  // The rows of [p, end), whose first line is line_no, into rec.
-  auto parse_rows = [&](const char* p, const char* end, std::size_t line_no) {
-    double last_time = -std::numeric_limits<double>::infinity();
-    std::size_t last_time_line = 0;
-    char buffer[64];
-    std::vector<double> cells(ncols);  // this row's values, NaN for an empty or "NaN" cell
-    // The common row: plain numbers between single delimiters, read up to its
-    // newline, which it returns (no search for the line's end first). Anything
-    // else (quotes, spaces, empty or NaN cells, errors) takes the general path.
-    auto plain_row = [&](const char* q) -> const char* {
-      for (std::size_t j = 0; j + 1 < ncols; ++j) {
-        q = fast_number(q, end, mark, cells[j]);
-        if (!q || q >= end || *q != delimiter) return nullptr;
-        ++q;
-      }
-      q = fast_number(q, end, mark, cells[ncols - 1]);
-      if (!q) return nullptr;
-      q += q < end && *q == '\r';
-      return q >= end || *q == '\n' ? q : nullptr;
-    };
-    // The line [p, e) cell by cell, with the errors named.
-    auto general_row = [&](const char* p, const char* e) {
-      auto column = [&](const char* at) { return static_cast<std::size_t>(at - p) + 1; };
-      const char* q = p;
-      for (std::size_t j = 0; j < ncols; ++j) {
-        // One cell: optional spaces and quotes around a number, "NaN" or nothing.
-        while (q < e && (*q == ' ' || *q == '"')) ++q;
-        double v = kNaN;
-        const char* num_end = q;
-        if (q < e && *q != delimiter && *q != '\r') {
-          const char* s = q + (*q == '+');
-          const char* stop = fast_number(s, e, mark, v);
-          auto ends_cell = [&](const char* at) {
-            return at >= e || *at == delimiter || *at == '"' || *at == ' ' || *at == '\r';
-          };
-          auto bad_cell = [&](const char* bad) {
-            const char* token_end = s;
-            while (!ends_cell(token_end)) ++token_end;
-            // `bad` is the end of the text when a cell is a lone sign there.
-            if (bad < e && std::find(std::begin(other_delimiters), std::end(other_delimiters), *bad) !=
-                               std::end(other_delimiters)) {
-              fail(file, line_no, column(bad),
-                   std::string("mixed delimiters: found '") + (*bad == '\t' ? "\\t" : std::string(1, *bad)) +
-                       "' in a file whose header separates columns by '" +
-                       (delimiter == '\t' ? std::string("\\t") : std::string(1, delimiter)) + "'");
-            }
-            fail(file, line_no, column(q),
-                 "got \"" + std::string(q, std::min<const char*>(token_end, q + 40)) + "\" in column \"" +
-                     cols[j].name + "\"; expected a number");
-          };
-          if (!stop) {  // the slow path: NaN, long mantissas, large exponents
-            stop = s;
-            while (!ends_cell(stop)) ++stop;
-            std::from_chars_result r{};
-            if (decimal_comma) {
-              const std::size_t n = std::min<std::size_t>(stop - s, sizeof buffer);
-              std::copy(s, s + n, buffer);
-              std::replace(buffer, buffer + n, ',', '.');
-              r = std::from_chars(buffer, buffer + n, v);
-              r.ptr = s + (r.ptr - buffer);
-            } else {
-              r = std::from_chars(s, stop, v);
-            }
-            if (r.ec == std::errc::result_out_of_range) {
-              fail(file, line_no, column(q), "a number out of the range of double");
-            }
-            if (r.ec != std::errc() || r.ptr != stop) bad_cell(r.ec != std::errc() ? s : r.ptr);
-          } else if (!ends_cell(stop)) {
-            bad_cell(stop);
-          }
-          num_end = stop;
-        }
-        q = num_end;
-        while (q < e && (*q == ' ' || *q == '"' || *q == '\r')) ++q;
-        cells[j] = v;
-        if (j + 1 < ncols) {
-          if (q >= e || *q != delimiter) {
-            fail(file, line_no, column(q),
-                 "a truncated row: " + std::to_string(j + 1) + " of " + std::to_string(ncols) +
-                     " columns (column \"" + cols[j + 1].name + "\" is missing)");
-          }
-          ++q;
-        } else if (q < e && !(delimiter && *q == delimiter && is_blank(q, e))) {
-          fail(file, line_no, column(q),
-               "more cells than the " + std::to_string(ncols) +
-                   " columns of the header (mixed delimiters, or a decimal comma in a comma-separated file?)");
-        }
-      }
-    };
-    for (const char* e = nullptr; p < end; p = e < end ? e + 1 : end, ++line_no) {
-      const char* plain = plain_row(p);
-      if (plain) {
-        e = plain;
-      } else {
-        e = line_end(p);
-        if (is_blank(p, e)) continue;
-        general_row(p, e);
-      }
-      ++rec.rows;
-      if (layout.period && !std::isnan(cells[*layout.period])) {
-        rec.periods.push_back(cells[*layout.period] * layout.time_scale);
-      }
-      // The fast path's numbers are never NaN: only a general row can miss one.
-      if (!plain && std::any_of(needed.begin(), needed.end(), [&](std::size_t j) { return std::isnan(cells[j]); })) {
-        ++rec.dropped;
-        continue;
-      }
-      const double time = cells[layout.time] * layout.time_scale;
-      if (!(time > last_time)) {
-        fail(file, line_no, 1,
-             "time going backwards: " + std::to_string(time) + " s after " + std::to_string(last_time) +
-                 " s on line " + std::to_string(last_time_line) + "; expected increasing times");
-      }
-      if (!std::isfinite(time)) fail(file, line_no, 1, "an infinite time");
-      last_time = time;
-      last_time_line = line_no;
-      rec.time.push_back(time);
-      for (std::size_t k = 0; k < rec.channels.size(); ++k) {
-        rec.channels[k].push_back(cells[layout.channels[k]] * layout.channel_scale);
-      }
+  if (layout.counter) needed.push_back(*layout.counter);
+  std::vector<std::size_t> rows;  // the rows kept when some are dropped; empty: all
+  const bool complete = !table.any_nan || std::all_of(needed.begin(), needed.end(), [&](std::size_t j) {
+    return std::none_of(table.columns[j].begin(), table.columns[j].end(), [](double v) { return std::isnan(v); });
+  });
+  auto take = [&](std::size_t j, double scale) {
+    std::vector<double> out;
+    if (complete) {
+      out = std::move(table.columns[j]);
+    } else {
+      out.reserve(rows.size());
+      for (std::size_t i : rows) out.push_back(table.columns[j][i]);
     }
+    if (scale != 1.0) {
+      for (double& v : out) v *= scale;
+    }
+    return out;
   };
-
-  // One allocation per column: rows from the first row's length, 5 % spare.
-  // One thread: the reader's figure of merit is the CPU time it takes, and
-  // on a shared machine threads add to it (docs/recordings.md, Speed).
-  const double bytes_per_row = static_cast<double>(std::max<std::size_t>(first_data.size() + 1, 4));
-  const std::size_t guess = static_cast<std::size_t>(1.05 * static_cast<double>(end - p) / bytes_per_row) + 16;
-  rec.time.reserve(guess);
-  detail::huge_pages(rec.time);
-  for (auto& c : rec.channels) {
-    c.reserve(guess);
-    detail::huge_pages(c);
-  }
-  parse_rows(p, end, line_no);
-  if (layout.angle_unit_unknown) {
-    // Tracker writes "θ" without its unit: more than a turn means degrees.
-    const auto& a = rec.channels[0];
-    const bool degrees = std::any_of(a.begin(), a.end(), [](double x) { return std::fabs(x) > 6.2832; });
-    if (degrees) {
-      for (double& x : rec.channels[0]) x *= 3.14159265358979323846 / 180.0;
+  if (!complete) {
+    for (std::size_t i = 0; i < table.rows; ++i) {
+      if (std::none_of(needed.begin(), needed.end(), [&](std::size_t j) { return std::isnan(table.columns[j][i]); })) {
+        rows.push_back(i);
+      }
     }
+    rec.dropped = table.rows - rows.size();
+  }
+  rec.time = take(layout.time, layout.time_scale);
+  for (std::size_t j : layout.channels) rec.channels.push_back(take(j, layout.channel_scale));
+  if (layout.counter) rec.counts = take(*layout.counter, 1.0);
+
+  // Time order: repeated and out-of-order samples, gaps.
+  const bool sampled = layout.kind != SignalKind::gate_states && layout.kind != SignalKind::blocking_times &&
+                       layout.kind != SignalKind::event_stamps;
+  Cleaned cleaned = clean_times(rec.time, rows, table, sampled, file);
+  rec.time_quantum = cleaned.quantum;
+  rec.notes.insert(rec.notes.end(), cleaned.notes.begin(), cleaned.notes.end());
+  if (!cleaned.all) {
+    auto keep = [&](std::vector<double>& v) {
+      for (std::size_t k = 0; k < cleaned.keep.size(); ++k) v[k] = v[cleaned.keep[k]];
+      v.resize(cleaned.keep.size());
+    };
+    keep(rec.time);
+    for (auto& c : rec.channels) keep(c);
+    if (!rec.counts.empty()) keep(rec.counts);
   }
   return rec;
 }
@@ -689,7 +712,7 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
 }  // namespace
 
 Recording read_recording(const std::string& path, RecordingFormat format, const RecordingLimits& limits,
-                         const std::string& set) {
+                         const std::string& set, const std::string& columns) {
   const InputFile file(path, "a recording file");
   if (file.size() > limits.max_bytes) {
     throw InputError(file.path(), "the file has " + std::to_string(file.size()) + " bytes; expected at most " +
@@ -706,8 +729,12 @@ Recording read_recording(const std::string& path, RecordingFormat format, const 
                                       "complete recording: read it again once it is whole");
   };
   try {
+    if (looks_like_zip(map.text()) && !columns.empty()) {
+      throw InputError(path, "a zip archive with columns declared; expected them for a text export only (a zip's "
+                             "sets are phyphox's, whose headers say)");
+    }
     Recording r = looks_like_zip(map.text()) ? read_zip_recording(map.text(), path, format, set, limits)
-                                             : parse_recording(map.text(), path, format, set);
+                                             : parse_recording(map.text(), path, format, set, columns);
     check_unchanged();
     return r;
   } catch (const InputError&) {

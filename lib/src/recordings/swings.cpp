@@ -645,8 +645,9 @@ std::vector<double> swing_signal(const Recording& r) {
 }
 
 RecordingSummary analyse_recording(const std::string& path, RecordingFormat format, const SwingOptions& options,
-                                   const RecordingLimits& limits, const std::string& set) {
-  const Recording r = read_recording(path, format, limits, set);
+                                   const RecordingLimits& limits, const std::string& set,
+                                   const std::string& columns) {
+  const Recording r = read_recording(path, format, limits, set, columns);
   RecordingSummary s;
   s.file = path;
   s.format = r.format;
@@ -654,6 +655,9 @@ RecordingSummary analyse_recording(const std::string& path, RecordingFormat form
   s.rows = r.rows;
   s.dropped = r.dropped;
   s.set = r.set;
+  s.columns = r.columns;
+  s.notes = r.notes;
+  s.column_spec = columns;
   s.swings = analyse_swings(r, r.set.empty() ? path : path + "/" + r.set, options);
   return s;
 }

@@ -27,9 +27,11 @@
 namespace pendulum {
 
 /// The family of a recording; `automatic` recognises it from the header.
-enum class RecordingFormat { automatic, phyphox, vernier, pasco, plain, tracker };
+/// `columns`: no family's layout, read by its columns' roles (a header's
+/// words and units, the numbers of a headerless file, or `--columns`).
+enum class RecordingFormat { automatic, phyphox, vernier, pasco, plain, tracker, columns };
 
-/// "auto", "phyphox", "vernier", "pasco", "plain", "tracker".
+/// "auto", "phyphox", "vernier", "pasco", "plain", "tracker", "columns".
 const char* recording_format_name(RecordingFormat format);
 
 /// What the channels of a recording measure.
@@ -53,6 +55,16 @@ struct RecordingNote {
   std::string text;      ///< one sentence: what was done and why
 };
 
+/// How the reader used one column of the file (import's `columns`).
+struct RecordingColumn {
+  std::size_t index = 0;   ///< from 1, in file order
+  std::string name;        ///< as in the header; empty in a headerless file
+  std::string role;        ///< "time", "angle", "angular velocity", "x", "counter", ..., or "unused"
+  std::string unit;        ///< the unit it was read in ("s", "deg", "rad/s", "px"); empty where none applies
+  std::string decided_by;  ///< "header", "content" or "option" (--columns, a scene's "columns")
+  std::string why;         ///< how the role or unit was decided, or why the column is unused
+};
+
 /// A recording in SI units, samples in time order.
 struct Recording {
   RecordingFormat format = RecordingFormat::automatic;
@@ -74,6 +86,8 @@ struct Recording {
   /// What the reader decided (roles, units, ignored columns) and dropped
   /// (repeated or out-of-order samples, gaps), in file order.
   std::vector<RecordingNote> notes;
+  /// Every column of the file, the ones used and the ones not (why).
+  std::vector<RecordingColumn> columns;
   std::size_t rows = 0;     ///< data rows read
   std::size_t dropped = 0;  ///< rows skipped for an empty or NaN cell
   /// The CSV inside a zip archive it was read from ("Gyroscope.csv"), the
@@ -96,8 +110,12 @@ struct RecordingLimits {
 /// `set` picks a PASCO run ("Run #2", "run 2" or "2"; by default run 1) or
 /// the track of a Tracker export of several ("#multi:"; by its name in any
 /// case, required there), and is refused for a family that has one set only.
+/// `columns` ("t:s,theta:deg": a role and unit per column in file order,
+/// "-" for one not used) declares what the file cannot say
+/// (docs/recordings.md, "Columns").
 Recording parse_recording(std::string_view text, const std::string& file,
-                          RecordingFormat format = RecordingFormat::automatic, const std::string& set = {});
+                          RecordingFormat format = RecordingFormat::automatic, const std::string& set = {},
+                          const std::string& columns = {});
 
 /// Reads the file at `path` (at most limits.max_bytes; a larger file, a
 /// directory, a device or a pipe is refused) and parses it. A zip archive
@@ -106,6 +124,7 @@ Recording parse_recording(std::string_view text, const std::string& file,
 /// (docs/recordings.md); in a text file `set` picks a PASCO run or a Tracker
 /// track (parse_recording).
 Recording read_recording(const std::string& path, RecordingFormat format = RecordingFormat::automatic,
-                         const RecordingLimits& limits = {}, const std::string& set = {});
+                         const RecordingLimits& limits = {}, const std::string& set = {},
+                         const std::string& columns = {});
 
 }  // namespace pendulum

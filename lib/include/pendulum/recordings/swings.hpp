@@ -163,16 +163,21 @@ struct RecordingSummary {
   std::size_t dropped = 0;  ///< rows skipped for an empty or NaN cell
   SwingAnalysis swings;     ///< period, its uncertainty, periods, per-swing data, decay record
   std::string set = {};     ///< the set read (Recording::set); empty for a file of one set
+  std::vector<RecordingColumn> columns = {};  ///< how each column was used (Recording::columns)
+  std::vector<RecordingNote> notes = {};      ///< what the reader decided and dropped (Recording::notes)
+  std::string column_spec = {};  ///< the columns declared ("t:s,theta:deg"), to read the file again alike
 };
 
 /// Reads the recording at `path` (format from its header unless given) and
 /// analyses it: the one call a scene reader makes for a `timing` or
 /// `decay.data` that names a recording. Throws InputError naming the file
 /// (and line and column for a bad row). `set`: the CSV to read in a zip
-/// archive, a PASCO run or a Tracker track (read_recording).
+/// archive, a PASCO run or a Tracker track (read_recording); `columns`
+/// declares the columns' roles and units (parse_recording).
 RecordingSummary analyse_recording(const std::string& path,
                                    RecordingFormat format = RecordingFormat::automatic,
                                    const SwingOptions& options = {},
-                                   const RecordingLimits& limits = {}, const std::string& set = {});
+                                   const RecordingLimits& limits = {}, const std::string& set = {},
+                                   const std::string& columns = {});
 
 }  // namespace pendulum

@@ -1,0 +1,477 @@
+// The reading stages before and after the rows (stages.hpp): decode, lines,
+// split, words, content.
+#include "stages.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+
+#include "pendulum/input_error.hpp"
+#include "pendulum/numeric.hpp"
+#include "../text.hpp"
+
+namespace pendulum::recording_text {
+
+void fail(const std::string& file, std::size_t line, std::size_t column, const std::string& message) {
+  throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(column), one_line(message, 800, true));
+}
+
+namespace {
+
+bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
+bool ends_with(std::string_view s, std::string_view p) {
+  return s.size() >= p.size() && s.substr(s.size() - p.size()) == p;
+}
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+std::string_view trim_spaces(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\r' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\r' || s.back() == '\t')) s.remove_suffix(1);
+  return s;
+}
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\r' || s.front() == '"')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\r' || s.back() == '"')) s.remove_suffix(1);
+  return s;
+}
+
+bool valid_utf8(std::string_view s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    const std::size_t n = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 0;
+    if (n == 0 || i + n > s.size()) return false;
+    for (std::size_t k = 1; k < n; ++k) {
+      if ((static_cast<unsigned char>(s[i + k]) >> 6) != 2) return false;
+    }
+    i += n;
+  }
+  return true;
+}
+
+}  // namespace
+
+// --- decode -----------------------------------------------------------------
+
+std::string_view strip_bom(std::string_view text) {
+  if (starts_with(text, "\xef\xbb\xbf")) text.remove_prefix(3);
+  return text;
+}
+
+std::string to_utf8(std::string_view cell) {
+  if (valid_utf8(cell)) return std::string(cell);
+  std::string out;
+  for (char ch : cell) {
+    const unsigned char c = static_cast<unsigned char>(ch);
+    if (c < 0x80) {
+      out += ch;
+    } else {
+      out += static_cast<char>(0xC0 | (c >> 6));
+      out += static_cast<char>(0x80 | (c & 0x3F));
+    }
+  }
+  return out;
+}
+
+// --- lines ------------------------------------------------------------------
+
+bool is_blank(const char* p, const char* e) {
+  for (; p < e; ++p) {
+    if (*p != ' ' && *p != '\t' && *p != '\r' && *p != ',' && *p != ';') return false;
+  }
+  return true;
+}
+
+bool is_data(const char* p, const char* e) {
+  while (p < e && (*p == ' ' || *p == '"' || *p == '\t')) ++p;
+  if (p < e && (*p == '-' || *p == '+')) ++p;
+  return p < e && (std::isdigit(static_cast<unsigned char>(*p)) || *p == '.');
+}
+
+HeaderLines find_header(std::string_view text, const std::string& file) {
+  const char* const begin = text.data();
+  const char* const end = begin + text.size();
+  HeaderLines h;
+  const char* p = begin;
+  std::size_t line_no = 0;
+  while (p < end) {
+    const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
+    const char* e = nl ? static_cast<const char*>(nl) : end;
+    ++line_no;
+    if (!is_blank(p, e)) {
+      if (is_data(p, e)) break;
+      if (h.header) h.preamble = true, h.above = h.header;
+      h.several_tracks |= starts_with(std::string_view(p, static_cast<std::size_t>(e - p)), "#multi");
+      h.header = std::string_view(p, static_cast<std::size_t>(e - p));
+      h.header_line = line_no;
+    }
+    p = e + (e < end);
+    if (line_no > 100) fail(file, line_no, 1, "no numbers in the first 100 lines; expected a data export");
+  }
+  h.data_offset = static_cast<std::size_t>(p - begin);
+  h.data_line = line_no;
+  return h;
+}
+
+// --- split ------------------------------------------------------------------
+
+Dialect sniff(std::optional<std::string_view> header, std::string_view first_data) {
+  Dialect d;
+  const std::string_view probe = header ? *header : first_data;
+  for (char c : {'\t', ';', ','}) {
+    if (probe.find(c) != std::string_view::npos) {
+      d.delimiter = c;
+      break;
+    }
+  }
+  if (!d.delimiter && first_data.find_first_of("\t;") == std::string_view::npos) {
+    // Runs of spaces: two or more numbers on the first row so separated.
+    const std::string_view row = trim_spaces(first_data);
+    if (row.find(' ') != std::string_view::npos) d.delimiter = ' ';
+  }
+  d.decimal_comma = d.delimiter != ',' && first_data.find(',') != std::string_view::npos;
+  return d;
+}
+
+std::vector<std::string_view> split_cells(std::string_view line, const Dialect& dialect) {
+  std::vector<std::string_view> out;
+  if (dialect.delimiter == ' ') {
+    line = trim_spaces(line);
+    for (std::size_t start = 0; start < line.size();) {
+      std::size_t stop = start;
+      if (line[start] == '"') {
+        const std::size_t close = line.find('"', start + 1);
+        stop = close == std::string_view::npos ? line.size() : close + 1;
+      }
+      stop = std::min(line.find(' ', stop), line.size());
+      const std::string_view cell = trim(line.substr(start, stop - start));
+      // "Time (s)" written with spaces: the unit joins its word.
+      if (!out.empty() && (starts_with(cell, "(") || starts_with(cell, "["))) {
+        const char* first = out.back().data();
+        out.back() = std::string_view(first, static_cast<std::size_t>(cell.data() + cell.size() - first));
+      } else {
+        out.push_back(cell);
+      }
+      start = stop;
+      while (start < line.size() && line[start] == ' ') ++start;
+    }
+    if (out.empty()) out.emplace_back();
+    return out;
+  }
+  for (std::size_t start = 0;;) {
+    std::size_t d = std::string_view::npos;
+    if (dialect.delimiter) {
+      // A quoted cell may hold the delimiter ("Time, s").
+      std::size_t from = start;
+      while (from < line.size() && line[from] == ' ') ++from;
+      if (from < line.size() && line[from] == '"') {
+        const std::size_t close = line.find('"', from + 1);
+        from = close == std::string_view::npos ? line.size() : close;
+      }
+      d = line.find(dialect.delimiter, from);
+    }
+    out.push_back(trim(line.substr(start, d == std::string_view::npos ? d : d - start)));
+    if (d == std::string_view::npos) return out;
+    start = d + 1;
+  }
+}
+
+// --- words ------------------------------------------------------------------
+
+const char* role_name(Role role) {
+  switch (role) {
+    case Role::time: return "time";
+    case Role::rate: return "angular rate";
+    case Role::acceleration: return "acceleration";
+    case Role::linear_acceleration: return "linear acceleration";
+    case Role::angle: return "angle";
+    case Role::omega: return "angular velocity";
+    case Role::x: return "x";
+    case Role::y: return "y";
+    case Role::state: return "gate state";
+    case Role::period: return "period";
+    case Role::counter: return "counter";
+    case Role::uncertainty: return "uncertainty";
+    case Role::derivative: return "track derivative";
+    case Role::other: return "unknown";
+  }
+  return "";
+}
+
+namespace {
+
+/// The words exporters write for each role, lower case, without their unit,
+/// prefix or suffix (classify). A new exporter's spelling is one line here.
+/// `axis`: the word is followed by " x", " y" or " z" (phyphox).
+struct Spelling {
+  const char* word;
+  Role role;
+  bool axis = false;
+};
+const Spelling kSpellings[] = {
+    {"time", Role::time},  // phyphox, Vernier, PASCO, Logger Pro, OpenCV scripts
+    {"t", Role::time},     // Tracker
+    {"elapsed time", Role::time},
+    {"timestamp", Role::time},
+    {"gyroscope", Role::rate, true},            // phyphox's Gyroscope
+    {"rotation", Role::rate, true},             // phyphox's Pendulum experiment (raw data)
+    {"linear acceleration", Role::linear_acceleration, true},  // phyphox
+    {"acceleration", Role::acceleration, true},  // phyphox's Acceleration with g
+    {"angle", Role::angle},                      // PASCO, OpenCV scripts, Logger Pro
+    {"angular position", Role::angle},
+    {"theta", Role::angle},
+    {"\xce\xb8", Role::angle},  // θ (Tracker)
+    {"\xce\x98", Role::angle},  // Θ
+    {"angular velocity", Role::omega},  // PASCO
+    {"omega", Role::omega},
+    {"\xcf\x89", Role::omega},  // ω (Tracker)
+    {"\xce\xa9", Role::omega},  // Ω
+    {"x", Role::x},  // Tracker, Logger Pro's video analysis
+    {"x position", Role::x},
+    {"position x", Role::x},
+    {"y", Role::y},
+    {"y position", Role::y},
+    {"position y", Role::y},
+    {"gatestate", Role::state},  // Vernier
+    {"gate state", Role::state},
+    {"state", Role::state},  // PASCO
+    {"period", Role::period},  // Vernier's pendulum timing
+    {"n", Role::counter},  // timers
+    {"count", Role::counter},
+    {"counter", Role::counter},
+    {"index", Role::counter},
+    {"event", Role::counter},
+    {"#", Role::counter},
+    {"no.", Role::counter},
+    {"frame", Role::counter},
+    {"sample", Role::counter},
+    {"error", Role::uncertainty},
+    {"uncertainty", Role::uncertainty},
+    {"sigma", Role::uncertainty},
+    {"\xcf\x83", Role::uncertainty},  // σ
+    {"dt", Role::uncertainty},
+    {"dx", Role::uncertainty},
+    {"dy", Role::uncertainty},
+    {"d\xce\xb8", Role::uncertainty},  // dθ
+    {"\xce\xb4\xce\xb8", Role::uncertainty},  // δθ
+    {"vx", Role::derivative},  // Tracker's velocity and acceleration
+    {"vy", Role::derivative},
+    {"v", Role::derivative},
+    {"ax", Role::derivative},
+    {"ay", Role::derivative},
+    {"a", Role::derivative},
+    {"velocity", Role::derivative},
+    {"speed", Role::derivative},
+    {"p", Role::derivative},  // Tracker's momentum
+    {"px", Role::derivative},
+    {"py", Role::derivative},
+    {"\xce\xb1", Role::derivative},  // α, Tracker's angular acceleration
+};
+
+/// Unit spellings, lower case, and their normal form.
+const std::pair<const char*, const char*> kUnits[] = {
+    {"s", "s"},          {"sec", "s"},          {"second", "s"},        {"seconds", "s"},
+    {"ms", "ms"},        {"us", "us"},          {"\xc2\xb5s", "us"},    {"\xce\xbcs", "us"},  // µs, μs
+    {"deg", "deg"},      {"degree", "deg"},     {"degrees", "deg"},     {"\xc2\xb0", "deg"},  // °
+    {"rad", "rad"},      {"radian", "rad"},     {"radians", "rad"},
+    {"rad/s", "rad/s"},  {"deg/s", "deg/s"},    {"\xc2\xb0/s", "deg/s"}, {"degrees/s", "deg/s"},
+    {"m", "m"},          {"cm", "cm"},          {"mm", "mm"},           {"px", "px"},
+    {"pixel", "px"},     {"pixels", "px"},      {"m/s^2", "m/s^2"},     {"m/s\xc2\xb2", "m/s^2"},  // m/s²
+};
+
+}  // namespace
+
+std::string normal_unit(std::string_view unit) {
+  const std::string u = lower(trim_spaces(unit));
+  for (const auto& [spelt, normal] : kUnits) {
+    if (u == spelt) return normal;
+  }
+  return u;
+}
+
+std::optional<double> time_scale(const std::string& unit) {
+  if (unit.empty() || unit == "s") return 1.0;
+  if (unit == "ms") return 1e-3;
+  if (unit == "us") return 1e-6;
+  return std::nullopt;
+}
+
+Column classify(std::string_view raw) {
+  Column c;
+  c.name = to_utf8(trim(raw));
+  std::string s = lower(c.name);
+  if (const auto pos = s.find(" run #"); pos != std::string::npos) {
+    c.run = std::atoi(s.c_str() + pos + 6);
+    s.erase(pos);
+  }
+  // "Latest: ", "Run 1: " (Vernier), "VideoAnalysis: " (Logger Pro).
+  if (const auto colon = s.find(": "); colon != std::string::npos && colon > 0 && colon < 40) {
+    c.prefixed = true;
+    s.erase(0, colon + 2);
+  }
+  const auto unit_in = [&](char open, char close) {
+    const auto at = s.rfind(open);
+    if (at == std::string::npos) return false;
+    const auto end = s.find(close, at);
+    c.unit = s.substr(at + 1, end == std::string::npos ? std::string::npos : end - at - 1);
+    s.erase(at);
+    return true;
+  };
+  if (!unit_in('(', ')') && !unit_in('[', ']')) {
+    if (const auto comma = s.rfind(','); comma != std::string::npos) {
+      c.unit = s.substr(comma + 1);
+      s.erase(comma);
+    }
+  }
+  c.unit = normal_unit(c.unit);
+  std::string_view w = trim_spaces(s);
+  // "t_{1}", "x_1": a tracker's numbered object.
+  if (const auto u = w.rfind('_'); u != std::string_view::npos && u > 0) {
+    std::string_view tail = w.substr(u + 1);
+    if (!tail.empty() && tail.front() == '{' && tail.back() == '}') tail = tail.substr(1, tail.size() - 2);
+    if (!tail.empty() && std::all_of(tail.begin(), tail.end(), [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); })) {
+      w = trim_spaces(w.substr(0, u));
+    }
+  }
+  // A prime is a derivative (Tracker's generic X', Y').
+  bool prime = false;
+  for (std::string_view mark : {std::string_view("'"), std::string_view("\xe2\x80\xb2")}) {  // ', ′
+    if (ends_with(w, mark) && w.size() > mark.size()) w.remove_suffix(mark.size()), prime = true;
+  }
+  for (const Spelling& sp : kSpellings) {
+    const std::size_t n = std::strlen(sp.word);
+    const bool match = sp.axis ? w.size() == n + 2 && starts_with(w, sp.word) && w[n] == ' ' &&
+                                     (w.back() == 'x' || w.back() == 'y' || w.back() == 'z')
+                               : w == sp.word;
+    if (match) {
+      c.role = prime ? Role::derivative : sp.role;
+      c.known = true;
+      break;
+    }
+  }
+  return c;
+}
+
+std::vector<std::optional<Column>> parse_column_spec(const std::string& spec, const std::string& where) {
+  struct Name {
+    const char* word;
+    Role role;
+  };
+  static const Name kNames[] = {{"t", Role::time},        {"time", Role::time},      {"theta", Role::angle},
+                                {"angle", Role::angle},   {"omega", Role::omega},    {"x", Role::x},
+                                {"y", Role::y},           {"n", Role::counter},      {"count", Role::counter},
+                                {"state", Role::state},   {"period", Role::period},  {"gyro", Role::rate},
+                                {"a", Role::acceleration}, {"linear_a", Role::linear_acceleration}};
+  std::vector<std::optional<Column>> out;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = spec.find(',', start);
+    const std::string entry(trim_spaces(std::string_view(spec).substr(start, comma == std::string::npos ? comma : comma - start)));
+    if (entry.empty() || entry == "-") {
+      out.emplace_back();
+    } else {
+      const std::size_t colon = entry.find(':');
+      const std::string word = lower(entry.substr(0, colon));
+      const std::string unit = colon == std::string::npos ? std::string() : normal_unit(entry.substr(colon + 1));
+      const Name* name = std::find_if(std::begin(kNames), std::end(kNames), [&](const Name& n) { return word == n.word; });
+      if (name == std::end(kNames)) {
+        throw InputError(where, "got the column \"" + one_line(entry, 40) +
+                                    "\"; expected a role: t (time), theta (angle), omega, x, y, n (counter), state, "
+                                    "period, gyro, a, linear_a, or - for a column not used");
+      }
+      Column c;
+      c.role = name->role;
+      c.known = true;
+      c.unit = unit;
+      c.decided = "option";
+      const bool fits = unit.empty() ||
+                        (c.role == Role::time || c.role == Role::period ? time_scale(unit).has_value()
+                         : c.role == Role::angle                        ? unit == "deg" || unit == "rad"
+                         : c.role == Role::omega || c.role == Role::rate ? unit == "rad/s" || unit == "deg/s"
+                         : c.role == Role::x || c.role == Role::y         ? unit == "m" || unit == "cm" || unit == "mm" || unit == "px"
+                                                                           : false);
+      if (!fits) {
+        throw InputError(where, "got the unit \"" + one_line(entry.substr(colon + 1), 20) + "\" for " + role_name(c.role) +
+                                    "; expected " +
+                                    (c.role == Role::time || c.role == Role::period ? "s, ms or us"
+                                     : c.role == Role::angle                        ? "deg or rad"
+                                     : c.role == Role::omega || c.role == Role::rate ? "rad/s or deg/s"
+                                     : c.role == Role::x || c.role == Role::y         ? "m, cm, mm or px"
+                                                                                       : "no unit"));
+      }
+      out.push_back(c);
+    }
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+// --- content ----------------------------------------------------------------
+
+ColumnFacts examine(const std::vector<double>& column) {
+  ColumnFacts f;
+  std::vector<double> values;
+  values.reserve(column.size());
+  std::size_t steps = 0, unit_steps = 0, decreases = 0, bad_steps = 0;
+  double last = std::numeric_limits<double>::quiet_NaN();
+  for (double v : column) {
+    if (!std::isfinite(v)) continue;
+    values.push_back(v);
+    f.integers &= v == std::floor(v);
+    if (!std::isnan(last)) {
+      ++steps;
+      const double d = v - last;
+      unit_steps += d == 1.0;
+      decreases += d < 0.0;
+      bad_steps += !(d >= 1.0 && d == std::floor(d));
+    }
+    last = v;
+  }
+  f.finite = values.size();
+  if (values.empty()) return f;
+  const auto [mn, mx] = std::minmax_element(values.begin(), values.end());
+  f.constant = *mn == *mx;
+  // A few glitches (a missed or doubled stamp, an out-of-order sample) leave a counter or a clock what it is.
+  const std::size_t few = steps / 100;
+  f.counter = f.integers && steps > 0 && bad_steps <= few && unit_steps * 10 >= steps * 9;
+  f.increasing = !f.constant && decreases <= few;
+  const std::size_t k = values.size() / 200;
+  std::nth_element(values.begin(), values.begin() + k, values.end());
+  f.lo = values[k];
+  std::nth_element(values.begin(), values.end() - 1 - k, values.end());
+  f.hi = values[values.size() - 1 - k];
+  return f;
+}
+
+std::pair<std::string, std::string> unitless_angle(const ColumnFacts& facts) {
+  const double a = facts.half_range();
+  if (a > kPi / 2.0) {
+    return {"deg", "swings by +-" + format_number(a, 3) + ", over 90 deg if radians: read as degrees"};
+  }
+  return {"rad", "swings by +-" + format_number(a, 3) + ", " + format_number(a * 180.0 / kPi, 3) +
+                     " deg if radians: read as radians (if it is degrees, say so with --columns or \"columns\")"};
+}
+
+bool is_rate_of(const std::vector<double>& t, const std::vector<double>& a, const std::vector<double>& b) {
+  double n = 0.0, su = 0.0, sv = 0.0, suu = 0.0, svv = 0.0, suv = 0.0;
+  for (std::size_t k = 1; k + 1 < t.size(); ++k) {
+    const double dt = t[k + 1] - t[k - 1];
+    const double u = (a[k + 1] - a[k - 1]) / dt, v = b[k];
+    if (!(dt > 0.0) || !std::isfinite(u) || !std::isfinite(v)) continue;
+    n += 1.0, su += u, sv += v, suu += u * u, svv += v * v, suv += u * v;
+  }
+  if (n < 8.0) return false;
+  const double cuu = suu - su * su / n, cvv = svv - sv * sv / n, cuv = suv - su * sv / n;
+  return cuu > 0.0 && cvv > 0.0 && std::fabs(cuv) / std::sqrt(cuu * cvv) > 0.9;
+}
+
+}  // namespace pendulum::recording_text

@@ -1,0 +1,194 @@
+#pragma once
+// The stages of reading a recording's text (docs/recordings.md, "Columns"),
+// each a function that can be tested alone (tests/test_recording_stages.cpp):
+//   decode  the byte-order mark, a Latin-1 header's ° and µ as UTF-8;
+//   lines   the header line, the preamble above it, the first data line;
+//   split   the delimiter (tab, semicolon, comma, runs of spaces), the
+//           decimal mark, a line's cells;
+//   words   a header cell -> its role and unit, from one table of spellings;
+//   rows    the numbers, one vector per column;
+//   content what a column's numbers say (a counter, a constant, a clock);
+//   roles   which columns give the time and the signal (read.cpp);
+//   clean   repeated, out-of-order and missing samples (clean.cpp).
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "pendulum/recordings/read.hpp"
+
+namespace pendulum::recording_text {
+
+/// InputError at "file:line:column" (column in bytes, from 1), the message on one line.
+[[noreturn]] void fail(const std::string& file, std::size_t line, std::size_t column, const std::string& message);
+
+// --- decode -----------------------------------------------------------------
+
+/// The text without a UTF-8 byte-order mark.
+std::string_view strip_bom(std::string_view text);
+
+/// A header cell as UTF-8: as it is when it is valid UTF-8, otherwise read
+/// as Latin-1 (Windows exporters write "°" as 0xB0, "µ" as 0xB5).
+std::string to_utf8(std::string_view cell);
+
+// --- lines ------------------------------------------------------------------
+
+/// True if [p, e) holds only spaces, tabs, CR, commas and semicolons.
+bool is_blank(const char* p, const char* e);
+
+/// True if the line's first cell starts like a number.
+bool is_data(const char* p, const char* e);
+
+struct HeaderLines {
+  std::optional<std::string_view> header;  ///< the last non-data line before the data; none: headerless
+  std::optional<std::string_view> above;   ///< the line above the header (a preamble)
+  std::size_t header_line = 1;
+  bool preamble = false;       ///< lines above the header (Tracker's track name, Logger Pro's data set)
+  bool several_tracks = false;  ///< Tracker's "#multi:"
+  std::size_t data_offset = 0;  ///< byte of the first data line in the text
+  std::size_t data_line = 1;
+};
+
+/// The header and the first data line; refuses a text with no data rows or
+/// no numbers in its first 100 lines.
+HeaderLines find_header(std::string_view text, const std::string& file);
+
+// --- split ------------------------------------------------------------------
+
+/// How the cells of a line are separated: '\t', ';', ',' or ' ' (a run of
+/// spaces), or '\0' for one column; and the decimal mark.
+struct Dialect {
+  char delimiter = '\0';
+  bool decimal_comma = false;
+  char mark() const { return decimal_comma ? ',' : '.'; }
+};
+
+/// Tab, then semicolon, then comma as found in the header (or the first row
+/// without one); otherwise runs of spaces when the first row has two or more
+/// numbers so separated. A comma in the first row is then a decimal comma.
+Dialect sniff(std::optional<std::string_view> header, std::string_view first_data);
+
+/// The cells of a line, spaces, CR and quotes trimmed (a quoted cell keeps
+/// its delimiters). With runs of spaces, a header's "(s)" or "[deg]" joins
+/// the word before it.
+std::vector<std::string_view> split_cells(std::string_view line, const Dialect& dialect);
+
+// --- words ------------------------------------------------------------------
+
+/// What a column holds.
+enum class Role {
+  time,                 ///< s, ms, µs
+  rate,                 ///< one axis of a gyroscope (rad/s)
+  acceleration,         ///< one axis of an accelerometer, gravity included (m/s^2)
+  linear_acceleration,  ///< one axis, gravity removed (m/s^2)
+  angle,                ///< deg or rad
+  omega,                ///< angular velocity about the pivot (rad/s, deg/s)
+  x,                    ///< position (m, cm, mm, px)
+  y,
+  state,                ///< a photogate's state, 0 or 1
+  period,               ///< a photogate's period column (s)
+  counter,              ///< an event number or row index
+  uncertainty,          ///< the uncertainty of another column
+  derivative,           ///< a tracker's vx, ax, X', speed: not a swing signal here
+  other,                ///< a word not in the table
+};
+const char* role_name(Role role);
+
+struct Column {
+  std::string name;  ///< as in the file, quotes removed, UTF-8
+  Role role = Role::other;
+  std::string unit;  ///< normalised ("s", "ms", "us", "deg", "rad", "rad/s", "deg/s", "m", "cm", "mm", "px"), or as written, lower case
+  int run = 0;       ///< PASCO's "Run #n", else 0
+  int track = 0;     ///< Tracker's track in an export of several (from 1), else 0
+  bool prefixed = false;  ///< a "Latest: ", "Run 1: ", "VideoAnalysis: " prefix
+  bool known = false;     ///< the word is in the table of spellings
+  std::string decided = "header";  ///< "header", "content" or "option"
+};
+
+/// A header cell's role and unit: case folded; the unit from the last
+/// "(...)" or "[...]" or after a comma; a "Word: " prefix, a "_{1}" or "_1"
+/// suffix, a PASCO " Run #n" and a trailing prime taken off; the word
+/// looked up in the table of spellings (stages.cpp, kSpellings).
+Column classify(std::string_view cell);
+
+/// A unit as written ("Degrees", "°", "sec") in its normal spelling, or the
+/// text lower-cased when it is not one the reader knows.
+std::string normal_unit(std::string_view unit);
+
+/// The factor from a time unit to seconds, or nullopt.
+std::optional<double> time_scale(const std::string& unit);
+
+/// `--columns "t:s,theta:deg"`: one entry per column in file order, a role
+/// and an optional unit; "-" or an empty entry leaves a column unused.
+/// Refuses an unknown role or unit, naming the entry ("--columns" in `where`).
+std::vector<std::optional<Column>> parse_column_spec(const std::string& spec, const std::string& where);
+
+// --- rows -------------------------------------------------------------------
+
+/// The numbers of the data rows, one vector per column (NaN for an empty or
+/// "NaN" cell), and the file line of each row.
+struct Table {
+  std::vector<std::vector<double>> columns;
+  std::size_t rows = 0;
+  bool any_nan = false;  ///< some cell is empty or NaN (only a row off the fast path can hold one)
+  /// (row, line) where the line numbering jumps (blank lines); the first
+  /// pair is the first row's.
+  std::vector<std::pair<std::size_t, std::size_t>> jumps;
+  std::size_t line(std::size_t row) const;
+};
+
+/// Reads the rows of [p, end), the first on line `line_no`, with `names`
+/// (one per column) naming the columns in messages; refuses a truncated or
+/// overlong row, a cell that is not a number, mixed delimiters.
+Table read_rows(const char* p, const char* end, std::size_t line_no, const Dialect& dialect,
+                const std::vector<std::string>& names, const std::string& file);
+
+// --- content ----------------------------------------------------------------
+
+/// What a column's finite numbers say.
+struct ColumnFacts {
+  std::size_t finite = 0;
+  bool constant = true;     ///< one value throughout (or none)
+  bool integers = true;     ///< whole numbers only
+  bool counter = false;     ///< whole numbers stepping by one, at most a few larger steps
+  bool increasing = false;  ///< never decreasing, at most a few glitches (clean decides)
+  double lo = 0.0, hi = 0.0;  ///< 0.5th and 99.5th percentiles
+  /// Half the range between the percentiles: the swing's amplitude for an angle.
+  double half_range() const { return 0.5 * (hi - lo); }
+};
+ColumnFacts examine(const std::vector<double>& column);
+
+/// The unit of an angle column whose header gives none, from its swing of
+/// +-A = facts.half_range(): "deg" where A > pi/2 (a swing beyond 90 deg is
+/// no pendulum's in radians), else "rad"; the note says which and why.
+std::pair<std::string, std::string> unitless_angle(const ColumnFacts& facts);
+
+/// True if `b` is, sample for sample, the rate of change of `a` (their
+/// correlation over the interior samples beyond 0.9): an angle and its
+/// angular velocity, never the x and y of a track (y swings at twice x's
+/// frequency, so x's rate and y do not correlate).
+bool is_rate_of(const std::vector<double>& t, const std::vector<double>& a, const std::vector<double>& b);
+
+// --- clean ------------------------------------------------------------------
+
+/// What clean_times keeps.
+struct Cleaned {
+  bool all = true;                ///< every sample kept (then `keep` is empty)
+  std::vector<std::size_t> keep;  ///< otherwise the positions in `time` kept, in order
+  double quantum = 0.0;           ///< the clock's resolution when stamps repeat (s), else 0
+  std::vector<RecordingNote> notes;
+};
+
+/// The samples of `time` (s; time[k] from table row rows[k], or row k when
+/// `rows` is empty) in time order: stamps that repeat throughout (a clock printing too few decimals)
+/// are kept and their quantum given; a few repeated or out-of-order samples
+/// (at most 1 % of the rows) are dropped, each with its line; gaps of more
+/// than 1.5 sampling steps are noted when `sampled`. More out of order is
+/// refused ("time going backwards"), as is an infinite time.
+Cleaned clean_times(const std::vector<double>& time, const std::vector<std::size_t>& rows, const Table& table,
+                    bool sampled, const std::string& file);
+
+}  // namespace pendulum::recording_text

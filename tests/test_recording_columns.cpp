@@ -1,0 +1,301 @@
+// The recording reader's stages one by one (lib/src/recordings/stages.hpp)
+// and the layouts students publish (issue 19), written by the recording
+// simulator with their quirks (tests/recording_simulation.hpp,
+// published_csv): the roles the reader chose, the notes it gave, and the
+// period within its stated uncertainty of the simulation's truth over 200
+// recordings per layout.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "pendulum/input_error.hpp"
+#include "pendulum/recordings/read.hpp"
+#include "pendulum/recordings/swings.hpp"
+#include "recording_simulation.hpp"
+#include "../lib/src/recordings/stages.hpp"
+
+using namespace pendulum;
+using namespace pendulum::recording_text;
+using Catch::Matchers::Contains;
+using test::PublishedLayout;
+
+namespace {
+
+/// The role the reader gave column `index` (from 1).
+std::string role_of(const Recording& r, std::size_t index) {
+  for (const auto& c : r.columns) {
+    if (c.index == index) return c.role + (c.unit.empty() ? "" : ":" + c.unit) + "/" + c.decided_by;
+  }
+  return "none";
+}
+
+bool has_note(const Recording& r, const std::string& text) {
+  return std::any_of(r.notes.begin(), r.notes.end(), [&](const RecordingNote& n) { return n.text.find(text) != std::string::npos; });
+}
+
+}  // namespace
+
+TEST_CASE("Words: the header's spellings give roles and units", "[recordings][columns]") {
+  struct Case {
+    const char* cell;
+    Role role;
+    const char* unit;
+  };
+  const Case cases[] = {
+      {"time", Role::time, ""},
+      {"Time (s)", Role::time, "s"},
+      {"t_{1}", Role::time, ""},
+      {"VideoAnalysis: Time (s)", Role::time, "s"},
+      {"Latest: Time (s)", Role::time, "s"},
+      {"Time [ms]", Role::time, "ms"},
+      {"\"Time, s\"", Role::time, "s"},
+      {"Time (s) Run #2", Role::time, "s"},
+      {"Angle (Degrees)", Role::angle, "deg"},
+      {"angle (\xc2\xb0)", Role::angle, "deg"},  // °
+      {"\xce\xb8 [rad]", Role::angle, "rad"},    // θ
+      {"Angular Velocity (deg/s)", Role::omega, "deg/s"},
+      {"VideoAnalysis: X (m)", Role::x, "m"},
+      {"y (px)", Role::y, "px"},
+      {"x_1", Role::x, ""},
+      {"X'", Role::derivative, ""},
+      {"vx", Role::derivative, ""},
+      {"Gyroscope z (rad/s)", Role::rate, "rad/s"},
+      {"Linear Acceleration y (m/s^2)", Role::linear_acceleration, "m/s^2"},
+      {"Gate State", Role::state, ""},
+      {"frame", Role::counter, ""},
+      {"n", Role::counter, ""},
+      {"d\xce\xb8", Role::uncertainty, ""},
+      {"Pressure (hPa)", Role::other, "hpa"},
+  };
+  for (const auto& c : cases) {
+    INFO(c.cell);
+    const Column col = classify(c.cell);
+    CHECK(col.role == c.role);
+    CHECK(col.unit == c.unit);
+  }
+  CHECK(classify("Time (s) Run #2").run == 2);
+  // Latin-1 (a Windows exporter): 0xB0 is the degree sign.
+  CHECK(classify("Angle (\xb0)").unit == "deg");
+  CHECK(to_utf8("\xb5s") == "\xc2\xb5s");
+  CHECK(to_utf8("\xc2\xb5s") == "\xc2\xb5s");
+}
+
+TEST_CASE("Split: delimiters, runs of spaces, quotes, decimal commas", "[recordings][columns]") {
+  CHECK(sniff(std::string_view("t\tx\ty"), "0\t1\t2").delimiter == '\t');
+  CHECK(sniff(std::string_view("Time (s);Angle (rad)"), "0,5;1,25").decimal_comma);
+  CHECK(sniff(std::nullopt, "  0.1   2.0   3").delimiter == ' ');
+  CHECK(sniff(std::string_view("t (ms)"), "100").delimiter == '\0');
+  const Dialect spaces{' ', false};
+  const auto header = split_cells("   t     Time (s)   theta [deg]  ", spaces);
+  REQUIRE(header.size() == 3);
+  CHECK(header[1] == "Time (s)");
+  CHECK(header[2] == "theta [deg]");
+  const auto quoted = split_cells("\"Time, s\",\"Angle (rad)\"", Dialect{',', false});
+  REQUIRE(quoted.size() == 2);
+  CHECK(quoted[0] == "Time, s");
+}
+
+TEST_CASE("Content: counters, constants, clocks and angle units from the numbers", "[recordings][columns]") {
+  CHECK(examine({1, 2, 3, 4, 5}).counter);
+  CHECK_FALSE(examine({0.0, 0.01, 0.02, 0.03}).counter);
+  CHECK(examine({0.0, 0.01, 0.02, 0.03}).increasing);
+  CHECK(examine({0, 0, 0, 0}).constant);
+  // The half range decides a unitless angle: beyond pi/2 is degrees.
+  std::vector<double> deg, rad;
+  for (int k = 0; k < 400; ++k) deg.push_back(2.0 * std::sin(0.05 * k)), rad.push_back(0.2 * std::sin(0.05 * k));
+  CHECK(unitless_angle(examine(deg)).first == "deg");
+  CHECK(unitless_angle(examine(rad)).first == "rad");
+  // An angle and its rate, never a track's x and y.
+  std::vector<double> t, th, om, x, y;
+  for (int k = 0; k < 400; ++k) {
+    t.push_back(0.01 * k);
+    th.push_back(0.2 * std::cos(4.0 * t.back()));
+    om.push_back(-0.8 * std::sin(4.0 * t.back()));
+    x.push_back(std::sin(th.back()));
+    y.push_back(-std::cos(th.back()));
+  }
+  CHECK(is_rate_of(t, th, om));
+  CHECK_FALSE(is_rate_of(t, x, y));
+  CHECK_FALSE(is_rate_of(t, y, x));
+}
+
+TEST_CASE("Clean: repeated stamps kept with their quantum, glitches dropped with their line", "[recordings][columns]") {
+  Table table;
+  table.rows = 400;
+  std::vector<double> t;
+  for (int k = 0; k < 400; ++k) t.push_back(std::floor(k * 0.002 * 100.0) / 100.0);  // 500 Hz, a 10 ms clock
+  Cleaned c = clean_times(t, {}, table, true, "f");
+  CHECK(c.all);
+  CHECK(c.quantum == Approx(0.01));
+  std::vector<double> glitch;
+  for (int k = 0; k < 400; ++k) glitch.push_back(k * 0.01);
+  std::swap(glitch[100], glitch[101]);
+  glitch.insert(glitch.begin() + 200, glitch[200]);
+  c = clean_times(glitch, {}, table, true, "f");
+  REQUIRE_FALSE(c.all);
+  CHECK(c.keep.size() == 399);
+  REQUIRE(c.notes.size() == 3);
+  CHECK(c.notes[0].line == 101);  // row 100 (line 101) holds t[101], out of order
+  CHECK_THAT(c.notes[1].text, Contains("a repeated sample"));
+  CHECK_THAT(c.notes[2].text, Contains("a gap of 0.02 s"));  // where the sample out of order was dropped
+  // Beyond 1 % out of order is a file not in time order.
+  std::vector<double> back = {0.0, 0.1, 0.05, 0.2};
+  CHECK_THROWS_WITH(clean_times(back, {}, table, true, "f"), Contains("f:3:1: time going backwards"));
+  // A dropped frame is a gap.
+  std::vector<double> gap;
+  for (int k = 0; k < 100; ++k) {
+    if (k != 50) gap.push_back(k / 60.0);
+  }
+  c = clean_times(gap, {}, table, true, "f");
+  REQUIRE(c.notes.size() == 1);
+  CHECK_THAT(c.notes[0].text, Contains("about 1 missing"));
+}
+
+TEST_CASE("Published layouts: the roles the reader chose and what it said", "[recordings][columns]") {
+  test::RecordingSimulation s;
+  s.duration = 20.0, s.drop = 0.0, s.noise = 0.0, s.theta0 = 5.0 * M_PI / 180.0;
+  s.rate_hz = 30.0;
+  const auto sim = simulate_recording(s);
+  const auto read = [&](PublishedLayout layout, const std::string& columns = {}) {
+    return parse_recording(test::published_csv(sim, s.length, layout, 0.0, 1), "p.csv", RecordingFormat::automatic, {},
+                           columns);
+  };
+  const Recording rotary = read(PublishedLayout::rotary_degrees);
+  CHECK(rotary.kind == SignalKind::angle);
+  CHECK(role_of(rotary, 2) == "angle:deg/header");
+  CHECK(*std::max_element(rotary.channels[0].begin(), rotary.channels[0].end()) == Approx(s.theta0).epsilon(0.01));
+
+  const Recording opencv = read(PublishedLayout::opencv_angle);
+  CHECK(opencv.format == RecordingFormat::columns);
+  CHECK(role_of(opencv, 1) == "time:s/header");
+  CHECK(role_of(opencv, 2) == "angle:deg/content");
+  CHECK(has_note(opencv, "read as degrees"));
+  CHECK(*std::max_element(opencv.channels[0].begin(), opencv.channels[0].end()) == Approx(s.theta0).epsilon(0.01));
+  // The unit declared overrides the content.
+  CHECK(role_of(read(PublishedLayout::opencv_angle, "t:s,theta:deg"), 2) == "angle:deg/option");
+
+  const Recording tracker = read(PublishedLayout::tracker_degrees);
+  CHECK(tracker.format == RecordingFormat::tracker);
+  CHECK(role_of(tracker, 2) == "angle:deg/content");
+
+  const Recording pixels = read(PublishedLayout::pixel_track);
+  CHECK(pixels.kind == SignalKind::position);
+  CHECK(role_of(pixels, 1) == "unused/header");
+  CHECK(role_of(pixels, 3) == "x:px/header");
+
+  const Recording logger = read(PublishedLayout::logger_pro_video);
+  CHECK(logger.kind == SignalKind::position);
+  CHECK(role_of(logger, 1) == "time:s/header");
+  CHECK(role_of(logger, 2) == "x:m/header");
+
+  const Recording txy = read(PublishedLayout::headerless_txy);
+  CHECK(txy.kind == SignalKind::position);
+  CHECK(role_of(txy, 1) == "time:s/content");
+  CHECK(role_of(txy, 3) == "y/content");
+
+  const Recording timer = read(PublishedLayout::headerless_timer);
+  CHECK(timer.kind == SignalKind::event_stamps);
+  CHECK(role_of(timer, 1) == "counter/content");
+  CHECK(role_of(timer, 2) == "event stamp:s/content");
+  REQUIRE(timer.counts.size() == timer.time.size());
+  CHECK(timer.counts.front() == 1.0);
+
+  const Recording spaced = read(PublishedLayout::spaces);
+  CHECK(spaced.kind == SignalKind::angle);
+  CHECK(role_of(spaced, 2) == "angle:rad/header");
+
+  test::RecordingSimulation fast = s;
+  fast.rate_hz = 500.0;
+  const auto logged = simulate_recording(fast);
+  const Recording stamps = parse_recording(test::published_csv(logged, s.length, PublishedLayout::repeated_stamps, 0.0, 1), "r.csv");
+  CHECK(stamps.time.size() == logged.t.size());
+  CHECK(has_note(stamps, "the clock ticks in 0.01 s"));
+  CHECK(stamps.time_quantum == Approx(0.01));
+
+  // An all-zero angle beside a track's x and y is passed over.
+  const Recording zero = parse_recording("t,theta,x,y\n0,0,1,2\n0.1,0,1.1,2.1\n0.2,0,1.2,2.0\n", "z.csv");
+  CHECK(zero.kind == SignalKind::position);
+  CHECK_THAT(role_of(zero, 2), Contains("unused"));
+
+  // A phone's repeated and out-of-order samples: dropped, each noted at its line.
+  test::RecordingSimulation g;
+  g.duration = 30.0;
+  const auto gyro = simulate_recording(g);
+  const Recording phone = parse_recording(test::glitchy_phyphox_csv(gyro, 6, 6, 3), "phone.csv");
+  CHECK(phone.time.size() == gyro.t.size() - 6);
+  CHECK(std::count_if(phone.notes.begin(), phone.notes.end(),
+                      [](const RecordingNote& n) { return n.line > 0 && n.text.find("dropped") != std::string::npos; }) == 12);
+  CHECK(std::is_sorted(phone.time.begin(), phone.time.end()));
+}
+
+TEST_CASE("Refusals: what cannot be read says the fix", "[recordings][columns]") {
+  // plain reads one column: several need --columns.
+  CHECK_THROWS_WITH(parse_recording("0.1\t1\n0.2\t2\n", "p.txt", RecordingFormat::plain),
+                    Contains("--format plain reads one column") && Contains("--columns"));
+  CHECK(parse_recording("1\t0.1\n2\t0.2\n3\t0.4\n", "p.txt", RecordingFormat::plain, {}, "-,t:s").time ==
+        std::vector<double>{0.1, 0.2, 0.4});
+  // A headerless time and one signal: which signal, the file cannot say.
+  CHECK_THROWS_WITH(parse_recording("0.1\t1\n0.2\t-2\n0.3\t1\n", "h.txt"),
+                    Contains("headerless file of 2 columns") && Contains("--columns"));
+  // Radians by the header, degrees by the numbers.
+  CHECK_THROWS_WITH(parse_recording("Time (s),Angle (rad)\n0,-20\n0.1,0\n0.2,20\n0.3,0\n", "r.csv"),
+                    Contains("over 180 deg: it holds degrees?"));
+  CHECK_THROWS_WITH(parse_recording("0.1\t1\n", "h.txt", RecordingFormat::automatic, {}, "t:s,theta:furlong"),
+                    Contains("expected deg or rad"));
+  CHECK_THROWS_WITH(parse_recording("0.1\t1\n", "h.txt", RecordingFormat::automatic, {}, "t:s,spin"),
+                    Contains("expected a role"));
+}
+
+TEST_CASE("Published layouts: the period within its uncertainty of the truth, 200 recordings each",
+          "[recordings][columns][coverage]") {
+  // Seeds 1..200 per layout: 20 s, l = 0.80 m, alpha = 2e-3 1/s, beta = 4e-3
+  // 1/(s rad), jitter 0.2 ms, no samples dropped; an angle with 1.5 mm / 0.8 m
+  // of noise (rad), a track with 1.5 mm on x and y. The truth: the exact
+  // zero crossings of theta nearest to the ones found (the simulation's,
+  // linear within 1 ms), their mean period, as tests/test_recordings.cpp.
+  struct Family {
+    PublishedLayout layout;
+    double rate_hz;
+    double theta0_deg;
+    bool track;
+  };
+  const Family families[] = {
+      {PublishedLayout::rotary_degrees, 50.0, 4.0, false},  {PublishedLayout::opencv_angle, 30.0, 5.0, false},
+      {PublishedLayout::opencv_angle, 30.0, 2.0, false},    {PublishedLayout::pixel_track, 60.0, 10.0, true},
+      {PublishedLayout::pixel_track, 240.0, 10.0, true},    {PublishedLayout::tracker_degrees, 30.0, 3.0, false},
+      {PublishedLayout::logger_pro_video, 30.0, 10.0, true}, {PublishedLayout::headerless_txy, 30.0, 10.0, true},
+      {PublishedLayout::spaces, 30.0, 10.0, false},
+  };
+  for (const Family& f : families) {
+    constexpr int kRuns = 200;
+    int covered = 0;
+    for (int seed = 1; seed <= kRuns; ++seed) {
+      test::RecordingSimulation s;
+      s.duration = 20.0, s.drop = 0.0, s.noise = 0.0, s.rate_hz = f.rate_hz;
+      s.theta0 = f.theta0_deg * M_PI / 180.0, s.seed = static_cast<std::uint64_t>(seed);
+      const auto sim = simulate_recording(s);
+      const double noise = f.track ? 0.0015 : 0.0015 / s.length;
+      const Recording r =
+          parse_recording(test::published_csv(sim, s.length, f.layout, noise, static_cast<std::uint64_t>(seed)), "sim");
+      REQUIRE(r.kind == (f.track ? SignalKind::position : SignalKind::angle));
+      const SwingAnalysis a = analyse_swings(r, "sim");
+      std::vector<double> exact;
+      for (const auto& c : a.crossings) {
+        const auto it = std::lower_bound(sim.zero_times.begin(), sim.zero_times.end(), c.time);
+        double best = it == sim.zero_times.end() ? sim.zero_times.back() : *it;
+        if (it != sim.zero_times.begin() && std::fabs(*(it - 1) - c.time) < std::fabs(best - c.time)) best = *(it - 1);
+        exact.push_back(best);
+      }
+      const double truth = 2.0 * (exact.back() - exact.front()) / (exact.size() - 1.0);
+      covered += std::fabs(a.period.value - truth) <= a.period.uncertainty;
+    }
+    const double coverage = static_cast<double>(covered) / kRuns, p = 0.6826894921370859;
+    const double tolerance = 3.0 * std::sqrt(p * (1.0 - p) / kRuns);  // 3 binomial sigmas: 0.099
+    WARN("layout " << static_cast<int>(f.layout) << " at " << f.rate_hz << " Hz, " << f.theta0_deg
+                   << " deg: coverage " << coverage);
+    CHECK(std::fabs(coverage - p) < tolerance);
+  }
+}

@@ -14,6 +14,7 @@
 #include "pendulum/input_error.hpp"
 #include "pendulum/recordings/read.hpp"
 #include "pendulum/recordings/swings.hpp"
+#include "pendulum/scene_json.hpp"
 #include "recording_simulation.hpp"
 #include "../lib/src/recordings/stages.hpp"
 
@@ -297,5 +298,31 @@ TEST_CASE("Published layouts: the period within its uncertainty of the truth, 20
     WARN("layout " << static_cast<int>(f.layout) << " at " << f.rate_hz << " Hz, " << f.theta0_deg
                    << " deg: coverage " << coverage);
     CHECK(std::fabs(coverage - p) < tolerance);
+  }
+}
+
+TEST_CASE("A scene's recording reference declares the columns as import --columns does", "[recordings][columns][scene]") {
+  const std::string folder = std::string(PENDULUM_DATA_DIR) + "/recordings";
+  const std::string text = R"({"timing": {"recording": "tracker_headerless_xy.txt", "columns": "t:s,x:m,y:m"},
+                               "length": {"value": 0.8, "unit": "m"}})";
+  const ParsedScene s = parse_scene(text, {folder});
+  const RecordingSummary r =
+      analyse_recording(folder + "/tracker_headerless_xy.txt", RecordingFormat::automatic, {}, {}, {}, "t:s,x:m,y:m");
+  REQUIRE(s.recordings.size() == 1);
+  const auto& columns = s.recordings[0].summary.columns;
+  REQUIRE(columns.size() == 3);
+  CHECK(columns[1].role == "x");
+  CHECK(columns[1].unit == "m");
+  CHECK(columns[1].decided_by == "option");
+  CHECK(s.observations[0].period == r.swings.period.value);
+  // An unknown role is refused at the reference.
+  try {
+    parse_scene(R"({"timing": {"recording": "tracker_headerless_xy.txt", "columns": "t:s,spin,y"},
+                    "length": {"value": 0.8, "unit": "m"}})",
+                {folder});
+    FAIL("an unknown role read");
+  } catch (const InputError& e) {
+    CHECK(e.path() == "timing.recording");
+    CHECK_THAT(e.what(), Contains("expected a role"));
   }
 }

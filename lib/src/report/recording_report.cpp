@@ -177,10 +177,14 @@ std::optional<Figure> signal_figure(const RecordingRecord& r, const std::string&
   signal.y = r.trace->value;
   signal.colour = Colour::blue;
   signal.width = 1.0;
+  // Ticks closer than about 4 px merge into a band: beyond kMaxCrossingTicks
+  // on the plot's ~630 px, one tick per `every` crossings.
+  const std::size_t every = (r.crossings.size() + kMaxCrossingTicks - 1) / kMaxCrossingTicks;
+  const std::string thinned = every > 1 ? "; one tick per " + std::to_string(every) + ", so that they stay apart" : "";
   Points crossings;
-  crossings.name = "detected crossing (" + std::to_string(r.crossings.size()) + ")";
-  crossings.x = r.crossings;
-  crossings.y.assign(r.crossings.size(), 0.0);
+  crossings.name = "detected crossing (" + std::to_string(r.crossings.size()) + thinned + ")";
+  for (std::size_t i = 0; i < r.crossings.size(); i += every) crossings.x.push_back(r.crossings[i]);
+  crossings.y.assign(crossings.x.size(), 0.0);
   crossings.colour = Colour::vermillion;
   crossings.marker = Marker::tick;
   crossings.size = 6.0;
@@ -194,7 +198,8 @@ std::optional<Figure> signal_figure(const RecordingRecord& r, const std::string&
                                    std::to_string(r.trace->time.size()) + " points)"
                              : "") +
                   ", with the " + std::to_string(r.crossings.size()) +
-                  " crossings the analysis found marked by vertical ticks on the zero line.";
+                  " crossings the analysis found marked by vertical ticks on the zero line" +
+                  (every > 1 ? ", one tick per " + std::to_string(every) + " crossings" : std::string()) + ".";
   return f;
 }
 

@@ -74,7 +74,12 @@ struct RecordingRecord {
 /// was analysed from, for the signal plot (decimated here).
 RecordingRecord make_recording_record(const RecordingSummary& summary, const Recording* samples = nullptr);
 
-/// The signal with every detected crossing marked; empty without a trace.
+/// At most this many crossing ticks on the signal plot: 4 px apart or more.
+inline constexpr std::size_t kMaxCrossingTicks = 150;
+
+/// The signal with every detected crossing marked (every n-th beyond
+/// kMaxCrossingTicks, said in the legend and the description); empty without
+/// a trace.
 std::optional<Figure> signal_figure(const RecordingRecord& r, const std::string& id);
 
 /// Each swing's amplitude in degrees against time, with the decay fit, its

@@ -36,10 +36,19 @@ void refuse_output_over_inputs(const std::string& output, const std::vector<std:
   if (output.empty() || output == "-") return;
   const std::optional<FileId> out = file_id(output);
   if (!out) return;  // a new file is no input
+  // "-" is standard input, which may be the output's file too
+  // (`report - -o x.json < x.json`); a pipe or device is no file to lose.
+  const auto input_id = [](const std::string& input) -> std::optional<FileId> {
+    struct stat st;
+    if (input != "-") return file_id(input);
+    if (::fstat(STDIN_FILENO, &st) != 0 || !S_ISREG(st.st_mode)) return std::nullopt;
+    return FileId{st.st_dev, st.st_ino};
+  };
   for (const auto& input : inputs) {
-    if (input == "-" || !(file_id(input) == out)) continue;
-    throw UsageError("the output " + printable_name(output) + " is the input " + printable_name(input) +
-                     (output == input ? "" : " (the same file, through a link)") +
+    if (!(input_id(input) == out)) continue;
+    const std::string shown = input == "-" ? "standard input" : printable_name(input);
+    throw UsageError("the output " + printable_name(output) + " is the input " + shown +
+                     (output == input || input == "-" ? "" : " (the same file, through a link)") +
                      "; expected another file: writing it would replace the input");
   }
 }

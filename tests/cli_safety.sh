@@ -34,6 +34,10 @@ output_over_input)
   ln x.json hard.json
   expect 2 "the output link.json is the input x.json (the same file, through a link)" "$G" report x.json -o link.json
   expect 2 "the output x.json is the input hard.json" "$G" report hard.json -o x.json
+  # The scene on standard input, redirected from the output's file.
+  expect 2 "the output x.json is the input standard input" sh -c "'$G' report - -o x.json < x.json"
+  expect 2 "the output link.json is the input standard input" sh -c "'$G' batch - --report link.json < x.json"
+  cmp -s x.json x.before || fail "an output over standard input's file changed x.json"
   cp rec.tsv rec.before
   expect 2 "the output rec.tsv is the input rec.tsv" "$G" report rec.tsv -o rec.tsv
   # A scene's recording as the output: found once the scene names it, before

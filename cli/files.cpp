@@ -97,7 +97,13 @@ struct CleanupOnSignal {
     action.sa_handler = remove_temporary;
     sigemptyset(&action.sa_mask);
     for (const int s : kCleanupSignals) sigaddset(&action.sa_mask, s);
-    for (int k = 0; k < 3; ++k) ::sigaction(kCleanupSignals[k], &action, &previous[k]);
+    // A signal ignored (nohup's SIGHUP, SIGINT of a background job) stays
+    // ignored: the handler would end the process it was meant to spare.
+    for (int k = 0; k < 3; ++k) {
+      ::sigaction(kCleanupSignals[k], nullptr, &previous[k]);
+      const bool ignored = !(previous[k].sa_flags & SA_SIGINFO) && previous[k].sa_handler == SIG_IGN;
+      if (!ignored) ::sigaction(kCleanupSignals[k], &action, nullptr);
+    }
     temporary_exists = 1;
   }
   ~CleanupOnSignal() {

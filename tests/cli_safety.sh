@@ -99,6 +99,16 @@ interrupted_report)
     [ "$got" = $((128 + sig)) ] || fail "signal $sig during the report: exit $got, expected $((128 + sig))"
     [ "$(ls | grep -c 'class.html')" = 0 ] || fail "signal $sig left a file: $(ls)"
   done
+  # An ignored signal (nohup's SIGHUP, a background job's SIGINT) stays
+  # ignored: the report is written whole, exit 0.
+  for sig in 1 2 15; do
+    sh -c "trap '' $sig; LD_PRELOAD='$SHIM' PENDULUM_TEST_SIGNAL_ON_FSYNC=$sig ASAN_OPTIONS=verify_asan_link_order=0 \
+      exec '$G' batch x.json --report ignored.html" >out 2>err
+    got=$?
+    [ "$got" = 0 ] || fail "signal $sig, ignored, during the report: exit $got, expected 0: $(cat err)"
+    grep -q '</html>' ignored.html 2>/dev/null || fail "signal $sig, ignored: no whole report"
+    rm -f ignored.html
+  done
   # A report written over keeps its mode; a new one gets the umask's.
   echo earlier > private.html && chmod 600 private.html
   "$G" report x.json -o private.html || fail "report -o private.html"

@@ -59,7 +59,8 @@ SceneFiles scene_files(const std::string& file, bool allow_outside);
 void add_allow_outside_option(CLI::App& cmd, bool& allow_outside);
 
 /// Throws UsageError when `output` (not "-") is, by device and inode, one of
-/// `inputs`: `report x.json -o x.json`, or through a link.
+/// `inputs`: `report x.json -o x.json`, or through a link; "-" is standard
+/// input's file (`report - -o x.json < x.json`).
 void refuse_output_over_inputs(const std::string& output, const std::vector<std::string>& inputs);
 
 /// Puts /dev/null in place of a closed standard input, output or error, the

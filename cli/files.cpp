@@ -36,10 +36,19 @@ void refuse_output_over_inputs(const std::string& output, const std::vector<std:
   if (output.empty() || output == "-") return;
   const std::optional<FileId> out = file_id(output);
   if (!out) return;  // a new file is no input
+  // "-" is standard input, which may be the output's file too
+  // (`report - -o x.json < x.json`); a pipe or device is no file to lose.
+  const auto input_id = [](const std::string& input) -> std::optional<FileId> {
+    struct stat st;
+    if (input != "-") return file_id(input);
+    if (::fstat(STDIN_FILENO, &st) != 0 || !S_ISREG(st.st_mode)) return std::nullopt;
+    return FileId{st.st_dev, st.st_ino};
+  };
   for (const auto& input : inputs) {
-    if (input == "-" || !(file_id(input) == out)) continue;
-    throw UsageError("the output " + printable_name(output) + " is the input " + printable_name(input) +
-                     (output == input ? "" : " (the same file, through a link)") +
+    if (!(input_id(input) == out)) continue;
+    const std::string shown = input == "-" ? "standard input" : printable_name(input);
+    throw UsageError("the output " + printable_name(output) + " is the input " + shown +
+                     (output == input || input == "-" ? "" : " (the same file, through a link)") +
                      "; expected another file: writing it would replace the input");
   }
 }
@@ -88,7 +97,13 @@ struct CleanupOnSignal {
     action.sa_handler = remove_temporary;
     sigemptyset(&action.sa_mask);
     for (const int s : kCleanupSignals) sigaddset(&action.sa_mask, s);
-    for (int k = 0; k < 3; ++k) ::sigaction(kCleanupSignals[k], &action, &previous[k]);
+    // A signal ignored (nohup's SIGHUP, SIGINT of a background job) stays
+    // ignored: the handler would end the process it was meant to spare.
+    for (int k = 0; k < 3; ++k) {
+      ::sigaction(kCleanupSignals[k], nullptr, &previous[k]);
+      const bool ignored = !(previous[k].sa_flags & SA_SIGINFO) && previous[k].sa_handler == SIG_IGN;
+      if (!ignored) ::sigaction(kCleanupSignals[k], &action, nullptr);
+    }
     temporary_exists = 1;
   }
   ~CleanupOnSignal() {

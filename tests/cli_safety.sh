@@ -34,6 +34,10 @@ output_over_input)
   ln x.json hard.json
   expect 2 "the output link.json is the input x.json (the same file, through a link)" "$G" report x.json -o link.json
   expect 2 "the output x.json is the input hard.json" "$G" report hard.json -o x.json
+  # The scene on standard input, redirected from the output's file.
+  expect 2 "the output x.json is the input standard input" sh -c "'$G' report - -o x.json < x.json"
+  expect 2 "the output link.json is the input standard input" sh -c "'$G' batch - --report link.json < x.json"
+  cmp -s x.json x.before || fail "an output over standard input's file changed x.json"
   cp rec.tsv rec.before
   expect 2 "the output rec.tsv is the input rec.tsv" "$G" report rec.tsv -o rec.tsv
   # A scene's recording as the output: found once the scene names it, before
@@ -94,6 +98,16 @@ interrupted_report)
     got=$?
     [ "$got" = $((128 + sig)) ] || fail "signal $sig during the report: exit $got, expected $((128 + sig))"
     [ "$(ls | grep -c 'class.html')" = 0 ] || fail "signal $sig left a file: $(ls)"
+  done
+  # An ignored signal (nohup's SIGHUP, a background job's SIGINT) stays
+  # ignored: the report is written whole, exit 0.
+  for sig in 1 2 15; do
+    sh -c "trap '' $sig; LD_PRELOAD='$SHIM' PENDULUM_TEST_SIGNAL_ON_FSYNC=$sig ASAN_OPTIONS=verify_asan_link_order=0 \
+      exec '$G' batch x.json --report ignored.html" >out 2>err
+    got=$?
+    [ "$got" = 0 ] || fail "signal $sig, ignored, during the report: exit $got, expected 0: $(cat err)"
+    grep -q '</html>' ignored.html 2>/dev/null || fail "signal $sig, ignored: no whole report"
+    rm -f ignored.html
   done
   # A report written over keeps its mode; a new one gets the umask's.
   echo earlier > private.html && chmod 600 private.html

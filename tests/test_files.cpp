@@ -34,6 +34,10 @@ TEST_CASE("printable_name escapes what is not printable UTF-8 and keeps names ap
   CHECK(printable_name("new\nline") == "new\\x0aline");
   CHECK(printable_name("\x1b[2J") == "\\x1b[2J");
   CHECK(printable_name("del\x7f") == "del\\x7f");
+  // C1 controls, valid UTF-8 but read by a terminal as ESC [ is (U+009B CSI).
+  CHECK(printable_name("\xc2\x9b" "2J") == "\\xc2\\x9b" "2J");
+  CHECK(printable_name("\xc2\x80") == "\\xc2\\x80");
+  CHECK(printable_name("\xc2\xa0") == "\xc2\xa0");  // U+00A0, the first after them, kept
   // RFC 3629's ill-formed sequences: a lone continuation byte, an overlong
   // "/" (C0 AF), a surrogate (ED A0 80), beyond U+10FFFF (F4 90 80 80), a
   // sequence cut short (E2 82).

@@ -5,7 +5,7 @@
 
 namespace pendulum {
 
-std::size_t utf8_length(const std::string& s, std::size_t i) {
+std::size_t printable_utf8_length(const std::string& s, std::size_t i) {
   const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
   const unsigned char c = byte(i);
   if (c < 0x80) return 1;
@@ -14,6 +14,7 @@ std::size_t utf8_length(const std::string& s, std::size_t i) {
   const unsigned char low = c == 0xe0 ? 0xa0 : c == 0xf0 ? 0x90 : 0x80;
   const unsigned char high = c == 0xed ? 0x9f : c == 0xf4 ? 0x8f : 0xbf;
   if (i + want > s.size() || byte(i + 1) < low || byte(i + 1) > high) return 0;
+  if (c == 0xc2 && byte(i + 1) < 0xa0) return 0;  // C1 control
   for (std::size_t k = 2; k < want; ++k) {
     if ((byte(i + k) & 0xc0) != 0x80) return 0;
   }
@@ -24,7 +25,7 @@ std::string one_line(const std::string& s, std::size_t max, bool keep_utf8) {
   std::string out;
   for (std::size_t i = 0; i < s.size();) {
     const unsigned char c = static_cast<unsigned char>(s[i]);
-    const std::size_t length = c >= 0x80 && keep_utf8 ? utf8_length(s, i) : 0;
+    const std::size_t length = c >= 0x80 && keep_utf8 ? printable_utf8_length(s, i) : 0;
     if (c >= 0x20 && c < 0x7f) {
       out += static_cast<char>(c);
       ++i;

@@ -105,7 +105,7 @@ std::string printable_name(const std::string& name) {
   std::string out;
   for (std::size_t i = 0; i < name.size();) {
     const unsigned char c = static_cast<unsigned char>(name[i]);
-    const std::size_t length = c < 0x20 || c == 0x7f || c == '\\' ? 0 : utf8_length(name, i);
+    const std::size_t length = c < 0x20 || c == 0x7f || c == '\\' ? 0 : printable_utf8_length(name, i);
     if (c == '\\') {
       out += "\\\\";
     } else if (!length) {

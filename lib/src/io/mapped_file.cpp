@@ -26,6 +26,7 @@ struct Guard {
 constexpr int kGuards = 512;
 Guard guards[kGuards];
 struct sigaction previous;
+std::uintptr_t page_size;  ///< read before the handler is installed: sysconf is not async-signal-safe
 
 void on_sigbus(int signal, siginfo_t* info, void* context) {
   const auto address = reinterpret_cast<std::uintptr_t>(info->si_addr);
@@ -34,7 +35,7 @@ void on_sigbus(int signal, siginfo_t* info, void* context) {
     if (address < begin || address >= end) continue;
     // Zero pages from the missing one to the mapping's end (the file is gone
     // past it too): the read that faulted is retried and finds zeros.
-    const std::uintptr_t page = address & ~static_cast<std::uintptr_t>(::sysconf(_SC_PAGESIZE) - 1);
+    const std::uintptr_t page = address & ~(page_size - 1);
     const int saved = errno;
     void* zeros = ::mmap(reinterpret_cast<void*>(page), end - page, PROT_READ,
                          MAP_PRIVATE | MAP_ANONYMOUS | MAP_FIXED, -1, 0);
@@ -54,6 +55,7 @@ void on_sigbus(int signal, siginfo_t* info, void* context) {
 }
 
 void install_handler() {
+  page_size = static_cast<std::uintptr_t>(::sysconf(_SC_PAGESIZE));
   struct sigaction action {};
   action.sa_sigaction = on_sigbus;
   action.sa_flags = SA_SIGINFO | SA_NODEFER;
@@ -78,10 +80,14 @@ MappedFile::MappedFile(const InputFile& file) : size_(file.size()) {
     guards[slot_].begin.store(0);
     throw InputError(file.path(), std::string("cannot read the file: ") + std::strerror(errno));
   }
+  // begin before end: while begin is the placeholder 1, an end already set
+  // would make [1, end) a guarded range, and a fault anywhere below this
+  // mapping (another thread's recording) would get zero pages mapped over
+  // whatever lies between it and this mapping's end.
   Guard& g = guards[slot_];
   g.shrank.store(false);
-  g.end.store(reinterpret_cast<std::uintptr_t>(map_) + size_);
   g.begin.store(reinterpret_cast<std::uintptr_t>(map_));
+  g.end.store(reinterpret_cast<std::uintptr_t>(map_) + size_);
 }
 
 MappedFile::~MappedFile() {

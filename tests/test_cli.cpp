@@ -513,7 +513,8 @@ TEST_CASE("import: a phone recording becomes timing and decay that a scene takes
   std::vector<std::string> keys;
   const nlohmann::ordered_json in_order = nlohmann::ordered_json::parse(r.out);
   for (const auto& item : in_order.items()) keys.push_back(item.key());
-  CHECK(keys == std::vector<std::string>{"format", "periods", "period", "amplitude_range", "timing", "decay"});
+  CHECK(keys == std::vector<std::string>{"format", "periods", "period", "amplitude_range", "timing", "decay",
+                                         "glitches", "notes"});
   CHECK(out.at("format") == "phyphox");
   CHECK(out.at("periods") == 10);
   const double period = out.at("period").at("value").get<double>();

@@ -72,11 +72,20 @@ nlohmann::ordered_json summary_json(const RecordingSummary& r) {
                        {"why", c.why}});
   }
   out["columns"] = columns;
-  nlohmann::ordered_json notes = nlohmann::ordered_json::array();
-  for (const RecordingNote& n : r.notes) {
-    notes.push_back({{"line", n.line == 0 ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(n.line)}, {"note", n.text}});
+  // Stretches that do not fit the swing (swings.hpp, step 7).
+  out["glitches"] = nlohmann::ordered_json::array();
+  for (const Glitch& g : a.glitches) {
+    out["glitches"].push_back({{"from", g.start}, {"to", g.end}, {"unit", "s"}, {"worst_robust_sigmas", g.worst}});
   }
-  out["notes"] = notes;
+  // What the reader decided and dropped, then what the analysis decided or
+  // mended; each note with the line it names (null: none).
+  out["notes"] = nlohmann::ordered_json::array();
+  for (const auto* list : {&r.notes, &a.notes}) {
+    for (const RecordingNote& note : *list) {
+      out["notes"].push_back({{"line", note.line ? nlohmann::ordered_json(note.line) : nlohmann::ordered_json(nullptr)},
+                              {"text", note.text}});
+    }
+  }
   return out;
 }
 
@@ -112,6 +121,7 @@ std::string summary_table(const RecordingSummary& r) {
     put("%-22s %.3f deg at the first crossing (amplitude_range.start) -> %.3f deg at the last\n", "amplitude",
         a.start_amplitude * kDeg, a.end_amplitude * kDeg);
   }
+  for (const RecordingNote& note : a.notes) o << "note                   " << note.text << "\n";
   // The period against amplitude in ten slices of the record.
   const auto& c = a.period_curve;
   const std::size_t slices = std::min<std::size_t>(10, c.size());
@@ -161,6 +171,34 @@ void add_recording_options(CLI::App& cmd, SwingOptions& options, std::string& se
   cmd.add_option("--length-m", options.length,
                  "Photogates: pivot to bob centre (m); without it the amplitudes take g as standard gravity")
       ->check(CLI::PositiveNumber);
+  cmd.add_option_function<std::string>(
+         "--range",
+         [&options](const std::string& text) {
+           // A:B in seconds of the file's own clock.
+           const auto colon = text.find(':');
+           double a = 0.0, b = 0.0;
+           std::size_t used_a = 0, used_b = 0;
+           bool ok = colon != std::string::npos;
+           try {
+             ok = ok && (a = std::stod(text.substr(0, colon), &used_a), used_a == colon) &&
+                  (b = std::stod(text.substr(colon + 1), &used_b), used_b == text.size() - colon - 1);
+           } catch (const std::exception&) {
+             ok = false;
+           }
+           if (!ok || !std::isfinite(a) || !std::isfinite(b) || !(a < b)) {
+             throw CLI::ValidationError("--range", "got \"" + text +
+                                                       "\"; expected START:END in seconds of the recording's clock, "
+                                                       "START before END (10:200)");
+           }
+           options.range = std::make_pair(a, b);
+         },
+         "Analyse only the samples or events from START to END (s, the file's own clock): START:END, e.g. to cut "
+         "a glitch import reported")
+      ->type_name("START:END");
+  cmd.add_option("--stamps-per-period", options.stamps_per_period,
+                 "Event stamps: 1 (a timer, a photogate's pendulum mode) or 2 (one a passage); default: 2 where "
+                 "consecutive intervals alternate, else 1")
+      ->check(CLI::IsMember({1, 2}));
   cmd.add_option("--set", set,
                  "Zip exports: the CSV inside to read (Gyroscope.csv; default: the one with the best pendulum "
                  "signal, a rate, then linear acceleration, then acceleration). PASCO: the run (\"Run #2\"; "

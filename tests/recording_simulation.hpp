@@ -101,6 +101,34 @@ inline SimulatedRecording simulate_recording(const RecordingSimulation& s) {
   return out;
 }
 
+/// One stamp a period as a hand-triggered timer logs it: the turning times
+/// at one extreme (every other one, the release's side), each plus a
+/// Gaussian reaction error of sigma `jitter` (s), rounded to the timer's
+/// `quantum` (s) when it is positive.
+inline std::vector<double> timer_stamps(const SimulatedRecording& r, double jitter, double quantum,
+                                        std::uint64_t seed) {
+  NormalDeviates normal(seed);
+  std::vector<double> out;
+  for (std::size_t k = 1; k < r.turning_times.size(); k += 2) {
+    const double t = r.turning_times[k] + jitter * normal.next();
+    out.push_back(quantum > 0.0 ? std::round(t / quantum) * quantum : t);
+  }
+  return out;
+}
+
+/// A video track of the bob: x = l sin theta, y = -l cos theta (m, pivot at
+/// the origin) at the sample times, each plus Gaussian click noise `noise` (m).
+inline std::array<std::vector<double>, 2> track_xy(const SimulatedRecording& r, double length, double noise,
+                                                   std::uint64_t seed) {
+  NormalDeviates normal(seed);
+  std::array<std::vector<double>, 2> out;
+  for (double th : r.theta) {
+    out[0].push_back(length * std::sin(th) + noise * normal.next());
+    out[1].push_back(-length * std::cos(th) + noise * normal.next());
+  }
+  return out;
+}
+
 /// A phyphox Gyroscope export ("Time (s)","Gyroscope x (rad/s)",...) with
 /// phyphox's number format 1.234567890E-1; `decimal_comma` writes the
 /// semicolon-separated variant with decimal commas.

@@ -22,6 +22,7 @@
 #include <string>
 
 #include "catalogue.hpp"
+#include "cli_run.hpp"
 
 using nlohmann::json;
 using Catch::Matchers::Contains;
@@ -29,36 +30,6 @@ using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 
 namespace {
-
-struct Run {
-  int status;
-  std::string out;
-  std::string err;
-};
-
-// A new empty file in the temporary directory.
-std::string temporary_file() {
-  char name[] = "/tmp/pendulum-g-test-XXXXXX";
-  const int fd = mkstemp(name);
-  REQUIRE(fd >= 0);
-  close(fd);
-  return name;
-}
-
-// Runs pendulum-g with `args` (shell words) and captures everything.
-Run run(const std::string& args) {
-  const std::string err_file = temporary_file();
-  const std::string command = std::string(PENDULUM_G_EXE) + " " + args + " 2>" + err_file;
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe);
-  std::string out;
-  char buffer[4096];
-  while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
-  const int raw = pclose(pipe);
-  Run r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out, pendulum::test::read_text(err_file)};
-  std::remove(err_file.c_str());
-  return r;
-}
 
 const std::string kNelsonOlsson = std::string(PENDULUM_DATA_DIR) + "/nelson_olsson_1986.json";
 
@@ -516,9 +487,10 @@ TEST_CASE("import: a phone recording becomes timing and decay that a scene takes
   std::vector<std::string> keys;
   const nlohmann::ordered_json in_order = nlohmann::ordered_json::parse(r.out);
   for (const auto& item : in_order.items()) keys.push_back(item.key());
-  // The six keys first, as ever; then what the reader used and noted (issue 19).
+  // The six keys first, as ever; then what the reader used, the glitches
+  // and the notes (issue 19).
   CHECK(keys == std::vector<std::string>{"format", "periods", "period", "amplitude_range", "timing", "decay",
-                                         "columns", "notes"});
+                                         "columns", "glitches", "notes"});
   CHECK(out.at("format") == "phyphox");
   CHECK(out.at("periods") == 10);
   const double period = out.at("period").at("value").get<double>();

@@ -49,6 +49,19 @@ std::optional<double> expected_period(const ParsedScene& scene, const Observatio
                                             cheapest_amplitude_method(o.amplitude, 0.0));
 }
 
+/// Where the period came from a recording, the recording as a likely cause:
+/// its file, family and the columns analysed (issue 19: a counter read as
+/// time, the frame interval taken for a period); empty otherwise.
+std::string recording_cause(const ParsedScene& scene, const ObservationSource& source) {
+  if (!source.recording || *source.recording >= scene.recordings.size()) return {};
+  const RecordingSummary& r = scene.recordings[*source.recording].summary;
+  std::string columns;
+  for (const auto& c : r.columns) columns += (columns.empty() ? "\"" : ", \"") + c + "\"";
+  return "; or the recording " + r.file + (r.set.empty() ? "" : "/" + r.set) + " (read as " +
+         recording_format_name(r.format) + (columns.empty() ? "" : ", columns " + columns) +
+         ") timed something other than the swing: check its columns and run pendulum-g import on it";
+}
+
 /// "5.3% longer"
 std::string off_by(double ratio) {
   return format_percent(std::abs(ratio - 1.0)) + " " + (ratio > 1.0 ? "longer" : "shorter");
@@ -123,7 +136,8 @@ void check_observation(ParsedScene& scene, std::size_t k, const std::optional<do
                      "got a period of " + format_number(o.period, 5) + " s, but this pendulum swings in " +
                          format_number(swing, 5) + " s at " + standard + "; expected them within a factor of " +
                          format_number(kPeriodFactor) +
-                         (slip ? ": " + *slip : " (is a unit or oscillations_per_trial wrong?)"));
+                         (slip ? ": " + *slip : " (is a unit or oscillations_per_trial wrong?)") +
+                         recording_cause(scene, source));
   }
 
   if (scene.model == PeriodModelKind::simple_pendulum) check_first_order(app, o);  // a ball's rows
@@ -134,7 +148,8 @@ void check_observation(ParsedScene& scene, std::size_t k, const std::optional<do
                              (bob_density_slip(app) ? std::string("; check bob.mass and its unit: the bob's density is implausible")
                                                     : "; check the " + std::string(setting_key(o.setting)) +
                                                           "'s unit and oscillations_per_trial" +
-                                                          (scene.body_from_parts ? ", and the body's parts" : "")));
+                                                          (scene.body_from_parts ? ", and the body's parts" : "")) +
+                             recording_cause(scene, source));
   }
   const double degrees = o.amplitude * 180.0 / kPi;
   // A series may sweep the amplitude on purpose.

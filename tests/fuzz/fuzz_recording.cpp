@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "fuzz_checks.hpp"
 #include "pendulum/recordings/read.hpp"
@@ -29,6 +30,30 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } catch (const pendulum::InputError& e) {
       pendulum::fuzz::require_clear_message(e);
     }
+  }
+  // The same times as event stamps (a timer's log), without and with the
+  // first channel as their counter, one stamp a period or a passage.
+  try {
+    pendulum::Recording r = pendulum::parse_recording(text, "fuzz");
+    r.kind = pendulum::SignalKind::event_stamps;
+    for (const bool numbered : {false, true}) {
+      pendulum::Recording s = r;
+      s.counts = numbered && !r.channels.empty() ? r.channels[0] : std::vector<double>{};
+      s.channels.clear();
+      for (const int per_period : {0, 2}) {
+        pendulum::SwingOptions o;
+        if (per_period) o.stamps_per_period = per_period;
+        try {
+          const pendulum::SwingAnalysis a = pendulum::analyse_swings(s, "fuzz", o);
+          require(std::isfinite(a.period.value) && a.period.value > 0.0, "stamp period not finite and positive", "");
+          require(std::isfinite(a.period.uncertainty), "stamp period uncertainty not finite", "");
+        } catch (const pendulum::InputError& e) {
+          pendulum::fuzz::require_clear_message(e);
+        }
+      }
+    }
+  } catch (const pendulum::InputError& e) {
+    pendulum::fuzz::require_clear_message(e);
   }
   return 0;
 }

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "recording_simulation.hpp"
 
@@ -191,5 +192,39 @@ int main(int argc, char** argv) {
   // from the numbers (docs/recordings.md, Columns).
   write(dir + "/tracker_headerless_xy.txt",
         pendulum::test::published_csv(v, video.length, pendulum::test::PublishedLayout::headerless_txy, 0.0015, 19));
+  {  // A hand-triggered timer's log, headerless "n<TAB>t": one press a period
+     // at the same extreme, l = 2.72 m (T = 3.31 s), theta0 = 0.15 rad, 41
+     // presses, 40 ms of reaction scatter, printed to 10 ms (seed 19). The
+     // 18th press was missed: the timer's count n runs on without it.
+    RecordingSimulation s = base;
+    s.length = 2.72, s.theta0 = 0.15, s.duration = 140.0, s.rate_hz = 10.0, s.seed = 19;
+    const std::vector<double> stamps = pendulum::test::timer_stamps(simulate_recording(s), 0.040, 0.010, 19);
+    std::string out;
+    int n = 0;
+    for (std::size_t k = 0; k < 41 && k < stamps.size(); ++k) {
+      if (k == 17) continue;
+      out += std::to_string(++n) + "\t" + number("%.2f", stamps[k]) + "\n";
+    }
+    write(dir + "/timer_missed_stamp.txt", out);
+  }
+  {  // Tracker, clicked by hand at 15 frames/s for 300 s (seed 20): 1.5 mm of
+     // scatter, then from 130 s on (the last 170 s) 3 cm of scatter and one
+     // click in ten on the wrong spot, 20 cm to the side; a glitchy end.
+    RecordingSimulation s = base;
+    s.duration = 300.0, s.rate_hz = 15.0, s.noise = 0.0, s.jitter = 0.0, s.drop = 0.0, s.seed = 20;
+    const SimulatedRecording r = simulate_recording(s);
+    auto xy = pendulum::test::track_xy(r, s.length, 0.0015, 20);
+    pendulum::NormalDeviates sloppy(21);
+    std::string out = "mass A\nt\tx\ty\n";
+    for (std::size_t k = 0; k < r.t.size(); ++k) {
+      const double t = k / 15.0;
+      if (t >= 130.0) {
+        xy[0][k] += 0.03 * sloppy.next() + (k % 10 == 3 ? 0.2 : 0.0);
+        xy[1][k] += 0.03 * sloppy.next();
+      }
+      out += number("%.4f", t) + "\t" + number("%.5f", xy[0][k]) + "\t" + number("%.5f", xy[1][k]) + "\n";
+    }
+    write(dir + "/tracker_glitchy_end.txt", out);
+  }
   return 0;
 }

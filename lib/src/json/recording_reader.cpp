@@ -64,6 +64,18 @@ std::size_t RecordingReader::read(Object& o, ParsedScene& out) {
                    "got \"\"; expected each column's role and unit in file order (\"t:s,theta:deg\")");
   SwingOptions options;
   if (o.has("bob_width")) options.bob_width = quantity(o, "bob_width", Dimension::length, Range::positive).value;
+  if (o.has("range")) {
+    // {"from": A, "to": B, "unit": "s"}: the file's own clock, as import --range A:B.
+    Object range(o.at("range"), o.path("range"), "an object (the time range to analyse: from, to, unit)");
+    const double factor = unit_at(range, "unit", Dimension::time).factor;
+    const double from = finite_number(range.at("from"), [&] { return range.path("from"); }, "a time") * factor;
+    const double to = finite_number(range.at("to"), [&] { return range.path("to"); }, "a time") * factor;
+    range.finish();
+    PENDULUM_FAIL_IF(!(from < to), o.path("range"),
+                     "got from " + format_number(from) + " s to " + format_number(to) +
+                         " s; expected the start of the range before its end");
+    options.range = std::make_pair(from, to);
+  }
   if (o.has("source")) o.text("source");
   o.finish();
 
@@ -77,12 +89,12 @@ std::size_t RecordingReader::read(Object& o, ParsedScene& out) {
   }
   const auto same = [&](const Done& d) {
     return d.file == file && d.format == recording_format_name(format) && d.set == set &&
-           d.bob_width == options.bob_width && d.summary.column_spec == columns;
+           d.bob_width == options.bob_width && d.summary.column_spec == columns && d.range == options.range;
   };
   auto it = std::find_if(done_.begin(), done_.end(), same);
   if (it == done_.end()) {
     try {
-      done_.push_back({file, recording_format_name(format), set, options.bob_width,
+      done_.push_back({file, recording_format_name(format), set, options.bob_width, options.range,
                        analyse_recording(file, format, options, {}, set, columns)});
     } catch (const InputError& e) {
       throw InputError(at, e.what());  // "file: message" or "file:line:column: message"
@@ -115,6 +127,12 @@ void read_recorded_timing(Object& parent, const std::string& prefix, Observation
   out.assumptions.push_back(t.path() + ": from the recording " + r.file + " (" + recording_format_name(r.format) +
                             ", " + std::to_string(p.periods) + " full periods): one trial of all of them, the "
                             "period's uncertainty from the crossing times (docs/recordings.md)");
+  for (const Glitch& g : r.swings.glitches) {
+    out.warnings.push_back(t.path("recording") + ": " + r.file + ": from " + format_number(g.start, 6) + " s to " +
+                           format_number(g.end, 6) + " s the recording does not fit the swing (" +
+                           format_number(g.worst, 3) +
+                           " robust sigmas): its period's uncertainty allows for it; a \"range\" cuts it");
+  }
 }
 
 DecayData read_recorded_decay(Object& decay, ParsedScene& out, RecordingReader& recordings) {

@@ -33,6 +33,7 @@ class RecordingReader {
   struct Done {
     std::string file, format, set;
     std::optional<double> bob_width;
+    std::optional<std::pair<double, double>> range;
     RecordingSummary summary;
   };
   std::vector<Done> done_;

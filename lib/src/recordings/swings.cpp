@@ -11,6 +11,7 @@
 #include "pendulum/input_error.hpp"
 #include "pendulum/swing_energy.hpp"
 #include "huge_pages.hpp"
+#include "../text.hpp"
 
 namespace pendulum {
 namespace {
@@ -208,6 +209,46 @@ Crossing line_zero(const std::vector<double>& t, const std::vector<double>& s, s
   return {tm - sm / slope, slope, static_cast<int>(j - i + 1)};
 }
 
+/// The extremum of a sparse half swing (fewer than 7 samples in its middle
+/// third: video at 5-20 frames/s) between crossings at ta and tb: the
+/// least-squares a + b cos phi + c sin phi + d cos 3phi + e sin 3phi through
+/// its samples strictly between ta and tb, phi = pi (t - t_mid)/(tb - ta) in
+/// (-pi/2, pi/2): a swing is a cos phi, its finite amplitude adds the third
+/// harmonic (theta0^2/16 of it, Kelley Eq. 12), damping and an offset c sin
+/// phi and a. At least 7 samples (5 parameters and two to spare); maximised
+/// by Newton's method from phi = 0 within +-pi/3. Returns the time and |value|.
+std::pair<double, double> sparse_peak(const std::vector<double>& t, const std::vector<double>& s, std::size_t i,
+                                      double ta, double tb) {
+  const double mid = (ta + tb) / 2.0, scale = kPi / (tb - ta);
+  Eigen::Matrix<double, 5, 5> ata = Eigen::Matrix<double, 5, 5>::Zero();
+  Eigen::Matrix<double, 5, 1> atb = Eigen::Matrix<double, 5, 1>::Zero();
+  auto basis = [](double phi) {
+    return Eigen::Matrix<double, 5, 1>(1.0, std::cos(phi), std::sin(phi), std::cos(3.0 * phi), std::sin(3.0 * phi));
+  };
+  int used = 0;
+  // From the window's first sample to the last before tb (the caller's j
+  // stops at the next crossing's window, a sample or two short of tb).
+  for (std::size_t k = i; k < t.size() && t[k] < tb; ++k) {
+    if (!(t[k] > ta)) continue;
+    const Eigen::Matrix<double, 5, 1> b = basis((t[k] - mid) * scale);
+    ata += b * b.transpose(), atb += b * s[k];
+    ++used;
+  }
+  if (used < 7) return {mid, kNaN};  // too few samples for a peak
+  const Eigen::Matrix<double, 5, 1> c = ata.ldlt().solve(atb);
+  double phi = 0.0;
+  for (int iter = 0; iter < 8; ++iter) {
+    const double d1 = -c[1] * std::sin(phi) + c[2] * std::cos(phi) - 3.0 * c[3] * std::sin(3.0 * phi) +
+                      3.0 * c[4] * std::cos(3.0 * phi);
+    const double d2 = -c[1] * std::cos(phi) - c[2] * std::sin(phi) - 9.0 * c[3] * std::cos(3.0 * phi) -
+                      9.0 * c[4] * std::sin(3.0 * phi);
+    if (d2 == 0.0) break;
+    phi = std::clamp(phi - d1 / d2, -kPi / 3.0, kPi / 3.0);
+  }
+  const double value = basis(phi).dot(c);
+  return {mid + phi / scale, std::isfinite(value) ? std::fabs(value) : kNaN};
+}
+
 /// The extremum of a half swing between crossings at ta and tb: a quartic
 /// least-squares polynomial through the samples within the middle third of
 /// [ta, tb] (+-60 deg of phase about its centre, where the swing is
@@ -230,7 +271,7 @@ std::pair<double, double> peak(const std::vector<double>& t, const std::vector<d
     for (int q = 5; q < 9; ++q, power *= u) pu[q] += power;
     ++used;
   }
-  if (used < 7) return {mid, kNaN};  // too few samples for a peak
+  if (used < 7) return sparse_peak(t, s, i, ta, tb);
   Eigen::Matrix<double, 5, 5> ata;
   for (int a = 0; a < 5; ++a) {
     for (int b = 0; b < 5; ++b) ata(a, b) = pu[a + b];
@@ -333,8 +374,32 @@ std::vector<Crossing> gate_passages(const Recording& r, std::vector<double>& dur
 
 }  // namespace
 
+namespace {
+
+/// The least standard uncertainty (per unit of x) of a slope fitted to
+/// times at x on a clock of resolution q (s): each time rounded to the
+/// clock's step carries a uniform error of variance q^2/12, and the straight
+/// line's slope then has variance q^2/12 / sum (x_i - mean x)^2. A fit with
+/// more terms only adds to it: a floor whatever the model.
+double resolution_floor(const std::vector<double>& x, double q) {
+  if (!(q > 0.0) || x.size() < 2) return 0.0;
+  double mean = 0.0, sxx = 0.0;
+  for (double v : x) mean += v / x.size();
+  for (double v : x) sxx += (v - mean) * (v - mean);
+  return q / std::sqrt(12.0) / std::sqrt(sxx);
+}
+
+/// No crossing carries the fit: a weight is at most this many times the
+/// median. A swing decaying from 81 deg to 17 deg spreads its crossings'
+/// weights (slope squared) over a factor (81/17)^2 = 23 end to end, 4 about
+/// the median; a spurious crossing on a one-frame jump of a track has a
+/// slope hundreds of times the swing's and, uncapped, took the fit with it.
+constexpr double kWeightCap = 25.0;
+
+}  // namespace
+
 PeriodEstimate fit_crossing_times(const std::vector<Crossing>& c, int per_period,
-                                  const std::vector<double>& amplitudes) {
+                                  const std::vector<double>& amplitudes, double quantum) {
   const std::size_t n = c.size();
   // The index: i, or the amplitude-weighted u_{i+1} = u_i + 1 + DeltaT/T0(theta_i)
   // (Eq. 8, exact), in which the crossing times of a decaying swing lie on a line.
@@ -356,6 +421,12 @@ PeriodEstimate fit_crossing_times(const std::vector<Crossing>& c, int per_period
     double mean = 0.0;
     for (std::size_t i = 0; i < n; ++i) mean += (w[i] = c[i].slope * c[i].slope * c[i].samples);
     for (double& x : w) x /= mean / n;
+    std::vector<double> sorted = w;
+    std::nth_element(sorted.begin(), sorted.begin() + n / 2, sorted.end());
+    const double cap = kWeightCap * sorted[n / 2];
+    if (cap > 0.0) {
+      for (double& x : w) x = std::min(x, cap);
+    }
   }
   const double t0 = c[0].time;
   auto row = [&](std::size_t i) {
@@ -395,6 +466,10 @@ PeriodEstimate fit_crossing_times(const std::vector<Crossing>& c, int per_period
   const double scale = per_period * (u[n - 1] - u[0]) / (n - 1.0);
   p.value = scale * g.dot(beta);
   p.uncertainty = scale * std::sqrt(s2 * g.dot(inv * g) * p.inflation);
+  // Each crossing's time is taken to carry the clock's whole q^2/12 (a line
+  // through m samples averages some of it: an upper bound, and a floor).
+  p.resolution_floor = scale * resolution_floor(u, quantum);
+  p.uncertainty = std::max(p.uncertainty, p.resolution_floor);
   p.residual_rms = std::sqrt(s2);
   p.periods = static_cast<int>((n - 1) / per_period);
   return p;
@@ -411,14 +486,463 @@ void require_below_top(double sine, const std::string& file) {
   }
 }
 
+/// "12.3456 s"
+std::string seconds(double t, int digits = 6) { return format_number(t, digits) + " s"; }
+
+double median_of(std::vector<double> v) {
+  if (v.empty()) return kNaN;
+  auto mid = v.begin() + v.size() / 2;
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
+
+/// The coarsest decimal step 10^-k s (k = 0..9) of which every time is a
+/// multiple: the resolution the file printed its clock to (a timer's 1 ms, a
+/// photogate's 10 us); 0 when there is none (times to full double precision,
+/// as a simulation's). At most 4096 times, evenly spread, are looked at.
+double printed_resolution(const std::vector<double>& t) {
+  if (t.empty()) return 0.0;
+  const std::size_t stride = std::max<std::size_t>(1, t.size() >> 12);
+  for (int k = 0; k <= 9; ++k) {
+    const double step = std::pow(10.0, -k);
+    bool all = true;
+    for (std::size_t i = 0; i < t.size() && all; i += stride) {
+      const double x = t[i] / step;
+      all = std::fabs(x - std::round(x)) <= 1e-9 + 8.0 * std::numeric_limits<double>::epsilon() * std::fabs(x);
+    }
+    if (all) return step;
+  }
+  return 0.0;
+}
+
+/// The samples or events of `r` with time in [range.first, range.second].
+Recording restricted(const Recording& r, std::pair<double, double> range, const std::string& file) {
+  const auto [a, b] = range;
+  if (!(a < b) || !std::isfinite(a) || !std::isfinite(b)) {
+    throw InputError(file, "got the range " + format_number(a) + ":" + format_number(b) +
+                               " s; expected two times, the first before the second (--range A:B, a scene's "
+                               "\"range\")");
+  }
+  const std::size_t first = std::lower_bound(r.time.begin(), r.time.end(), a) - r.time.begin();
+  const std::size_t last = std::upper_bound(r.time.begin(), r.time.end(), b) - r.time.begin();
+  if (first >= last) {
+    throw InputError(file, "no sample in the range " + format_number(a) + ":" + format_number(b) +
+                               " s; expected a range within the recording's " +
+                               (r.time.empty() ? std::string("(empty)")
+                                               : format_number(r.time.front()) + ":" + format_number(r.time.back())) +
+                               " s");
+  }
+  Recording out;
+  out.format = r.format, out.kind = r.kind, out.channel_names = r.channel_names;
+  out.time_quantum = r.time_quantum, out.notes = r.notes, out.rows = r.rows, out.dropped = r.dropped, out.set = r.set;
+  out.time.assign(r.time.begin() + first, r.time.begin() + last);
+  for (const auto& c : r.channels) out.channels.emplace_back(c.begin() + first, c.begin() + last);
+  if (r.counts.size() == r.time.size()) out.counts.assign(r.counts.begin() + first, r.counts.begin() + last);
+  return out;
+}
+
+/// Step 7: stretches where the intervals between consecutive crossings (or
+/// stamps, per count: `index`) leave the swing. Each interval, per unit of
+/// index, is compared with the median of its own direction (index modulo
+/// `groups`) over its 10 neighbours of that direction on either side, in
+/// units of its own noise (sqrt(1/w_a + 1/w_b), w the crossings' weights)
+/// relative to the median's) and of the robust sigma of all (1.4826 median
+/// |e|, at least the q/sqrt(6) of two times on a clock of resolution q, and
+/// 1e-9 of the interval). Beyond 6 robust sigmas is an outlier (1 in 5e8
+/// for normal noise); outliers 4 intervals apart or less are one stretch,
+/// stretches less than 10 periods apart are one, and one within 10 periods
+/// of the record's start or end reaches it (a glitchy end).
+std::vector<Glitch> find_glitches(const std::vector<Crossing>& c, const std::vector<long>& index, int groups,
+                                  const std::vector<double>& weight, double quantum) {
+  constexpr double kOutlier = 6.0;
+  constexpr std::size_t kJoin = 4, kNeighbours = 10;
+  const std::size_t n = c.size();
+  std::vector<Glitch> out;
+  if (n < 8) return out;
+  std::vector<double> d(n - 1), sd(n - 1);
+  std::vector<int> group(n - 1);
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    const double steps = static_cast<double>(index[i + 1] - index[i]);
+    d[i] = (c[i + 1].time - c[i].time) / steps;
+    sd[i] = std::sqrt(1.0 / weight[i] + 1.0 / weight[i + 1]) / steps;
+    group[i] = static_cast<int>(index[i] % groups);
+  }
+  std::vector<double> e(n - 1);
+  std::vector<double> window;
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    window.clear();
+    std::size_t below = 0, above = 0;
+    for (std::size_t k = i; k-- > 0 && below < kNeighbours;) {
+      if (group[k] == group[i]) window.push_back(d[k]), ++below;
+    }
+    for (std::size_t k = i; k + 1 < n && above <= kNeighbours; ++k) {
+      if (group[k] == group[i]) window.push_back(d[k]), ++above;
+    }
+    e[i] = d[i] - median_of(window);
+  }
+  const double typical_sd = median_of(sd);
+  if (typical_sd > 0.0 && std::isfinite(typical_sd)) {
+    for (std::size_t i = 0; i < e.size(); ++i) e[i] *= typical_sd / sd[i];
+  }
+  std::vector<double> abs_e(e.size());
+  std::transform(e.begin(), e.end(), abs_e.begin(), [](double x) { return std::fabs(x); });
+  const double sigma = std::max({1.4826 * median_of(abs_e), quantum / std::sqrt(6.0), 1e-9 * std::fabs(median_of(d))});
+  if (!(sigma > 0.0)) return out;
+  std::optional<std::size_t> first, last;
+  auto close = [&] {
+    Glitch g;
+    g.start = *first <= kJoin ? c.front().time : c[*first].time;
+    g.end = *last + 1 + kJoin >= n - 1 ? c.back().time : c[*last + 1].time;
+    for (std::size_t k = *first; k <= *last; ++k) g.worst = std::max(g.worst, std::fabs(e[k]) / sigma);
+    out.push_back(g);
+  };
+  for (std::size_t i = 0; i + 1 < n; ++i) {
+    if (!(std::fabs(e[i]) > kOutlier * sigma)) continue;
+    if (first && i - *last > kJoin) close(), first.reset();
+    if (!first) first = i;
+    last = i;
+  }
+  if (first) close();
+  // Stretches less than 10 periods apart are one (a glitchy end is many
+  // outliers among good-looking intervals), and one that comes within 10
+  // periods of an end reaches it.
+  const double reach = 10.0 * groups * median_of(d);
+  std::vector<Glitch> merged;
+  for (Glitch g : out) {
+    if (g.start - c.front().time < reach) g.start = c.front().time;
+    if (c.back().time - g.end < reach) g.end = c.back().time;
+    if (!merged.empty() && g.start - merged.back().end < reach) {
+      merged.back().end = g.end, merged.back().worst = std::max(merged.back().worst, g.worst);
+    } else {
+      merged.push_back(g);
+    }
+  }
+  return merged;
+}
+
+/// The longest run of consecutive entries of `c` outside every glitch:
+/// [first, last], indices into c. An interval is inside a glitch when both
+/// its ends are within the glitch's range.
+std::pair<std::size_t, std::size_t> clean_stretch(const std::vector<Crossing>& c, const std::vector<Glitch>& glitches) {
+  std::pair<std::size_t, std::size_t> best{0, 0};
+  auto consider = [&](std::size_t a, std::size_t b) {
+    if (b - a > best.second - best.first) best = {a, b};
+  };
+  std::size_t start = 0;
+  for (std::size_t i = 0; i + 1 < c.size(); ++i) {
+    const bool bad = std::any_of(glitches.begin(), glitches.end(), [&](const Glitch& g) {
+      return c[i].time >= g.start && c[i + 1].time <= g.end;
+    });
+    if (bad) consider(start, i), start = i + 1;
+  }
+  consider(start, c.size() - 1);
+  return best;
+}
+
+/// Notes the glitches and, where the longest clean stretch's period (from
+/// `refit` on its first and last index, when it holds 3 periods) differs
+/// from the whole record's by more than the latter's uncertainty, adds the
+/// difference to it in quadrature: the record then cannot say which is right.
+template <class Refit>
+void report_glitches(SwingAnalysis& out, const Refit& refit, const char* what) {
+  if (out.glitches.empty()) return;
+  for (const Glitch& g : out.glitches) {
+    out.notes.push_back({0, std::string("from ") + seconds(g.start) + " to " + seconds(g.end) + " the " + what +
+                                " do not fit the swing (an interval " + format_number(g.worst, 3) +
+                                " robust sigmas off its neighbours': a jump, a gap, lost tracking or a glitchy end)"});
+  }
+  const auto [first, last] = clean_stretch(out.crossings, out.glitches);
+  const double a = out.crossings[first].time, b = out.crossings[last].time;
+  if (last < first + 7) {
+    out.notes.push_back({0, "no stretch of 7 crossings is free of glitches: the period is the whole record's"});
+    return;
+  }
+  const PeriodEstimate clean = refit(first, last);
+  if (clean.periods < 3 || !std::isfinite(clean.value)) return;
+  const double shift = out.period.value - clean.value;
+  std::string text = "the longest stretch without them, " + format_number(a, 6) + ":" + format_number(b, 6) +
+                     " s (--range, a scene's \"range\"), gives " + seconds(clean.value, 8) + " +- " +
+                     seconds(clean.uncertainty, 2);
+  if (std::fabs(shift) > out.period.uncertainty) {
+    text += ", " + format_number(std::fabs(shift) / out.period.uncertainty, 2) +
+            " sigmas from the whole record's; the difference joins the period's uncertainty";
+    out.period.uncertainty = std::hypot(out.period.uncertainty, shift);
+  }
+  out.notes.push_back({0, text});
+}
+
+/// A note where the clock's resolution, not the scatter, sets the period's uncertainty.
+void note_floor(SwingAnalysis& out, double quantum) {
+  if (out.period.resolution_floor > 0.0 && out.period.resolution_floor >= 0.9 * out.period.uncertainty) {
+    out.notes.push_back({0, "the period's uncertainty is (nearly) the least the clock's resolution of " +
+                                seconds(quantum, 3) + " allows (q/sqrt(12) a time): the scatter gave less"});
+  }
+}
+
+/// Step 5: the count of each stamp, in stamps, from the intervals. e[p] is
+/// the interval expected after a stamp of count parity p (both the median
+/// interval for one stamp a period; the medians of alternate intervals for
+/// one a passage, where a gate off the lowest point makes them differ). A
+/// stamp whose time after the last one kept is within a quarter of a mean
+/// interval of a whole number s >= 1 of intervals advances the count by s
+/// (s - 1 stamps missed); any other is dropped (a doubled, a repeated or a
+/// stray stamp), both with a note naming its data row.
+struct MendedStamps {
+  std::vector<Crossing> stamps;
+  std::vector<long> count;
+};
+
+/// More stamps missed in a row than this is no timer log of one pendulum.
+constexpr double kMaxMissed = 1000.0;
+
+MendedStamps mend_stamps(const Recording& r, const std::array<double, 2>& e, const std::string& file,
+                         std::vector<RecordingNote>& notes) {
+  MendedStamps m;
+  const double unit = (e[0] + e[1]) / 2.0;
+  const bool numbered = r.counts.size() == r.time.size();
+  auto row = [&](std::size_t k) {
+    return "the stamp at " + seconds(r.time[k]) + " (data row " + std::to_string(k + 1) +
+           (numbered ? ", numbered " + format_number(r.counts[k]) + " in the file" : std::string()) + ")";
+  };
+  m.stamps.push_back({r.time[0], 0.0, 0});
+  m.count.push_back(0);
+  std::size_t kept = 0;
+  for (std::size_t k = 1; k < r.time.size(); ++k) {
+    const double x = r.time[k] - r.time[kept];
+    if (!(x / unit < kMaxMissed)) {
+      throw InputError(file, row(k) + " comes " + format_number(x / unit, 3) +
+                                 " intervals after the one before; expected the log of one swinging pendulum "
+                                 "(--range cuts a recording in two)");
+    }
+    // s intervals after a stamp of parity p take (s/2) (e0 + e1), plus e_p for odd s.
+    const int parity = static_cast<int>(m.count.back() % 2);
+    auto after = [&](long s) { return static_cast<double>(s / 2) * (e[0] + e[1]) + (s % 2 ? e[parity] : 0.0); };
+    long best = 1;
+    double dev = std::fabs(x - after(1));
+    const long guess = static_cast<long>(x / unit);
+    for (long s = std::max(2L, guess - 2); s <= guess + 2; ++s) {
+      if (std::fabs(x - after(s)) < dev) dev = std::fabs(x - after(s)), best = s;
+    }
+    if (dev > 0.25 * unit) {
+      notes.push_back({0, row(k) + " is dropped: " + format_number(x / unit, 3) +
+                              " intervals after the one before, off the grid of whole intervals (a doubled, "
+                              "repeated or stray stamp)"});
+      continue;
+    }
+    const long count = m.count.back() + best;
+    std::string mended;
+    if (numbered && r.counts[k] - r.counts[kept] != best) {
+      mended = "; its count, " + format_number(r.counts[k]) + " in the file, is mended to " +
+               format_number(r.counts[kept] + best);
+    }
+    if (best > 1) {
+      notes.push_back({0, row(k) + " comes " + format_number(x / unit, 3) + " intervals after the one before: " +
+                              std::to_string(best - 1) + (best == 2 ? " stamp" : " stamps") +
+                              " missed, and the count advanced by " + std::to_string(best) + mended});
+    } else if (!mended.empty()) {
+      notes.push_back({0, row(k) + " follows the one before by one interval" + mended});
+    }
+    m.stamps.push_back({r.time[k], 0.0, 0});
+    m.count.push_back(count);
+    kept = k;
+  }
+  return m;
+}
+
+/// The line through the stamps against their counts by least squares:
+/// t = a + b x + c x^2 (+ h x^3 from 12 stamps on), x = n - (n_first +
+/// n_last)/2: the period drifts with the amplitude, and a photogate times
+/// that drift to a few us. About the mid-range the quadratic leaves the mean
+/// period, the rise from the first stamp to the last per period, as it is:
+/// b + h X^2, X = (n_last - n_first)/2. For one stamp a passage (-1)^n (d +
+/// e x + f x^2): a gate off the lowest point splits a period into two
+/// unequal intervals, and the split drifts as the swing decays (the time
+/// from the bottom to the beam goes as arcsin(theta_gate/theta0)). The
+/// covariance is scaled by the residual variance and, for positively
+/// correlated residuals, the AR(1) factor, as the crossing fit's; never
+/// below the floor of a clock of resolution `quantum` (step 6).
+PeriodEstimate fit_stamps(const MendedStamps& m, int per_period, double quantum) {
+  const std::size_t n = m.stamps.size();
+  const bool cubic = n >= 12;
+  const int q = (per_period == 2 ? 6 : 3) + (cubic ? 1 : 0);
+  const double centre = (static_cast<double>(m.count.front()) + static_cast<double>(m.count.back())) / 2.0;
+  const double half_range = (static_cast<double>(m.count.back()) - static_cast<double>(m.count.front())) / 2.0;
+  Eigen::MatrixXd xtx = Eigen::MatrixXd::Zero(q, q);
+  Eigen::VectorXd xtt = Eigen::VectorXd::Zero(q);
+  const double t0 = m.stamps[0].time;
+  auto row = [&](std::size_t i) {
+    const double x = static_cast<double>(m.count[i]) - centre;
+    Eigen::VectorXd r(q);
+    r[0] = 1.0, r[1] = x, r[2] = x * x;
+    if (per_period == 2) r[3] = m.count[i] % 2 ? -1.0 : 1.0, r[4] = r[3] * x, r[5] = r[3] * x * x;
+    if (cubic) r[q - 1] = x * x * x;
+    return r;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::VectorXd r = row(i);
+    xtx += r * r.transpose();
+    xtt += r * (m.stamps[i].time - t0);
+  }
+  const Eigen::MatrixXd inv = xtx.inverse();
+  const Eigen::VectorXd beta = inv * xtt;
+  std::vector<double> z(n);
+  double ssr = 0.0, lag = 0.0;
+  for (std::size_t i = 0; i < n; ++i) z[i] = m.stamps[i].time - t0 - row(i).dot(beta), ssr += z[i] * z[i];
+  for (std::size_t i = 0; i + 1 < n; ++i) lag += z[i] * z[i + 1];
+  PeriodEstimate p;
+  p.lag1_correlation = ssr > 0.0 ? lag / ssr : 0.0;
+  const double rho = std::min(p.lag1_correlation, 0.95);
+  p.inflation = rho > 0.0 ? (1.0 + rho) / (1.0 - rho) : 1.0;
+  const double s2 = ssr / (static_cast<double>(n) - q);
+  // The mean period over the stamps, as the crossing fit's: b + (cubic) X^2 times its coefficient.
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(q);
+  g[1] = per_period;
+  if (cubic) g[q - 1] = per_period * half_range * half_range;
+  p.value = g.dot(beta);
+  p.uncertainty = std::sqrt(s2 * g.dot(inv * g) * p.inflation);
+  std::vector<double> counts(m.count.begin(), m.count.end());
+  p.resolution_floor = per_period * resolution_floor(counts, quantum);
+  p.uncertainty = std::max(p.uncertainty, p.resolution_floor);
+  p.residual_rms = std::sqrt(s2);
+  p.periods = static_cast<int>((m.count.back() - m.count.front()) / per_period);
+  return p;
+}
+
+/// Whether consecutive stamp intervals alternate: the medians of the even
+/// and the odd ones differ by more than 5 standard errors of that
+/// difference (a median's is 1.2533 sigma/sqrt(n/2) for normal scatter).
+bool intervals_alternate(const std::vector<double>& d) {
+  std::vector<double> even, odd;
+  for (std::size_t i = 0; i < d.size(); ++i) (i % 2 ? odd : even).push_back(d[i]);
+  if (even.size() < 3 || odd.size() < 3) return false;
+  const double m0 = median_of(even), m1 = median_of(odd);
+  std::vector<double> dev(d.size());
+  for (std::size_t i = 0; i < d.size(); ++i) dev[i] = std::fabs(d[i] - (i % 2 ? m1 : m0));
+  const double sigma = 1.4826 * median_of(dev);
+  return std::fabs(m0 - m1) > 5.0 * 1.2533 * sigma * std::sqrt(2.0 / even.size() + 2.0 / odd.size()) &&
+         std::fabs(m0 - m1) > 1e-9 * (m0 + m1);
+}
+
+/// Steps 5 to 7 for event stamps.
+SwingAnalysis analyse_stamps(const Recording& r, const std::string& file, const SwingOptions& options,
+                             double quantum) {
+  if (r.time.size() < 6) {
+    throw InputError(file, std::to_string(r.time.size()) + " event stamps; expected at least 6 (three periods)");
+  }
+  std::vector<double> d(r.time.size() - 1);
+  for (std::size_t i = 0; i + 1 < r.time.size(); ++i) d[i] = r.time[i + 1] - r.time[i];
+  SwingAnalysis out;
+  int per_period = 1;
+  std::array<double, 2> e{};
+  if (options.stamps_per_period) {
+    per_period = *options.stamps_per_period;
+    if (per_period != 1 && per_period != 2) {
+      throw InputError(file, "got " + std::to_string(per_period) +
+                                 " stamps a period; expected 1 (a timer, a photogate's pendulum mode) or 2 (one "
+                                 "a passage)");
+    }
+  } else {
+    per_period = intervals_alternate(d) ? 2 : 1;
+    out.notes.push_back({0, per_period == 2 ? "one stamp a passage: consecutive intervals alternate (a gate off the "
+                                              "lowest point); --stamps-per-period says otherwise"
+                                            : "one stamp a period: the intervals do not alternate; --stamps-per-period "
+                                              "2 for one a passage"});
+  }
+  if (per_period == 2) {
+    std::vector<double> even, odd;
+    for (std::size_t i = 0; i < d.size(); ++i) (i % 2 ? odd : even).push_back(d[i]);
+    e = {median_of(even), median_of(odd)};
+  } else {
+    e[0] = e[1] = median_of(d);
+  }
+  if (!(e[0] > 0.0 && e[1] > 0.0)) {
+    throw InputError(file, "the event stamps' median interval is 0 s; expected stamps of a swinging pendulum");
+  }
+  const MendedStamps m = mend_stamps(r, e, file, out.notes);
+  out.crossings = m.stamps;
+  out.crossings_per_period = per_period;
+  const long span = m.count.back() - m.count.front();
+  if (m.stamps.size() < 6 || span < 3 * per_period) {
+    throw InputError(file, "found " + std::to_string(m.stamps.size()) + " usable stamps (" +
+                               std::to_string(span / per_period) + " full periods); expected at least three periods");
+  }
+  out.period = fit_stamps(m, per_period, quantum);
+  if (!(out.period.value > 0.0) || !std::isfinite(out.period.uncertainty)) {
+    throw InputError(file, "no regular oscillation: the stamps give no period");
+  }
+  out.glitches = find_glitches(m.stamps, m.count, per_period, std::vector<double>(m.stamps.size(), 1.0), quantum);
+  report_glitches(out, [&](std::size_t a, std::size_t b) {
+    MendedStamps part;
+    part.stamps.assign(m.stamps.begin() + a, m.stamps.begin() + b + 1);
+    part.count.assign(m.count.begin() + a, m.count.begin() + b + 1);
+    return fit_stamps(part, per_period, quantum);
+  }, "stamps");
+  note_floor(out, quantum);
+  const double origin = m.stamps[0].time;
+  for (std::size_t i = 0; i + 1 < m.stamps.size(); ++i) {
+    out.swings.push_back({m.stamps[i].time, m.stamps[i + 1].time, (m.stamps[i].time + m.stamps[i + 1].time) / 2.0, kNaN});
+    const std::size_t j = i + per_period;
+    if (j < m.stamps.size() && m.count[j] - m.count[i] == per_period) {
+      out.period_curve.push_back({(m.stamps[i].time + m.stamps[j].time) / 2.0 - origin, kNaN,
+                                  m.stamps[j].time - m.stamps[i].time});
+    }
+  }
+  out.small_amplitude_period = kNaN;
+  out.start_amplitude = out.end_amplitude = out.start_amplitude_uncertainty = kNaN;
+  out.notes.push_back({0, "no amplitudes: event stamps time the swing but do not measure it (the scene's amplitude "
+                          "is needed)"});
+  return out;
+}
+
+/// Why a recording gave no amplitudes, for its note.
+std::string no_amplitude_reason(const Recording& r, const Signal& sig, const SwingOptions& options) {
+  switch (r.kind) {
+    case SignalKind::blocking_times: return "a list of blocking times holds no blocking durations";
+    case SignalKind::gate_states:
+      if (!options.bob_width) return "a photogate's need the bob's width across the beam (--bob-width-m, a scene's bob_width)";
+      break;
+    case SignalKind::position:
+      if (!sig.has_amplitude) return "the track is too straight for the centre of its circle (the pivot)";
+      break;
+    case SignalKind::event_stamps: return "event stamps time the swing but do not measure it";
+    default: break;
+  }
+  return "fewer than 8 swings, or fewer than half of them, gave a peak (a half swing needs 7 samples for one)";
+}
+
 }  // namespace
 
 SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const SwingOptions& options) {
+  if (options.range) {
+    SwingOptions whole = options;
+    whole.range.reset();
+    const Recording cut = restricted(r, *options.range, file);
+    SwingAnalysis out = analyse_swings(cut, file, whole);
+    out.notes.insert(out.notes.begin(),
+                     {0, "analysed from " + seconds(options.range->first) + " to " + seconds(options.range->second) +
+                             " (--range, a scene's \"range\"): " + std::to_string(cut.time.size()) + " of " +
+                             std::to_string(r.time.size()) + (r.kind == SignalKind::angular_rate ||
+                                                                      r.kind == SignalKind::acceleration ||
+                                                                      r.kind == SignalKind::linear_acceleration ||
+                                                                      r.kind == SignalKind::angle ||
+                                                                      r.kind == SignalKind::position
+                                                                  ? " samples"
+                                                                  : " events")});
+    return out;
+  }
+  // The clock's resolution (step 6): the reader's quantum where stamps
+  // repeat; for events (stamps, gate changes), also the decimals the file
+  // printed its times with. Not for samples: a regular clock printed to its
+  // own step (50 Hz to 0.01 s) is exact, and crossings interpolated between
+  // samples are legitimately finer than the step.
+  const bool events = r.kind == SignalKind::gate_states || r.kind == SignalKind::blocking_times ||
+                      r.kind == SignalKind::event_stamps;
+  const double quantum = std::max(r.time_quantum, events ? printed_resolution(r.time) : 0.0);
+  if (r.kind == SignalKind::event_stamps) return analyse_stamps(r, file, options, quantum);
   SwingAnalysis out;
   std::vector<std::size_t> at;  // first sample of each crossing's window
   std::vector<double> durations;
   Signal sig;
-  const bool events = r.kind == SignalKind::gate_states || r.kind == SignalKind::blocking_times;
   if (events) {
     out.crossings = gate_passages(r, durations);
   } else {
@@ -442,7 +966,7 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
     throw InputError(file, "found " + std::to_string(out.crossings.size()) + " crossings (" +
                                std::to_string(periods) + " full periods); expected at least three swings");
   }
-  out.period = fit_crossing_times(out.crossings, cpp);
+  out.period = fit_crossing_times(out.crossings, cpp, {}, quantum);
   if (!(out.period.value > 0.0) || !std::isfinite(out.period.uncertainty)) {
     throw InputError(file, "no regular oscillation: the crossing times give no period");
   }
@@ -550,6 +1074,7 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
     if (std::isfinite(theta[i]) && theta[i] > 0.0) tk.push_back(out.swings[i].peak_time), lk.push_back(std::log(theta[i]));
   }
   out.start_amplitude = out.end_amplitude = out.start_amplitude_uncertainty = kNaN;
+  std::vector<double> index_amplitudes;  // the smooth amplitude the period's index took, one per swing
   if (tk.size() >= 8 && tk.size() * 2 >= theta.size() / (cpp / 2)) {
     const double mid = (tk.front() + tk.back()) / 2.0, half = (tk.back() - tk.front()) / 2.0;
     // The order grows with the record: the value at the ends of a fit of
@@ -586,9 +1111,11 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
       auto period_with = [&](const Eigen::VectorXd& coef) {
         std::vector<double> smooth(theta.size());
         for (std::size_t i = 0; i < theta.size(); ++i) smooth[i] = smooth_with(coef, out.swings[i].peak_time);
-        return fit_crossing_times(out.crossings, cpp, smooth);
+        return fit_crossing_times(out.crossings, cpp, smooth, quantum);
       };
       out.period = period_with(c);
+      index_amplitudes.resize(theta.size());
+      for (std::size_t i = 0; i < theta.size(); ++i) index_amplitudes[i] = smooth_with(c, out.swings[i].peak_time);
       // The smooth amplitude's own uncertainty moves the index, hence the
       // period: g^T C g with g the period's change per coefficient (a step of
       // one standard uncertainty each; the dependence is linear at that scale).
@@ -600,7 +1127,8 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
         g[j] = step > 0.0 ? (period_with(shifted).value - out.period.value) / step : 0.0;
       }
       out.period.amplitude_uncertainty = std::sqrt(std::max(0.0, g.dot(cov * g)));
-      out.period.uncertainty = std::hypot(out.period.uncertainty, out.period.amplitude_uncertainty);
+      out.period.uncertainty = std::max(std::hypot(out.period.uncertainty, out.period.amplitude_uncertainty),
+                                        out.period.resolution_floor);
       amplitudes();  // again, with the final period
     }
     // The ends of the timing, a swing or so beyond the first and last
@@ -615,6 +1143,35 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
           out.start_amplitude * std::hypot(std::sqrt(std::max(x.dot(cov * x), 0.0)), sig.scale_uncertainty);
     }
   }
+  // Step 7, on the final period.
+  std::vector<long> index(nc);
+  std::vector<double> weight(nc, 1.0);
+  for (std::size_t i = 0; i < nc; ++i) {
+    index[i] = static_cast<long>(i);
+    if (!events) weight[i] = out.crossings[i].slope * out.crossings[i].slope * out.crossings[i].samples;
+  }
+  out.glitches = find_glitches(out.crossings, index, cpp, weight, quantum);
+  report_glitches(out, [&](std::size_t a, std::size_t b) {
+    const std::vector<Crossing> part(out.crossings.begin() + a, out.crossings.begin() + b + 1);
+    const std::vector<double> amplitudes =
+        index_amplitudes.empty() ? std::vector<double>{}
+                                 : std::vector<double>(index_amplitudes.begin() + a, index_amplitudes.begin() + b);
+    return fit_crossing_times(part, cpp, amplitudes, quantum);
+  }, "crossings");
+  if (!events && out.noise > 0.0) {
+    // The crossing times' scatter against the signal's noise: the weighted
+    // residual of crossing i has variance noise^2 / mean(slope^2 samples).
+    double mean_weight = 0.0;
+    for (double w : weight) mean_weight += w / nc;
+    const double ratio = out.period.residual_rms * std::sqrt(mean_weight) / out.noise;
+    if (ratio > 5.0) {
+      out.notes.push_back({0, "the crossing times scatter " + format_number(ratio, 2) +
+                                  " times more than the signal's noise explains (rms " +
+                                  seconds(out.period.residual_rms, 2) +
+                                  "): the period's uncertainty is from that scatter; look for glitches"});
+    }
+  }
+  note_floor(out, quantum);
   const double origin = out.crossings[0].time;
   for (std::size_t i = 0; i < out.swings.size(); ++i) {
     out.swings[i].amplitude = theta[i];
@@ -623,6 +1180,7 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
       out.decay.amplitudes.push_back(theta[i]);
     }
   }
+  if (out.decay.amplitudes.empty()) out.notes.push_back({0, "no amplitudes: " + no_amplitude_reason(r, sig, options)});
   for (std::size_t i = 0; i + cpp < nc; i += cpp) {
     PeriodPoint p;
     p.time = (out.crossings[i].time + out.crossings[i + cpp].time) / 2.0 - origin;
@@ -658,6 +1216,7 @@ RecordingSummary analyse_recording(const std::string& path, RecordingFormat form
   s.columns = r.columns;
   s.notes = r.notes;
   s.column_spec = columns;
+  s.channels = r.channel_names;
   s.swings = analyse_swings(r, r.set.empty() ? path : path + "/" + r.set, options);
   return s;
 }

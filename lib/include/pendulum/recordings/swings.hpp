@@ -38,7 +38,30 @@
 ///     linear acceleration at a turning point, g sin theta0 (standard g);
 ///     none from acceleration with gravity (docs/recordings.md); from a photogate's
 ///     blocking time dt and the bob's width w: v = w/dt = 2 sqrt(g l)
-///     sin(theta0/2).
+///     sin(theta0/2). Each peak is a quartic through the middle third of its
+///     half swing; a sparse track (fewer than 7 samples there, video at 5-20
+///     frames/s) fits a, b, c, d, e of a + b cos phi + c sin phi + d cos 3phi
+///     + e sin 3phi across the whole half swing (phi = pi (t - t_mid)/(t_b -
+///     t_a), the turning point's phase): the swing's own shape, its third
+///     harmonic the finite amplitude's.
+///  5. Event stamps (a timer or photogate log of one stamp per period or per
+///     passage): each stamp's count from the intervals in half periods (a
+///     missed stamp, an interval near 2T, advances the count by two periods;
+///     a doubled stamp, near T/2, or a repeat is dropped), then the line
+///     fit of stamp against count, t = a + b x + c x^2 (+ h x^3 from 12
+///     stamps) with x the count about its mid-range, the mean period b + h
+///     X^2 as in step 3; one stamp a passage adds (-1)^n (d + e x + f x^2).
+///     One stamp a passage is told by alternation (SwingOptions::
+///     stamps_per_period).
+///  6. Resolution: no period's uncertainty falls below what the clock's
+///     resolution q allows. A uniform quantum gives each time an error of
+///     variance q^2/12, so the fit's slope has at least
+///     (q/sqrt 12) / sqrt(sum (n_i - mean n)^2) (n_i in periods).
+///  7. Glitches: the intervals between crossings against the local median of
+///     their own direction, in robust sigmas; a stretch of outliers (a jump,
+///     a gap, tracking lost, a glitchy end) is reported as a time range with
+///     the period without it; where that differs from the whole record's by
+///     more than its uncertainty, the difference joins the uncertainty.
 
 #include <array>
 #include <optional>
@@ -79,6 +102,16 @@ struct PeriodEstimate {
   /// The part of `uncertainty` (s) from the smooth amplitude in the
   /// amplitude-weighted index, added in quadrature; 0 without it.
   double amplitude_uncertainty = 0.0;
+  /// The least uncertainty (s) the clock's resolution allows (step 6);
+  /// `uncertainty` is never below it. 0 for a clock of unknown resolution.
+  double resolution_floor = 0.0;
+};
+
+/// A stretch of the record that does not fit the swing (step 7).
+struct Glitch {
+  double start = 0.0;  ///< (s, the file's clock) the last good crossing before it
+  double end = 0.0;    ///< (s) the first good crossing after it, or the last crossing
+  double worst = 0.0;  ///< the largest |interval residual| in it, in robust sigmas
 };
 
 /// One point of the period-against-amplitude curve: one full period.
@@ -97,6 +130,10 @@ struct SwingOptions {
   /// Only the samples or events with time in [first, second] (s, the file's
   /// own clock) are analysed: `import --range`, a scene's `"range"`.
   std::optional<std::pair<double, double>> range;
+  /// Event stamps: 1 (one per period: a hand timer, a photogate's pendulum
+  /// mode) or 2 (one per passage); by default 2 where the intervals alternate
+  /// (a gate off the lowest point), else 1.
+  std::optional<int> stamps_per_period;
 };
 
 struct SwingAnalysis {
@@ -131,15 +168,25 @@ struct SwingAnalysis {
   /// when the recording gives no amplitudes); no sigmas, so the decay fit
   /// scales its covariance by the residual variance.
   DecayData decay;
+  /// Stretches that do not fit the swing, in time order (step 7).
+  std::vector<Glitch> glitches;
+  /// What the analysis decided or mended, and why it found no amplitudes:
+  /// a dropped stamp or a mended count (the text names its data row, from
+  /// 1, and its time: a Recording holds no line numbers, so `line` is 0), a
+  /// glitch, a fit far beyond its noise, the clock's floor, the range analysed.
+  std::vector<RecordingNote> notes;
 };
 
 /// Step 3 of the method on given crossings (at least 5): the weighted fit
 /// of their times, weights from slope and samples when `samples` > 0.
 /// With `amplitudes` (rad, one per swing: crossings.size() - 1) the index is
 /// u_{i+1} = u_i + 1 + DeltaT/T0(theta_i) instead of i, and the period is the
-/// line's rise from the first crossing to the last per period.
+/// line's rise from the first crossing to the last per period. `quantum`
+/// (s): the clock's resolution, whose floor (step 6) the uncertainty keeps.
+/// No weight exceeds 25 times the median (a spurious crossing on a jump
+/// would carry the fit).
 PeriodEstimate fit_crossing_times(const std::vector<Crossing>& crossings, int crossings_per_period,
-                                  const std::vector<double>& amplitudes = {});
+                                  const std::vector<double>& amplitudes = {}, double quantum = 0.0);
 
 /// Analyses a parsed recording. `file` names it in errors (InputError): no
 /// oscillation, fewer than three swings, an amplitude beyond 180 deg.
@@ -166,6 +213,7 @@ struct RecordingSummary {
   std::vector<RecordingColumn> columns = {};  ///< how each column was used (Recording::columns)
   std::vector<RecordingNote> notes = {};      ///< what the reader decided and dropped (Recording::notes)
   std::string column_spec = {};  ///< the columns declared ("t:s,theta:deg"), to read the file again alike
+  std::vector<std::string> channels = {};  ///< the channels analysed, as the header names them
 };
 
 /// Reads the recording at `path` (format from its header unless given) and

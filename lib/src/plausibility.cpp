@@ -56,7 +56,11 @@ std::string recording_cause(const ParsedScene& scene, const ObservationSource& s
   if (!source.recording || *source.recording >= scene.recordings.size()) return {};
   const RecordingSummary& r = scene.recordings[*source.recording].summary;
   std::string columns;
-  for (const auto& c : r.columns) columns += (columns.empty() ? "\"" : ", \"") + c + "\"";
+  for (const RecordingColumn& c : r.columns) {
+    if (c.role == "unused") continue;
+    columns += (columns.empty() ? "" : ", ") + std::to_string(c.index) + (c.name.empty() ? "" : " \"" + c.name + "\"") +
+               " as " + c.role;
+  }
   return "; or the recording " + r.file + (r.set.empty() ? "" : "/" + r.set) + " (read as " +
          recording_format_name(r.format) + (columns.empty() ? "" : ", columns " + columns) +
          ") timed something other than the swing: check its columns and run pendulum-g import on it";

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "pendulum/report/svg_plot.hpp"
 #include "scene_files.hpp"
 
 using nlohmann::json;
@@ -116,21 +117,6 @@ std::vector<std::string> csv_fields(const std::string& line) {
     }
   }
   return fields;
-}
-
-std::string html_escaped(std::string s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  }
-  return out;
 }
 
 }  // namespace
@@ -242,7 +228,7 @@ TEST_CASE("The verdict first and in words on a scene's page and on the class pag
   REQUIRE(g != std::string::npos);
   CHECK(verdict < g);
   for (const auto& reason : result.at("status_reasons")) {
-    const std::size_t at = page.find(html_escaped(reason.get<std::string>()));
+    const std::size_t at = page.find(pendulum::report::xml_escape(reason.get<std::string>()));
     CHECK(at != std::string::npos);
     CHECK(at < g);
   }

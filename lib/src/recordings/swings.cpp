@@ -396,6 +396,17 @@ double resolution_floor(const std::vector<double>& x, double q) {
 /// slope hundreds of times the swing's and, uncapped, took the fit with it.
 constexpr double kWeightCap = 25.0;
 
+/// The residuals' lag-1 autocorrelation rho (z standardised, ssr their sum
+/// of squares) and the AR(1) variance factor (1 + rho)/(1 - rho) for rho > 0,
+/// rho capped at 0.95: the effective sample size of correlated residuals.
+void set_autocorrelation(const std::vector<double>& z, double ssr, PeriodEstimate& p) {
+  double lag = 0.0;
+  for (std::size_t i = 0; i + 1 < z.size(); ++i) lag += z[i] * z[i + 1];
+  p.lag1_correlation = ssr > 0.0 ? lag / ssr : 0.0;
+  const double rho = std::min(p.lag1_correlation, 0.95);
+  p.inflation = rho > 0.0 ? (1.0 + rho) / (1.0 - rho) : 1.0;
+}
+
 }  // namespace
 
 PeriodEstimate fit_crossing_times(const std::vector<Crossing>& c, int per_period,
@@ -449,12 +460,8 @@ PeriodEstimate fit_crossing_times(const std::vector<Crossing>& c, int per_period
     z[i] = (c[i].time - t0 - row(i).dot(beta)) * std::sqrt(w[i]);
     ssr += z[i] * z[i];
   }
-  double lag = 0.0;
-  for (std::size_t i = 0; i + 1 < n; ++i) lag += z[i] * z[i + 1];
   PeriodEstimate p;
-  p.lag1_correlation = ssr > 0.0 ? lag / ssr : 0.0;
-  const double rho = std::min(p.lag1_correlation, 0.95);
-  p.inflation = rho > 0.0 ? (1.0 + rho) / (1.0 - rho) : 1.0;
+  set_autocorrelation(z, ssr, p);
   const double s2 = ssr / (static_cast<double>(n) - q);
   // The mean period over the crossings: the fitted curve's rise from the
   // first to the last, per period. About the centre, x_n = -x_0 = X: the
@@ -786,13 +793,10 @@ PeriodEstimate fit_stamps(const MendedStamps& m, int per_period, double quantum)
   const Eigen::MatrixXd inv = xtx.inverse();
   const Eigen::VectorXd beta = inv * xtt;
   std::vector<double> z(n);
-  double ssr = 0.0, lag = 0.0;
+  double ssr = 0.0;
   for (std::size_t i = 0; i < n; ++i) z[i] = m.stamps[i].time - t0 - row(i).dot(beta), ssr += z[i] * z[i];
-  for (std::size_t i = 0; i + 1 < n; ++i) lag += z[i] * z[i + 1];
   PeriodEstimate p;
-  p.lag1_correlation = ssr > 0.0 ? lag / ssr : 0.0;
-  const double rho = std::min(p.lag1_correlation, 0.95);
-  p.inflation = rho > 0.0 ? (1.0 + rho) / (1.0 - rho) : 1.0;
+  set_autocorrelation(z, ssr, p);
   const double s2 = ssr / (static_cast<double>(n) - q);
   // The mean period over the stamps, as the crossing fit's: b + (cubic) X^2 times its coefficient.
   Eigen::VectorXd g = Eigen::VectorXd::Zero(q);

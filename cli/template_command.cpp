@@ -196,7 +196,7 @@ Command add_template_command(CLI::App& app) {
                   "two knife edges, with Bessel's formula; recording: a ball timed by a phone's or a photogate's "
                   "file; phone: a phone on a string at several lengths (docs/phone.md)")
       ->check(CLI::IsMember({"ball", "series", "pivot-scan", "kater", "recording", "phone"}));
-  cmd->footer("Kinds: ball, series, pivot-scan, kater, recording, phone. Example: pendulum-g template kater > kater.json");
+  cmd->footer("Kinds: ball, series, pivot-scan, kater, recording, phone. Example: pendulum-g template kater > kater.json\n");
   return {cmd, [kind] {
     if (*kind == "series") {
       std::cout << kSeries << kBobAndAir << kSeriesObservations;

@@ -30,6 +30,9 @@ nlohmann::ordered_json summary_json(const RecordingSummary& r) {
   out["format"] = recording_format_name(r.format);
   out["periods"] = n;
   out["period"] = {{"value", a.period.value}, {"uncertainty", a.period.uncertainty}, {"unit", "s"}};
+  // Whose angle the amplitudes are: a phone's sensor turns with the bob it
+  // is in (docs/phone.md); paste it with them as the scene's "of".
+  const char* of = sensor_in_bob(r.kind) ? "body" : "pendulum";
   if (a.decay.amplitudes.empty()) {
     out["amplitude_range"] = nullptr;
   } else {
@@ -41,7 +44,8 @@ nlohmann::ordered_json summary_json(const RecordingSummary& r) {
                                                      : nlohmann::ordered_json(nullptr);
     out["amplitude_range"] = {{"start", a.start_amplitude * kDeg}, {"start_uncertainty", start_uncertainty},
                               {"end", a.end_amplitude * kDeg},     {"min", *lo * kDeg},
-                              {"max", *hi * kDeg},                 {"unit", "deg"}};
+                              {"max", *hi * kDeg},                 {"unit", "deg"},
+                              {"of", of}};
   }
   // One trial of all the periods: its uncertainty is used as is (docs/scene.md).
   out["timing"] = {{"oscillations_per_trial", n},
@@ -60,6 +64,7 @@ nlohmann::ordered_json summary_json(const RecordingSummary& r) {
                       {"times", a.decay.times},
                       {"amplitude_unit", "deg"},
                       {"amplitudes", degrees},
+                      {"of", of},
                       {"source", source}}}};
   }
   nlohmann::ordered_json columns = nlohmann::ordered_json::array();

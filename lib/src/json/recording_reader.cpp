@@ -150,10 +150,7 @@ DecayData read_recorded_decay(Object& decay, ParsedScene& out, RecordingReader& 
                        "for a decay record (a photogate gives them with bob_width)");
   validate_decay_data(data, d.path("recording"));
   // A gyroscope or accelerometer follows the bob it is in (docs/phone.md).
-  if (r.kind == SignalKind::angular_rate || r.kind == SignalKind::acceleration ||
-      r.kind == SignalKind::linear_acceleration) {
-    data.angle_of = AngleOf::body;
-  }
+  if (sensor_in_bob(r.kind)) data.angle_of = AngleOf::body;
   out.assumptions.push_back(d.path() + ": from the recording " + r.file + ", " + std::to_string(data.times.size()) +
                             " swing amplitudes, without sigmas (the fit scales by its residuals)");
   return data;

@@ -81,9 +81,7 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
                      "timing.bob_width); expected the amplitude at the start of the timing");
     v.amplitude = r.swings.start_amplitude;
     // A gyroscope or accelerometer turns with the bob it is in (docs/phone.md).
-    const bool in_bob = r.kind == SignalKind::angular_rate || r.kind == SignalKind::acceleration ||
-                        r.kind == SignalKind::linear_acceleration;
-    if (in_bob) v.amplitude_of = u.amplitude_of = AngleOf::body;
+    if (sensor_in_bob(r.kind)) v.amplitude_of = u.amplitude_of = AngleOf::body;
     const bool known = std::isfinite(r.swings.start_amplitude_uncertainty);
     u.amplitude = known ? r.swings.start_amplitude_uncertainty : 0.0;
     source.amplitude_raw = v.amplitude * 180.0 / kPi;

@@ -1114,7 +1114,16 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
     if (cpp == 2 && !events) {
       auto period_with = [&](const Eigen::VectorXd& coef) {
         std::vector<double> smooth(theta.size());
-        for (std::size_t i = 0; i < theta.size(); ++i) smooth[i] = smooth_with(coef, out.swings[i].peak_time);
+        for (std::size_t i = 0; i < theta.size(); ++i) {
+          smooth[i] = smooth_with(coef, out.swings[i].peak_time);
+          // The curve through the swings' log amplitudes can pass 180 deg
+          // where the swings scatter wildly: no swinging pendulum there.
+          if (!(smooth[i] < kPi)) {
+            throw InputError(file, "the smooth amplitude curve reaches " + format_number(smooth[i] * 180.0 / kPi, 4) +
+                                       " deg at " + seconds(out.swings[i].peak_time) +
+                                       " (180 deg or more: over the top); expected a swinging pendulum");
+          }
+        }
         return fit_crossing_times(out.crossings, cpp, smooth, quantum);
       };
       out.period = period_with(c);

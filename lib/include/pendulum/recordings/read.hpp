@@ -49,6 +49,14 @@ enum class SignalKind {
   event_stamps,
 };
 
+/// Whether the sensor turns with the bob it is in (a phone's gyroscope or
+/// accelerometer): its amplitudes are then the bob's own angle, not the
+/// line's (docs/phone.md).
+constexpr bool sensor_in_bob(SignalKind kind) {
+  return kind == SignalKind::angular_rate || kind == SignalKind::acceleration ||
+         kind == SignalKind::linear_acceleration;
+}
+
 /// Something the reader decided or dropped, said where it happened.
 struct RecordingNote {
   std::size_t line = 0;  ///< line of the file (from 1); 0 for the whole file

@@ -518,3 +518,32 @@ TEST_CASE("The automatic choice takes the cheapest method within the tolerance",
   CHECK(cheapest_amplitude_method(theta0, 0.0).method == AmplitudeMethod::agm);
   CHECK(cheapest_amplitude_method(170.0 * test::kDegree, 1e-6).method == AmplitudeMethod::agm);
 }
+
+TEST_CASE("finite_amplitude_agm_many: the scalar function's values, bit for bit", "[amplitude]") {
+  // Amplitudes in every case and on both sides of each case's limit, in a
+  // count that is no multiple of the kernel's block, mixed so that a block
+  // holds all three cases.
+  std::vector<double> theta;
+  for (double edge : {0.0, detail::kOneAgmStepLimit, detail::kTwoAgmStepsLimit}) {
+    theta.push_back(edge);
+    theta.push_back(std::nextafter(edge, 4.0));
+    if (edge > 0.0) theta.push_back(std::nextafter(edge, 0.0));
+  }
+  theta.push_back(std::nextafter(kPi, 0.0));
+  for (int i = 0; theta.size() < 1001; ++i) theta.push_back(std::fmod(i * 0.7548776662466927, 1.0) * kPi);
+  std::vector<double> many(theta.size(), -1.0);
+  REQUIRE(finite_amplitude_agm_many(theta.data(), many.data(), theta.size()) == theta.size());
+  for (std::size_t i = 0; i < theta.size(); ++i) {
+    INFO("theta0 = " << theta[i] << " rad");
+    CHECK(many[i] == finite_amplitude_agm(theta[i]));
+  }
+
+  // The first amplitude out of range is named; nothing from it on is written.
+  for (double bad : {kPi, -0.5, std::numeric_limits<double>::quiet_NaN()}) {
+    std::vector<double> some = theta, out(theta.size(), -1.0);
+    some[700] = bad;
+    CHECK(finite_amplitude_agm_many(some.data(), out.data(), some.size()) == 700);
+    CHECK(out[699] == finite_amplitude_agm(some[699]));
+    CHECK(std::all_of(out.begin() + 768, out.end(), [](double v) { return v == -1.0; }));
+  }
+}

@@ -10,6 +10,7 @@
 /// generic in the scalar (double, ceres::Jet); branches look at value_of().
 
 #include <array>
+#include <cstddef>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -94,6 +95,50 @@ T eq8_ten_terms(const T& m) {
 /// 4 e^{-pi}: the nome q' = e^{-pi} at theta0 = 90 deg, times 4.
 inline constexpr double kFourExpMinusPi = 0.172855673055088999097670948687;
 
+/// The first case of finite_amplitude_exact, theta0 (rad) <= 90 deg.
+template <class T>
+T exact_one_agm_step(const T& theta0) {
+  const T s = sin_eighth_turn(theta0 / 4.0);
+  const T c1 = s * s;
+  const T inv_a1 = 1.0 / (1.0 - c1);
+  const T k1 = c1 * inv_a1;
+  return (c1 + eq8_ten_terms(k1 * k1)) * inv_a1;
+}
+
+/// The second case, from the deficit pi - theta0 (rad), 90 to 160 deg.
+template <class T>
+T exact_two_agm_steps(const T& deficit) {
+  using std::sqrt;
+  const T kc = sin_eighth_turn(deficit / 2.0);
+  const T c1 = (1.0 - kc) / 2.0;
+  const T inv_a2 = 2.0 / ((1.0 + kc) / 2.0 + sqrt(kc));
+  const T c2 = c1 * c1 * inv_a2 / 4.0;
+  const T k2 = c2 * inv_a2;
+  return (c1 + c2 + eq8_ten_terms(k2 * k2)) * inv_a2;
+}
+
+/// The third case, from the deficit (rad), above 160 deg.
+template <class T>
+T exact_nome(const T& deficit) {
+  using std::log;
+  const T s = sin_eighth_turn(deficit / 4.0);
+  const T c = s * s;
+  const T t = c / (1.0 - c);  // tan^2(deficit/4), the Landen modulus of kc
+  const T u = t * t / 16.0;
+  // sqrt(q/u) and ln sqrt(q/u) through u^4; the next terms are below 1e-19.
+  const T root = 1.0 + u * (4.0 + u * (34.0 + u * (360.0 + u * 4239.0)));
+  const T log_root = u * (4.0 + u * (26.0 + u * (736.0 / 3.0 + u * 2701.0)));
+  const T q = t / 4.0 * root;
+  const T theta3_minus_1 = 2.0 * q * (1.0 + q * q * q);  // + 2 q^9 < 1e-21
+  const T l_minus_pi = log(kFourExpMinusPi / t) - log_root;
+  return l_minus_pi / kPi +
+         theta3_minus_1 * (2.0 + theta3_minus_1) * (l_minus_pi / kPi + 1.0);
+}
+
+/// The upper limits (rad) of the first two cases.
+inline constexpr double kOneAgmStepLimit = kPi / 2.0;
+inline constexpr double kTwoAgmStepsLimit = kPi * (8.0 / 9.0);
+
 /// The exact DeltaT/T0 from the amplitude theta0 (rad) and its deficit
 /// pi - theta0 (rad), each accurate to a few ulp in relative terms; the one
 /// that is used is the one that carries the digits. No step subtracts
@@ -115,36 +160,10 @@ inline constexpr double kFourExpMinusPi = 0.172855673055088999097670948687;
 /// 179.9999999 deg (tests/test_amplitude.cpp).
 template <class T>
 T finite_amplitude_exact(const T& theta0, const T& deficit) {
-  using std::log;
-  using std::sqrt;
   const double angle = value_of(theta0);
-  if (angle <= kPi / 2.0) {
-    const T s = sin_eighth_turn(theta0 / 4.0);
-    const T c1 = s * s;
-    const T inv_a1 = 1.0 / (1.0 - c1);
-    const T k1 = c1 * inv_a1;
-    return (c1 + eq8_ten_terms(k1 * k1)) * inv_a1;
-  }
-  if (angle <= kPi * (8.0 / 9.0)) {
-    const T kc = sin_eighth_turn(deficit / 2.0);
-    const T c1 = (1.0 - kc) / 2.0;
-    const T inv_a2 = 2.0 / ((1.0 + kc) / 2.0 + sqrt(kc));
-    const T c2 = c1 * c1 * inv_a2 / 4.0;
-    const T k2 = c2 * inv_a2;
-    return (c1 + c2 + eq8_ten_terms(k2 * k2)) * inv_a2;
-  }
-  const T s = sin_eighth_turn(deficit / 4.0);
-  const T c = s * s;
-  const T t = c / (1.0 - c);  // tan^2(deficit/4), the Landen modulus of kc
-  const T u = t * t / 16.0;
-  // sqrt(q/u) and ln sqrt(q/u) through u^4; the next terms are below 1e-19.
-  const T root = 1.0 + u * (4.0 + u * (34.0 + u * (360.0 + u * 4239.0)));
-  const T log_root = u * (4.0 + u * (26.0 + u * (736.0 / 3.0 + u * 2701.0)));
-  const T q = t / 4.0 * root;
-  const T theta3_minus_1 = 2.0 * q * (1.0 + q * q * q);  // + 2 q^9 < 1e-21
-  const T l_minus_pi = log(kFourExpMinusPi / t) - log_root;
-  return l_minus_pi / kPi +
-         theta3_minus_1 * (2.0 + theta3_minus_1) * (l_minus_pi / kPi + 1.0);
+  if (angle <= kOneAgmStepLimit) return exact_one_agm_step(theta0);
+  if (angle <= kTwoAgmStepsLimit) return exact_two_agm_steps(deficit);
+  return exact_nome(deficit);
 }
 
 /// Throws std::domain_error unless 0 <= x < limit (NaN included).
@@ -187,6 +206,15 @@ T finite_amplitude_agm(const T& theta0) {
   detail::require_amplitude(value_of(theta0), kPi, "rad");
   return detail::finite_amplitude_exact(theta0, kPi - theta0);
 }
+
+/// finite_amplitude_agm at each of `n` amplitudes theta0[i] (rad) into
+/// excess[i], bit for bit the same values, vectorised (lib/src/amplitude_many.cpp:
+/// the amplitudes of each of detail::finite_amplitude_exact's three cases are
+/// gathered into a block that the compiler vectorises for AVX-512, AVX2 or
+/// SSE2, chosen at run time). \return the index of the first amplitude
+/// outside 0 <= theta0 < pi (NaN included), from which on `excess` is not
+/// written; `n` when there is none.
+std::size_t finite_amplitude_agm_many(const double* theta0, double* excess, std::size_t n);
 
 /// Finite-amplitude correction by the series of Nelson & Olsson Eq. (8),
 /// truncated after `terms` terms:

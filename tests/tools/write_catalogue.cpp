@@ -1,5 +1,7 @@
-// Writes every case of the scene catalogues as one file of the fuzzer's seed
-// corpus. Usage: write_seeds OUT_DIR CATALOGUE.json...
+// Writes every case of the scene catalogues as one file, OUT_DIR/seed-N.json,
+// N counting the cases in the order given: the fuzzer's seed corpus, and the
+// scenes the Python module's test reduces. Usage: write_catalogue OUT_DIR
+// CATALOGUE.json...
 #include <fstream>
 #include <iostream>
 
@@ -7,7 +9,7 @@
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::cerr << "usage: write_seeds OUT_DIR CATALOGUE.json...\n";
+    std::cerr << "usage: write_catalogue OUT_DIR CATALOGUE.json...\n";
     return 2;
   }
   const nlohmann::json base = nlohmann::json::parse(pendulum::test::nelson_olsson_text());

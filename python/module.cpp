@@ -1,0 +1,226 @@
+// pendulum_g._core: the library's answers in Python's types (docs/python.md).
+// The Python package (pendulum_g/__init__.py) wraps these: it turns a dict
+// into JSON text and the JSON the library writes into dicts, so that every
+// answer is the CLI's own, byte for byte before parsing.
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "pendulum/amplitude.hpp"
+#include "pendulum/analysis.hpp"
+#include "pendulum/clock.hpp"
+#include "pendulum/files.hpp"
+#include "pendulum/input_error.hpp"
+#include "pendulum/output.hpp"
+#include "pendulum/scene_json.hpp"
+#include "pendulum/site.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+using pendulum::AmplitudeMethod;
+
+/// A scene's text and where its recordings are looked for: read from `path`
+/// as `reduce PATH` reads it, or given as text as `reduce -` takes it.
+struct SceneSource {
+  std::string text;
+  std::string input;  ///< the result's "input": the path, or "-"
+  pendulum::SceneFiles files;
+};
+
+SceneSource scene_source(const std::optional<std::string>& path, const std::optional<std::string>& text,
+                         const std::string& directory, bool allow_outside) {
+  if (path) {
+    return {pendulum::read_text(*path, pendulum::kMaxSceneBytes, "a scene file"), pendulum::printable_name(*path),
+            {pendulum::scene_directory(*path), allow_outside}};
+  }
+  return {text.value_or(""), "-", {directory, allow_outside}};
+}
+
+AmplitudeMethod amplitude_method(const std::string& name) {
+  for (auto m : {AmplitudeMethod::small_angle, AmplitudeMethod::series, AmplitudeMethod::agm,
+                 AmplitudeMethod::automatic}) {
+    if (name == pendulum::method_name(m)) return m;
+  }
+  if (name == "exact") return AmplitudeMethod::agm;
+  throw py::value_error("method: got '" + name + "'; expected exact (or agm), series, small_angle or auto");
+}
+
+std::string reduce_json(const std::optional<std::string>& path, const std::optional<std::string>& text,
+                        const std::string& directory, bool allow_outside, double negligible_fraction,
+                        const std::string& method, int series_terms) {
+  const SceneSource source = scene_source(path, text, directory, allow_outside);
+  pendulum::AnalysisOptions options;
+  options.negligible_fraction = negligible_fraction;
+  options.reduction.amplitude_method = amplitude_method(method);
+  options.reduction.series_terms = series_terms;
+  py::gil_scoped_release unlocked;
+  const pendulum::ParsedScene scene = pendulum::parse_scene(source.text, source.files);
+  const pendulum::Analysis analysis = pendulum::analyse(scene, options);
+  return pendulum::result_json(scene, analysis, options, source.input);
+}
+
+std::string fit_decay_json(const std::optional<std::string>& path, const std::optional<std::string>& text,
+                           const std::string& directory, bool allow_outside, const std::optional<std::string>& model) {
+  const SceneSource source = scene_source(path, text, directory, allow_outside);
+  pendulum::DecayFitOptions fit_options;
+  if (model) {
+    for (auto m : {pendulum::DecayModel::both, pendulum::DecayModel::linear_only, pendulum::DecayModel::quadratic_only}) {
+      if (*model == pendulum::decay_model_name(m)) fit_options.model = m;
+    }
+    if (!fit_options.model) {
+      throw py::value_error("model: got '" + *model + "'; expected both, linear_only or quadratic_only");
+    }
+  }
+  py::gil_scoped_release unlocked;
+  const pendulum::ParsedScene scene = pendulum::parse_decay_document(source.text, source.files);
+  if (!scene.decay_data) throw pendulum::InputError("decay.data", "missing; fit-decay needs a decay record");
+  const pendulum::DecayFit fit = pendulum::fit_decay(*scene.decay_data, fit_options);
+  std::vector<std::string> warnings = scene.warnings;
+  for (auto& w : pendulum::review_decay_fit(fit)) warnings.push_back(std::move(w));
+  return pendulum::decay_fit_json(source.input, scene, fit, warnings);
+}
+
+/// f applied to every element of `x` (any shape), into a new array of that
+/// shape; the GIL released over the loop. An element f refuses raises
+/// ValueError naming its flat index and value.
+template <class F>
+py::array_t<double> map_elements(const py::array_t<double, py::array::c_style | py::array::forcecast>& x,
+                                 const char* name, F f) {
+  py::array_t<double> out(std::vector<py::ssize_t>(x.shape(), x.shape() + x.ndim()));
+  const double* in = x.data();
+  double* result = out.mutable_data();
+  const py::ssize_t n = x.size();
+  std::optional<py::ssize_t> refused;
+  std::string why;
+  {
+    py::gil_scoped_release unlocked;
+    for (py::ssize_t i = 0; i < n; ++i) {
+      try {
+        result[i] = f(in[i]);
+      } catch (const std::domain_error& e) {
+        refused = i;
+        why = e.what();
+        break;
+      }
+    }
+  }
+  if (refused) {
+    throw py::value_error(std::string(name) + "[" + std::to_string(*refused) + "]: got " +
+                          std::to_string(in[*refused]) + ": " + why);
+  }
+  return out;
+}
+
+py::array_t<double> finite_amplitude(const py::array_t<double, py::array::c_style | py::array::forcecast>& theta0,
+                                     const std::string& method, int terms, bool excess) {
+  const AmplitudeMethod m = amplitude_method(method);
+  if (m == AmplitudeMethod::automatic) throw py::value_error("method: auto needs a tolerance; use exact");
+  if (terms < 1) throw py::value_error("terms: got " + std::to_string(terms) + "; expected at least 1");
+  const double one = excess ? 0.0 : 1.0;
+  if (m == AmplitudeMethod::agm) {
+    py::array_t<double> out(std::vector<py::ssize_t>(theta0.shape(), theta0.shape() + theta0.ndim()));
+    double* result = out.mutable_data();
+    const auto n = static_cast<std::size_t>(theta0.size());
+    std::size_t stop = 0;
+    {
+      py::gil_scoped_release unlocked;
+      stop = pendulum::finite_amplitude_agm_many(theta0.data(), result, n);
+      for (std::size_t i = 0; i < stop; ++i) result[i] += one;
+    }
+    if (stop < n) {
+      throw py::value_error("theta0[" + std::to_string(stop) + "]: got " + std::to_string(theta0.data()[stop]) +
+                            ": expected an amplitude 0 <= theta0 < pi rad");
+    }
+    return out;
+  }
+  return map_elements(theta0, "theta0", [m, terms, one](double t) {
+    // The library checks the range for the exact method only; the others
+    // are series in sin(theta0/2) that hold on the same range.
+    if (!(t >= 0.0 && t < pendulum::kPi)) {
+      throw std::domain_error("expected an amplitude 0 <= theta0 < pi rad");
+    }
+    return one + pendulum::finite_amplitude(m, t, terms);
+  });
+}
+
+/// `name` as a JSON path inside InputError's message for an argument.
+void require_finite(double value, const char* name, const char* expected) {
+  if (!std::isfinite(value)) throw py::value_error(std::string(name) + ": got " + std::to_string(value) + "; expected " + expected);
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "pendulum-g's library: the compiled part of the pendulum_g package (docs/python.md)";
+
+  // InputError(ValueError): what the CLI reports with exit status 1. Its
+  // `path` is the JSON path (or file and line) the CLI's message starts with.
+  // Allocated once and never freed: the type outlives the interpreter's
+  // shutdown order.
+  static auto* input_error = new py::exception<pendulum::InputError>(m, "InputError", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const pendulum::InputError& e) {
+      py::object instance = py::reinterpret_borrow<py::object>(input_error->ptr())(e.what());
+      instance.attr("path") = e.path();
+      instance.attr("status") = 1;
+      PyErr_SetObject(input_error->ptr(), instance.ptr());
+    }
+  });
+
+  m.def("reduce_json", &reduce_json, py::arg("path"), py::arg("text"), py::arg("directory"),
+        py::arg("allow_outside"), py::arg("negligible_fraction"), py::arg("amplitude_method"),
+        py::arg("series_terms"),
+        "The result JSON of `pendulum-g reduce`, for a scene file (path) or scene text.");
+  m.def("fit_decay_json", &fit_decay_json, py::arg("path"), py::arg("text"), py::arg("directory"),
+        py::arg("allow_outside"), py::arg("model"), "The JSON of `pendulum-g fit-decay`.");
+
+  m.def("finite_amplitude", &finite_amplitude, py::arg("theta0"), py::arg("method") = "exact",
+        py::arg("terms") = 4, py::arg("excess") = false,
+        "T/T0 at amplitude theta0 (rad, any array shape, 0 <= theta0 < pi): exact (the AGM, Nelson & Olsson "
+        "Eq. 8 summed), series (Eq. 8 through `terms` terms) or small_angle (1 + theta0^2/16). "
+        "excess=True gives T/T0 - 1 at full relative precision.");
+  m.def(
+      "normal_gravity",
+      [](const py::array_t<double>& latitude, const py::array_t<double>& height) {
+        return py::vectorize([](double lat, double h) {
+          require_finite(lat, "latitude", "a latitude in degrees");
+          if (std::abs(lat) > 90.0) throw py::value_error("latitude: got " + std::to_string(lat) + "; expected -90 to 90 deg");
+          require_finite(h, "height", "a height in metres");
+          return pendulum::normal_gravity(lat, h);
+        })(latitude, height);
+      },
+      py::arg("latitude"), py::arg("height") = 0.0,
+      "Normal gravity |gamma| (m/s^2) of the WGS84 ellipsoid at geographic latitude (deg) and height (m) above "
+      "it (GeographicLib::NormalGravity); arrays broadcast.");
+  m.def(
+      "circular_error",
+      [](const py::array_t<double, py::array::c_style | py::array::forcecast>& theta0) {
+        return map_elements(theta0, "theta0", [](double t) { return pendulum::circular_error(t); });
+      },
+      py::arg("theta0"),
+      "A clock's circular error (s/day) at semi-amplitude theta0 (rad, 0 <= theta0 < pi): 86400 (2K/pi - 1), "
+      "Feinstein (2005) Eq. (E-2).");
+  m.def(
+      "impulse_error",
+      [](const py::array_t<double>& theta0, const py::array_t<double>& location, const py::array_t<double>& q) {
+        return py::vectorize([](double t0, double at, double quality) {
+          if (!(t0 > 0.0 && t0 < pendulum::kPi)) throw py::value_error("theta0: got " + std::to_string(t0) + "; expected 0 < theta0 < pi rad");
+          if (!(at >= 0.0 && at <= t0)) throw py::value_error("location: got " + std::to_string(at) + "; expected 0 <= location <= theta0");
+          if (!(quality > 0.0 && std::isfinite(quality))) throw py::value_error("q: got " + std::to_string(quality) + "; expected Q > 0");
+          return pendulum::impulse_error_elliptic(t0, at, quality).error;
+        })(theta0, location, q);
+      },
+      py::arg("theta0"), py::arg("location"), py::arg("q"),
+      "A clock's impulse (escapement) error (s/day) for an impulse away from equilibrium at `location` (rad) in a "
+      "swing of semi-amplitude theta0 (rad), quality factor Q, on a circular path, undamped: Feinstein (2005) "
+      "Eqs. (D-1), (F-1) in closed form. Arrays broadcast.");
+}

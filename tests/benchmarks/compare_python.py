@@ -1,0 +1,76 @@
+#!/usr/bin/python3
+"""The Python module pendulum_g against its peers, in one run (docs/python.md).
+
+Usage (Debian's python3 with python3-scipy and python3-mpmath; the module
+built, the CLI beside it):
+    PYTHONPATH=build/python /usr/bin/python3 tests/benchmarks/compare_python.py build/cli/pendulum-g
+
+1. T/T0 over 10^6 amplitudes drawn uniformly in [0, 90 deg] and in
+   [0, 179 deg] (seed 1):
+   pendulum_g.finite_amplitude (exact) against
+   2*scipy.special.ellipk(np.sin(t/2)**2)/np.pi, median of 7 runs each, run
+   alternately (one thread, the same array), and each one's worst error against mpmath at 40
+   digits over the first 10^4 of the same amplitudes, in units of the
+   result's ulp.
+2. The Nelson-Olsson scene: pendulum_g.reduce in this process against a
+   subprocess call of `pendulum-g reduce` on the same file, median of 21.
+"""
+import os
+import statistics
+import subprocess
+import sys
+import time
+
+import mpmath
+import numpy as np
+import scipy.special
+
+import pendulum_g
+
+
+def median_seconds(f, g, runs):
+    """Medians of the times of f and of g, run alternately (the same load for both)."""
+    times = ([], [])
+    for _ in range(runs):
+        for fn, out in zip((f, g), times):
+            start = time.perf_counter()
+            fn()
+            out.append(time.perf_counter() - start)
+    return statistics.median(times[0]), statistics.median(times[1])
+
+
+def worst_ulp(values, theta):
+    mpmath.mp.dps = 40
+    worst = 0.0
+    for v, t in zip(values, theta):
+        exact = 2 * mpmath.ellipk(mpmath.sin(mpmath.mpf(float(t)) / 2) ** 2) / mpmath.pi
+        worst = max(worst, abs(float((mpmath.mpf(float(v)) - exact) / np.spacing(float(exact)))))
+    return worst
+
+
+def main():
+    cli = sys.argv[1]
+    for top_deg in (90.0, 179.0):
+        theta = np.random.default_rng(1).uniform(0.0, np.radians(top_deg), 1_000_000)
+        scipy_ratio = lambda: 2 * scipy.special.ellipk(np.sin(theta / 2) ** 2) / np.pi  # noqa: E731
+        ours, peer = median_seconds(lambda: pendulum_g.finite_amplitude(theta), scipy_ratio, 7)
+        sample = theta[:10_000]
+        print(f"finite_amplitude, 10^6 amplitudes uniform in [0, {top_deg:g} deg], median of 7:")
+        print(f"  pendulum_g.finite_amplitude      {ours * 1e3:8.2f} ms   worst error "
+              f"{worst_ulp(pendulum_g.finite_amplitude(sample), sample):7.1f} ulp")
+        print(f"  scipy.special.ellipk formula     {peer * 1e3:8.2f} ms   worst error "
+              f"{worst_ulp(scipy_ratio()[:10_000], sample):7.1f} ulp")
+        print(f"  ratio scipy / pendulum_g         {peer / ours:8.1f}x")
+
+    scene = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "data", "nelson_olsson_1986.json")
+    in_process, subprocess_call = median_seconds(
+        lambda: pendulum_g.reduce(scene),
+        lambda: subprocess.run([cli, "reduce", scene], check=True, capture_output=True), 21)
+    print("reduce of data/nelson_olsson_1986.json, median of 21:")
+    print(f"  pendulum_g.reduce                {in_process * 1e3:8.3f} ms")
+    print(f"  subprocess pendulum-g reduce     {subprocess_call * 1e3:8.3f} ms")
+    print(f"  ratio subprocess / module        {subprocess_call / in_process:8.1f}x")
+
+
+if __name__ == "__main__":
+    main()

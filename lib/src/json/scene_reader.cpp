@@ -370,7 +370,6 @@ void read_header(Object& top, ParsedScene& out) {
   }
   if (top.has("source")) out.source = top.text("source");
   if (top.has("notes")) top.text("notes");
-  (void)top.has("import");  // import's report of a table's columns (docs/series.md): free-form, not read
 }
 
 }  // namespace
@@ -387,6 +386,7 @@ ParsedScene parse_scene(const std::string& text, const SceneFiles& files) {
   ParsedScene out;
   Object top(doc, "", "a JSON object (the scene)");
   read_header(top, out);
+  (void)top.has("import");  // import's report of a table's columns (docs/series.md): free-form, not read
 
   if (top.has("observations")) {
     read_series(top, out, recordings);

@@ -663,13 +663,15 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     }
   }
   if (out.pooled_dof > 0) out.pooled_sigma = std::sqrt(ss / static_cast<double>(out.pooled_dof));
-  // Few repeats say little about their own scatter (1/sqrt(2(n-1)) of it: 71 %
-  // for 2, 50 % for 3): the table's pooled scatter is their floor, and a
-  // single row's uncertainty, when no column states one.
+  // A few repeats say little about their own scatter (it is uncertain by
+  // 1/sqrt(2(n-1)) of itself: 71 % for 2, 50 % for 3, 41 % for 4): the pooled
+  // scatter of every setting's repeats, one hand's, is the floor of each
+  // (read_timing takes the larger), and a single row's uncertainty, when no
+  // column states one.
   if (!time_u) {
     for (TableObservation& o : out.observations) {
       const std::size_t n = o.times.size();
-      if (n <= 3 && out.pooled_sigma && out.pooled_dof > n - 1) o.time_sigma = out.pooled_sigma;
+      if (out.pooled_sigma && out.pooled_dof > n - 1) o.time_sigma = out.pooled_sigma;
       if (n == 1 && !o.time_sigma) {
         fail(file, o.first_line, 1,
              "one row at " + std::string(setting_key(out.setting)) + " " + format_number(o.setting, 6) + " " + su.unit +
@@ -688,7 +690,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     out.notes.push_back({0, "the repeats scatter by " + format_number(*out.pooled_sigma, 3) + " " + tu.unit +
                                 " (pooled standard deviation of one " + (out.oscillations > 1 ? "time" : "period") +
                                 ", " + std::to_string(out.pooled_dof) +
-                                " degrees of freedom): the floor of a setting timed 2 or 3 times, the uncertainty "
+                                " degrees of freedom): the floor of each setting's own scatter, the uncertainty "
                                 "of one timed once"});
   }
 

@@ -43,8 +43,8 @@ struct TableObservation {
   std::optional<double> setting_sigma;  ///< the largest of its rows' (one measurement)
   std::vector<double> times;            ///< one per row, in time_unit, each of `oscillations` oscillations
   /// The uncertainty of one of `times` (time_unit): the rows' stated ones
-  /// (their rms), else for 1 to 3 rows the pooled scatter of the table's
-  /// repeats; empty when the rows' own scatter is all there is.
+  /// (their rms), else the pooled scatter of the table's repeats (the floor
+  /// of the rows' own scatter); empty when their own scatter is all there is.
   std::optional<double> time_sigma;
   std::optional<double> amplitude, amplitude_sigma;  ///< in amplitude_unit
   std::size_t first_line = 0, last_line = 0;         ///< lines of the file

@@ -248,7 +248,8 @@ Command add_import_command(CLI::App& app) {
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
       "import", "Reduce a phone, photogate or video-tracker recording to a period, amplitudes and the "
-                "timing and decay parts of a scene (docs/recordings.md)");
+                "timing and decay parts of a scene (docs/recordings.md), or read a table of settings and periods "
+                "into a scene (docs/series.md, Tables)");
   cmd->add_option("recording", o->file, "Recording file (CSV or tab-separated text, or phyphox's zip export)")
       ->required();
   std::vector<std::string> formats = recording_family_names();

@@ -455,8 +455,9 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
                  "); expected a number in every used cell: a row without its " + quantity_name(use[j]) +
                  " is no timing (delete the row)");
       }
-      const bool positive = use[j].kind == Kind::time && !use[j].uncertainty;
-      const bool non_negative = use[j].uncertainty || (use[j].kind == Kind::setting && use[j].setting == Setting::length) ||
+      // A timing's stated uncertainty weighs it in the fit: 0 would make it infinitely precise.
+      const bool positive = use[j].kind == Kind::time;
+      const bool non_negative = (use[j].uncertainty && !positive) || (use[j].kind == Kind::setting && use[j].setting == Setting::length) ||
                                 use[j].kind == Kind::amplitude;
       if ((positive && !(v[i] > 0.0)) || (non_negative && !(v[i] >= 0.0)) || !std::isfinite(v[i])) {
         fail(file, table.line(i), 1,
@@ -567,7 +568,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
       if (!(k2[i] > 0.0)) {
         fail(file, line_of(i), 1,
              "h = " + format_number(settings[i], 6) + " " + su.unit + " is beyond the equivalent length gT^2/4pi^2 = " +
-                 format_number(meters[i] - k2[i] / meters[i], 4) + " m of its period " + format_number(periods[i], 6) +
+                 format_number(k2[i] / meters[i] + meters[i], 4) + " m of its period " + format_number(periods[i], 6) +
                  " s, which no body has; expected one unit in each column (mixed units?)");
       }
     }

@@ -19,16 +19,19 @@ J quantity_json(double value, const std::optional<double>& sigma, const std::str
   return q;
 }
 
+/// `o.oscillations`: the whole number of oscillations each time in the table spans.
+int oscillations_at(Object& o) {
+  const json& n = o.at("oscillations");
+  const double v = n.is_number() ? n.get<double>() : 0.0;
+  PENDULUM_FAIL_IF(!(v >= 1.0 && v <= 1e6 && v == std::floor(v)), o.path("oscillations"),
+                   "got " + shown(n) + "; expected the whole number of oscillations each time in the table spans");
+  return static_cast<int>(v);
+}
+
 /// "columns": {"length": 1, "period": "T (s)", "time": {"column": 3, "oscillations": 10, "unit": "s"}, ...}.
 TableOptions table_options(Object& t) {
   TableOptions options;
-  if (t.has("oscillations")) {
-    const json& n = t.at("oscillations");
-    const double v = n.is_number() ? n.get<double>() : 0.0;
-    PENDULUM_FAIL_IF(!(v >= 1.0 && v <= 1e6 && v == std::floor(v)), t.path("oscillations"),
-                     "got " + shown(n) + "; expected the whole number of oscillations each time in the table spans");
-    options.oscillations = static_cast<int>(v);
-  }
+  if (t.has("oscillations")) options.oscillations = oscillations_at(t);
   if (!t.has("columns")) return options;
   const json& columns = t.at("columns");
   Object all(columns, t.path("columns"), "an object: each role's column, e.g. {\"length\": 1, \"period\": 2}");
@@ -55,13 +58,7 @@ TableOptions table_options(Object& t) {
         Object o(j, at);
         column(o.at("column"), o.path("column"));
         if (o.has("unit")) c.unit = o.text("unit");
-        if (o.has("oscillations")) {
-          const json& n = o.at("oscillations");
-          const double v = n.is_number() ? n.get<double>() : 0.0;
-          PENDULUM_FAIL_IF(!(v >= 1.0 && v <= 1e6 && v == std::floor(v)), o.path("oscillations"),
-                           "got " + shown(n) + "; expected a whole number of oscillations");
-          c.oscillations = static_cast<int>(v);
-        }
+        if (o.has("oscillations")) c.oscillations = oscillations_at(o);
         if (o.has("decided_by")) o.text("decided_by");  // import's report, echoed back
         if (o.has("why")) o.text("why");
         if (o.has("name")) o.text("name");

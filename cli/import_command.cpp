@@ -14,6 +14,8 @@
 #include "commands.hpp"
 #include "pendulum/numeric.hpp"
 #include "pendulum/recordings/swings.hpp"
+#include "pendulum/recordings/table.hpp"
+#include "pendulum/files.hpp"
 #include "pendulum/input_error.hpp"
 
 namespace pendulum::cli {
@@ -215,6 +217,24 @@ void add_recording_options(CLI::App& cmd, SwingOptions& options, std::string& se
                  "period, gyro, a, linear_a; - for a column not used (docs/recordings.md, Columns)");
 }
 
+/// Whether --columns names a table's columns (a length, a pivot, a time of
+/// N oscillations, an uncertainty; an x without a y) rather than a recording's.
+bool names_table_columns(const std::string& spec) {
+  if (spec.empty()) return false;
+  try {
+    const auto columns = parse_table_column_spec(spec, "--columns");
+    bool x = false, other_setting = false;
+    for (const auto& c : columns) {
+      x |= c.role == "pivot_position";
+      other_setting |= c.role == "length" || c.role == "pivot_distance" || c.role == "time" ||
+                       c.role.find("_uncertainty") != std::string::npos;
+    }
+    return other_setting || (x && spec.find('y') == std::string::npos);
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
 Command add_import_command(CLI::App& app) {
   struct Options {
     std::string file;
@@ -222,11 +242,14 @@ Command add_import_command(CLI::App& app) {
     SwingOptions swing;
     std::string set;
     std::string columns;
+    bool table = false;
+    int oscillations = 0;
   };
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
       "import", "Reduce a phone, photogate or video-tracker recording to a period, amplitudes and the "
-                "timing and decay parts of a scene (docs/recordings.md)");
+                "timing and decay parts of a scene (docs/recordings.md), or read a table of settings and periods "
+                "into a scene (docs/series.md, Tables)");
   cmd->add_option("recording", o->file, "Recording file (CSV or tab-separated text, or phyphox's zip export)")
       ->required();
   std::vector<std::string> formats = recording_family_names();
@@ -238,11 +261,27 @@ Command add_import_command(CLI::App& app) {
       ->allow_extra_args(false)  // one value each time: the file after it is not a format
       ->take_all();
   add_recording_options(*cmd, o->swing, o->set, o->columns);
+  cmd->add_flag("--table", o->table,
+                "Read the file as a table of settings and periods (lengths or pivots, periods or times of N "
+                "oscillations; docs/series.md, Tables), which a header naming a length or a pivot says by itself");
+  cmd->add_option("--oscillations", o->oscillations,
+                  "Tables: the time column is the time of this many oscillations (a header's \"t10\" says so)")
+      ->check(CLI::Range(1, 1000000));
 
   return {cmd, [o] {
     bool table = false;
     for (const auto& f : o->formats) {
       if (f == "table" || f == "json") table = f == "table";
+    }
+    if (o->table || names_table_columns(o->columns) || file_holds_settings_table(o->file)) {
+      TableOptions options;
+      options.oscillations = o->oscillations;
+      if (!o->columns.empty()) options.columns = parse_table_column_spec(o->columns, "--columns");
+      const SettingsTable t = read_settings_table(o->file, options);
+      const std::string name = printable_name(o->file);
+      for (const RecordingNote& w : t.warnings) std::cerr << "warning: " << name << ": " << w.text << "\n";
+      std::cout << table_scene(t, name);
+      return 0;
     }
     const RecordingSummary summary = analyse_recording(
         o->file, recording_family(o->formats).value_or(RecordingFormat::automatic), o->swing, {}, o->set, o->columns);

@@ -4,7 +4,10 @@
 // whose message is one printable line; a recording that passes must give a
 // finite period, uncertainty and amplitudes. A zip archive is refused here
 // (parse_recording reads text; libzip unpacks a file's bytes), so the zip
-// reader is left to its catalogue cases (tests/bad_recordings/).
+// reader is left to its catalogue cases (tests/bad_recordings/). The same
+// bytes as a table of settings and periods (docs/series.md, "Tables"): a
+// table that reads must make a scene that reads, or refuses clearly, and
+// reduces to a finite g.
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -14,6 +17,9 @@
 #include "fuzz_checks.hpp"
 #include "pendulum/recordings/read.hpp"
 #include "pendulum/recordings/swings.hpp"
+#include "pendulum/recordings/table.hpp"
+#include "pendulum/analysis.hpp"
+#include "pendulum/scene_json.hpp"
 
 using pendulum::fuzz::require;
 
@@ -52,6 +58,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
       }
     }
+  } catch (const pendulum::InputError& e) {
+    pendulum::fuzz::require_clear_message(e);
+  }
+  (void)pendulum::looks_like_settings_table(text);
+  try {
+    const pendulum::SettingsTable t = pendulum::parse_settings_table(text, "fuzz");
+    require(!t.observations.empty(), "a table without observations", "");
+    const pendulum::Analysis a = pendulum::analyse(pendulum::parse_scene(pendulum::table_scene(t, "fuzz")));
+    require(std::isfinite(a.g.value), "table g not finite", "");
   } catch (const pendulum::InputError& e) {
     pendulum::fuzz::require_clear_message(e);
   }

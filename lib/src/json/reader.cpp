@@ -7,6 +7,7 @@
 #include <set>
 
 #include "pendulum/files.hpp"
+#include "pendulum/recordings/table.hpp"
 
 namespace pendulum {
 
@@ -173,6 +174,10 @@ json parse_json(const std::string& given, std::size_t max_bytes) {
   try {
     return json::parse(text, callback);
   } catch (const json::exception& e) {
+    PENDULUM_FAIL_IF(looks_like_settings_table(text), "",
+                     "a table of settings and periods, not a scene (JSON); expected a scene: make one with "
+                     "pendulum-g import TABLE > scene.json, or name the table in a scene, \"observations\": "
+                     "{\"table\": \"lengths.csv\"} (docs/series.md, Tables)");
     if (const auto at = trailing_comma(text)) {
       throw InputError(path(), "not valid JSON: a trailing comma at " + *at +
                                " (JSON allows no comma before } or ]): remove it");
@@ -265,7 +270,7 @@ std::string missing_hint(std::string path) {
       {"length", "the length from the pivot to the ball's centre, e.g. {\"value\": 100.0, \"uncertainty\": 0.2, "
                  "\"unit\": \"cm\"}"},
       {"amplitude", "the angle the ball was pulled aside at the start, e.g. {\"value\": 5, \"uncertainty\": 1, "
-                    "\"unit\": \"deg\"}"},
+                    "\"unit\": \"deg\"}, or \"not recorded\" when nobody wrote it down (docs/scene.md)"},
       {"bob.diameter", "the ball's diameter, e.g. {\"value\": 25.4, \"uncertainty\": 0.1, \"unit\": \"mm\"}; bob may "
                        "be left out (then the corrections that need the ball are skipped)"},
       {"air.pressure", "a pressure, e.g. {\"value\": 1013, \"unit\": \"hPa\"} (hPa, kPa, Pa, mbar, mmHg, ...); air may be "

@@ -47,15 +47,28 @@ const char* leads_out(const std::string& directory, const std::string& name, con
 
 }  // namespace
 
+std::string RecordingReader::resolve(Object& o, const std::string& key, const char* what) const {
+  const std::string name = o.text(key);
+  PENDULUM_FAIL_IF(!files_.directory, o.path(key),
+                   "got " + shown(o.at(key)) +
+                       "; expected numbers: this scene was read as text, not from a file or standard input, "
+                       "so no file it names is opened");
+  // Relative to the scene's directory; an absolute name stays as it is.
+  const std::string file = (std::filesystem::path(*files_.directory) / name).lexically_normal().string();
+  if (!files_.allow_outside) {
+    const char* why = leads_out(*files_.directory, name, file);
+    PENDULUM_FAIL_IF(why, o.path(key),
+                     "got " + shown(o.at(key)) + "; expected a file in the scene's folder or below (" +
+                         (why ? why : "") + "): a scene's " + what + " are read from elsewhere only with --allow-outside");
+  }
+  return file;
+}
+
 std::size_t RecordingReader::read(Object& o, ParsedScene& out) {
   const std::string name = o.text("recording");
   const std::string at = o.path("recording");
   PENDULUM_FAIL_IF(name.empty() || name.find('\0') != std::string::npos, at,
                    "got " + shown(o.at("recording")) + "; expected the name of a recording file");
-  PENDULUM_FAIL_IF(!files_.directory, at,
-                   "got " + shown(o.at("recording")) +
-                       "; expected numbers: this scene was read as text, not from a file or standard input, "
-                       "so no file it names is opened");
   const RecordingFormat format = format_at(o);
   const std::string set = o.has("set") ? o.text("set") : std::string();
   PENDULUM_FAIL_IF(o.has("set") && set.empty(), o.path("set"), "got \"\"; expected the name of a set: a CSV in a zip archive, a PASCO run, a Tracker track");
@@ -79,14 +92,7 @@ std::size_t RecordingReader::read(Object& o, ParsedScene& out) {
   if (o.has("source")) o.text("source");
   o.finish();
 
-  // Relative to the scene's directory; an absolute name stays as it is.
-  const std::string file = (std::filesystem::path(*files_.directory) / name).lexically_normal().string();
-  if (!files_.allow_outside) {
-    const char* why = leads_out(*files_.directory, name, file);
-    PENDULUM_FAIL_IF(why, at,
-                     "got " + shown(o.at("recording")) + "; expected a file in the scene's folder or below (" +
-                         (why ? why : "") + "): a scene's recordings are read from elsewhere only with --allow-outside");
-  }
+  const std::string file = resolve(o, "recording", "recordings");
   const auto same = [&](const Done& d) {
     return d.file == file && d.format == recording_format_name(format) && d.set == set &&
            d.bob_width == options.bob_width && d.summary.column_spec == columns && d.range == options.range;

@@ -28,6 +28,11 @@ class RecordingReader {
   /// column for an error inside it).
   std::size_t read(Object& o, ParsedScene& out);
 
+  /// The file a scene's `o.key` names, resolved against the scene's folder
+  /// and confined to it unless --allow-outside (docs/robustness.md):
+  /// InputError at `o.key` otherwise, or when the scene was read as text.
+  std::string resolve(Object& o, const std::string& key, const char* what) const;
+
  private:
   SceneFiles files_;
   struct Done {

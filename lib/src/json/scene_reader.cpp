@@ -8,6 +8,7 @@
 #include "../plausibility.hpp"
 #include "parts.hpp"
 #include "recording_reader.hpp"
+#include "table_reader.hpp"
 #include "pendulum/models/registry.hpp"
 #include "pendulum/scene_json.hpp"
 
@@ -23,6 +24,87 @@ Object& owner(Object& o, Object* shared, const char* key, ObservationSource& sou
   if (o.has(key) || !shared || !shared->has(key)) return o;
   source.shared.push_back(key);
   return *shared;
+}
+
+/// The range a hand-released amplitude nobody wrote down is taken to lie in
+/// (deg): below 3 deg a metre pendulum's bob moves under 5 cm to a side, too
+/// little to see through ten swings as it decays; above 15 deg is past the
+/// "small angle" every laboratory manual asks for (where theta0^2/16, the
+/// period's first amplitude term, reaches 0.4 %). docs/scene.md, "An
+/// amplitude not recorded".
+constexpr double kHandReleaseDeg[2] = {3.0, 15.0};
+
+/// What to write for an amplitude that is not known, for the messages.
+constexpr const char* kUnrecordedAmplitude =
+    "if the amplitude was not recorded, write \"amplitude\": \"not recorded\" (a hand release, taken as "
+    "3 to 15 deg), or the range it was released in, \"amplitude\": {\"range\": [3, 10], \"unit\": \"deg\"} "
+    "(docs/scene.md)";
+
+/// "not recorded", or {"range": [a, b], "unit": u}: an amplitude known only to lie in a range.
+bool unrecorded(const json& a) { return a.is_string() || (a.is_object() && a.contains("range")); }
+
+/// The amplitude as a uniform distribution over its range (GUM 4.3.7): the
+/// middle, and (b - a)/sqrt(12) as its standard uncertainty. `say`: once for
+/// a shared one; the warning gives the effect on g, theta0 sigma/4 of it
+/// (g goes as (T/T0)^2 and T/T0 = 1 + theta0^2/16 + ...).
+Measured unrecorded_amplitude(Object& owner, ParsedScene& out, bool say) {
+  const json& a = owner.at("amplitude");
+  const std::string path = owner.path("amplitude");
+  double lo = kHandReleaseDeg[0] * kPi / 180.0, hi = kHandReleaseDeg[1] * kPi / 180.0;
+  std::string how = "not recorded; a hand release";
+  if (a.is_string()) {
+    PENDULUM_FAIL_IF(a != "not recorded", path,
+                     "got " + shown(a) + "; expected \"not recorded\", a range ({\"range\": [3, 10], \"unit\": "
+                     "\"deg\"}) or a quantity ({\"value\": 5, \"uncertainty\": 1, \"unit\": \"deg\"})");
+  } else {
+    Object r(a, path, "an object {\"range\": [low, high], \"unit\": ...}");
+    const double factor = unit_at(r, "unit", Dimension::angle).factor;
+    const json& range = r.at("range");
+    PENDULUM_FAIL_IF(!range.is_array() || range.size() != 2, r.path("range"),
+                     "got " + shown(range) + "; expected [low, high], the amplitudes it was released between");
+    lo = factor * finite_number(range[0], [&] { return r.path("range") + "[0]"; }, "an angle (number)");
+    hi = factor * finite_number(range[1], [&] { return r.path("range") + "[1]"; }, "an angle (number)");
+    if (r.has("source")) r.text("source");
+    r.finish();
+    PENDULUM_FAIL_IF(!(lo >= 0.0 && hi > lo && hi < kPi), r.path("range"),
+                     "got " + shown(range) + "; expected 0 <= low < high, below 180 deg");
+    how = "released between " + format_number(lo * 180.0 / kPi, 4) + " and " + format_number(hi * 180.0 / kPi, 4) + " deg";
+  }
+  const double value = 0.5 * (lo + hi), sigma = (hi - lo) / std::sqrt(12.0);
+  if (say) {
+    const double effect = value * sigma / 4.0;
+    out.assumptions.push_back(path + ": " + how + ", taken as uniform over " + format_number(lo * 180.0 / kPi, 4) +
+                              " to " + format_number(hi * 180.0 / kPi, 4) + " deg: " + format_number(value * 180.0 / kPi, 4) +
+                              " +- " + format_number(sigma * 180.0 / kPi, 3) + " deg ((high - low)/sqrt(12))");
+    out.warnings.push_back(path + ": " + how + ": its uncertainty, +- " + format_number(sigma * 180.0 / kPi, 3) +
+                           " deg, moves g by about " + format_number(effect, 2) + " of itself (" +
+                           format_number(effect * 9.80665, 2) + " m/s^2 near the Earth's g), its row " + path +
+                           " in the budget; record the amplitude to remove it");
+  }
+  return {value, sigma};
+}
+
+/// Zero, and an uncertainty as large as the value ("5 +- 5 deg"), are what an
+/// amplitude nobody knows gets written as: the message says what to write.
+void refuse_unknown_amplitude(Object& owner) {
+  const json& a = owner.at("amplitude");
+  if (!a.is_object() || !a.contains("value") || !a["value"].is_number() || !a.contains("unit") || !a["unit"].is_string()) return;
+  const std::string unit_name = a["unit"].get<std::string>();
+  const auto unit = find_unit(unit_name, Dimension::angle);
+  const double raw = a["value"].get<double>();
+  if (!unit || !std::isfinite(raw)) return;  // quantity() says what is wrong
+  const double v = std::isnormal(raw) ? raw : 0.0;
+  const std::string path = owner.path("amplitude");
+  PENDULUM_FAIL_IF(v <= 0.0, path + ".value",
+                   "got " + format_number(v) + " " + unit_name + "; expected a positive angle: " + kUnrecordedAmplitude);
+  if (!a.contains("uncertainty") || !a["uncertainty"].is_number()) return;
+  const double u = a["uncertainty"].get<double>();
+  PENDULUM_FAIL_IF(std::isfinite(u) && u >= v, path + ".uncertainty",
+                   "got " + format_number(u) + " " + unit_name + "; expected an uncertainty smaller than the value (" +
+                       format_number(v) + " " + unit_name + "): an amplitude known only to lie between " +
+                       format_number(std::max(0.0, v - u)) + " and " + format_number(v + u) + " " + unit_name +
+                       " is written \"amplitude\": {\"range\": [" + format_number(std::max(0.0, v - u)) + ", " +
+                       format_number(v + u) + "], \"unit\": \"" + unit_name + "\"} (or \"not recorded\", docs/scene.md)");
 }
 
 /// The keys of one observation, under `o` (the top level, or an item of
@@ -92,7 +174,15 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
         (known ? "(+- " + format_number(u.amplitude * 180.0 / kPi, 2) + " deg from its swings' scatter" +
                      (r.kind == SignalKind::position ? " and its circle's radius)" : ")")
                : std::string("(no uncertainty: a gyroscope's scale, g or a beam's width would set it)")));
+  } else if (unrecorded(amplitude_owner.at("amplitude"))) {
+    const bool shared = &amplitude_owner != &o;
+    const Measured m = unrecorded_amplitude(amplitude_owner, out, !shared || out.observations.empty());
+    v.amplitude = m.value;
+    u.amplitude = m.sigma;
+    source.amplitude_raw = v.amplitude * 180.0 / kPi;
+    source.amplitude_unit = "deg";
   } else {
+    refuse_unknown_amplitude(amplitude_owner);
     std::string of = "pendulum";
     const Measured m = quantity(amplitude_owner, "amplitude", Dimension::angle, Range::positive, &of, "of");
     v.amplitude = m.value;
@@ -124,10 +214,13 @@ void read_series(Object& top, ParsedScene& out, RecordingReader& recordings) {
                          "; expected each observation to hold its own " + key +
                          " (only a length or amplitude measured once for all may be given at the top level)");
   }
-  const json& list = top.at("observations");
+  const json& given = top.at("observations");
+  // A table names its file: its rows become the observations (docs/series.md, "Tables").
+  const json from_table = given.is_object() && given.contains("table") ? read_table_reference(top, out, recordings) : json();
+  const json& list = from_table.is_null() ? given : from_table;
   PENDULUM_FAIL_IF(!list.is_array() || list.empty(), "observations",
                    "got " + shown(list) + "; expected a non-empty array of observations, each with length, "
-                   "amplitude and timing");
+                   "amplitude and timing, or a table of them, {\"table\": \"lengths.csv\"} (docs/series.md)");
   out.series = true;
   for (std::size_t k = 0; k < list.size(); ++k) {
     const std::string path = "observations[" + std::to_string(k) + "]";
@@ -293,6 +386,7 @@ ParsedScene parse_scene(const std::string& text, const SceneFiles& files) {
   ParsedScene out;
   Object top(doc, "", "a JSON object (the scene)");
   read_header(top, out);
+  (void)top.has("import");  // import's report of a table's columns (docs/series.md): free-form, not read
 
   if (top.has("observations")) {
     read_series(top, out, recordings);

@@ -462,7 +462,10 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
   // above its first column, then the header (one time column for all).
   std::vector<std::string> tracks;
   if (header) {
-    for (std::string_view cell : cells(*header)) cols.push_back(classify(cell));
+    for (std::string_view cell : cells(*header)) {
+      cols.push_back(classify(cell));
+      if (table_only(cols.back().role)) cols.back().role = Role::other, cols.back().known = false;
+    }
     while (cols.size() > 1 && cols.back().name.empty()) cols.pop_back();  // a trailing delimiter
     if (several_tracks) {
       if (!above_header || starts_with(*above_header, "#multi")) {

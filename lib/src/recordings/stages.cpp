@@ -201,6 +201,10 @@ const char* role_name(Role role) {
     case Role::counter: return "counter";
     case Role::uncertainty: return "uncertainty";
     case Role::derivative: return "track derivative";
+    case Role::length: return "length";
+    case Role::pivot_distance: return "pivot distance";
+    case Role::pivot_position: return "pivot position";
+    case Role::amplitude: return "amplitude";
     case Role::other: return "unknown";
   }
   return "";
@@ -274,6 +278,21 @@ const Spelling kSpellings[] = {
     {"px", Role::derivative},
     {"py", Role::derivative},
     {"\xce\xb1", Role::derivative},  // α, Tracker's angular acceleration
+    // Tables of settings and periods (table.cpp; docs/series.md, "Tables").
+    {"l", Role::length},
+    {"length", Role::length},
+    {"pendulum length", Role::length},
+    {"string length", Role::length},
+    {"h", Role::pivot_distance},
+    {"pivot distance", Role::pivot_distance},
+    {"distance", Role::pivot_distance},
+    {"pivot position", Role::pivot_position},
+    {"pivot", Role::pivot_position},
+    {"position", Role::pivot_position},
+    {"hole", Role::pivot_position},
+    {"amplitude", Role::amplitude},
+    {"theta0", Role::amplitude},
+    {"\xce\xb8" "0", Role::amplitude},  // θ0
 };
 
 /// Unit spellings, lower case, and their normal form.
@@ -333,6 +352,7 @@ Column classify(std::string_view raw) {
   }
   c.unit = normal_unit(c.unit);
   std::string_view w = trim_spaces(s);
+  c.word = std::string(w);
   // "t_{1}", "x_1": a tracker's numbered object.
   if (const auto u = w.rfind('_'); u != std::string_view::npos && u > 0) {
     std::string_view tail = w.substr(u + 1);

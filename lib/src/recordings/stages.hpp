@@ -93,8 +93,18 @@ enum class Role {
   counter,              ///< an event number or row index
   uncertainty,          ///< the uncertainty of another column
   derivative,           ///< a tracker's vx, ax, X', speed: not a swing signal here
+  // A table of settings and periods's words (table.cpp); a recording has none.
+  length,               ///< a pendulum's length (l, L, Length)
+  pivot_distance,       ///< pivot to a rigid body's centre of mass (h)
+  pivot_position,       ///< the pivot's place along the body
+  amplitude,            ///< the amplitude a timing started at
   other,                ///< a word not in the table
 };
+/// True for the words only a table of settings uses: a recording reads them as unknown.
+constexpr bool table_only(Role role) {
+  return role == Role::length || role == Role::pivot_distance || role == Role::pivot_position ||
+         role == Role::amplitude;
+}
 const char* role_name(Role role);
 
 struct Column {
@@ -105,6 +115,7 @@ struct Column {
   int track = 0;     ///< Tracker's track in an export of several (from 1), else 0
   bool prefixed = false;  ///< a "Latest: ", "Run 1: ", "VideoAnalysis: " prefix
   bool known = false;     ///< the word is in the table of spellings
+  std::string word;       ///< the word looked up: lower case, without its unit, prefix or suffix
   std::string decided = "header";  ///< "header", "content" or "option"
 };
 

@@ -1,0 +1,89 @@
+#!/usr/bin/python3
+"""Tables of settings and periods for tests/tables/ and data/ (docs/series.md, "Tables").
+
+Seeded (numpy's default_rng), so that running it again writes the same files:
+    /usr/bin/python3 tests/tools/make_tables.py
+Each table is drawn from the model it is read with: a point bob, T = 2 pi sqrt(L/g) (1 + theta0^2/16)
+for a length, T = 2 pi sqrt((k^2 + h^2)/(g h)) (1 + theta0^2/16) for a rigid body (Kelley 1993,
+Eqs. 55-56, to the first amplitude term), g = 9.81 m/s^2, each timing's amplitude drawn uniform over
+3-15 deg (a hand release whose amplitude nobody wrote down, docs/scene.md), a hand's N(0, 0.06 s) on
+each time read off a stopwatch and rounded to 0.01 s; lengths read off a tape to 1 mm.
+"""
+import math
+import os
+
+import numpy as np
+
+G = 9.81
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+
+
+def amp_factor(rng, n):
+    theta = np.radians(rng.uniform(3.0, 15.0, n))
+    return 1.0 + theta**2 / 16.0
+
+
+def lengths_table(seed, settings_cm, repeats, oscillations=10):
+    """Rows (L in cm, time of `oscillations` in s): each setting's length read once, timed `repeats[i]` times."""
+    rng = np.random.default_rng(seed)
+    rows = []
+    for l_cm, n in zip(settings_cm, repeats):
+        true_l = l_cm / 100.0 + rng.normal(0.0, 0.001)  # the tape's reading error, once per setting
+        t = oscillations * 2 * math.pi * math.sqrt(true_l / G) * amp_factor(rng, n) + rng.normal(0.0, 0.06, n)
+        rows += [(l_cm, round(x, 2)) for x in t]
+    return rows
+
+
+def scan_table(seed, h_cm, k=1 / math.sqrt(12), oscillations=10):
+    """Rows (h in cm, sigma_h, T in s, sigma_T): a metre stick (k = 1/sqrt(12) m) timed over ten swings at each hole."""
+    rng = np.random.default_rng(seed)
+    rows = []
+    for h in h_cm:
+        true_h = h / 100.0 + rng.normal(0.0, 0.0005)
+        t10 = oscillations * 2 * math.pi * math.sqrt((k * k + true_h * true_h) / (G * true_h)) * amp_factor(rng, 1)[0]
+        t10 = round(t10 + rng.normal(0.0, 0.06), 2)
+        rows.append((h, 0.05, round(t10 / oscillations, 4), 0.006))
+    return rows
+
+
+def write(path, text, encoding="utf-8"):
+    with open(os.path.join(ROOT, path), "w", encoding=encoding, newline="") as f:
+        f.write(text)
+
+
+def main():
+    # data/: 39 rows at 10 lengths (2 to 7 repeats), no amplitude column.
+    lengths = [40, 50, 60, 70, 80, 90, 100, 110, 120, 130]
+    repeats = [3, 4, 2, 5, 3, 7, 4, 3, 5, 3]
+    rows = lengths_table(2026, lengths, repeats)
+    write("data/pendulum_lengths_table.csv", "L (cm),t10 (s)\n" + "".join(f"{l:.1f},{t:.2f}\n" for l, t in rows))
+    holes = [5, 10, 15, 20, 25, 30, 35, 40, 45]
+    scan = scan_table(2027, holes)
+    write("data/pivot_scan_table.csv",
+          "h (cm),sigma_h (cm),T (s),sigma_T (s)\n" + "".join(f"{h:.1f},{s:.2f},{t:.4f},{u:.3f}\n" for h, s, t, u in scan))
+
+    # tests/tables/: the layouts the reader takes.
+    rows = lengths_table(7, [55, 75, 95, 115, 135], [3, 2, 4, 1, 3])
+    write("tests/tables/semicolon_decimal_comma_bom.csv",
+          "\ufeffLength(cm);10T (s)\n" + "".join(f"{l:.1f};{t:.2f}\n".replace(".", ",") for l, t in rows))
+    write("tests/tables/quoted_header.csv",
+          '"l (m)","t_{10} (s)"\n' + "".join(f'"{l / 100:.3f}","{t:.2f}"\n' for l, t in rows))
+    write("tests/tables/unitless_cm.txt", "L\tt10\n" + "".join(f"{l:.1f}\t{t:.2f}\n" for l, t in rows))
+    periods = [(l, round(t / 10, 3), 0.004) for l, t in lengths_table(8, [45, 65, 85, 105, 125], [1] * 5)]
+    write("tests/tables/periods_with_sigma.tsv",
+          "Length (cm)\tT (s)\t\u03c3T (s)\n" + "".join(f"{l:.1f}\t{t:.3f}\t{u:.3f}\n" for l, t, u in periods))
+    write("tests/tables/headerless_pivot_scan.txt",
+          "".join(f"{h / 100:.3f}, {s / 100:.4f}, {t:.4f}, {u:.3f}\n" for h, s, t, u in scan_table(9, holes)))
+    # Bad tables (tests/bad_recordings/expected.json).
+    write("tests/bad_recordings/table_no_period.csv", "L (cm),theta (deg)\n55,5\n75,5\n")
+    write("tests/bad_recordings/table_one_row.csv", "L (cm),t10 (s)\n55,14.9\n")
+    write("tests/bad_recordings/table_mixed_units.csv", "L (cm),t10 (s)\n55,14.91\n75,17.38\n0.95,19.55\n115,21.53\n")
+    write("tests/bad_recordings/table_text_in_cell.csv", "L (cm),t10 (s)\n55,14.91\n75,17.3B\n95,19.55\n")
+    write("tests/bad_recordings/table_setting_not_together.csv",
+          "L (cm),t10 (s)\n55,14.91\n75,17.38\n55,14.88\n95,19.55\n")
+    write("tests/bad_recordings/table_amplitude_unit_open.csv",
+          "L (cm),t10 (s),theta\n55,14.91,0.5\n75,17.38,0.6\n95,19.55,0.9\n")
+
+
+if __name__ == "__main__":
+    main()

@@ -150,13 +150,14 @@ TEST_CASE("Pivot scans: +-1 sigma holds the truth 68% of the time", "[physical][
   // standard deviation 9.3; the test allows 3.5 standard deviations. The
   // mean chi2 is dof = 15 with a standard error of sqrt(2 dof / 400) = 0.27.
   const int n = 400;
-  int g_in = 0, k_in = 0, c_in = 0;
+  int g_in = 0, g_unscaled_in = 0, k_in = 0, c_in = 0;
   double chi2 = 0.0;
   for (int s = 0; s < n; ++s) {
     const PivotScanSimulation sim = metre_stick(1000 + s);
     const Analysis a = analyse(simulate_pivot_scan({}, sim));
     REQUIRE(a.fit.converged);
     g_in += std::abs(a.g.value - sim.g) <= *a.g.uncertainty;
+    g_unscaled_in += std::abs(a.g.value - sim.g) <= *a.g_uncertainty_unscaled;
     const ParameterResult& k = parameter(a, "radius_of_gyration");
     k_in += std::abs(k.value - sim.radius_of_gyration) <= *k.uncertainty;
     const ParameterResult& c = parameter(a, "center_of_mass_position");
@@ -168,6 +169,64 @@ TEST_CASE("Pivot scans: +-1 sigma holds the truth 68% of the time", "[physical][
   CHECK(std::abs(k_in - 273.1) <= 3.5 * 9.3);
   CHECK(std::abs(c_in - 273.1) <= 3.5 * 9.3);
   CHECK_THAT(chi2, WithinAbs(15.0, 5 * 0.27));
+  // The Birge ratio, applied only where chi2 is improbable, leaves honest
+  // coverage as it was: within one binomial standard deviation.
+  INFO("unscaled " << g_unscaled_in);
+  CHECK(g_in - g_unscaled_in <= 9.3);
+}
+
+TEST_CASE("Pivot scans whose sigmas are 3 times too small: the scaled sigma covers g 60% of the time",
+          "[physical][coverage][dispersion]") {
+  // 400 scans (seeds 1000-1399), every stated sigma divided by 3: unscaled
+  // +-1 sigma holds g 26% of the time, scaled P(|t_15| < 1) = 0.67.
+  const int n = 400;
+  int in = 0, unscaled_in = 0;
+  for (int s = 0; s < n; ++s) {
+    const PivotScanSimulation sim = metre_stick(1000 + s);
+    ParsedScene scene = simulate_pivot_scan({}, sim);
+    for (auto& u : scene.observation_uncertainties) u.period /= 3.0, u.length /= 3.0, u.amplitude /= 3.0;
+    const Analysis a = analyse(scene);
+    in += std::abs(a.g.value - sim.g) <= *a.g.uncertainty;
+    unscaled_in += std::abs(a.g.value - sim.g) <= *a.g_uncertainty_unscaled;
+  }
+  INFO(in << " and, unscaled, " << unscaled_in << " of " << n);
+  CHECK(in >= 0.6 * n);
+  CHECK(unscaled_in < 0.35 * n);
+}
+
+TEST_CASE("A pivot scan at chi2/dof near 60 is suspect, with the scatter's sigma", "[physical][dispersion]") {
+  ParsedScene scene = simulate_pivot_scan({}, metre_stick(11));
+  for (auto& u : scene.observation_uncertainties) {
+    u.period /= std::sqrt(60.0), u.length /= std::sqrt(60.0), u.amplitude /= std::sqrt(60.0);
+  }
+  const Analysis a = analyse(scene);
+  INFO(a.fit.chi2 / a.fit.dof);
+  REQUIRE(a.fit.birge_ratio);
+  CHECK(a.fit.chi2 / a.fit.dof > 30.0);
+  CHECK(a.status == ResultStatus::suspect);
+  REQUIRE_FALSE(a.status_reasons.empty());
+  CHECK_THAT(a.status_reasons.back(), Catch::Matchers::Contains("a pivot position misread"));
+  CHECK_THAT(*a.g.uncertainty, WithinRel(*a.fit.birge_ratio * *a.g_uncertainty_unscaled, 0.01));
+  CHECK_THAT(*parameter(a, "radius_of_gyration").uncertainty,
+             WithinRel(*a.fit.birge_ratio * *parameter(a, "radius_of_gyration").uncertainty_unscaled, 0.01));
+}
+
+TEST_CASE("The pivot scan's textbook curve is in the fit; Kater's is Bessel's formula on the measured periods",
+          "[physical][textbook]") {
+  const ParsedScene scene = simulate_pivot_scan({}, kater(0.8136, 3));
+  const Analysis a = analyse(scene);
+  REQUIRE(a.fit.pivot_scan->textbook);
+  const auto& t = *a.fit.pivot_scan->textbook;
+  // Bessel's 8 pi^2/g = (T1^2 + T2^2)/(h1 + h2) + (T1^2 - T2^2)/(h1 - h2), on the periods as measured.
+  const double c = *scene.apparatus.body->center_of_mass_position;
+  const double T1 = scene.observations[0].period, T2 = scene.observations[1].period;
+  const double h1 = std::abs(scene.observations[0].length - c), h2 = std::abs(scene.observations[1].length - c);
+  const double bessel = 8.0 * kPi * kPi / ((T1 * T1 + T2 * T2) / (h1 + h2) + (T1 * T1 - T2 * T2) / (h1 - h2));
+  CHECK_THAT(t.g.value, WithinRel(bessel, 1e-12));
+  REQUIRE(t.g.uncertainty);
+  CHECK(*t.g.uncertainty > 0.0);
+  REQUIRE(t.center_of_mass_position);
+  CHECK(*t.center_of_mass_position == c);
 }
 
 TEST_CASE("The bundled physical scenes are what their generator writes, and give back their truth",

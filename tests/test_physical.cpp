@@ -12,6 +12,7 @@
 #include "pendulum/scene_json.hpp"
 #include "reference.hpp"
 #include "scene_files.hpp"
+#include "simulated_scans.hpp"
 
 using namespace pendulum;
 using Catch::Matchers::Contains;
@@ -31,25 +32,6 @@ AnalysisOptions exact() {
   AnalysisOptions options;
   options.reduction.amplitude_method = AmplitudeMethod::agm;
   return options;
-}
-
-/// A metre stick (1 m by 28 mm, k = sqrt((L^2 + w^2)/12) = 0.28890 m) hung
-/// at 18 holes 5 cm apart, 5 deg, a stopwatch's 0.5 ms on each mean period,
-/// 0.5 mm on each position, 0.5 deg on each amplitude.
-PivotScanSimulation metre_stick(std::uint64_t seed) {
-  PivotScanSimulation sim;
-  sim.g = 9.8034;
-  sim.radius_of_gyration = std::sqrt(box(1.0, 0.028, 0.006).gyration_squared);
-  sim.center_of_mass_position = 0.5003;
-  for (int i = 1; i <= 19; ++i) {
-    if (i != 10) sim.pivot_positions.push_back(0.05 * i);
-  }
-  sim.amplitudes.assign(sim.pivot_positions.size(), 5.0 * test::kDegree);
-  sim.period_sigma = 5e-4;
-  sim.position_sigma = 5e-4;
-  sim.amplitude_sigma = 0.5 * test::kDegree;
-  sim.seed = seed;
-  return sim;
 }
 
 /// Kater's pendulum: k = 0.28 m, one pivot 0.25 m above the centre, the
@@ -73,7 +55,7 @@ PivotScanSimulation kater(double second_pivot, std::uint64_t seed) {
 }  // namespace
 
 TEST_CASE("Pivot scan: a noiseless metre stick gives back g, k and the centre", "[physical]") {
-  PivotScanSimulation sim = metre_stick(1);
+  PivotScanSimulation sim = test::metre_stick(1);
   sim.noise = false;
   const Analysis a = analyse(simulate_pivot_scan({}, sim), exact());
   INFO(a.fit.termination);
@@ -153,7 +135,7 @@ TEST_CASE("Pivot scans: +-1 sigma holds the truth 68% of the time", "[physical][
   int g_in = 0, g_unscaled_in = 0, k_in = 0, c_in = 0;
   double chi2 = 0.0;
   for (int s = 0; s < n; ++s) {
-    const PivotScanSimulation sim = metre_stick(1000 + s);
+    const PivotScanSimulation sim = test::metre_stick(1000 + s);
     const Analysis a = analyse(simulate_pivot_scan({}, sim));
     REQUIRE(a.fit.converged);
     g_in += std::abs(a.g.value - sim.g) <= *a.g.uncertainty;
@@ -182,9 +164,9 @@ TEST_CASE("Pivot scans whose sigmas are 3 times too small: the scaled sigma cove
   const int n = 400;
   int in = 0, unscaled_in = 0;
   for (int s = 0; s < n; ++s) {
-    const PivotScanSimulation sim = metre_stick(1000 + s);
+    const PivotScanSimulation sim = test::metre_stick(1000 + s);
     ParsedScene scene = simulate_pivot_scan({}, sim);
-    for (auto& u : scene.observation_uncertainties) u.period /= 3.0, u.length /= 3.0, u.amplitude /= 3.0;
+    test::understate(scene, 3.0);
     const Analysis a = analyse(scene);
     in += std::abs(a.g.value - sim.g) <= *a.g.uncertainty;
     unscaled_in += std::abs(a.g.value - sim.g) <= *a.g_uncertainty_unscaled;
@@ -195,10 +177,8 @@ TEST_CASE("Pivot scans whose sigmas are 3 times too small: the scaled sigma cove
 }
 
 TEST_CASE("A pivot scan at chi2/dof near 60 is suspect, with the scatter's sigma", "[physical][dispersion]") {
-  ParsedScene scene = simulate_pivot_scan({}, metre_stick(11));
-  for (auto& u : scene.observation_uncertainties) {
-    u.period /= std::sqrt(60.0), u.length /= std::sqrt(60.0), u.amplitude /= std::sqrt(60.0);
-  }
+  ParsedScene scene = simulate_pivot_scan({}, test::metre_stick(11));
+  test::understate(scene, std::sqrt(60.0));
   const Analysis a = analyse(scene);
   INFO(a.fit.chi2 / a.fit.dof);
   REQUIRE(a.fit.birge_ratio);
@@ -324,7 +304,7 @@ TEST_CASE("Temperature: every length of the body scales by (1 + w C)/(1 + w C_re
 TEST_CASE("Pivot scan of a body in parts, k held and the centre fitted, gives back g", "[physical]") {
   // The metre stick's k as its parts give it (held), its centre fitted; the
   // start's line then runs through the origin in k^2 + h^2.
-  PivotScanSimulation sim = metre_stick(5);
+  PivotScanSimulation sim = test::metre_stick(5);
   sim.noise = false;
   Apparatus<double> app;
   app.body.emplace().radius_of_gyration = sim.radius_of_gyration;
@@ -351,7 +331,7 @@ TEST_CASE("Pivot scans: every fit ends by its own stopping rule in a few steps, 
   // earlier point: started there, a fit takes no step.
   int longest = 0;
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
-    PivotScanSimulation sim = metre_stick(seed);
+    PivotScanSimulation sim = test::metre_stick(seed);
     sim.pivot_positions.resize(10);
     sim.amplitudes.resize(10);
     sim.period_sigma = 1e-3;

@@ -17,10 +17,10 @@
 #include <vector>
 
 #include "pendulum/analysis.hpp"
-#include "pendulum/bodies.hpp"
 #include "pendulum/dispersion.hpp"
 #include "pendulum/pivot_scan_simulation.hpp"
 #include "pendulum/series_simulation.hpp"
+#include "simulated_scans.hpp"
 
 using namespace pendulum;
 
@@ -38,23 +38,6 @@ SeriesSimulation series(int n, std::uint64_t seed) {
   sim.period_sigma = 2e-4;
   sim.length_sigma = 5e-4;
   sim.amplitude_sigma = 0.3 * kDeg;
-  sim.seed = seed;
-  return sim;
-}
-
-/// The metre stick of tests/test_physical.cpp: 18 holes, 5 cm apart.
-PivotScanSimulation metre_stick(std::uint64_t seed) {
-  PivotScanSimulation sim;
-  sim.g = 9.8034;
-  sim.radius_of_gyration = std::sqrt(box(1.0, 0.028, 0.006).gyration_squared);
-  sim.center_of_mass_position = 0.5003;
-  for (int i = 1; i <= 19; ++i) {
-    if (i != 10) sim.pivot_positions.push_back(0.05 * i);
-  }
-  sim.amplitudes.assign(sim.pivot_positions.size(), 5.0 * kDeg);
-  sim.period_sigma = 5e-4;
-  sim.position_sigma = 5e-4;
-  sim.amplitude_sigma = 0.5 * kDeg;
   sim.seed = seed;
   return sim;
 }
@@ -84,7 +67,7 @@ int main(int argc, char** argv) {
   const std::vector<Case> cases = {
       {"series, 6 lengths (dof 4)", [](std::uint64_t s) { return simulate_series({}, series(6, s)); }, 9.8034},
       {"series, 10 lengths (dof 8)", [](std::uint64_t s) { return simulate_series({}, series(10, s)); }, 9.8034},
-      {"pivot scan, 18 holes (dof 15)", [](std::uint64_t s) { return simulate_pivot_scan({}, metre_stick(s)); }, 9.8034},
+      {"pivot scan, 18 holes (dof 15)", [](std::uint64_t s) { return simulate_pivot_scan({}, test::metre_stick(s)); }, 9.8034},
   };
   std::printf("%-30s %-11s", "case", "stated");
   for (const Rule& r : rules) std::printf(" %8s", r.name);
@@ -95,9 +78,7 @@ int main(int argc, char** argv) {
       std::vector<int> in(rules.size(), 0);
       for (int s = 0; s < n; ++s) {
         ParsedScene scene = c.scene(5000 + s);
-        for (auto& u : scene.observation_uncertainties) {
-          u.period /= understated, u.length /= understated, u.amplitude /= understated;
-        }
+        test::understate(scene, understated);
         const Analysis a = analyse(scene);
         const Dispersion d = dispersion(a.fit.chi2, a.fit.dof);
         const double sigma = *a.g_uncertainty_unscaled, own = *a.fit.parameters[0].uncertainty_from_observations;

@@ -692,14 +692,17 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     }
   }
   os << "g                   = " << rounded(a.g.value, a.g.uncertainty) << " m/s^2";
+  const int g_decimals = a.g.uncertainty ? decimals_of(*a.g.uncertainty) : 5;
+  std::string notes;
   if (a.fit.scaled && a.g_uncertainty_unscaled) {
-    os << " (scaled by S = " << format_fixed(*a.fit.birge_ratio, 2) << "; from the stated uncertainties +- "
-       << format_fixed(*a.g_uncertainty_unscaled, decimals_of(*a.g.uncertainty)) << ")";
+    notes = "scaled by S = " + format_fixed(*a.fit.birge_ratio, 2) + "; from the stated uncertainties +- " +
+            format_fixed(*a.g_uncertainty_unscaled, g_decimals);
   }
   if (a.g_period_and_length_uncertainty) {
-    os << " (period and length alone: +- "
-       << format_fixed(*a.g_period_and_length_uncertainty, a.g.uncertainty ? decimals_of(*a.g.uncertainty) : 5) << ")";
+    notes += (notes.empty() ? "" : "; ") + std::string("period and length alone: +- ") +
+             format_fixed(*a.g_period_and_length_uncertainty, g_decimals);
   }
+  if (!notes.empty()) os << " (" << notes << ")";
   os << "\n";
   if (a.expected_g) {
     std::snprintf(line, sizeof line, "expected g          = %.5f +- %.5f m/s^2 (%s)\n", a.expected_g->value,

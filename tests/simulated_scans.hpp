@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "pendulum/analysis.hpp"
 #include "pendulum/bodies.hpp"
 #include "pendulum/parsed_scene.hpp"
 #include "pendulum/pivot_scan_simulation.hpp"
@@ -33,6 +34,26 @@ inline PivotScanSimulation metre_stick(std::uint64_t seed) {
 /// divided by `factor`, the noise left as drawn: understated uncertainties.
 inline void understate(ParsedScene& scene, double factor) {
   for (auto& u : scene.observation_uncertainties) u.period /= factor, u.length /= factor, u.amplitude /= factor;
+}
+
+struct Coverage {
+  int scaled = 0;    ///< times g +- its reported uncertainty held the truth
+  int unscaled = 0;  ///< ... +- the uncertainty from the stated ones alone
+};
+
+/// Over the scenes scene_of(0) ... scene_of(n - 1), their stated
+/// uncertainties divided by `factor`: how often g's interval holds `truth`.
+template <class SceneOf>
+Coverage coverage_of_g(SceneOf scene_of, int n, double truth, double factor) {
+  Coverage c;
+  for (int k = 0; k < n; ++k) {
+    ParsedScene scene = scene_of(k);
+    understate(scene, factor);
+    const Analysis a = analyse(scene);
+    c.scaled += std::abs(a.g.value - truth) <= *a.g.uncertainty;
+    c.unscaled += std::abs(a.g.value - truth) <= *a.g_uncertainty_unscaled;
+  }
+  return c;
 }
 
 }  // namespace pendulum::test

@@ -162,18 +162,10 @@ TEST_CASE("Pivot scans whose sigmas are 3 times too small: the scaled sigma cove
   // 400 scans (seeds 1000-1399), every stated sigma divided by 3: unscaled
   // +-1 sigma holds g 26% of the time, scaled P(|t_15| < 1) = 0.67.
   const int n = 400;
-  int in = 0, unscaled_in = 0;
-  for (int s = 0; s < n; ++s) {
-    const PivotScanSimulation sim = test::metre_stick(1000 + s);
-    ParsedScene scene = simulate_pivot_scan({}, sim);
-    test::understate(scene, 3.0);
-    const Analysis a = analyse(scene);
-    in += std::abs(a.g.value - sim.g) <= *a.g.uncertainty;
-    unscaled_in += std::abs(a.g.value - sim.g) <= *a.g_uncertainty_unscaled;
-  }
-  INFO(in << " and, unscaled, " << unscaled_in << " of " << n);
-  CHECK(in >= 0.6 * n);
-  CHECK(unscaled_in < 0.35 * n);
+  const test::Coverage c = test::coverage_of_g(
+      [](int s) { return simulate_pivot_scan({}, test::metre_stick(1000 + s)); }, n, test::metre_stick(0).g, 3.0);
+  CHECK(c.scaled >= 0.6 * n);
+  CHECK(c.unscaled < 0.35 * n);
 }
 
 TEST_CASE("A pivot scan at chi2/dof near 60 is suspect, with the scatter's sigma", "[physical][dispersion]") {

@@ -306,6 +306,13 @@ json recordings_json(const ParsedScene& scene) {
                     {"skipped_rows", r.summary.dropped},
                     {"periods", p.periods},
                     {"period", {{"value", p.value}, {"uncertainty", p.uncertainty}, {"unit", "s"}}},
+                    // No stated sigma per crossing: the covariance is the residuals' own,
+                    // chi2/dof 1 by construction (docs/output.md).
+                    {"period_fit",
+                     {{"uncertainty_scaling", "residual_variance"},
+                      {"residual_rms_s", p.residual_rms},
+                      {"lag1_correlation", p.lag1_correlation},
+                      {"autocorrelation_inflation", p.inflation}}},
                     {"swing_amplitudes", r.summary.swings.decay.amplitudes.size()}});
   }
   return list;

@@ -191,7 +191,17 @@ void check_numbers(const json& result) {
       // parts' k and centre without parts (docs/output.md).
       if (pointer == "/fit/pivot_scan/bessel_g_m_s2" || parent == "/fit/pivot_scan/from_parts") continue;
       // As many observations as unknowns: no chi2 to judge (docs/output.md).
-      if ((pointer == "/fit/probability" || pointer == "/fit/reduced_chi2") && result.at("fit").at("dof") == 0) continue;
+      if ((pointer == "/fit/probability" || pointer == "/fit/reduced_chi2" || pointer == "/fit/birge_ratio") &&
+          result.at("fit").at("dof") == 0) {
+        continue;
+      }
+      // A decay record without sigmas, or without a degree of freedom: no chi2 to judge.
+      if ((pointer == "/decay_fit/probability" || pointer == "/decay_fit/birge_ratio") &&
+          (result.at("decay_fit").at("uncertainty_scaling") != "sigma" || result.at("decay_fit").at("dof") == 0)) {
+        continue;
+      }
+      // The textbook curve of a scan of pivot distances has no centre.
+      if (pointer == "/fit/pivot_scan/textbook/center_of_mass_position_m") continue;
       // A singular fit: no uncertainty, no correlation, and with every length
       // equal no textbook line (docs/output.md).
       if (result.at("g").at("uncertainty").is_null() &&

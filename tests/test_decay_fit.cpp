@@ -446,3 +446,22 @@ TEST_CASE("The fit ends where its stopping rule judged it, not at Ceres's least 
     CHECK(decrement <= 1e-14 * r.squaredNorm() / static_cast<double>(n - 3));
   }
 }
+
+TEST_CASE("A record whose sigmas are 4 times too small: chi2 says so, and S scales alpha and beta",
+          "[decay_fit][dispersion]") {
+  DecayData d = simulate_decay(paper_record(7, 121));
+  const DecayFit honest = fit_decay(d);
+  for (double& s : d.sigmas) s /= 4.0;  // E[chi2/dof] = 16
+  const DecayFit f = fit_decay(d);
+  CHECK_FALSE(honest.scaled);
+  REQUIRE(f.birge_ratio);
+  CHECK(f.scaled);
+  CHECK(*f.probability < 0.01);
+  CHECK_THAT(*f.birge_ratio, WithinRel(4.0, 0.2));
+  // Same residuals, weights 16 times larger: the unscaled sigmas are the
+  // honest fit's over 4, and S brings them back to sqrt(chi2/dof) times that.
+  for (const auto& [q, h] : {std::pair{f.alpha, honest.alpha}, std::pair{f.beta, honest.beta}}) {
+    CHECK_THAT(*q.uncertainty_unscaled, WithinRel(*h.uncertainty / 4.0, 1e-4));
+    CHECK_THAT(*q.uncertainty, WithinRel(*f.birge_ratio * *q.uncertainty_unscaled, 1e-9));
+  }
+}

@@ -12,6 +12,7 @@
 #include "pendulum/scene_json.hpp"
 #include "reference.hpp"
 #include "scene_files.hpp"
+#include "simulated_scans.hpp"
 
 using namespace pendulum;
 using Catch::Matchers::Contains;
@@ -31,25 +32,6 @@ AnalysisOptions exact() {
   AnalysisOptions options;
   options.reduction.amplitude_method = AmplitudeMethod::agm;
   return options;
-}
-
-/// A metre stick (1 m by 28 mm, k = sqrt((L^2 + w^2)/12) = 0.28890 m) hung
-/// at 18 holes 5 cm apart, 5 deg, a stopwatch's 0.5 ms on each mean period,
-/// 0.5 mm on each position, 0.5 deg on each amplitude.
-PivotScanSimulation metre_stick(std::uint64_t seed) {
-  PivotScanSimulation sim;
-  sim.g = 9.8034;
-  sim.radius_of_gyration = std::sqrt(box(1.0, 0.028, 0.006).gyration_squared);
-  sim.center_of_mass_position = 0.5003;
-  for (int i = 1; i <= 19; ++i) {
-    if (i != 10) sim.pivot_positions.push_back(0.05 * i);
-  }
-  sim.amplitudes.assign(sim.pivot_positions.size(), 5.0 * test::kDegree);
-  sim.period_sigma = 5e-4;
-  sim.position_sigma = 5e-4;
-  sim.amplitude_sigma = 0.5 * test::kDegree;
-  sim.seed = seed;
-  return sim;
 }
 
 /// Kater's pendulum: k = 0.28 m, one pivot 0.25 m above the centre, the
@@ -73,7 +55,7 @@ PivotScanSimulation kater(double second_pivot, std::uint64_t seed) {
 }  // namespace
 
 TEST_CASE("Pivot scan: a noiseless metre stick gives back g, k and the centre", "[physical]") {
-  PivotScanSimulation sim = metre_stick(1);
+  PivotScanSimulation sim = test::metre_stick(1);
   sim.noise = false;
   const Analysis a = analyse(simulate_pivot_scan({}, sim), exact());
   INFO(a.fit.termination);
@@ -150,13 +132,14 @@ TEST_CASE("Pivot scans: +-1 sigma holds the truth 68% of the time", "[physical][
   // standard deviation 9.3; the test allows 3.5 standard deviations. The
   // mean chi2 is dof = 15 with a standard error of sqrt(2 dof / 400) = 0.27.
   const int n = 400;
-  int g_in = 0, k_in = 0, c_in = 0;
+  int g_in = 0, g_unscaled_in = 0, k_in = 0, c_in = 0;
   double chi2 = 0.0;
   for (int s = 0; s < n; ++s) {
-    const PivotScanSimulation sim = metre_stick(1000 + s);
+    const PivotScanSimulation sim = test::metre_stick(1000 + s);
     const Analysis a = analyse(simulate_pivot_scan({}, sim));
     REQUIRE(a.fit.converged);
     g_in += std::abs(a.g.value - sim.g) <= *a.g.uncertainty;
+    g_unscaled_in += std::abs(a.g.value - sim.g) <= *a.g_uncertainty_unscaled;
     const ParameterResult& k = parameter(a, "radius_of_gyration");
     k_in += std::abs(k.value - sim.radius_of_gyration) <= *k.uncertainty;
     const ParameterResult& c = parameter(a, "center_of_mass_position");
@@ -168,6 +151,54 @@ TEST_CASE("Pivot scans: +-1 sigma holds the truth 68% of the time", "[physical][
   CHECK(std::abs(k_in - 273.1) <= 3.5 * 9.3);
   CHECK(std::abs(c_in - 273.1) <= 3.5 * 9.3);
   CHECK_THAT(chi2, WithinAbs(15.0, 5 * 0.27));
+  // The Birge ratio, applied only where chi2 is improbable, leaves honest
+  // coverage as it was: within one binomial standard deviation.
+  INFO("unscaled " << g_unscaled_in);
+  CHECK(g_in - g_unscaled_in <= 9.3);
+}
+
+TEST_CASE("Pivot scans whose sigmas are 3 times too small: the scaled sigma covers g 60% of the time",
+          "[physical][coverage][dispersion]") {
+  // 400 scans (seeds 1000-1399), every stated sigma divided by 3: unscaled
+  // +-1 sigma holds g 26% of the time, scaled P(|t_15| < 1) = 0.67.
+  const int n = 400;
+  const test::Coverage c = test::coverage_of_g(
+      [](int s) { return simulate_pivot_scan({}, test::metre_stick(1000 + s)); }, n, test::metre_stick(0).g, 3.0);
+  CHECK(c.scaled >= 0.6 * n);
+  CHECK(c.unscaled < 0.35 * n);
+}
+
+TEST_CASE("A pivot scan at chi2/dof near 60 is suspect, with the scatter's sigma", "[physical][dispersion]") {
+  ParsedScene scene = simulate_pivot_scan({}, test::metre_stick(11));
+  test::understate(scene, std::sqrt(60.0));
+  const Analysis a = analyse(scene);
+  INFO(a.fit.chi2 / a.fit.dof);
+  REQUIRE(a.fit.birge_ratio);
+  CHECK(a.fit.chi2 / a.fit.dof > 30.0);
+  CHECK(a.status == ResultStatus::suspect);
+  REQUIRE_FALSE(a.status_reasons.empty());
+  CHECK_THAT(a.status_reasons.back(), Catch::Matchers::Contains("a pivot position misread"));
+  CHECK_THAT(*a.g.uncertainty, WithinRel(*a.fit.birge_ratio * *a.g_uncertainty_unscaled, 0.01));
+  CHECK_THAT(*parameter(a, "radius_of_gyration").uncertainty,
+             WithinRel(*a.fit.birge_ratio * *parameter(a, "radius_of_gyration").uncertainty_unscaled, 0.01));
+}
+
+TEST_CASE("The pivot scan's textbook curve is in the fit; Kater's is Bessel's formula on the measured periods",
+          "[physical][textbook]") {
+  const ParsedScene scene = simulate_pivot_scan({}, kater(0.8136, 3));
+  const Analysis a = analyse(scene);
+  REQUIRE(a.fit.pivot_scan->textbook);
+  const auto& t = *a.fit.pivot_scan->textbook;
+  // Bessel's 8 pi^2/g = (T1^2 + T2^2)/(h1 + h2) + (T1^2 - T2^2)/(h1 - h2), on the periods as measured.
+  const double c = *scene.apparatus.body->center_of_mass_position;
+  const double T1 = scene.observations[0].period, T2 = scene.observations[1].period;
+  const double h1 = std::abs(scene.observations[0].length - c), h2 = std::abs(scene.observations[1].length - c);
+  const double bessel = 8.0 * kPi * kPi / ((T1 * T1 + T2 * T2) / (h1 + h2) + (T1 * T1 - T2 * T2) / (h1 - h2));
+  CHECK_THAT(t.g.value, WithinRel(bessel, 1e-12));
+  REQUIRE(t.g.uncertainty);
+  CHECK(*t.g.uncertainty > 0.0);
+  REQUIRE(t.center_of_mass_position);
+  CHECK(*t.center_of_mass_position == c);
 }
 
 TEST_CASE("The bundled physical scenes are what their generator writes, and give back their truth",
@@ -265,7 +296,7 @@ TEST_CASE("Temperature: every length of the body scales by (1 + w C)/(1 + w C_re
 TEST_CASE("Pivot scan of a body in parts, k held and the centre fitted, gives back g", "[physical]") {
   // The metre stick's k as its parts give it (held), its centre fitted; the
   // start's line then runs through the origin in k^2 + h^2.
-  PivotScanSimulation sim = metre_stick(5);
+  PivotScanSimulation sim = test::metre_stick(5);
   sim.noise = false;
   Apparatus<double> app;
   app.body.emplace().radius_of_gyration = sim.radius_of_gyration;
@@ -292,7 +323,7 @@ TEST_CASE("Pivot scans: every fit ends by its own stopping rule in a few steps, 
   // earlier point: started there, a fit takes no step.
   int longest = 0;
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
-    PivotScanSimulation sim = metre_stick(seed);
+    PivotScanSimulation sim = test::metre_stick(seed);
     sim.pivot_positions.resize(10);
     sim.amplitudes.resize(10);
     sim.period_sigma = 1e-3;

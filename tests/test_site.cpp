@@ -2,6 +2,7 @@
 // a measured reference preferred to it.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "pendulum/analysis.hpp"
@@ -44,6 +45,21 @@ TEST_CASE("Normal gravity falls with height by the free-air gradient", "[site]")
   // 0.3086 mGal/m); over 1 km its change with height stays below 0.1%.
   const double drop = normal_gravity(45.0, 0.0) - normal_gravity(45.0, 1000.0);
   CHECK_THAT(drop, WithinRel(3.086e-3, 2e-3));
+}
+
+TEST_CASE("Without a site, g is compared with standard gravity and the Earth's surface range", "[site]") {
+  const ExpectedGravity e = earth_surface_gravity();
+  CHECK(e.value == 9.80665);  // standard gravity, CGPM 1901
+  CHECK(e.source == "earth_surface_range");
+  REQUIRE(e.range);
+  // The poles at sea level: WGS84's published gamma_p. The equator 4000 m up:
+  // gamma_e less the free-air gradient's 0.3086 mGal/m, to its second-order term.
+  CHECK_THAT(e.range->second, WithinAbs(kGammaPole, 1e-9));
+  CHECK_THAT(e.range->first, WithinAbs(kGammaEquator - 3.086e-6 * kSurfaceHeightHigh, 1e-4));
+  CHECK(e.uncertainty == std::max(e.value - e.range->first, e.range->second - e.value));
+  const Analysis a = analyse(parse_scene(test::nelson_olsson_text()));
+  CHECK(a.expected_g);  // Nelson & Olsson give a site
+  CHECK_FALSE(a.surface_g);
 }
 
 TEST_CASE("A measured reference g is preferred to normal gravity", "[site]") {

@@ -10,6 +10,7 @@
 #include <boost/math/special_functions/gamma.hpp>
 #include <ceres/jet.h>
 
+#include "pendulum/dispersion.hpp"
 #include "pendulum/input_error.hpp"
 #include "pendulum/models/registry.hpp"
 #include "pendulum/period_fit.hpp"
@@ -145,6 +146,43 @@ std::array<double, 3> physical_start(const ParsedScene& scene, const std::array<
 }
 
 namespace {
+
+/// The pivot scan's textbook curve (PivotScan::Textbook) on the scene's
+/// measured periods.
+PivotScan::Textbook pivot_textbook(const ParsedScene& scene, const std::array<bool, 3>& fitted) {
+  using M = PhysicalPendulum;
+  const std::array<double, 3> t = physical_start(scene, fitted);
+  const auto& obs = scene.observations;
+  const auto& body = scene.apparatus.body;
+  const bool known_k = body && body->radius_of_gyration;
+  const bool positions = std::any_of(obs.begin(), obs.end(), [](const auto& o) { return o.setting == Setting::pivot_position; });
+  const double center = t[M::center_of_mass_position], k2 = known_k ? t[M::radius_of_gyration] * t[M::radius_of_gyration] : 0.0;
+  const bool intercept = !known_k && obs.size() > 1 && fitted[M::radius_of_gyration];
+  // physical_start's unweighted line T^2 h = a (h^2 + k^2) + b: its slope is
+  // sum c_i y_i, c_i = (x_i - mean x)/Sxx (x_i/sum x^2 through the origin),
+  // and y_i - a x_i moves by 2 T h dT + (T^2 - 2 a h) dh.
+  std::vector<double> h(obs.size()), x(obs.size());
+  double mean = 0.0;
+  for (std::size_t i = 0; i < obs.size(); ++i) {
+    h[i] = obs[i].setting == Setting::pivot_position ? std::abs(obs[i].length - center) : obs[i].length;
+    x[i] = h[i] * h[i] + k2;
+    if (intercept) mean += x[i] / obs.size();
+  }
+  double sxx = 0.0;
+  for (double xi : x) sxx += (xi - mean) * (xi - mean);
+  const double a = 4.0 * kPi * kPi / t[M::g];
+  double variance = 0.0;
+  for (std::size_t i = 0; i < obs.size(); ++i) {
+    const double c = (x[i] - mean) / sxx, T = obs[i].period;
+    const auto& u = scene.observation_uncertainties[i];
+    const double dt = 2.0 * T * h[i] * u.period, dh = (T * T - 2.0 * a * h[i]) * u.length;
+    variance += c * c * (dt * dt + dh * dh);
+  }
+  const double sigma = t[M::g] * std::sqrt(variance) / a;
+  return {{t[M::g], std::isfinite(sigma) ? std::optional<double>(sigma) : std::nullopt},
+          t[M::radius_of_gyration],
+          positions ? std::optional<double>(center) : std::nullopt};
+}
 
 /// One input: a scalar of the apparatus, of one observation, or given once
 /// for several observations of a series (ObservationSource::shared).
@@ -498,9 +536,11 @@ class Fit {
 
   void report() {
     const double g = p_[0];
-    out_.g = {g, deviation(covariance_(0, 0))};
-    out_.g_period_and_length_uncertainty = deviation(covariance_pl_(0, 0));
     report_parameters();
+    const ParameterResult& fitted_g = out_.fit.parameters[0];
+    out_.g = {g, fitted_g.uncertainty};
+    out_.g_uncertainty_unscaled = fitted_g.uncertainty_unscaled;
+    out_.g_period_and_length_uncertainty = deviation(covariance_pl_(0, 0));
     report_observations(g);
     report_budget();
     out_.fit.model = Model::kName;
@@ -518,14 +558,23 @@ class Fit {
 
   void report_parameters() {
     FitReport& fit = out_.fit;
+    fit.dof = static_cast<int>(k_) - free_count_;
+    const Dispersion d = dispersion(fit.chi2, fit.dof);
+    fit.probability = d.probability;
+    fit.birge_ratio = d.birge_ratio;
+    fit.scaled = d.over_dispersed && !singular_;
     std::vector<int> free;
     for (int i = 0; i < P; ++i) {
       const ParameterInfo& info = Model::kParameterInfo[i];
       std::optional<double> from_periods;
       // (J^T W J)^-1 of the weighted residuals: what ceres::Covariance gives.
       if (fitted_[i] && k_ > 1 && !singular_) from_periods = std::sqrt(inverse_(i, i));
-      fit.parameters.push_back({info.name, info.unit, p_[i], fitted_[i] ? deviation(covariance_(i, i)) : std::nullopt,
-                                from_periods, fitted_[i]});
+      const std::optional<double> stated = fitted_[i] ? deviation(covariance_(i, i)) : std::nullopt;
+      // The scatter tests the observations' own uncertainties, (J^T W J)^-1: S scales that share.
+      const std::optional<double> supported =
+          fit.scaled && stated ? std::optional<double>(scaled_uncertainty(*stated, *from_periods, d.applied_scale()))
+                               : stated;
+      fit.parameters.push_back({info.name, info.unit, p_[i], supported, from_periods, fitted_[i], stated});
       if (fitted_[i]) free.push_back(i);
     }
     if (!singular_) {
@@ -535,8 +584,6 @@ class Fit {
         }
       }
     }
-    fit.dof = static_cast<int>(k_) - free_count_;
-    if (fit.dof > 0) fit.probability = boost::math::gamma_q(fit.dof / 2.0, fit.chi2 / 2.0);
   }
 
   void report_observations(double g) {
@@ -656,16 +703,14 @@ class Fit {
         }
       }
     }
+    // Too large a chi2 makes the result suspect (status.cpp); too small a one is only said.
     if (k_ > 1 && out_.fit.probability) {
-      const double upper = *out_.fit.probability;
       const double lower = boost::math::gamma_p(out_.fit.dof / 2.0, out_.fit.chi2 / 2.0);
-      if (upper < 1e-3 || lower < 1e-3) {
-        out_.warnings.push_back(
-            "fit: chi2 = " + format_number(out_.fit.chi2, 4) + " for " + std::to_string(out_.fit.dof) +
-            " degrees of freedom (chi2/dof = " + format_number(out_.fit.chi2 / out_.fit.dof, 4) + "); so " +
-            (upper < 1e-3 ? "large" : "small") + " a chi2 has probability " + format_number(std::min(upper, lower), 2) +
-            (upper < 1e-3 ? ": the periods' uncertainties are too small, or the model misses something"
-                          : ": the periods' uncertainties are too large"));
+      if (lower < 1e-3) {
+        out_.warnings.push_back("fit: chi2 = " + format_number(out_.fit.chi2, 4) + " for " +
+                                std::to_string(out_.fit.dof) + " degrees of freedom (chi2/dof = " +
+                                format_number(out_.fit.chi2 / out_.fit.dof, 4) + "); so small a chi2 has probability " +
+                                format_number(lower, 2) + ": the periods' uncertainties are too large");
       }
     }
   }
@@ -725,6 +770,7 @@ class Fit {
       }
       scan.conjugates.push_back(c);
     }
+    scan.textbook = pivot_textbook(scene_, fitted_);
     review_kater(scan);
     check_against_parts(scan);
     warn_about_buoyancy();
@@ -859,11 +905,16 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
   for (auto& w : warn_about_skipped_parts(scene, options.negligible_fraction)) out.warnings.push_back(std::move(w));
 
   if (scene.site) out.expected_g = expected_gravity(*scene.site);
-  if (out.expected_g && out.g.uncertainty) {
-    const double combined = std::hypot(*out.g.uncertainty, out.expected_g->uncertainty);
-    const double z = (out.g.value - out.expected_g->value) / combined;
-    if (combined > 0.0 && std::isfinite(z)) out.z_score = z;
-  }
+  if (!out.expected_g) out.surface_g = earth_surface_gravity();
+  const auto z_against = [&](const ExpectedGravity& expected) -> std::optional<double> {
+    if (!out.g.uncertainty) return std::nullopt;
+    const double combined = std::hypot(*out.g.uncertainty, expected.uncertainty);
+    const double z = (out.g.value - expected.value) / combined;
+    if (combined > 0.0 && std::isfinite(z)) return z;
+    return std::nullopt;
+  };
+  if (out.expected_g) out.z_score = z_against(*out.expected_g);
+  if (out.surface_g) out.surface_z = z_against(*out.surface_g);
 
   // An uncertainty so large that the propagated ones overflow (1e300 on a
   // rate, say) is the input's fault: name the input that contributes most.

@@ -1,5 +1,7 @@
 #include "pendulum/decay_fit.hpp"
 
+#include "pendulum/dispersion.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -273,7 +275,15 @@ DecayFit report(const DecayData& data, DecayModel model, const Solution& s,
   f.dof = n - fitted;
   f.uncertainty_scaling = weighted ? "sigma" : "residual_variance";
   f.residual_standard_error = f.dof > 0 ? std::sqrt(s.unweighted_squares / f.dof) : 0.0;
-  const double scale = weighted ? 1.0 : (f.dof > 0 ? f.chi2 / f.dof : 0.0);
+  const double unscaled = weighted ? 1.0 : (f.dof > 0 ? f.chi2 / f.dof : 0.0);
+  double scale = unscaled;
+  if (weighted) {
+    const Dispersion d = dispersion(f.chi2, f.dof);
+    f.probability = d.probability;
+    f.birge_ratio = d.birge_ratio;
+    f.scaled = d.over_dispersed;
+    scale = d.applied_scale() * d.applied_scale();
+  }
   if (s.covariance) {
     for (int i = 0; i < 9; ++i) f.covariance[i] = (*s.covariance)[i] * scale;
   }
@@ -283,6 +293,7 @@ DecayFit report(const DecayData& data, DecayModel model, const Solution& s,
     if (!is_fitted) return;
     q.at_bound = s.p[i] == 0.0;
     if (s.covariance) {
+      q.uncertainty_unscaled = std::sqrt(std::max((*s.covariance)[4 * i] * unscaled, 0.0));
       q.uncertainty = std::sqrt(std::max(f.covariance[4 * i], 0.0));
       q.significant = std::abs(q.value) > 2.0 * *q.uncertainty;
     }

@@ -6,6 +6,7 @@
 
 #include "pendulum/air.hpp"
 #include "pendulum/analysis.hpp"
+#include "pendulum/dispersion.hpp"
 #include "pendulum/drag.hpp"
 #include "pendulum/numeric.hpp"
 #include "plausibility.hpp"
@@ -298,6 +299,30 @@ void judge_decay_record(const ParsedScene& scene, std::vector<std::string>& reas
                           : "degrees labelled rad? fix decay.data.amplitude_unit (\"deg\")"));
 }
 
+/// Fits whose chi2 is improbably large (dispersion.hpp): what scatters, by
+/// how much, what it means, and the uncertainty the scatter supports.
+void judge_dispersion(const ParsedScene& scene, const Analysis& a, std::vector<std::string>& reasons) {
+  if (a.fit.scaled && a.g.uncertainty && a.g_uncertainty_unscaled) {
+    const bool rigid = scene.model == PeriodModelKind::physical_pendulum;
+    reasons.push_back(
+        "fit: " + dispersion_finding(dispersion(a.fit.chi2, a.fit.dof), "the observations scatter about the fit") +
+        ": uncertainties understated, or something the model misses (" +
+        (rigid ? "a pivot position misread, a miscounted oscillation, a body that is not rigid"
+               : "a miscounted oscillation, a length misread or taken to another point") +
+        ")? g's uncertainty is the one the scatter supports, " + format_number(*a.g.uncertainty, 3) +
+        " m/s^2: the share of the observations' own uncertainties scaled by the Birge ratio S = " +
+        format_number(*a.fit.birge_ratio, 3) + " (from the stated uncertainties alone " +
+        format_number(*a.g_uncertainty_unscaled, 3) + " m/s^2)");
+  }
+  if (a.decay_fit && a.decay_fit->scaled) {
+    const DecayFit& f = *a.decay_fit;
+    reasons.push_back("decay.data: " + dispersion_finding(dispersion(f.chi2, f.dof), "the amplitudes scatter about Eq. (25)") +
+                      ": decay.data.sigmas understated, or damping the law misses (a pivot's friction, a swing "
+                      "that is not planar)? alpha's and beta's uncertainties, and g's through them, are scaled by "
+                      "the Birge ratio S = " + format_number(*f.birge_ratio, 3));
+  }
+}
+
 }  // namespace
 
 std::optional<std::string> name_slip(double ratio) {
@@ -325,6 +350,7 @@ Verdict judge(const ParsedScene& scene, const Analysis& analysis) {
     v.reasons.push_back("g has no uncertainty: the observations cannot separate the unknowns (the fit's covariance "
                         "is singular); add observations at other settings, or fit fewer unknowns");
   }
+  judge_dispersion(scene, analysis, v.reasons);
   if (bob) v.reasons.push_back(std::move(*bob));
   judge_air(scene, v.reasons);
   judge_amplitudes(scene, v.reasons);

@@ -111,6 +111,9 @@ struct ParameterResult {
   /// ceres::Covariance or curve_fit with absolute sigma would give.
   std::optional<double> uncertainty_from_observations;
   bool fitted;
+  /// `uncertainty` before the Birge ratio was applied (FitReport::scaled);
+  /// equal to it otherwise.
+  std::optional<double> uncertainty_unscaled;
 };
 
 /// The textbook answer beside the fit: T^2 against L as a straight line,
@@ -142,6 +145,18 @@ struct PivotScan {
   /// k and the centre (m) as the body's parts give them, where the fit
   /// replaces them: its check (a warning beyond 3 standard uncertainties).
   std::optional<double> parts_radius_of_gyration, parts_center_of_mass_position;
+  /// The textbook curve T0 = 2 pi sqrt((k^2 + h^2)/(g h)) without corrections:
+  /// the straight line of T^2 h against h^2 on the measured periods (Kelley
+  /// Eq. 55; physical_start), which for Kater's two pivots is Bessel's
+  /// formula on the measured periods. g's uncertainty from the periods' and
+  /// pivots' with k and the centre held at the line's.
+  struct Textbook {
+    Estimate g;                 ///< (m/s^2)
+    double radius_of_gyration;  ///< k (m), the body's where it gives one
+    /// x_c (m), in the frame of pivot_position; empty for pivot distances.
+    std::optional<double> center_of_mass_position;
+  };
+  std::optional<Textbook> textbook;
 };
 
 /// What the fit of a series adds.
@@ -155,6 +170,11 @@ struct FitReport {
   int dof;
   /// P(chi2 >= the one found) for `dof` degrees of freedom; empty at dof 0.
   std::optional<double> probability;
+  /// S = sqrt(chi2/dof), the Birge ratio (PDG's scale factor); empty at dof 0.
+  std::optional<double> birge_ratio;
+  /// chi2 improbably large (dispersion.hpp): the result is suspect and the
+  /// parameters' uncertainties carry S on the share the scatter tests.
+  bool scaled = false;
   bool converged = true;
   std::string method;  ///< "closed_form" or "ceres_levenberg_marquardt"
   std::string termination;
@@ -169,6 +189,9 @@ struct Analysis {
   std::vector<ObservationResult> observations;
   FitReport fit;
   Estimate g;                            ///< (m/s^2)
+  /// g's uncertainty before the Birge ratio was applied (fit.scaled); equal
+  /// to g.uncertainty otherwise.
+  std::optional<double> g_uncertainty_unscaled;
   /// The uncertainty of g from the observations' periods and lengths alone,
   /// as in Nelson & Olsson's Eq. (91) (m/s^2).
   std::optional<double> g_period_and_length_uncertainty;
@@ -188,6 +211,11 @@ struct Analysis {
   /// measurement is from it: (g - expected) / sqrt(sigma_g^2 + sigma_expected^2).
   std::optional<ExpectedGravity> expected_g;
   std::optional<double> z_score;
+  /// Without a site: standard gravity with the range of g over the Earth's
+  /// surface as its uncertainty (earth_surface_gravity()), and z against it.
+  /// The status still judges g against standard gravity by 5% (status.hpp).
+  std::optional<ExpectedGravity> surface_g;
+  std::optional<double> surface_z;
   /// Findings of the analysis itself (the scene's own are in ParsedScene),
   /// among them the corrections skipped for a part not described that
   /// typical values would not leave negligible.

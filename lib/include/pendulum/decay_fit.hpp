@@ -44,6 +44,8 @@ struct FittedParameter {
   bool fitted = false;       ///< varied by the fit
   /// |value| > 2 uncertainty; false for a parameter not fitted.
   bool significant = false;
+  /// `uncertainty` before the Birge ratio was applied (DecayFit::scaled).
+  std::optional<double> uncertainty_unscaled;
 };
 
 struct DecayFit {
@@ -68,6 +70,10 @@ struct DecayFit {
   /// tells the fit's quality. "residual_variance": no sigmas, covariance
   /// scaled by s^2 = SSR/dof.
   std::string uncertainty_scaling;
+  /// With sigmas: P(chi2' >= chi2) and S = sqrt(chi2/dof) (dispersion.hpp); empty otherwise.
+  std::optional<double> probability, birge_ratio;
+  /// With sigmas, chi2 improbably large: the covariance is scaled by S^2.
+  bool scaled = false;
   double residual_standard_error = 0.0;  ///< sqrt(SSR/dof) of the unweighted residuals (rad)
   int points = 0;
   bool converged = false;

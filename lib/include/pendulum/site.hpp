@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace pendulum {
 
@@ -21,8 +22,10 @@ struct Site {
 struct ExpectedGravity {
   double value;        ///< (m/s^2)
   double uncertainty;  ///< (m/s^2)
-  std::string source;  ///< "reference" or "normal_gravity_wgs84"
+  std::string source;  ///< "reference", "normal_gravity_wgs84" or "earth_surface_range"
   std::string note;    ///< what the value leaves out
+  /// The lowest and highest g of the range (m/s^2), for "earth_surface_range".
+  std::optional<std::pair<double, double>> range;
 };
 
 /// Gravity anomalies that normal gravity ignores: typically within
@@ -34,6 +37,16 @@ inline constexpr double kNormalGravityAnomaly = 5e-4;
 /// latitude `latitude_deg` and height `height` (m) above the ellipsoid
 /// (GeographicLib::NormalGravity). Returns |gamma| (m/s^2).
 double normal_gravity(double latitude_deg, double height);
+
+/// Heights of the Earth's surface the range below spans (m): sea level to
+/// 4000 m, above the highest cities with universities (La Paz, 3640 m).
+inline constexpr double kSurfaceHeightHigh = 4000.0;
+
+/// Standard gravity (9.80665 m/s^2) with the range of WGS84 normal gravity
+/// over the Earth's surface as its uncertainty: from the equator at
+/// kSurfaceHeightHigh to the poles at sea level, the larger distance of an
+/// end from standard gravity. What a result without a site is compared with.
+ExpectedGravity earth_surface_gravity();
 
 /// The reference g when the site gives one, else normal gravity; empty when
 /// the site gives neither.

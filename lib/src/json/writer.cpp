@@ -54,7 +54,8 @@ json parameter(const FittedParameter& q, const char* unit) {
           {"unit", unit},
           {"fitted", q.fitted},
           {"at_bound", q.at_bound},
-          {"significant", q.significant}};
+          {"significant", q.significant},
+          {"uncertainty_unscaled", optional_number(q.uncertainty_unscaled)}};
 }
 
 json decay_fit_to_json(const DecayFit& f, const std::optional<Decay<double>>& given) {
@@ -72,6 +73,9 @@ json decay_fit_to_json(const DecayFit& f, const std::optional<Decay<double>>& gi
               {"residual_standard_error_rad", f.residual_standard_error},
               {"residual_variance_rad2", f.residual_standard_error * f.residual_standard_error},
               {"uncertainty_scaling", f.uncertainty_scaling},
+              {"probability", optional_number(f.probability)},
+              {"birge_ratio", optional_number(f.birge_ratio)},
+              {"uncertainties_scaled", f.scaled},
               {"points", f.points},
               {"converged", f.converged},
               {"termination", f.termination},
@@ -171,6 +175,8 @@ json g_json(const Analysis& a) {
                       {"contribution_m_s2", b.contribution}});
   }
   json g = measured(a.g, "m/s^2");
+  g["uncertainty_unscaled"] = optional_number(a.g_uncertainty_unscaled);
+  g["scale_factor"] = a.fit.scaled ? *a.fit.birge_ratio : 1.0;
   g["uncertainty_period_and_length"] = optional_number(a.g_period_and_length_uncertainty);
   g["budget"] = budget;
   if (a.budget_correlation) {
@@ -180,6 +186,20 @@ json g_json(const Analysis& a) {
   }
   g["inputs_without_uncertainty"] = a.inputs_without_uncertainty;
   return g;
+}
+
+/// The textbook curve of a pivot scan (PivotScan::Textbook); null without one.
+json pivot_textbook_json(const PivotScan& scan) {
+  if (!scan.textbook) return nullptr;
+  const PivotScan::Textbook& t = *scan.textbook;
+  return {{"equation", scan.bessel_g ? "T^2 h = (4 pi^2 / g)(k^2 + h^2) through the two pivots: Bessel's formula "
+                                       "8 pi^2/g = (T1^2 + T2^2)/(h1 + h2) + (T1^2 - T2^2)/(h1 - h2) on the measured "
+                                       "periods, no corrections"
+                                     : "T = 2 pi sqrt((k^2 + h^2)/(g h)): the straight line T^2 h = (4 pi^2 / g)(k^2 + "
+                                       "h^2) on the measured periods, no corrections"},
+          {"g", measured(t.g, "m/s^2")},
+          {"radius_of_gyration_m", t.radius_of_gyration},
+          {"center_of_mass_position_m", optional_number(t.center_of_mass_position)}};
 }
 
 json fit_json(const ParsedScene& scene, const Analysis& a) {
@@ -192,7 +212,8 @@ json fit_json(const ParsedScene& scene, const Analysis& a) {
                           {"uncertainty", optional_number(p.uncertainty)},
                           {"uncertainty_from_observations", optional_number(p.uncertainty_from_observations)},
                           {"unit", p.unit},
-                          {"fitted", p.fitted}});
+                          {"fitted", p.fitted},
+                          {"uncertainty_unscaled", optional_number(p.uncertainty_unscaled)}});
     if (p.fitted) names.push_back(p.name);
   }
   json matrix = json::array();
@@ -245,6 +266,8 @@ json fit_json(const ParsedScene& scene, const Analysis& a) {
               {"dof", f.dof},
               {"reduced_chi2", f.dof > 0 ? json(f.chi2 / f.dof) : json(nullptr)},
               {"probability", optional_number(f.probability)},
+              {"birge_ratio", optional_number(f.birge_ratio)},
+              {"uncertainties_scaled", f.scaled},
               {"converged", f.converged},
               {"termination", f.termination},
               {"iterations", f.iterations},
@@ -261,6 +284,7 @@ json fit_json(const ParsedScene& scene, const Analysis& a) {
                                     {"pivot_distance", measured(scan.minimum_pivot_distance, "m")},
                                     {"pivot_positions", positions}}},
                        {"bessel_g_m_s2", optional_number(scan.bessel_g)},
+                       {"textbook", pivot_textbook_json(scan)},
                        {"from_parts", {{"radius_of_gyration_m", optional_number(scan.parts_radius_of_gyration)},
                                        {"center_of_mass_position_m",
                                         optional_number(scan.parts_center_of_mass_position)}}}};
@@ -282,6 +306,13 @@ json recordings_json(const ParsedScene& scene) {
                     {"skipped_rows", r.summary.dropped},
                     {"periods", p.periods},
                     {"period", {{"value", p.value}, {"uncertainty", p.uncertainty}, {"unit", "s"}}},
+                    // No stated sigma per crossing: the covariance is the residuals' own,
+                    // chi2/dof 1 by construction (docs/output.md).
+                    {"period_fit",
+                     {{"uncertainty_scaling", "residual_variance"},
+                      {"residual_rms_s", p.residual_rms},
+                      {"lag1_correlation", p.lag1_correlation},
+                      {"autocorrelation_inflation", p.inflation}}},
                     {"swing_amplitudes", r.summary.swings.decay.amplitudes.size()}});
   }
   return list;
@@ -324,14 +355,16 @@ std::string result_json(const ParsedScene& scene, const Analysis& a, const Analy
   }
   out["assumptions"] = scene.assumptions;
   out["warnings"] = warnings_json(scene, a);
-  if (a.expected_g) {
-    out["expected_g"] = {{"value", a.expected_g->value},
-                         {"uncertainty", a.expected_g->uncertainty},
+  // With a site, its g; without, standard gravity and the Earth's range.
+  if (const auto& expected = a.expected_g ? a.expected_g : a.surface_g) {
+    out["expected_g"] = {{"value", expected->value},
+                         {"uncertainty", expected->uncertainty},
                          {"unit", "m/s^2"},
-                         {"source", a.expected_g->source},
-                         {"note", a.expected_g->note}};
-    out["comparison"] = {{"difference_m_s2", a.g.value - a.expected_g->value},
-                         {"z", optional_number(a.z_score)}};
+                         {"source", expected->source},
+                         {"note", expected->note}};
+    if (expected->range) out["expected_g"]["range_m_s2"] = {expected->range->first, expected->range->second};
+    out["comparison"] = {{"difference_m_s2", a.g.value - expected->value},
+                         {"z", optional_number(a.expected_g ? a.z_score : a.surface_z)}};
   }
   if (a.decay_fit) out["decay_fit"] = decay_fit_to_json(*a.decay_fit, a.decay_given);
   if (!scene.recordings.empty()) out["recordings"] = recordings_json(scene);
@@ -555,8 +588,13 @@ std::string decay_fit_lines(const DecayFit& f) {
     os << line;
   }
   if (f.uncertainty_scaling == "sigma") {
-    std::snprintf(line, sizeof line, "  chi2/dof = %.4g (%d points, %d degrees of freedom)\n",
-                  f.dof > 0 ? f.chi2 / f.dof : 0.0, f.points, f.dof);
+    std::snprintf(line, sizeof line, "  chi2/dof = %.4g (%d points, %d degrees of freedom, probability of a larger chi2 %.3g)\n",
+                  f.dof > 0 ? f.chi2 / f.dof : 0.0, f.points, f.dof, f.probability.value_or(0.0));
+    if (f.scaled) {
+      os << line;
+      std::snprintf(line, sizeof line, "  uncertainties scaled by the Birge ratio S = sqrt(chi2/dof) = %.3g\n",
+                    *f.birge_ratio);
+    }
   } else {
     std::snprintf(line, sizeof line,
                   "  no sigma given: uncertainties scaled by the residual variance %.3g rad^2 "
@@ -622,6 +660,13 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
                     a.fit.chi2 / a.fit.dof, a.fit.probability.value_or(0.0));
       os << line;
     }
+    if (a.fit.scaled) {
+      std::snprintf(line, sizeof line,
+                    "  uncertainties scaled by the Birge ratio S = sqrt(chi2/dof) = %.3g: the observations scatter "
+                    "more than their stated uncertainties allow\n",
+                    *a.fit.birge_ratio);
+      os << line;
+    }
     if (a.fit.pivot_scan) {
       const PivotScan& scan = *a.fit.pivot_scan;
       std::snprintf(line, sizeof line, "Minimum period T0   = %.6f %s s at h = k = %.5f m\n", scan.minimum_period.value,
@@ -630,6 +675,13 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
       if (scan.bessel_g) {
         std::snprintf(line, sizeof line, "Bessel's formula    : g = %.8f m/s^2\n", *scan.bessel_g);
         os << line;
+      }
+      if (const auto& t = scan.textbook) {
+        os << (scan.bessel_g ? "Textbook: Bessel's formula on the measured periods, no corrections: g = "
+                             : "Textbook curve T = 2 pi sqrt((k^2 + h^2)/(g h)), no corrections: g = ")
+           << rounded(t->g.value, t->g.uncertainty) << " m/s^2, k = " << format_fixed(t->radius_of_gyration, 5) << " m";
+        if (t->center_of_mass_position) os << ", centre at " << format_fixed(*t->center_of_mass_position, 5) << " m";
+        os << "\n";
       }
     } else if (!a.fit.textbook) {
       os << "Textbook line T^2 = (4 pi^2/g)(L + offset): none, the lengths are all equal\n";
@@ -647,10 +699,17 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     }
   }
   os << "g                   = " << rounded(a.g.value, a.g.uncertainty) << " m/s^2";
-  if (a.g_period_and_length_uncertainty) {
-    os << " (period and length alone: +- "
-       << format_fixed(*a.g_period_and_length_uncertainty, a.g.uncertainty ? decimals_of(*a.g.uncertainty) : 5) << ")";
+  const int g_decimals = a.g.uncertainty ? decimals_of(*a.g.uncertainty) : 5;
+  std::string notes;
+  if (a.fit.scaled && a.g_uncertainty_unscaled) {
+    notes = "scaled by S = " + format_fixed(*a.fit.birge_ratio, 2) + "; from the stated uncertainties +- " +
+            format_fixed(*a.g_uncertainty_unscaled, g_decimals);
   }
+  if (a.g_period_and_length_uncertainty) {
+    notes += (notes.empty() ? "" : "; ") + std::string("period and length alone: +- ") +
+             format_fixed(*a.g_period_and_length_uncertainty, g_decimals);
+  }
+  if (!notes.empty()) os << " (" << notes << ")";
   os << "\n";
   if (a.expected_g) {
     std::snprintf(line, sizeof line, "expected g          = %.5f +- %.5f m/s^2 (%s)\n", a.expected_g->value,
@@ -664,6 +723,19 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
                     "uncertainty)\n", a.g.value - a.expected_g->value);
     }
     os << line;
+  } else if (a.surface_g) {
+    std::snprintf(line, sizeof line,
+                  "expected g          = %.5f +- %.5f m/s^2 (no site: standard gravity, +- the range of g on the "
+                  "Earth's surface, %.4f to %.4f)\n",
+                  a.surface_g->value, a.surface_g->uncertainty, a.surface_g->range->first, a.surface_g->range->second);
+    os << line;
+    std::snprintf(line, sizeof line, "difference          = %+.5f m/s^2", a.g.value - a.surface_g->value);
+    os << line;
+    if (a.surface_z) {
+      std::snprintf(line, sizeof line, " = %+.2f combined sigma, the range counted as one", *a.surface_z);
+      os << line;
+    }
+    os << "\n";
   }
   os << "status              = " << result_status_name(a.status) << "\n";
   for (const auto& r : a.status_reasons) os << "  " << r << "\n";

@@ -116,6 +116,12 @@ std::string g_comparison(const SceneReport& r) {
   } else {
     row("expected g", "the scene gives no site to compare with");
   }
+  if (r.birge_ratio && r.g_uncertainty_unscaled) {
+    row("uncertainty of g", "scaled by the Birge ratio S = " + format_fixed(*r.birge_ratio, 2) +
+                                " to what the scatter supports (the observations scatter more than their stated "
+                                "uncertainties allow); from the stated uncertainties alone \u00B1 " +
+                                format_fixed(*r.g_uncertainty_unscaled, 5) + " m/s\u00B2");
+  }
   if (r.pivot_scan) {
     row("g of the textbook curve (no corrections)", format_fixed(r.pivot_scan->textbook_g, 5) + " m/s\u00B2");
   } else {

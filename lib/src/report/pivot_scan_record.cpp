@@ -66,7 +66,8 @@ AmplitudeChoice amplitude_choice(const ObservationResult& o) {
 }  // namespace
 
 std::optional<PivotScanRecord> pivot_scan_record(const ParsedScene& given, const Analysis& a) {
-  if (given.model != PeriodModelKind::physical_pendulum || !a.fit.pivot_scan || a.observations.empty()) {
+  if (given.model != PeriodModelKind::physical_pendulum || !a.fit.pivot_scan || !a.fit.pivot_scan->textbook ||
+      a.observations.empty()) {
     return std::nullopt;
   }
   // The apparatus the analysis fitted with: alpha and beta from the decay record's fit.
@@ -143,14 +144,10 @@ std::optional<PivotScanRecord> pivot_scan_record(const ParsedScene& given, const
   x_hi += pad;
 
   // The textbook's straight line in h^2 on the measured periods, without corrections.
-  std::array<bool, M::kParameters> unknowns{true, false, false};
-  for (const auto& name : scene.fit) {
-    for (int i = 1; i < M::kParameters; ++i) unknowns[i] = unknowns[i] || name == M::kParameterInfo[i].name;
-  }
-  const std::array<double, 3> t = physical_start(scene, unknowns);
-  r.textbook_g = t[M::g];
-  r.textbook_k = app.body && app.body->radius_of_gyration ? *app.body->radius_of_gyration : t[M::radius_of_gyration];
-  r.textbook_center = positions ? t[M::center_of_mass_position] : 0.0;
+  const PivotScan::Textbook& t = *scan.textbook;
+  r.textbook_g = t.g.value;
+  r.textbook_k = t.radius_of_gyration;
+  r.textbook_center = t.center_of_mass_position.value_or(0.0);
   auto textbook_at = [&](double h) {
     return ideal_period(equivalent_length(r.textbook_k, h), r.textbook_g);  // Kelley Eqs. (55)-(56), no K
   };

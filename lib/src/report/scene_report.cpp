@@ -8,6 +8,7 @@
 
 #include "pendulum/damping.hpp"
 #include "pendulum/report/recording_report.hpp"
+#include "pendulum/report/svg_plot.hpp"
 
 namespace pendulum::report {
 
@@ -62,9 +63,12 @@ DecayRecord make_decay_record(const DecayData& data, const DecayFit& fit) {
   if (!fit.model_reason.empty()) r.model += " (" + fit.model_reason + ")";
   r.chi2 = fit.chi2;
   r.dof = fit.dof;
-  r.uncertainty_scaling = fit.uncertainty_scaling == "sigma"
-                              ? "from the stated sigmas (chi2/dof tells the fit's quality)"
-                              : "scaled by the residual variance s^2 = SSR/dof (no sigmas stated)";
+  r.uncertainty_scaling = fit.scaled ? "from the stated sigmas, scaled by the Birge ratio S = " +
+                                           format_significant(*fit.birge_ratio, 3) +
+                                           " (chi2 improbably large: the amplitudes scatter more than the sigmas allow)"
+                         : fit.uncertainty_scaling == "sigma"
+                             ? "from the stated sigmas (chi2/dof tells the fit's quality)"
+                             : "scaled by the residual variance s^2 = SSR/dof (no sigmas stated)";
   return r;
 }
 
@@ -79,16 +83,18 @@ SceneReport make_scene_report(const std::string& input, const ParsedScene& scene
   r.status_reasons = a.status_reasons;
   r.g = a.g;
   if (a.fit.textbook) r.g_uncorrected = a.fit.textbook->g;
+  if (a.fit.scaled) r.birge_ratio = a.fit.birge_ratio, r.g_uncertainty_unscaled = a.g_uncertainty_unscaled;
   r.period_measured = {first.period_measured.value, first.period_measured.uncertainty};
   r.period_ideal = first.period_ideal;
   r.trials = first.trials;
   r.oscillations_per_trial = first.oscillations_per_trial;
-  if (a.expected_g) {
-    r.expected_g = Measured{a.expected_g->value, a.expected_g->uncertainty};
-    r.expected_source = a.expected_g->source;
-    r.expected_note = a.expected_g->note;
+  // With a site, its g; without, standard gravity and the Earth's range.
+  if (const auto& expected = a.expected_g ? a.expected_g : a.surface_g) {
+    r.expected_g = Measured{expected->value, expected->uncertainty};
+    r.expected_source = expected->source;
+    r.expected_note = expected->note;
   }
-  r.z = a.z_score;
+  r.z = a.expected_g ? a.z_score : a.surface_z;
   r.negligible_below = first.negligible_below;
   for (const auto& row : first.corrections) {
     r.corrections.push_back({row.info.id, row.info.title, status_name(row.status), row.method, row.reason,

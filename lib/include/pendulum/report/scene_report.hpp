@@ -118,6 +118,9 @@ struct SceneReport {
   /// g of Eq. 5, or of the textbook line of a series (m/s^2); empty when
   /// the lengths determine no line.
   std::optional<Estimate> g_uncorrected;
+  /// Where the fit's chi2 was improbably large: the Birge ratio applied to
+  /// g's uncertainty, and g's uncertainty from the stated ones alone.
+  std::optional<double> birge_ratio, g_uncertainty_unscaled;
   Measured period_measured;   ///< (s)
   Estimate period_ideal;      ///< (s)
   int trials = 0;

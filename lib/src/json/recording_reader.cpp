@@ -173,7 +173,11 @@ void reduce_swing_by_swing(ParsedScene& out) {
   RecordingReduction& reduction = *recording.reduction;
   const SwingAnalysis& a = recording.summary.swings;
   reduction.decay_corrected = out.apparatus.decay.has_value() || out.decay_data.has_value();
-  reduction.shift_sigmas = amplitude_shift_sigmas(a, reduction.decay_corrected);
+  // The part of the change beyond theta0^2/16 decides, with or without a decay
+  // record: every record that reduced as one mean period before issue 19's
+  // item 6 still does (their shifts are below 0.1), and a scene without a decay
+  // keeps its one mean period until that part matters.
+  reduction.shift_sigmas = amplitude_shift_sigmas(a, true);
   const bool asked = reduction.requested == "swing_by_swing";
   PENDULUM_FAIL_IF(asked && out.series, out.sources[0].path + "timing.reduce",
                    "got \"swing_by_swing\" in a series; expected it in a scene of one observation, whose "
@@ -181,8 +185,7 @@ void reduce_swing_by_swing(ParsedScene& out) {
   const bool matters = reduction.shift_sigmas > kSwingBySwingShift;
   if (out.series || !(asked || (reduction.requested == "auto" && matters))) return;
   const std::string shift = format_number(reduction.shift_sigmas, 3) + " sigmas of the period (" +
-                            (reduction.decay_corrected ? "beyond what the decay correction, Eq. 50, follows"
-                                                       : "no decay correction") + ")";
+                            "of the exact factor beyond theta0^2/16)";
   if (!out.sources[0].amplitude_from_recording) {
     PENDULUM_FAIL_IF(asked, "amplitude",
                      "got an amplitude beside timing.reduce \"swing_by_swing\"; expected none: each group of "

@@ -268,17 +268,21 @@ json fit_json(const ParsedScene& scene, const Analysis& a) {
 }
 
 /// How a timing's recording was reduced (docs/recordings.md, "A long decay,
-/// swing by swing"); null for a decay record.
-json reduction_json(const std::optional<RecordingReduction>& r) {
-  if (!r) return nullptr;
-  const bool by_swing = r->swing_by_swing;
-  return {{"requested", r->requested},
-          {"mode", by_swing ? "swing_by_swing" : "mean_period"},
-          {"amplitude_shift_sigmas", std::isfinite(r->shift_sigmas) ? json(r->shift_sigmas) : json(nullptr)},
-          {"shift_of", r->decay_corrected ? "exact_beyond_theta0_squared_over_16" : "exact_finite_amplitude"},
-          {"threshold_sigmas", kSwingBySwingShift},
-          {"groups", by_swing ? json(r->groups.size()) : json(nullptr)},
-          {"periods_per_group", by_swing ? json(r->groups.front().periods) : json(nullptr)}};
+/// swing by swing"); a timing's only, not a decay record's.
+json reduction_json(const RecordingReduction& reduction) {
+  const RecordingReduction* r = &reduction;
+  json out = {{"requested", r->requested},
+              {"mode", r->swing_by_swing ? "swing_by_swing" : "mean_period"},
+              {"shift_of", "exact_beyond_theta0_squared_over_16"},
+              {"decay_corrected", r->decay_corrected},
+              {"threshold_sigmas", kSwingBySwingShift}};
+  // Only what there is: no amplitudes, no shift; one mean period, no groups.
+  if (std::isfinite(r->shift_sigmas)) out["amplitude_shift_sigmas"] = r->shift_sigmas;
+  if (r->swing_by_swing) {
+    out["groups"] = r->groups.size();
+    out["periods_per_group"] = r->groups.front().periods;
+  }
+  return out;
 }
 
 /// Where the timing and decay records came from when the scene names
@@ -296,8 +300,8 @@ json recordings_json(const ParsedScene& scene) {
                     {"skipped_rows", r.summary.dropped},
                     {"periods", p.periods},
                     {"period", {{"value", p.value}, {"uncertainty", p.uncertainty}, {"unit", "s"}}},
-                    {"swing_amplitudes", r.summary.swings.decay.amplitudes.size()},
-                    {"reduction", reduction_json(r.reduction)}});
+                    {"swing_amplitudes", r.summary.swings.decay.amplitudes.size()}});
+    if (r.reduction) list.back()["reduction"] = reduction_json(*r.reduction);
   }
   return list;
 }

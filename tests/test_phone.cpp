@@ -258,7 +258,7 @@ TEST_CASE("A phyphox gyroscope recording of a phone on a string, reduced end to 
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "phone.csv") << test::phyphox_gyroscope_csv(sim, false);
   const std::string scene_text = R"J({
-    "timing": {"recording": "phone.csv"},
+    "timing": {"recording": "phone.csv", "reduce": "mean_period"},
     "decay": {"data": {"recording": "phone.csv"}},
     "length": {"value": 50, "unit": "cm", "measured_to": "top_of_bob"},
     "bob": {"shape": "box", "width": {"value": 7.5, "unit": "cm"}, "height": {"value": 16, "unit": "cm"},

@@ -66,9 +66,10 @@ std::vector<std::string> review_decay_fit(const DecayFit& fit) {
 
 void use_fitted_decay(ParsedScene& scene, const DecayFit& fit) {
   const AngleOf of = scene.decay_data ? scene.decay_data->angle_of : AngleOf::pendulum;  // beta is of this angle
-  scene.apparatus.decay = Decay<double>{fit.alpha.value, fit.beta.value, of};
+  const bool over_timing = !scene.swing_by_swing;
+  scene.apparatus.decay = Decay<double>{fit.alpha.value, fit.beta.value, of, over_timing};
   scene.apparatus_uncertainty.decay =
-      Decay<double>{fit.alpha.uncertainty.value_or(0.0), fit.beta.uncertainty.value_or(0.0), of};
+      Decay<double>{fit.alpha.uncertainty.value_or(0.0), fit.beta.uncertainty.value_or(0.0), of, over_timing};
   if (fit.alpha.uncertainty && fit.beta.uncertainty) {
     scene.input_covariances.push_back({"decay.alpha", "decay.beta", fit.covariance[1]});
   }

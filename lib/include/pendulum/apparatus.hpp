@@ -172,9 +172,13 @@ struct Decay {
   T alpha;  ///< (1/s)
   T beta;   ///< (1/(s rad)), of the angle `angle_of`
   AngleOf angle_of = AngleOf::pendulum;  ///< whose angle the decay record followed
+  /// Eq. (50) follows the amplitude over each timing; false where every
+  /// observation is a group of a recording's swings already at its own
+  /// amplitude (a long decay reduced swing by swing, recordings/swing_series.hpp).
+  bool over_timing = true;
   template <class A, class B, class F>
   static void zip(A& a, B& b, F& f) {
-    if constexpr (!std::is_const_v<B>) b.angle_of = a.angle_of;
+    if constexpr (!std::is_const_v<B>) b.angle_of = a.angle_of, b.over_timing = a.over_timing;
     f({"decay.alpha", "1/s"}, a.alpha, b.alpha);
     f({"decay.beta", "1/(s rad)"}, a.beta, b.beta);
   }

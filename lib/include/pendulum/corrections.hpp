@@ -260,7 +260,11 @@ void visit_corrections(const Apparatus<T>& app, const Swing<T>& s, const Amplitu
     const T beta = body_decay ? T(d.beta / c) : d.beta;
     set(Id::linear_damping, linear_damping(d.alpha, omega0), "eq34");
     set(Id::quadratic_damping, quadratic_damping(beta, omega0, theta0), "eq48");
-    set(Id::amplitude_decay, amplitude_decay(theta0, d.alpha, beta, s.trial_duration), "eq50");
+    if (d.over_timing) {
+      set(Id::amplitude_decay, amplitude_decay(theta0, d.alpha, beta, s.trial_duration), "eq50");
+    } else {
+      skip({Id::amplitude_decay}, "reduced swing by swing: each group of swings is corrected at its own amplitude");
+    }
   }
 
   if (!app.support) {

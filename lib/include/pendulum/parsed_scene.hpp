@@ -11,7 +11,7 @@
 #include "pendulum/decay_fit.hpp"
 #include "pendulum/observation.hpp"
 #include "pendulum/period_model.hpp"
-#include "pendulum/recordings/swings.hpp"
+#include "pendulum/recordings/swing_series.hpp"
 #include "pendulum/site.hpp"
 
 namespace pendulum {
@@ -45,6 +45,19 @@ struct ObservationSource {
   std::string path_of(const std::string& key) const { return is_shared(key) ? key : path + key; }
   /// Index in ParsedScene::recordings when the timing names a recording.
   std::optional<std::size_t> recording = std::nullopt;
+  /// The amplitude is the recording's, not the scene's own.
+  bool amplitude_from_recording = false;
+};
+
+/// How a recording named by a scene's timing was reduced (docs/recordings.md,
+/// "A long decay, swing by swing").
+struct RecordingReduction {
+  std::string requested = "auto";  ///< the timing's "reduce": auto, mean_period or swing_by_swing
+  bool swing_by_swing = false;
+  /// amplitude_shift_sigmas() of the record, against kSwingBySwingShift; NaN without amplitudes.
+  double shift_sigmas = 0.0;
+  bool decay_corrected = false;  ///< the shift is of the part Eq. 50 leaves out
+  std::vector<SwingGroup> groups;  ///< the series' observations, when swing by swing
 };
 
 /// A recording a scene names in place of numbers (`timing` or `decay.data`,
@@ -53,6 +66,8 @@ struct SceneRecording {
   std::string path;  ///< JSON path of the object naming it: "timing", "observations[2].timing", "decay.data"
   std::string name;  ///< as written in the scene; summary.file is the path opened
   RecordingSummary summary;
+  /// For a timing (not a decay record): how its periods were reduced.
+  std::optional<RecordingReduction> reduction = std::nullopt;
 };
 
 struct ParsedScene {
@@ -64,6 +79,9 @@ struct ParsedScene {
   std::vector<ObservationSource> sources;  ///< one per observation
   /// The file holds "observations" (a series), not one observation's keys at the top.
   bool series = false;
+  /// The series is one recording's groups of swings (RecordingReduction):
+  /// Eq. (50) is not applied over them (Decay::over_timing).
+  bool swing_by_swing = false;
   /// Unknowns besides g ("fit"), by the period model's parameter names.
   std::vector<std::string> fit;
   std::string title;

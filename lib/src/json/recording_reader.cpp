@@ -120,7 +120,18 @@ void read_recorded_timing(Object& parent, const std::string& prefix, Observation
                      "got both recording and " + std::string(key) +
                          "; expected one of them: the recording gives the periods and their uncertainty");
   }
+  RecordingReduction reduction;
+  if (t.has("reduce")) {
+    reduction.requested = t.text("reduce");
+    PENDULUM_FAIL_IF(reduction.requested != "auto" && reduction.requested != "mean_period" &&
+                         reduction.requested != "swing_by_swing",
+                     t.path("reduce"),
+                     "got " + shown(t.at("reduce")) + "; expected \"auto\" (swing by swing where the amplitude's "
+                     "change matters against the period's uncertainty, the default), \"mean_period\" or "
+                     "\"swing_by_swing\"");
+  }
   const std::size_t k = recordings.read(t, out);
+  out.recordings[k].reduction = reduction;
   const RecordingSummary& r = out.recordings[k].summary;
   const PeriodEstimate& p = r.swings.period;
   PENDULUM_FAIL_IF(p.periods < 1 || !(p.value > 0.0) || !std::isfinite(p.uncertainty), t.path("recording"),
@@ -160,6 +171,85 @@ DecayData read_recorded_decay(Object& decay, ParsedScene& out, RecordingReader& 
   out.assumptions.push_back(d.path() + ": from the recording " + r.file + ", " + std::to_string(data.times.size()) +
                             " swing amplitudes, without sigmas (the fit scales by its residuals)");
   return data;
+}
+
+void reduce_swing_by_swing(ParsedScene& out) {
+  if (out.sources.empty() || !out.sources[0].recording) return;
+  SceneRecording& recording = out.recordings[*out.sources[0].recording];
+  RecordingReduction& reduction = *recording.reduction;
+  const SwingAnalysis& a = recording.summary.swings;
+  reduction.decay_corrected = out.apparatus.decay.has_value() || out.decay_data.has_value();
+  // The part of the change beyond theta0^2/16 decides, with or without a decay
+  // record: every record that reduced as one mean period before issue 19's
+  // item 6 still does (their shifts are below 0.1), and a scene without a decay
+  // keeps its one mean period until that part matters.
+  reduction.shift_sigmas = amplitude_shift_sigmas(a, true);
+  const bool asked = reduction.requested == "swing_by_swing";
+  PENDULUM_FAIL_IF(asked && out.series, out.sources[0].path + "timing.reduce",
+                   "got \"swing_by_swing\" in a series; expected it in a scene of one observation, whose "
+                   "recording becomes the series of its swings");
+  const bool matters = reduction.shift_sigmas > kSwingBySwingShift;
+  if (out.series || !(asked || (reduction.requested == "auto" && matters))) return;
+  const std::string shift = format_number(reduction.shift_sigmas, 3) + " sigmas of the period (" +
+                            "of the exact factor beyond theta0^2/16)";
+  if (!out.sources[0].amplitude_from_recording) {
+    PENDULUM_FAIL_IF(asked, "amplitude",
+                     "got an amplitude beside timing.reduce \"swing_by_swing\"; expected none: each group of "
+                     "swings is corrected at its own amplitude from the recording");
+    out.warnings.push_back("timing.recording: " + recording.summary.file + ": its amplitude's change moves the "
+                           "finite-amplitude correction by " + shift + ": one mean period at the scene's amplitude "
+                           "is not its period there; leave amplitude out to reduce it swing by swing");
+    return;
+  }
+  reduction.groups = swing_groups(a);
+  PENDULUM_FAIL_IF(asked && reduction.groups.empty(), "timing.reduce",
+                   "got \"swing_by_swing\" for " + recording.summary.file + " (" + std::to_string(a.period.periods) +
+                       " periods" + (a.smooth_amplitudes.empty() ? ", no amplitudes" : "") +
+                       "); expected a recording with amplitudes and at least two groups of " +
+                       std::to_string(periods_per_group(a.period.periods)) + " periods");
+  if (reduction.groups.empty()) return;
+  reduction.swing_by_swing = true;
+  const Observation<double> value = out.observations[0], sigma = out.observation_uncertainties[0];
+  const ObservationSource source = out.sources[0];
+  out.observations.clear();
+  out.observation_uncertainties.clear();
+  out.sources.clear();
+  for (std::size_t j = 0; j < reduction.groups.size(); ++j) {
+    const SwingGroup& g = reduction.groups[j];
+    Observation<double> v = value, u = sigma;
+    v.period = g.period;
+    u.period = g.uncertainty;
+    v.oscillations_per_trial = u.oscillations_per_trial = g.periods;
+    v.amplitude = g.amplitude;
+    u.amplitude = 0.0;  // the smooth curve's error is common to the groups: not an independent input of each
+    ObservationSource s = source;
+    s.path = "swings[" + std::to_string(j) + "].";
+    s.shared = {setting_key(v.setting)};
+    s.amplitude_raw = g.amplitude * 180.0 / kPi;
+    s.amplitude_unit = "deg";
+    out.observations.push_back(v);
+    out.observation_uncertainties.push_back(u);
+    out.sources.push_back(s);
+  }
+  out.series = out.swing_by_swing = true;
+  if (out.apparatus.decay) out.apparatus.decay->over_timing = out.apparatus_uncertainty.decay->over_timing = false;
+  // What the one observation said of its timing and amplitude no longer holds.
+  auto& said = out.assumptions;
+  said.erase(std::remove_if(said.begin(), said.end(),
+                            [](const std::string& s) {
+                              return s.rfind("timing: from the recording", 0) == 0 || s.rfind("amplitude: ", 0) == 0;
+                            }),
+             said.end());
+  const SwingGroup &first = reduction.groups.front(), &last = reduction.groups.back();
+  said.push_back("timing: reduced swing by swing: the recording " + recording.summary.file + "'s amplitude falls from " +
+                 format_number(a.start_amplitude * 180.0 / kPi, 4) + " to " +
+                 format_number(a.end_amplitude * 180.0 / kPi, 4) + " deg, which moves the finite-amplitude correction by " +
+                 shift + ", over " + format_number(kSwingBySwingShift, 2) + ": a series at one length of " +
+                 std::to_string(reduction.groups.size()) + " groups of " + std::to_string(first.periods) +
+                 " periods (swings[]), each timed by its own crossings and corrected at its own amplitude, " +
+                 format_number(first.amplitude * 180.0 / kPi, 4) + " deg to " +
+                 format_number(last.amplitude * 180.0 / kPi, 4) + " deg (docs/recordings.md)" +
+                 (reduction.decay_corrected ? "; the decay correction (Eq. 50) is not applied over them" : ""));
 }
 
 }  // namespace pendulum::json_reader

@@ -50,6 +50,14 @@ void read_recorded_timing(Object& parent, const std::string& prefix, Observation
                           Observation<double>& sigma, ObservationSource& source, ParsedScene& out,
                           RecordingReader& recordings);
 
+/// A scene whose one timing names a recording whose amplitude's change
+/// matters against its period's uncertainty (amplitude_shift_sigmas() over
+/// kSwingBySwingShift; or its timing's "reduce" asks): its observation becomes
+/// the series of the recording's groups of swings (swing_groups()) at the
+/// shared length. Called once the decay is read. Records the decision in the
+/// timing's SceneRecording::reduction.
+void reduce_swing_by_swing(ParsedScene& out);
+
 /// `decay.data` naming a recording (under `decay`): one amplitude per swing.
 DecayData read_recorded_decay(Object& decay, ParsedScene& out, RecordingReader& recordings);
 

@@ -162,6 +162,7 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
                      "missing, and the recording " + r.file + " gives no amplitudes (a photogate gives them with "
                      "timing.bob_width); expected the amplitude at the start of the timing");
     v.amplitude = r.swings.start_amplitude;
+    source.amplitude_from_recording = true;
     // A gyroscope or accelerometer turns with the bob it is in (docs/phone.md).
     if (sensor_in_bob(r.kind)) v.amplitude_of = u.amplitude_of = AngleOf::body;
     const bool known = std::isfinite(r.swings.start_amplitude_uncertainty);
@@ -292,7 +293,7 @@ void refer_lengths_to_centre(ParsedScene& out) {
 void note_body_amplitudes(ParsedScene& out) {
   for (std::size_t k = 0; k < out.observations.size(); ++k) {
     const Observation<double>& o = out.observations[k];
-    if (o.amplitude_of != AngleOf::body || (k > 0 && out.sources[k].is_shared("amplitude"))) continue;
+    if (o.amplitude_of != AngleOf::body || (k > 0 && (out.swing_by_swing || out.sources[k].is_shared("amplitude")))) continue;
     const double c = pendulum_over_body_angle(out.apparatus, o.length);
     out.assumptions.push_back(out.sources[k].path_of("amplitude") + ": the bob's own angle; the corrections take " +
                               "the pendulum's (pivot to the bob's centre), " + format_number(c, 6) + " times it" +
@@ -395,6 +396,7 @@ ParsedScene parse_scene(const std::string& text, const SceneFiles& files) {
   }
   read_parts(top, out);
   if (top.has("decay")) read_decay(top, out, recordings);
+  reduce_swing_by_swing(out);
   if (top.has("site")) read_site(top, out);
   const bool physical = out.model == PeriodModelKind::physical_pendulum;
   if (top.has("fit")) visit_period_model(out.model, [&](auto model) { read_fit<decltype(model)>(top, out); });

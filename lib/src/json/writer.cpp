@@ -291,6 +291,24 @@ json fit_json(const ParsedScene& scene, const Analysis& a) {
   return out;
 }
 
+/// How a timing's recording was reduced (docs/recordings.md, "A long decay,
+/// swing by swing"); a timing's only, not a decay record's.
+json reduction_json(const RecordingReduction& reduction) {
+  const RecordingReduction* r = &reduction;
+  json out = {{"requested", r->requested},
+              {"mode", r->swing_by_swing ? "swing_by_swing" : "mean_period"},
+              {"shift_of", "exact_beyond_theta0_squared_over_16"},
+              {"decay_corrected", r->decay_corrected},
+              {"threshold_sigmas", kSwingBySwingShift}};
+  // Only what there is: no amplitudes, no shift; one mean period, no groups.
+  if (std::isfinite(r->shift_sigmas)) out["amplitude_shift_sigmas"] = r->shift_sigmas;
+  if (r->swing_by_swing) {
+    out["groups"] = r->groups.size();
+    out["periods_per_group"] = r->groups.front().periods;
+  }
+  return out;
+}
+
 /// Where the timing and decay records came from when the scene names
 /// recordings (docs/recordings.md, "In a scene").
 json recordings_json(const ParsedScene& scene) {
@@ -314,6 +332,7 @@ json recordings_json(const ParsedScene& scene) {
                       {"lag1_correlation", p.lag1_correlation},
                       {"autocorrelation_inflation", p.inflation}}},
                     {"swing_amplitudes", r.summary.swings.decay.amplitudes.size()}});
+    if (r.reduction) list.back()["reduction"] = reduction_json(*r.reduction);
   }
   return list;
 }

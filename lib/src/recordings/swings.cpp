@@ -1146,6 +1146,8 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
     }
     // The ends of the timing, a swing or so beyond the first and last
     // amplitudes: the cubic extrapolated by a few per cent of its span.
+    out.smooth_amplitudes.resize(theta.size());
+    for (std::size_t i = 0; i < theta.size(); ++i) out.smooth_amplitudes[i] = smooth_at(out.swings[i].peak_time);
     out.start_amplitude = smooth_at(out.crossings.front().time);
     out.end_amplitude = smooth_at(out.crossings.back().time);
     if (r.kind == SignalKind::angle || r.kind == SignalKind::position) {

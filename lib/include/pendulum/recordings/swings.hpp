@@ -164,6 +164,10 @@ struct SwingAnalysis {
   /// what no recording gives (a gyroscope's scale, g for an acceleration, the
   /// bob's speed through a beam taken as constant): docs/recordings.md.
   double start_amplitude_uncertainty = 0.0;
+  /// The smooth amplitude curve (rad) at each swing's peak, one per swing
+  /// (the index of step 3 takes it): the curve of start_amplitude. Empty
+  /// without it.
+  std::vector<double> smooth_amplitudes;
   /// Amplitude of each swing against time from the first crossing (empty
   /// when the recording gives no amplitudes); no sigmas, so the decay fit
   /// scales its covariance by the residual variance.

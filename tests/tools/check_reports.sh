@@ -44,6 +44,17 @@ if [ -n "$fresh" ]; then
   extra+=(report-fresh-class)
 fi
 
+# Sets browser and a fresh profile (removed at exit), or skips (77) without Chromium.
+open_browser() {
+  browser=$(command -v chromium || command -v chromium-browser || true)
+  if [ -z "$browser" ]; then
+    echo "SKIPPED: chromium is not installed (Debian: chromium; .ci/install-deps installs it)"
+    exit 77
+  fi
+  profile=$(mktemp -d)
+  trap 'rm -rf "$profile"' EXIT
+}
+
 case $mode in
   xml)
     if ! command -v xmllint >/dev/null; then
@@ -83,13 +94,7 @@ case $mode in
     done
     ;;
   render)
-    browser=$(command -v chromium || command -v chromium-browser || true)
-    if [ -z "$browser" ]; then
-      echo "SKIPPED: chromium is not installed (Debian: chromium; .ci/install-deps installs it)"
-      exit 77
-    fi
-    profile=$(mktemp -d)
-    trap 'rm -rf "$profile"' EXIT
+    open_browser
     for entry in "${pages[@]}"; do
       name=${entry%%:*} height=${entry##*:}
       rm -f "$out/$name.png"
@@ -109,13 +114,7 @@ case $mode in
     done
     ;;
   layout)
-    browser=$(command -v chromium || command -v chromium-browser || true)
-    if [ -z "$browser" ]; then
-      echo "SKIPPED: chromium is not installed (Debian: chromium; .ci/install-deps installs it)"
-      exit 77
-    fi
-    profile=$(mktemp -d)
-    trap 'rm -rf "$profile"' EXIT
+    open_browser
     failed=0
     # The screenshots' pages with their window heights, then the others (no height).
     for entry in "${pages[@]}" "${extra[@]}"; do

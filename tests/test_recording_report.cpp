@@ -260,3 +260,27 @@ TEST_CASE("An unknown uncertainty is drawn as unknown, never as +- 0", "[report]
   CHECK(chart->notes[0] == "+596 \u00B5s, uncertainty unknown");
   CHECK(chart->notes[1] == "+120 \u00B5s");
 }
+
+TEST_CASE("A pixel track's signal is drawn in the track's own unit and values", "[report][recording]") {
+  // A 0.80 m pendulum released at 0.25 rad, filmed at 30 frames/s and 1000
+  // px/m (tests/recording_simulation.hpp's pixel_track layout): the bob's x
+  // swings by 1000 L sin(theta) px about the middle, 198 px at the release.
+  // Before, the axis said "(track unit)" and drew the angle in rad (+-0.25).
+  test::RecordingSimulation s;
+  s.duration = 20.0, s.drop = 0.0, s.noise = 0.0, s.rate_hz = 30.0;
+  const auto sim = test::simulate_recording(s);
+  const Recording rec = parse_recording(test::published_csv(sim, s.length, test::PublishedLayout::pixel_track, 0.0, 1),
+                                        "track.csv", RecordingFormat::automatic, {}, {});
+  REQUIRE(rec.kind == SignalKind::position);
+  const RecordingSummary summary{"track.csv", rec.format, rec.kind, rec.rows, 0, analyse_swings(rec, "track.csv"),
+                                 "", rec.columns};
+  const RecordingRecord r = make_recording_record(summary, &rec);
+  REQUIRE(r.trace);
+  CHECK(r.trace_label == "position on the principal axis (px)");
+  double swing = 0.0, drawn = 0.0;
+  for (double th : sim.theta) swing = std::max(swing, 1000.0 * s.length * std::abs(std::sin(th)));
+  for (double v : r.trace->value) drawn = std::max(drawn, std::abs(v));
+  // The mean removed is the track's over 20 s of a damped swing: within 1%.
+  CHECK(drawn == Approx(swing).epsilon(0.01));
+  CHECK_THAT(to_svg(*signal_figure(r, "s"), false), Contains("(px)"));
+}

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "pendulum/amplitude.hpp"
 #include "pendulum/analysis.hpp"
@@ -98,4 +99,121 @@ TEST_CASE("Hand timing draws no outlier warning; a miscounted oscillation does",
   CHECK(clean_warnings == 0);
   CHECK(clean_suspect == 0);
   CHECK(miscounts_missed == 0);
+}
+
+TEST_CASE("Pasted trials: two thirds of six or more equal anywhere, rarely by chance", "[status][timing]") {
+  auto pasted = [](const std::vector<double>& trials) {
+    nlohmann::json doc = {
+        {"length", {{"value", 1.0}, {"unit", "m"}}},
+        {"amplitude", {{"value", 5}, {"unit", "deg"}}},
+        {"air", "vacuum"},
+        {"timing", {{"oscillations_per_trial", 10}, {"unit", "s"}, {"resolution", 0.01}, {"trials", trials}}}};
+    const ParsedScene s = parse_scene(doc.dump());
+    for (const auto& w : s.suspicions) {
+      if (w.find("pasted?") != std::string::npos) return true;
+    }
+    return false;
+  };
+  // Four of six anywhere (the issue-21 slip), in a run, all of four; three of six and four of five are not.
+  CHECK(pasted({20.07, 20.11, 19.98, 20.11, 20.11, 20.11}));
+  CHECK(pasted({20.11, 20.07, 20.11, 19.98, 20.11, 20.11}));
+  CHECK(pasted({20.07, 20.11, 20.11, 20.11, 20.11, 19.98}));
+  CHECK(pasted({20.11, 20.11, 20.11, 20.11}));
+  CHECK(pasted({20.11, 20.02, 20.11, 20.11, 19.95, 20.11, 20.11}));  // 5 of 7
+  CHECK_FALSE(pasted({20.11, 20.07, 20.11, 19.98, 20.11, 20.03}));
+  CHECK_FALSE(pasted({20.11, 20.07, 20.11, 20.11, 20.11}));
+  CHECK_FALSE(pasted({20.11, 20.02, 20.11, 20.11, 19.95, 20.11, 20.05}));  // 4 of 7, apart
+  // Clean: six trials of 10 T + N(0, 0.05 s) rounded to 0.01 s. Some value
+  // holds 4 or more of them with probability 0.00337 (mpmath, 30 digits:
+  // the sum over the 0.01 s cells of the binomial tail, averaged over the
+  // mean's place in its cell), 3.37 of 1000 scenes on average; 10 or more is
+  // a Poisson(3.37) tail of 0.003. Three of six would be 63 (0.063).
+  const double period = 2.0 * kPi * std::sqrt(1.0 / kStandardGravity) * (1.0 + finite_amplitude_agm(5.0 * kPi / 180.0));
+  std::mt19937_64 random(21);
+  std::normal_distribution<double> hand(0.0, 0.05);
+  int flagged = 0;
+  for (int scene = 0; scene < 1000; ++scene) {
+    std::vector<double> trials;
+    for (int i = 0; i < 6; ++i) trials.push_back(std::round((10.0 * period + hand(random)) * 100.0) / 100.0);
+    flagged += pasted(trials);
+  }
+  CHECK(flagged <= 9);
+}
+
+namespace {
+
+/// The scene reduced once to find its g, then with trials that give the
+/// site's expected g, less `late` s each (a stopwatch started late) and its
+/// length less `short_by` (m): the reasons of its verdict.
+std::vector<std::string> reasons_with(nlohmann::json doc, double late, double short_by) {
+  const Analysis first = analyse(parse_scene(doc.dump()));
+  REQUIRE(first.expected_g);
+  // g T^2 is fixed for one geometry (Eq. 5 and a physical pendulum's alike).
+  const double scale = std::sqrt(first.g.value / first.expected_g->value);
+  for (auto& t : doc["timing"]["trials"]) t = std::round((t.get<double>() * scale - late) * 100.0) / 100.0;
+  if (short_by > 0.0) doc["length"]["value"] = doc["length"]["value"].get<double>() - short_by * 100.0;  // cm
+  return analyse(parse_scene(doc.dump())).status_reasons;
+}
+
+bool names(const std::vector<std::string>& reasons, const std::string& words) {
+  for (const auto& r : reasons) {
+    if (r.find(words) != std::string::npos) return true;
+  }
+  return false;
+}
+
+const nlohmann::json kSite = {{"latitude", {{"value", 48.0}, {"unit", "deg"}}},
+                              {"height", {{"value", 250.0}, {"unit", "m"}}},
+                              {"height_reference", "sea_level"}};
+
+}  // namespace
+
+TEST_CASE("The top of the bob and a late start are named for a box, a cylinder and a physical pendulum", "[status]") {
+  // A phone (docs/phone.md: a 7.5 x 16 x 0.8 cm box of 190 g) and a 2 x 6 cm
+  // brass cylinder on a 60 cm string, five trials of 10 oscillations read
+  // to 0.01 s; taped to the top of the bob, the length is short by half the
+  // bob's height (80 and 30 mm).
+  const nlohmann::json phone = {{"shape", "box"},
+                                {"width", {{"value", 7.5}, {"unit", "cm"}}},
+                                {"height", {{"value", 16}, {"uncertainty", 0.05}, {"unit", "cm"}}},
+                                {"depth", {{"value", 0.8}, {"unit", "cm"}}},
+                                {"mass", {{"value", 190}, {"unit", "g"}}}};
+  const nlohmann::json cylinder = {{"shape", "cylinder"},
+                                   {"diameter", {{"value", 2}, {"unit", "cm"}}},
+                                   {"height", {{"value", 6}, {"uncertainty", 0.05}, {"unit", "cm"}}},
+                                   {"mass", {{"value", 160}, {"unit", "g"}}}};
+  for (const auto& [bob, half_height] : {std::pair{phone, "80"}, std::pair{cylinder, "30"}}) {
+    INFO(bob.dump());
+    const nlohmann::json doc = {
+        {"bob", bob},
+        {"length", {{"value", 60.0}, {"uncertainty", 0.1}, {"unit", "cm"}}},
+        {"amplitude", {{"value", 5}, {"unit", "deg"}}},
+        {"air", {{"pressure", {{"value", 985}, {"unit", "hPa"}}}, {"temperature", {{"value", 22}, {"unit", "degC"}}}}},
+        {"site", kSite},
+        {"timing", {{"oscillations_per_trial", 10}, {"unit", "s"}, {"resolution", 0.01},
+                    {"trials", {16.02, 16.05, 15.99, 16.03, 16.01}}}}};
+    const auto top = reasons_with(doc, 0.0, std::stod(half_height) / 1000.0);
+    CHECK(names(top, "the length taped to the top of the bob? Adding the bob's half height (" + std::string(half_height) +
+                         " mm)"));
+    CHECK(names(top, "length.measured_to \"top_of_bob\""));
+    CHECK(names(reasons_with(doc, 0.8, 0.0), "a stopwatch started late or stopped early by about 0.8 s?"));
+  }
+  // A physical pendulum at one pivot (tests/valid_scenes.json's steel rod
+  // with a brass weight, period 1.88 s), 0.8 s late in each of 20 oscillations.
+  nlohmann::json rod = {
+      {"pivot_position", {{"value", 0.05}, {"uncertainty", 0.0002}, {"unit", "m"}}},
+      {"amplitude", {{"value", 3}, {"uncertainty", 0.5}, {"unit", "deg"}}},
+      {"timing", {{"oscillations_per_trial", 20}, {"unit", "s"}, {"resolution", 0.01}, {"trials", {37.58, 37.6, 37.59}}}},
+      {"body",
+       {{"parts",
+         {{{"shape", "cylinder"}, {"radius", {{"value", 6}, {"unit", "mm"}}}, {"length", {{"value", 1.2}, {"unit", "m"}}},
+           {"axis", "body"}, {"density", {{"value", 7850}, {"unit", "kg/m^3"}}}, {"position", {{"value", 0.6}, {"unit", "m"}}}},
+          {{"shape", "cylinder"}, {"radius", {{"value", 30}, {"unit", "mm"}}}, {"inner_radius", {{"value", 6}, {"unit", "mm"}}},
+           {"length", {{"value", 40}, {"unit", "mm"}}}, {"axis", "body"}, {"density", {{"value", 8.5}, {"unit", "g/cm^3"}}},
+           {"position", {{"value", 1.0}, {"unit", "m"}}}}}}}},
+      {"air", "vacuum"},
+      {"site", kSite}};
+  const auto late = reasons_with(rod, 0.8, 0.0);
+  CHECK(names(late, "a stopwatch started late or stopped early by about 0.8 s?"));
+  CHECK_FALSE(names(reasons_with(rod, 0.0, 0.0), "stopwatch"));
 }

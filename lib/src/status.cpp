@@ -78,25 +78,30 @@ std::string signed_number(double x, int digits) { return (x >= 0.0 ? "+" : "") +
 constexpr double kLateStartLow = 0.1, kLateStartHigh = 0.85, kMiscountTolerance = 0.15;
 
 /// Which systematic error explains a g `z` combined standard uncertainties
-/// from `expected`, for a single ball on a string: the length taped to the
-/// top of the ball (adding its radius brings g within 3 sigma; only where
-/// `top_of_ball`, with an uncertainty to judge by), or every
+/// from `expected`, for one observation: the length taped to the top of the
+/// bob, on a string or a rod (adding the knot-to-centre distance, a ball's
+/// radius or a box's or cylinder's half height, brings g within 3 sigma;
+/// only where `top_of_ball`, with an uncertainty to judge by), or every
 /// trial off by the same time, a fraction of a period (a stopwatch started
-/// late or stopped early) or whole periods (oscillations miscounted). Empty
-/// when none fits.
+/// late or stopped early) or whole periods (oscillations miscounted), for
+/// any body: at a fixed geometry g ~ 1/T^2, a physical pendulum's too. Not
+/// for a series: a fitted length_offset takes up a length's offset, and a
+/// time's changes each T^2 by its own amount. Empty when none fits.
 std::optional<std::string> name_systematic(const ParsedScene& scene, const Analysis& a, double expected, double z,
                                            bool top_of_ball) {
-  if (scene.model != PeriodModelKind::simple_pendulum || scene.series || scene.observations.size() != 1) {
-    return std::nullopt;
-  }
+  if (scene.series || scene.observations.size() != 1) return std::nullopt;
   const Observation<double>& o = scene.observations.front();
   const double sigma = std::abs(a.g.value - expected) / std::abs(z);  // the combined standard uncertainty
-  if (top_of_ball && scene.apparatus.bob && scene.sources.front().measured_to == "center" && a.g.value < expected) {
-    const double radius = scene.apparatus.bob->diameter / 2.0;
+  const auto& bob = scene.apparatus.bob;
+  if (top_of_ball && scene.model == PeriodModelKind::simple_pendulum && bob &&
+      scene.sources.front().measured_to == "center" && a.g.value < expected) {
+    const double radius = bob->knot_to_center();
+    const bool ball = bob->shape == BobShape::sphere;
     const double g_top = a.g.value * (o.length + radius) / o.length;  // g = 4 pi^2 L / T^2
     // Within 3 sigma, or two thirds of the way there (the trials' own scatter remains).
     if (std::abs(g_top - expected) <= std::max(kSuspectSigmas * sigma, std::abs(a.g.value - expected) / 3.0)) {
-      return "the length taped to the top of the ball? Adding the ball's radius (" + format_number(radius * 1e3, 3) +
+      return std::string("the length taped to the top of the ") + (ball ? "ball" : "bob") + "? Adding the " +
+             (ball ? "ball's radius (" : "bob's half height (") + format_number(radius * 1e3, 3) +
              " mm) gives g = " + format_number(g_top, 5) + " m/s^2, " +
              format_number(std::abs(g_top - expected) / sigma, 2) +
              " combined standard uncertainties from it: if so, give length.measured_to \"top_of_bob\"";

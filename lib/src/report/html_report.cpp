@@ -16,6 +16,17 @@ namespace {
 
 std::string esc(const std::string& s) { return xml_escape(s); }
 
+/// A file or JSON path, escaped, with a break opportunity after each of
+/// `after` ("/" for files): a table column then needs only its longest part.
+std::string breakable(const std::string& path, const std::string& after = "/") {
+  std::string s;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    s += esc(path.substr(i, 1));
+    if (after.find(path[i]) != std::string::npos && i + 1 < path.size()) s += "<wbr/>";
+  }
+  return s;
+}
+
 // No url(), no @import, no font file: the page loads nothing.
 constexpr const char* kStyle = R"(body { font-family: "DejaVu Sans", Verdana, Arial, sans-serif; color: #111111;
   max-width: 52rem; margin: 1.5rem auto; padding: 0 1rem; line-height: 1.45; }
@@ -28,7 +39,8 @@ table { border-collapse: collapse; font-size: 0.88rem; margin: 0.5rem 0 1rem; }
 th, td { border-bottom: 1px solid #CCCCCC; padding: 0.22rem 0.5rem; text-align: left; vertical-align: baseline; }
 th { background: #F0F0F0; }
 td.method { overflow-wrap: anywhere; font-size: 0.8rem; }
-td.num, th.num { text-align: right; white-space: nowrap; font-variant-numeric: tabular-nums; }
+td.num, th.num { text-align: right; font-variant-numeric: tabular-nums; }
+td.num { white-space: nowrap; }
 tr.negligible td { color: #444444; }
 tr.skipped td { color: #666666; font-style: italic; }
 tr.failed td { color: #8B2500; }
@@ -42,6 +54,8 @@ div.verdict.failed { border-color: #8B2500; background: #FBECE8; }
 div.verdict p { margin: 0.3rem 0; }
 div.verdict li { margin: 0.2rem 0; }
 code { font-size: 0.9em; overflow-wrap: anywhere; }
+td code { overflow-wrap: break-word; }
+td.file code { display: inline-block; min-width: 8rem; overflow-wrap: anywhere; }
 tr.suspect td { background: #FFF4EC; }
 @media print { body { max-width: none; } section.scene { break-before: page; } h1 + section.scene { break-before: auto; }
   h2, h3 { break-after: avoid; } figure, table { break-inside: avoid; } }
@@ -170,7 +184,7 @@ std::string budget_table(const SceneReport& r) {
       "<th scope=\"col\" class=\"num\">uncertainty</th><th scope=\"col\">unit</th>"
       "<th scope=\"col\" class=\"num\">contribution to u(g) (mm/s\u00B2)</th></tr></thead>\n<tbody>\n";
   for (const auto& b : r.budget) {
-    s += "<tr><td><code>" + esc(b.input) + "</code></td><td class=\"num\">" + format_significant(b.value, 6) +
+    s += "<tr><td><code>" + breakable(b.input, ".[") + "</code></td><td class=\"num\">" + format_significant(b.value, 6) +
          "</td><td class=\"num\">" + format_significant(b.uncertainty, 3) + "</td><td>" + esc(b.unit) +
          "</td><td class=\"num\">" + format_fixed(b.contribution * 1e3, 6) + "</td></tr>\n";
   }
@@ -250,7 +264,7 @@ std::string recording_part(const RecordingRecord& r, const std::string& anchor, 
   };
   constexpr double kDeg = 180.0 / kPi;
   std::string s = heading(h, "Recording <code>" + esc(r.input) + "</code>") +
-                  "<p class=\"meta\">Recording file: <code>" + esc(r.input) + "</code><br/>Format: " + esc(r.format) +
+                  "<p class=\"meta\">Recording file: <code>" + breakable(r.input) + "</code><br/>Format: " + esc(r.format) +
                   ", " + esc(r.signal) + "; " + std::to_string(r.rows) + " rows read, " +
                   std::to_string(r.dropped) + " skipped (a cell empty or not a number).</p>\n";
   const bool below_resolution = r.period.uncertainty < r.period_resolution;
@@ -351,7 +365,7 @@ std::string class_report_html(const std::vector<ClassEntry>& entries) {
     const std::string anchor = "scene-" + std::to_string(i + 1);
     if (!e.report) {
       results.emplace_back(ResultStatus::failed, std::nullopt);
-      failures += "<tr class=\"failed\"><td><code>" + esc(e.input) + "</code></td><td>" + esc(e.error) + "</td></tr>\n";
+      failures += "<tr class=\"failed\"><td class=\"file\"><code>" + breakable(e.input) + "</code></td><td>" + esc(e.error) + "</td></tr>\n";
       continue;
     }
     const SceneReport& r = *e.report;
@@ -362,14 +376,14 @@ std::string class_report_html(const std::vector<ClassEntry>& entries) {
                       r.g.uncertainty, r.expected_g, r.z, ok});
     const std::string reason = r.status_reasons.empty() ? "" : brief_reason(r.status_reasons.front()) +
         (r.status_reasons.size() > 1 ? " (+" + std::to_string(r.status_reasons.size() - 1) + " more)" : "");
-    rows.emplace_back(r.g.value, "<tr class=\"" + esc(r.status) + "\"><td><a href=\"#" + anchor + "\"><code>" +
-            esc(e.input) + "</code></a></td><td><strong>" + esc(r.status) + "</strong>" +
+    rows.emplace_back(r.g.value, "<tr class=\"" + esc(r.status) + "\"><td class=\"file\"><a href=\"#" + anchor + "\"><code>" +
+            breakable(e.input) + "</code></a></td><td><strong>" + esc(r.status) + "</strong>" +
             (reason.empty() ? "" : ": " + esc(reason)) + "</td><td class=\"num\">" +
             esc(r.g.uncertainty ? value_with_uncertainty(r.g.value, *r.g.uncertainty, false)
                                 : estimate_text(r.g, 5, "")) + "</td><td class=\"num\">" +
             (r.expected_g ? format_fixed(r.expected_g->value, 5) : "\u2014") + "</td><td class=\"num\">" +
             (r.z ? signed_fixed(*r.z, 2) : "\u2014") + "</td><td>" +
-            (r.budget.empty() ? "\u2014" : "<code>" + esc(r.budget.front().input) + "</code>") + "</td><td class=\"num\">" +
+            (r.budget.empty() ? "\u2014" : "<code>" + breakable(r.budget.front().input, ".[") + "</code>") + "</td><td class=\"num\">" +
             std::to_string(r.warnings.size()) + "</td></tr>\n");
   }
   const ClassSummary summary = summarise_class(results);

@@ -58,6 +58,7 @@ std::optional<Figure> pivot_scan_figure(const SceneReport& r, const std::string&
   Figure f = fit_figure(p);
   Panel& top = f.panels[0];
   Panel& residuals = f.panels[1];
+  top.y.range = std::pair{d.period_low, d.period_high};  // on the axis's ticks (pivot_scan_record)
   // The other side of the centre: the same curves, one legend entry each.
   for (std::size_t i = 1; i < d.textbook.size(); ++i) {
     top.curves.insert(top.curves.begin(), branch_curve(d.textbook[i], "", Colour::black, Dash::dashed, 1.5));
@@ -158,7 +159,8 @@ std::optional<Figure> pivot_scan_figure(const SceneReport& r, const std::string&
           "carried to the period through the model's slope. ";
   text += s.dof > 0 ? "Chi-squared " + format_significant(s.chi2, 4) + " for " + std::to_string(s.dof) + " degrees of freedom."
                     : "No degree of freedom is left: the model passes through every observation.";
-  text += " The period axis stops at " + format_fixed(d.period_high, 3) +
+  const Ticks axis = nice_ticks(d.period_low, d.period_high, panel_intervals(top.height));
+  text += " The period axis stops at " + format_fixed(axis.hi, axis.decimals) +
           " s, where the curves leave it towards the centre of mass. The lower panel shows measured minus model, "
           "and the textbook curve minus the model (dashed).";
   f.description = text;

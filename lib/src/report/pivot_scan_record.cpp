@@ -10,6 +10,7 @@
 #include "pendulum/bodies.hpp"
 #include "pendulum/models/physical_pendulum.hpp"
 #include "pendulum/report/scene_report.hpp"
+#include "pendulum/report/svg_plot.hpp"
 
 namespace pendulum::report {
 
@@ -137,8 +138,11 @@ std::optional<PivotScanRecord> pivot_scan_record(const ParsedScene& given, const
   for (const auto& x : r.minimum_x) x_lo = std::min(x_lo, x.value), x_hi = std::max(x_hi, x.value);
   if (r.conjugate_x) x_lo = std::min(x_lo, r.conjugate_x->value), x_hi = std::max(x_hi, r.conjugate_x->value);
   const double margin = kRangeMargin * std::max(high - low, 0.25 * kRangeMargin * high);
-  r.period_low = low - margin;
-  r.period_high = high + margin;
+  // Out to the period axis's own ticks, so that the curves end at its top
+  // label and the caption's "stops at" is that label.
+  const Ticks axis = nice_ticks(low - margin, high + margin, panel_intervals(Panel{}.height));
+  r.period_low = axis.lo;
+  r.period_high = axis.hi;
   const double pad = kSettingMargin * (x_hi - x_lo);
   x_lo -= pad;
   x_hi += pad;

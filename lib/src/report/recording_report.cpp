@@ -39,9 +39,11 @@ SignalMeaning signal_meaning(SignalKind kind, bool has_amplitudes) {
       return {"magnitude of the acceleration with gravity, less its mean (swings at twice the frequency)",
               "|a| \u2212 mean |a| (m/s\u00B2)", 1.0};
     case SignalKind::angle: return {"angle", "angle \u03B8 \u2212 mean (\u00B0)", kDegreesPerRadian};
-    case SignalKind::position:
-      if (has_amplitudes) return {"angle about the centre of the track's circle", "angle about the centre (\u00B0)", kDegreesPerRadian};
-      return {"position along the track's principal axis", "position on the principal axis (track unit)", 1.0};
+    case SignalKind::position:  // drawn in the track's own unit (track_position)
+      return {has_amplitudes ? "position along the track's principal axis (the crossings are found on the angle about "
+                               "the centre of its circle)"
+                             : "position along the track's principal axis",
+              "position on the principal axis", 1.0};
     case SignalKind::gate_states:
       return {"photogate events (the middle of each blocking)", "beam: blocked (1) or open (0)", 1.0};
     case SignalKind::blocking_times: return {"photogate blocking times", "", 1.0};
@@ -51,6 +53,33 @@ SignalMeaning signal_meaning(SignalKind kind, bool has_amplitudes) {
 }
 
 std::string seconds(double t) { return format_significant(t, 4) + " s"; }
+
+/// A video track's position along its principal axis, less its mean, in the
+/// track's unit (px, cm, ...): the direction of (x, y)'s largest variance, at
+/// phi from x with tan 2 phi = 2 s_xy / (s_xx - s_yy).
+std::vector<double> track_position(const Recording& r) {
+  const std::vector<double>& x = r.channels.front();
+  const std::vector<double>& y = r.channels.size() > 1 ? r.channels[1] : x;
+  const double n = static_cast<double>(x.size());
+  double mx = 0.0, my = 0.0;
+  for (std::size_t k = 0; k < x.size(); ++k) mx += x[k] / n, my += y[k] / n;
+  double sxx = 0.0, syy = 0.0, sxy = 0.0;
+  for (std::size_t k = 0; k < x.size(); ++k) {
+    sxx += (x[k] - mx) * (x[k] - mx), syy += (y[k] - my) * (y[k] - my), sxy += (x[k] - mx) * (y[k] - my);
+  }
+  const double phi = r.channels.size() > 1 ? 0.5 * std::atan2(2.0 * sxy, sxx - syy) : 0.0;
+  std::vector<double> p(x.size());
+  for (std::size_t k = 0; k < x.size(); ++k) p[k] = std::cos(phi) * (x[k] - mx) + std::sin(phi) * (y[k] - my);
+  return p;
+}
+
+/// The unit the track's x column was read in ("px"), else "the file's unit".
+std::string track_unit(const Recording& r) {
+  for (const auto& c : r.columns) {
+    if (c.role == "x" && !c.unit.empty()) return c.unit;
+  }
+  return "the file's unit";
+}
 
 /// Gate events as the beam's state between them: each event holds its state
 /// until the next, so the trace steps at every event (a few per swing: no
@@ -127,13 +156,14 @@ RecordingRecord make_recording_record(const RecordingSummary& summary, const Rec
   const SignalMeaning meaning = signal_meaning(summary.kind, !a.decay.amplitudes.empty());
   r.signal = meaning.words;
   if (samples) {
-    std::vector<double> s = swing_signal(*samples);
+    const bool track = summary.kind == SignalKind::position;
+    std::vector<double> s = track ? track_position(*samples) : swing_signal(*samples);
     if (!s.empty()) {
       for (double& x : s) x *= meaning.scale;
       r.samples = s.size();
       r.trace = summary.kind == SignalKind::gate_states ? step_trace(samples->time, s)
                                                          : decimate_signal(samples->time, s, kSignalColumns);
-      r.trace_label = meaning.label;
+      r.trace_label = track ? meaning.label + " (" + track_unit(*samples) + ")" : meaning.label;
     }
   }
   // The decay record's times count from the first crossing (the fit's t = 0);

@@ -63,6 +63,8 @@ Ticks nice_ticks(double lo, double hi, int max_intervals) {
   }
 }
 
+int panel_intervals(double height) { return std::max(2, static_cast<int>(height / 50.0)); }
+
 Ticks log_ticks(double lo, double hi) {
   if (!(lo > 0.0) || !(hi >= lo) || !std::isfinite(hi)) {
     throw std::invalid_argument("log_ticks: needs 0 < lo <= hi, finite");
@@ -467,7 +469,13 @@ std::string to_svg(const Figure& f, bool standalone) {
   std::vector<Ticks> yt;
   double left = 0.0;
   for (std::size_t i = 0; i < f.panels.size(); ++i) {
-    yt.push_back(axis_ticks(f.panels[i].y, yr[i], std::max(2, static_cast<int>(f.panels[i].height / 50.0))));
+    if (const auto& fixed = f.panels[i].y.range) {
+      yr[i] = Range{};
+      yr[i].log = f.panels[i].y.scale == Scale::log;
+      yr[i].add(fixed->first);
+      yr[i].add(fixed->second);
+    }
+    yt.push_back(axis_ticks(f.panels[i].y, yr[i], panel_intervals(f.panels[i].height)));
     left = std::max(left, max_tick_label_width(yt.back(), f.panels[i].y));
   }
   left += 8.0 + 6.0 + 28.0;  // tick, gap, rotated label
@@ -615,9 +623,11 @@ std::string to_svg(const CategoryChart& ch, bool standalone) {
 
   double label_w = 0.0, note_w = 0.0;
   for (const auto& l : ch.categories) label_w = std::max(label_w, text_width(l, kTickFont) * 0.9);
-  for (const auto& n : ch.notes) note_w = std::max(note_w, text_width(n, kTickFont) * 0.9);
+  // A note starts 12 px right of the plot and keeps 8 px clear of the edge
+  // (signed microseconds are digits, 0.64 em each: at full width).
+  for (const auto& n : ch.notes) note_w = std::max(note_w, text_width(n, kTickFont));
   const double left = 12.0 + label_w + 10.0;
-  const double right = std::max(note_w > 0.0 ? note_w + 14.0 : 0.0,
+  const double right = std::max(note_w > 0.0 ? note_w + 20.0 : 0.0,
                                  10.0 + text_width(tick_label(t, value_axis, t.hi), kTickFont) / 2.0);
   // Long labels widen the chart rather than squeeze the plot; a page scales it down.
   const double width = std::max(ch.width, left + right + 360.0), plot_width = width - left - right;

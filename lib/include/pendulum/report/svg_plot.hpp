@@ -35,6 +35,10 @@ struct Ticks {
 /// limits or max_intervals < 1.
 Ticks nice_ticks(double lo, double hi, int max_intervals = 6);
 
+/// The most intervals a linear y axis of a panel `height` px tall has: one
+/// per 50 px, at least 2. A range already on those ticks is drawn as given.
+int panel_intervals(double height);
+
 /// Log ticks: the decades 10^k from the one at or below lo to the one at or
 /// above hi (0 < lo <= hi), at most 7 of them labelled. Throws
 /// std::invalid_argument otherwise.
@@ -74,6 +78,9 @@ struct Axis {
   std::string label;  ///< quantity and unit, e.g. "time t (s)"
   Scale scale = Scale::linear;
   bool include_zero = false;  ///< linear axes: widen the range to hold 0
+  /// A figure's y axis: this range (lo, hi) in place of the data's, widened
+  /// to ticks as any; data beyond it are the caller's to cut.
+  std::optional<std::pair<double, double>> range = std::nullopt;
 };
 
 /// Measured points; error vectors are empty or one per point (standard

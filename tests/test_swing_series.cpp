@@ -58,19 +58,24 @@ double per_swing_g(double start_deg, double duration) {
   return 4.0 * M_PI * M_PI * kLongDecayLength / (t0 * t0);
 }
 
+/// The scene of a long decay recorded at `dir` (written there first): the
+/// length, and the one recording as both the timing and the decay record.
+ParsedScene parse_recorded_decay(const std::string& dir, double start_deg, double duration_s, std::uint64_t seed) {
+  std::filesystem::create_directories(dir);
+  write_long_decay(dir + "/decay.csv", start_deg, duration_s, seed);
+  SceneFiles files;
+  files.directory = dir;
+  return parse_scene("{\"length\": {\"value\": 2.72, \"unit\": \"m\"}, \"timing\": {\"recording\": \"decay.csv\"}, "
+                     "\"decay\": {\"data\": {\"recording\": \"decay.csv\"}}}",
+                     files);
+}
+
 }  // namespace
 
 TEST_CASE("A long decay from 81 deg is reduced swing by swing, and its g is the per-swing one", "[recordings][swing_series]") {
   const std::string dir = (std::filesystem::temp_directory_path() / "pendulum_g_swing_series_81").string();
-  std::filesystem::create_directories(dir);
-  write_long_decay(dir + "/decay.csv", 81.0, 375.0, 31);
-
   // By default (auto), with the decay record: swing by swing.
-  SceneFiles files;
-  files.directory = dir;
-  const std::string scene = "{\"length\": {\"value\": 2.72, \"unit\": \"m\"}, \"timing\": {\"recording\": \"decay.csv\"}, "
-                            "\"decay\": {\"data\": {\"recording\": \"decay.csv\"}}}";
-  const ParsedScene parsed = parse_scene(scene, files);
+  const ParsedScene parsed = parse_recorded_decay(dir, 81.0, 375.0, 31);
   REQUIRE(parsed.swing_by_swing);
   REQUIRE(parsed.series);
   const RecordingReduction& how = *parsed.recordings[0].reduction;
@@ -109,13 +114,7 @@ TEST_CASE("A long decay from 81 deg is reduced swing by swing, and its g is the 
 
 TEST_CASE("A short small decay stays one mean period: the rule's other side", "[recordings][swing_series]") {
   const std::string dir = (std::filesystem::temp_directory_path() / "pendulum_g_swing_series_5").string();
-  std::filesystem::create_directories(dir);
-  write_long_decay(dir + "/decay.csv", 5.0, 60.0, 32);
-  SceneFiles files;
-  files.directory = dir;
-  const std::string scene = "{\"length\": {\"value\": 2.72, \"unit\": \"m\"}, \"timing\": {\"recording\": \"decay.csv\"}, "
-                            "\"decay\": {\"data\": {\"recording\": \"decay.csv\"}}}";
-  const ParsedScene parsed = parse_scene(scene, files);
+  const ParsedScene parsed = parse_recorded_decay(dir, 5.0, 60.0, 32);
   const RecordingReduction& how = *parsed.recordings[0].reduction;
   CHECK(how.shift_sigmas < kSwingBySwingShift);
   CHECK_FALSE(parsed.swing_by_swing);

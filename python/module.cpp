@@ -26,6 +26,8 @@ namespace {
 
 using pendulum::AmplitudeMethod;
 
+constexpr const char* kAmplitudeRange = "expected an amplitude 0 <= theta0 < pi rad";
+
 /// A scene's text and where its recordings are looked for: read from `path`
 /// as `reduce PATH` reads it, or given as text as `reduce -` takes it.
 struct SceneSource {
@@ -136,7 +138,7 @@ py::array_t<double> finite_amplitude(const py::array_t<double, py::array::c_styl
     }
     if (stop < n) {
       throw py::value_error("theta0[" + std::to_string(stop) + "]: got " + std::to_string(theta0.data()[stop]) +
-                            ": expected an amplitude 0 <= theta0 < pi rad");
+                            ": " + kAmplitudeRange);
     }
     return out;
   }
@@ -144,13 +146,13 @@ py::array_t<double> finite_amplitude(const py::array_t<double, py::array::c_styl
     // The library checks the range for the exact method only; the others
     // are series in sin(theta0/2) that hold on the same range.
     if (!(t >= 0.0 && t < pendulum::kPi)) {
-      throw std::domain_error("expected an amplitude 0 <= theta0 < pi rad");
+      throw std::domain_error(kAmplitudeRange);
     }
     return one + pendulum::finite_amplitude(m, t, terms);
   });
 }
 
-/// `name` as a JSON path inside InputError's message for an argument.
+/// ValueError naming the argument `name` unless `value` is finite.
 void require_finite(double value, const char* name, const char* expected) {
   if (!std::isfinite(value)) throw py::value_error(std::string(name) + ": got " + std::to_string(value) + "; expected " + expected);
 }

@@ -123,7 +123,7 @@ void check_observation(ParsedScene& scene, std::size_t k, const std::optional<do
   // pendulum's period, or the time of the oscillations per trial.
   const double trial = o.period * o.oscillations_per_trial;  // (s) the mean trial, as typed
   if (std::abs(1.0 / (trial * expected) - 1.0) <= kPeriodWarning && std::abs(ratio - 1.0) > kPeriodWarning) {
-    const std::string why = at + "timing.trials: the mean trial " + format_number(trial, 4) + " s is 1/" +
+    const std::string why = "the mean trial " + format_number(trial, 4) + " s is 1/" +
                             format_number(1.0 / trial, 4) + ", and " + format_number(1.0 / trial, 4) +
                             " s is the period this pendulum has at " + standard +
                             ": " + kFrequencyTyped + " Give the time of " +
@@ -131,7 +131,7 @@ void check_observation(ParsedScene& scene, std::size_t k, const std::optional<do
                             (o.oscillations_per_trial == 1 ? " oscillation" : " oscillations") +
                             " in s in each trial (the period is 1/frequency)";
     if (!(o.period / swing > 1.0 / kPeriodFactor && o.period / swing < kPeriodFactor)) throw InputError(at + "timing.trials", why);
-    scene.suspicions.push_back(why);
+    scene.suspicions.push_back(at + "timing.trials: " + why);
   }
   if (!(o.period / swing > 1.0 / kPeriodFactor && o.period / swing < kPeriodFactor)) {
     // g = 4 pi^2 l / T^2 would be (swing / period)^2 times standard gravity.

@@ -131,6 +131,34 @@ std::optional<std::string> name_systematic(const ParsedScene& scene, const Analy
   return std::nullopt;
 }
 
+/// Without a site: g beyond the range of g on the Earth's surface (no
+/// laboratory has a g outside it) by more than kSuspectSigmas of its own
+/// standard uncertainties. A g 2% low, where a ball's radius is left out of
+/// the length, or 4% high, from a stopwatch started 0.7 s late over 20
+/// periods, stays within standard gravity's 5% but not within the range.
+/// (Beyond 5%, judge_g's own message names what to check.)
+void judge_against_earth_range(const ParsedScene& scene, const Analysis& a, bool bob_slip, const std::string& bob,
+                               const std::string& settings, std::vector<std::string>& reasons) {
+  if (a.expected_g || !a.surface_g || !a.surface_g->range || !a.g.uncertainty || !(*a.g.uncertainty > 0.0)) return;
+  const auto [low, high] = *a.surface_g->range;
+  const double sigma = *a.g.uncertainty;
+  const bool below = a.g.value < low;
+  const double outside = below ? low - a.g.value : a.g.value - high;
+  if (!(outside > kSuspectSigmas * sigma)) return;
+  const auto systematic = bob_slip ? std::nullopt
+                                   : name_systematic(scene, a, kStandardGravity,
+                                                     (a.g.value - kStandardGravity) / sigma, true);
+  reasons.push_back("g = " + format_number(a.g.value, 5) + " m/s^2 is " + format_number(outside / sigma, 3) +
+                    " of its standard uncertainties " + (below ? "below the lowest" : "above the highest") +
+                    " g on the Earth's surface (" + format_number(below ? low : high, 5) +
+                    " m/s^2; the scene gives no site)" +
+                    (bob_slip     ? bob
+                     : systematic ? ": " + *systematic
+                                  : ": an uncertainty stated too small, or a systematic error: check " + settings +
+                                        ", the length's reference point (pivot to the bob's centre), the trials and "
+                                        "timing.oscillations_per_trial"));
+}
+
 /// `bob_slip`: the bob's density is implausible, which explains a g far off
 /// through buoyancy and added mass.
 /// `settings` names what sets the period besides the timing, for the hint.
@@ -167,7 +195,10 @@ void judge_g(const ParsedScene& scene, const Analysis& a, bool bob_slip, const s
                                       "oscillation)"));
     return;
   }
-  if (std::abs(ratio - 1.0) <= kSuspectFraction) return;
+  if (std::abs(ratio - 1.0) <= kSuspectFraction) {
+    judge_against_earth_range(scene, a, bob_slip, bob, settings, reasons);
+    return;
+  }
   // Without a stated uncertainty of the expected g, 5% stands for 3 sigma.
   const auto systematic =
       bob_slip ? std::nullopt : name_systematic(scene, a, expected, (ratio - 1.0) / kSuspectFraction * kSuspectSigmas, false);
@@ -436,6 +467,11 @@ std::string brief_reason(const std::string& reason) {
   const bool asks = then.find('?') != std::string::npos;
   if (after.compare(0, 32, " combined standard uncertainties") == 0) {
     return shortened("g " + number + " sigma from " + expected + (asks ? ": " + guess(then) : ""));
+  }
+  const std::string own = " of its standard uncertainties ";
+  if (after.compare(0, own.size(), own) == 0) {
+    return shortened("g " + number + " sigma " + after.substr(own.size(), 5) + " the Earth's range" +
+                     (asks ? ": " + guess(then) : ""));
   }
   if (after.compare(0, 7, " above ") == 0 || after.compare(0, 7, " below ") == 0) {
     return shortened("g " + number + after.substr(0, 7) + expected + (asks ? ": " + guess(then) : ""));

@@ -213,7 +213,7 @@ struct Analysis {
   std::optional<double> z_score;
   /// Without a site: standard gravity with the range of g over the Earth's
   /// surface as its uncertainty (earth_surface_gravity()), and z against it.
-  /// The status still judges g against standard gravity by 5% (status.hpp).
+  /// The status judges g against the range itself (status.hpp).
   std::optional<ExpectedGravity> surface_g;
   std::optional<double> surface_z;
   /// Findings of the analysis itself (the scene's own are in ParsedScene),

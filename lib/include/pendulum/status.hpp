@@ -21,7 +21,9 @@ const char* result_status_name(ResultStatus s);
 
 /// g more than this many combined standard uncertainties from the site's g is suspect...
 inline constexpr double kSuspectSigmas = 3.0;
-/// ...and, with no site, more than this fraction from standard gravity.
+/// ...and, with no site, more than this fraction from standard gravity (or
+/// kSuspectSigmas of its own standard uncertainties beyond the range of g
+/// on the Earth's surface).
 inline constexpr double kSuspectFraction = 0.05;
 
 /// The slip in the scene that makes g `ratio` times the true g, by
@@ -41,7 +43,9 @@ std::optional<std::string> bob_density_slip(const Apparatus<double>& apparatus);
 /// The verdict on one analysed scene: suspect when g is more than
 /// kSuspectSigmas combined standard uncertainties from the site's expected
 /// g (or, when that comparison has no uncertainty or there is no site, more
-/// than kSuspectFraction from it, or from standard gravity), when the bob is
+/// than kSuspectFraction from it, or from standard gravity; with no site,
+/// also more than kSuspectSigmas of g's own standard uncertainties outside
+/// the range of g on the Earth's surface), when the bob is
 /// lighter than any solid ball (a mass unit slip) or than the air, when the
 /// air pressure is a hundredth or a thousandth of an atmosphere (hPa or kPa
 /// written as Pa), or when an amplitude in deg reads as an ordinary lab

@@ -481,7 +481,7 @@ BatchLine batch_line(const std::string& input, const ParsedScene& scene, const A
                      {"z", optional_number(a.z_score)},
                      {"warnings", warnings_json(scene, a)}};
   return {true, a.status, a.g.value, json_text(line, -1), csv_of(line),
-          table_row(result_status_name(a.status), a.g.value, a.g.uncertainty, a.z_score,
+          table_row(result_status_name(a.status), a.g.value, a.g.uncertainty, a.expected_g ? a.z_score : a.surface_z,
                     a.status_reasons.empty() ? "" : a.status_reasons.front())};
 }
 

@@ -100,3 +100,29 @@ TEST_CASE("Every registered kind's rows are what its kCorrectionUse declares", "
           Approx(predicted.composition.total).epsilon(1e-15));
   });
 }
+
+namespace {
+// A kind with one piece of the interface hidden (a derived declaration of
+// the same name and another signature hides the base's).
+struct WithoutStart : SimplePendulum {
+  static void start() = delete;
+};
+struct WithoutReport : SimplePendulum {
+  static void report() = delete;
+};
+struct WithoutPredict : SimplePendulum {
+  static void predict() = delete;
+};
+struct WithoutSolveG : SimplePendulum {
+  static void solve_g() = delete;
+};
+}  // namespace
+
+TEST_CASE("A kind that lacks a piece of the interface is not a period model", "[models]") {
+  STATIC_REQUIRE(is_period_model<SimplePendulum>());
+  STATIC_REQUIRE(is_period_model<PhysicalPendulum>());
+  STATIC_REQUIRE_FALSE(is_period_model<WithoutStart>());
+  STATIC_REQUIRE_FALSE(is_period_model<WithoutReport>());
+  STATIC_REQUIRE_FALSE(is_period_model<WithoutPredict>());
+  STATIC_REQUIRE_FALSE(is_period_model<WithoutSolveG>());
+}

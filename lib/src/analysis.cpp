@@ -14,6 +14,7 @@
 #include "pendulum/input_error.hpp"
 #include "pendulum/models/registry.hpp"
 #include "pendulum/period_fit.hpp"
+#include "fit_state.hpp"
 #include "plausibility.hpp"
 #include "text.hpp"
 
@@ -75,115 +76,7 @@ void use_fitted_decay(ParsedScene& scene, const DecayFit& fit) {
   }
 }
 
-static_assert(PhysicalPendulum::kParameters == 3, "physical_start (analysis.hpp) takes three parameters");
-
-std::array<double, 3> physical_start(const ParsedScene& scene, const std::array<bool, 3>& fitted) {
-  using M = PhysicalPendulum;
-  std::array<double, M::kParameters> p = M::kDefaults;
-  const auto& obs = scene.observations;
-  const auto& body = scene.apparatus.body;
-  // A k the body gives is held: the line is then T^2 h = (4 pi^2/g)(k^2 + h^2), through the origin.
-  const bool known_k = body && body->radius_of_gyration;
-  const double known_k2 = known_k ? *body->radius_of_gyration * *body->radius_of_gyration : 0.0;
-  auto line_through = [&](double center, double& ssr) {
-    std::vector<double> x, y, zero(obs.size(), 0.0);
-    for (const auto& o : obs) {
-      const double h = o.setting == Setting::pivot_position ? std::abs(o.length - center) : o.length;
-      x.push_back(h * h + known_k2);
-      y.push_back(o.period * o.period * h);
-    }
-    const StraightLine line =
-        fit_straight_line(x, y, zero, zero, !known_k && obs.size() > 1 && fitted[M::radius_of_gyration]);
-    ssr = 0.0;
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      const double r = (line.slope * x[i] + line.intercept - y[i]) / y[i];
-      ssr += r * r;
-    }
-    return line;
-  };
-  double center = body && body->center_of_mass_position ? *body->center_of_mass_position : 0.0;
-  const bool positions = std::any_of(obs.begin(), obs.end(), [](const auto& o) { return o.setting == Setting::pivot_position; });
-  if (positions && fitted[M::center_of_mass_position]) {
-    const auto [lo, hi] = std::minmax_element(obs.begin(), obs.end(), [](const auto& a, const auto& b) { return a.length < b.length; });
-    const double span = std::max(hi->length - lo->length, 1e-3);
-    double best = HUGE_VAL;
-    constexpr int kGrid = 600;
-    for (int i = 0; i <= kGrid; ++i) {
-      const double c = lo->length - span + 3.0 * span * i / kGrid;
-      if (std::any_of(obs.begin(), obs.end(), [&](const auto& o) { return std::abs(o.length - c) < 1e-6 * span; })) continue;
-      double ssr;
-      line_through(c, ssr);
-      if (ssr < best) best = ssr, center = c;
-    }
-    // Then golden-section search within a grid step either side, to 1e-9 of
-    // the span: Levenberg-Marquardt then starts next to the optimum.
-    const double step = 3.0 * span / kGrid, ratio = (std::sqrt(5.0) - 1.0) / 2.0;
-    double a = center - step, b = center + step;
-    auto cost = [&](double c) {
-      double ssr;
-      line_through(c, ssr);
-      return ssr;
-    };
-    double c1 = b - ratio * (b - a), c2 = a + ratio * (b - a), f1 = cost(c1), f2 = cost(c2);
-    while (b - a > 1e-9 * span) {
-      if (f1 < f2) {
-        b = c2, c2 = c1, f2 = f1, c1 = b - ratio * (b - a), f1 = cost(c1);
-      } else {
-        a = c1, c1 = c2, f1 = f2, c2 = a + ratio * (b - a), f2 = cost(c2);
-      }
-    }
-    if (std::min(f1, f2) < best) center = f1 < f2 ? c1 : c2;
-  }
-  double ssr;
-  const StraightLine line = line_through(center, ssr);
-  p[M::g] = 4.0 * kPi * kPi / line.slope;
-  if (known_k) {
-    p[M::radius_of_gyration] = *body->radius_of_gyration;  // held: what the model takes (PhysicalPendulum::gyration)
-  } else if (line.intercept > 0.0) {
-    p[M::radius_of_gyration] = std::sqrt(line.intercept / line.slope);
-  }
-  p[M::center_of_mass_position] = center;
-  return p;
-}
-
 namespace {
-
-/// The pivot scan's textbook curve (PivotScan::Textbook) on the scene's
-/// measured periods.
-PivotScan::Textbook pivot_textbook(const ParsedScene& scene, const std::array<bool, 3>& fitted) {
-  using M = PhysicalPendulum;
-  const std::array<double, 3> t = physical_start(scene, fitted);
-  const auto& obs = scene.observations;
-  const auto& body = scene.apparatus.body;
-  const bool known_k = body && body->radius_of_gyration;
-  const bool positions = std::any_of(obs.begin(), obs.end(), [](const auto& o) { return o.setting == Setting::pivot_position; });
-  const double center = t[M::center_of_mass_position], k2 = known_k ? t[M::radius_of_gyration] * t[M::radius_of_gyration] : 0.0;
-  const bool intercept = !known_k && obs.size() > 1 && fitted[M::radius_of_gyration];
-  // physical_start's unweighted line T^2 h = a (h^2 + k^2) + b: its slope is
-  // sum c_i y_i, c_i = (x_i - mean x)/Sxx (x_i/sum x^2 through the origin),
-  // and y_i - a x_i moves by 2 T h dT + (T^2 - 2 a h) dh.
-  std::vector<double> h(obs.size()), x(obs.size());
-  double mean = 0.0;
-  for (std::size_t i = 0; i < obs.size(); ++i) {
-    h[i] = obs[i].setting == Setting::pivot_position ? std::abs(obs[i].length - center) : obs[i].length;
-    x[i] = h[i] * h[i] + k2;
-    if (intercept) mean += x[i] / obs.size();
-  }
-  double sxx = 0.0;
-  for (double xi : x) sxx += (xi - mean) * (xi - mean);
-  const double a = 4.0 * kPi * kPi / t[M::g];
-  double variance = 0.0;
-  for (std::size_t i = 0; i < obs.size(); ++i) {
-    const double c = (x[i] - mean) / sxx, T = obs[i].period;
-    const auto& u = scene.observation_uncertainties[i];
-    const double dt = 2.0 * T * h[i] * u.period, dh = (T * T - 2.0 * a * h[i]) * u.length;
-    variance += c * c * (dt * dt + dh * dh);
-  }
-  const double sigma = t[M::g] * std::sqrt(variance) / a;
-  return {{t[M::g], std::isfinite(sigma) ? std::optional<double>(sigma) : std::nullopt},
-          t[M::radius_of_gyration],
-          positions ? std::optional<double>(center) : std::nullopt};
-}
 
 /// One input: a scalar of the apparatus, of one observation, or given once
 /// for several observations of a series (ObservationSource::shared).
@@ -229,7 +122,6 @@ template <class Model>
 class Fit {
  public:
   static constexpr int P = Model::kParameters;
-  static constexpr bool kSimple = std::is_same_v<Model, SimplePendulum>;
   using Vector = Eigen::Matrix<double, P, 1>;
   using Matrix = Eigen::Matrix<double, P, P>;
 
@@ -268,26 +160,13 @@ class Fit {
 
   void solve() {
     std::copy(Model::kDefaults.begin(), Model::kDefaults.end(), p_.begin());
-    if constexpr (kSimple) textbook_ = textbook_line();
     if (k_ == 1 && free_count_ == 1) {
       p_[0] = Model::solve_g(p_.data(), scene_.observations[0], scene_.apparatus, amplitude_[0]);
       out_.fit.method = "closed_form";
       out_.fit.termination = "closed form of one observation";
       return;
     }
-    // From the textbook line through the origin, the offset at 0: close
-    // enough at any amplitude for Levenberg-Marquardt, and finite however
-    // close the lengths (the line with an intercept is not).
-    if constexpr (kSimple) {
-      std::vector<double> x(k_), y(k_), zero(k_, 0.0);
-      for (std::size_t k = 0; k < k_; ++k) {
-        x[k] = scene_.observations[k].length;
-        y[k] = scene_.observations[k].period * scene_.observations[k].period;
-      }
-      p_[0] = 4.0 * kPi * kPi / fit_straight_line(x, y, zero, zero, false).slope;
-    } else {
-      p_ = physical_start(scene_, fitted_);
-    }
+    p_ = Model::start(scene_, fitted_);
     // Effective variance: weights from each observation's own uncertainties
     // (period, length, amplitude) carried to its period at the textbook
     // start, then once more at the optimum.
@@ -350,19 +229,6 @@ class Fit {
                          "number; expected an uncertainty of a measurement");
       }
     }
-  }
-
-  StraightLine textbook_line() const {
-    std::vector<double> x(k_), y(k_), sx(k_), sy(k_);
-    for (std::size_t k = 0; k < k_; ++k) {
-      const auto& o = scene_.observations[k];
-      const auto& u = scene_.observation_uncertainties[k];
-      x[k] = o.length;
-      y[k] = o.period * o.period;
-      sx[k] = u.length;
-      sy[k] = 2.0 * o.period * u.period;
-    }
-    return fit_straight_line(x, y, sx, sy, P > 1 && fitted_[1]);
   }
 
   /// Values and parameter gradients of every derived quantity, the
@@ -545,11 +411,7 @@ class Fit {
     report_observations(g);
     report_budget();
     out_.fit.model = Model::kName;
-    if constexpr (kSimple) {
-      report_textbook();
-    } else {
-      report_pivot_scan();
-    }
+    Model::report(FitState<P>{scene_, options_, p_, fitted_, covariance_, inverse_, singular_}, out_);
     if (singular_) {
       out_.warnings.push_back(
           "fit: the observations cannot separate the unknowns (their covariance is singular), so no "
@@ -678,179 +540,6 @@ class Fit {
     if (singular_) out_.budget.clear();
   }
 
-  void report_textbook() {
-    const StraightLine& line = textbook_;
-    const double g = 4.0 * kPi * kPi / line.slope, sigma = g * std::sqrt(line.var_slope) / line.slope;
-    if (g > 0.0 && std::isfinite(g) && std::isfinite(sigma)) out_.fit.textbook = TextbookFit{{g, sigma}, {}};
-    if (out_.fit.textbook && P > 1 && fitted_[1]) {  // else no line: the lengths are all equal
-      TextbookFit& t = *out_.fit.textbook;
-      const double a = line.slope, b = line.intercept;
-      const double var = line.var_intercept / (a * a) + b * b * line.var_slope / (a * a * a * a) -
-                         2.0 * b * line.cov / (a * a * a);
-      t.length_offset = Estimate{b / a, std::sqrt(std::max(var, 0.0))};
-      if (!singular_) {
-        // With the offset unknown, g's uncertainty grows by 1/sqrt(1 - rho^2).
-        const double rho = inverse_(0, 1) / std::sqrt(inverse_(0, 0) * inverse_(1, 1));
-        const double inflation = 1.0 / std::sqrt(std::max(1.0 - rho * rho, 0.0));
-        if (inflation > 10.0) {
-          const auto [lo, hi] = std::minmax_element(
-              scene_.observations.begin(), scene_.observations.end(),
-              [](const auto& x, const auto& y) { return x.length < y.length; });
-          out_.warnings.push_back("observations: the lengths span only " + format_number(lo->length, 5) + " m to " +
-                                  format_number(hi->length, 5) + " m, too close together to separate g from "
-                                  "length_offset (correlation " + format_number(rho, 6) + "), which makes g's uncertainty " +
-                                  format_number(inflation, 3) + " times what a known offset would give; swing at "
-                                  "lengths further apart");
-        }
-      }
-    }
-    // Too large a chi2 makes the result suspect (status.cpp); too small a one is only said.
-    if (k_ > 1 && out_.fit.probability) {
-      const double lower = boost::math::gamma_p(out_.fit.dof / 2.0, out_.fit.chi2 / 2.0);
-      if (lower < 1e-3) {
-        out_.warnings.push_back("fit: chi2 = " + format_number(out_.fit.chi2, 4) + " for " +
-                                std::to_string(out_.fit.dof) + " degrees of freedom (chi2/dof = " +
-                                format_number(out_.fit.chi2 / out_.fit.dof, 4) + "); so small a chi2 has probability " +
-                                format_number(lower, 2) + ": the periods' uncertainties are too large");
-      }
-    }
-  }
-
-  /// A function of the parameters with its uncertainty from their covariance.
-  template <class F>
-  Estimate derived_estimate(F&& f) const {
-    using JetP = ceres::Jet<double, P>;
-    std::array<JetP, P> p;
-    for (int i = 0; i < P; ++i) p[i] = JetP(p_[i], i);
-    const JetP q = f(p.data());
-    return {q.a, deviation(q.v.dot(covariance_ * q.v))};
-  }
-
-  void report_pivot_scan() {
-    using M = PhysicalPendulum;
-    using JetP = ceres::Jet<double, P>;
-    const Apparatus<JetP> app = convert_apparatus<JetP>(scene_.apparatus, [](const Field&, double x) { return JetP(x); });
-    PivotScan scan;
-    // Only k^2 enters the period: the fit may land on either sign of k.
-    auto k_of = [&](const JetP* p) {
-      using std::abs;
-      return M::thermal_scale(app) * abs(M::gyration(p, app));
-    };
-    scan.minimum_period = derived_estimate([&](const JetP* p) { return minimum_period(p[M::g], k_of(p)); });
-    scan.minimum_pivot_distance = derived_estimate(k_of);
-    const auto& body = scene_.apparatus.body;
-    const bool held_center = body && body->center_of_mass_position;
-    const bool positions = std::any_of(scene_.observations.begin(), scene_.observations.end(),
-                                       [](const auto& o) { return o.setting == Setting::pivot_position; });
-    auto center_of = [&](const JetP* p) {
-      return held_center ? JetP(*body->center_of_mass_position) : p[M::center_of_mass_position];
-    };
-    if (positions) {
-      for (const double side : {-1.0, 1.0}) {
-        scan.minimum_pivot_positions.push_back(
-            derived_estimate([&](const JetP* p) {
-              using std::abs;
-              return center_of(p) + side * abs(M::gyration(p, app));
-            }));
-      }
-    }
-    for (std::size_t k = 0; k < k_; ++k) {
-      const Observation<JetP> o =
-          convert_observation<JetP>(scene_.observations[k], [](const Field&, double x) { return JetP(x); });
-      PivotScan::Conjugate c;
-      c.equivalent_length = derived_estimate([&](const JetP* p) { return M::equivalent(p, o, app); });
-      c.pivot_distance = derived_estimate([&](const JetP* p) {
-        return conjugate_pivot_distance(M::gyration(p, app), M::pivot_distance(p, o, app));
-      });
-      if (o.setting == Setting::pivot_position) {
-        c.pivot_position = derived_estimate([&](const JetP* p) {
-          const JetP center = center_of(p);
-          const JetP h = conjugate_pivot_distance(M::gyration(p, app), M::pivot_distance(p, o, app));
-          return o.length < center ? center + h : center - h;
-        });
-      }
-      scan.conjugates.push_back(c);
-    }
-    scan.textbook = pivot_textbook(scene_, fitted_);
-    review_kater(scan);
-    check_against_parts(scan);
-    warn_about_buoyancy();
-    out_.fit.pivot_scan = scan;
-  }
-
-  /// Air given but not the body's mass and volume: buoyancy is skipped; say
-  /// what a steel body's would be (g rises by rho_air/rho, Eq. 16 twice).
-  void warn_about_buoyancy() {
-    const Apparatus<double>& app = scene_.apparatus;
-    if (!app.air || (app.body && app.body->mass && app.body->volume)) return;
-    constexpr double kSteel = 7850.0;  // kg/m^3, a carbon steel
-    const double shift = p_[0] * air_density(app.air->pressure, app.air->temperature, app.air->molar_mass) / kSteel;
-    if (out_.g.uncertainty && shift < options_.negligible_fraction * *out_.g.uncertainty) return;
-    out_.warnings.push_back("air: the body's mass and volume are not known (give the body in parts with their "
-                            "densities), so buoyancy is skipped; a steel body's would raise g by " +
-                            format_number(shift, 3) + " m/s^2");
-  }
-
-  /// A fitted k or centre against what the body's parts give.
-  void check_against_parts(PivotScan& scan) {
-    if (!scene_.body_from_parts) return;
-    const RigidBody<double>& parts = *scene_.body_from_parts;
-    const std::pair<int, std::optional<double>*> checks[] = {
-        {PhysicalPendulum::radius_of_gyration, &scan.parts_radius_of_gyration},
-        {PhysicalPendulum::center_of_mass_position, &scan.parts_center_of_mass_position}};
-    for (const auto& [i, field] : checks) {
-      if (!fitted_[i]) continue;
-      const double from_parts = i == PhysicalPendulum::radius_of_gyration ? *parts.radius_of_gyration
-                                                                          : *parts.center_of_mass_position;
-      *field = from_parts;
-      const std::optional<double> sigma = deviation(covariance_(i, i));
-      if (!sigma || std::abs(p_[i] - from_parts) <= 3.0 * *sigma) continue;
-      out_.warnings.push_back(std::string("fit: ") + PhysicalPendulum::kParameterInfo[i].name + " = " +
-                              format_number(p_[i], 6) + " +- " + format_number(*sigma, 2) + " m, but the body's parts give " +
-                              format_number(from_parts, 6) + " m (" + format_number(std::abs(p_[i] - from_parts) / *sigma, 3) +
-                              " standard uncertainties away): a part missing, misplaced or of the wrong mass?");
-    }
-  }
-
-  /// Kater's reversible pendulum: two pivot positions on opposite sides of
-  /// a measured centre, at different distances from it (two pivots on one
-  /// side are an ordinary scan of two; at equal distances the periods are
-  /// equal by symmetry and Bessel's (T1^2 - T2^2)/(h1 - h2) is 0/0).
-  /// Bessel's formula on the ideal periods checks the fit; the rough centre
-  /// enters g only through T1^2 - T2^2, and a warning says when the periods
-  /// are too far apart for that.
-  void review_kater(PivotScan& scan) {
-    const auto& body = scene_.apparatus.body;
-    if (k_ != 2 || !body || !body->center_of_mass_position) return;
-    const auto& o1 = scene_.observations[0];
-    const auto& o2 = scene_.observations[1];
-    if (o1.setting != Setting::pivot_position || o2.setting != Setting::pivot_position) return;
-    const double center = *body->center_of_mass_position;
-    if ((o1.length - center) * (o2.length - center) >= 0.0) return;
-    const double scale = PhysicalPendulum::thermal_scale(scene_.apparatus);
-    const double h1 = scale * std::abs(o1.length - center), h2 = scale * std::abs(o2.length - center);
-    if (std::abs(h1 - h2) <= 1e-6 * (h1 + h2)) return;
-    auto ideal = [&](std::size_t k) { return base_[k].value[kIdealPeriod] / base_[k].value[kModelPeriod] * scene_.observations[k].period; };
-    scan.bessel_g = bessel_g(ideal(0), ideal(1), h1, h2);
-    double center_share = 0.0, others = 0.0;
-    for (const auto& b : out_.budget) {
-      if (b.input == "center_of_mass_position") {
-        center_share = b.contribution;
-      } else {
-        others = std::max(others, b.contribution);
-      }
-    }
-    if (center_share > others && center_share > 0.0) {
-      const double apart = std::abs(o1.period - o2.period);
-      out_.warnings.push_back(
-          "kater: the periods differ by " + format_number(apart, 3) + " s, so the roughly located centre of mass "
-          "(center_of_mass_position) contributes " + format_number(center_share, 3) + " m/s^2 to g's uncertainty, more "
-          "than any other input (" + format_number(others, 3) + " m/s^2); Bessel's method needs T1 and T2 close, since the "
-          "centre enters only through T1^2 - T2^2: move the adjustable mass until they agree within " +
-          format_number(apart * others / center_share, 2) + " s, or locate the centre better");
-    }
-  }
-
   struct Base {
     std::array<double, kQuantities> value;
     std::array<Vector, kQuantities> gradient;  ///< with respect to the parameters
@@ -874,7 +563,6 @@ class Fit {
   std::vector<AmplitudeChoice> amplitude_;
   std::vector<double> weights_;
   std::array<double, P> p_;
-  StraightLine textbook_{};
   std::vector<Base> base_;
   Matrix hessian_, inverse_ = Matrix::Zero();
   bool singular_ = false;

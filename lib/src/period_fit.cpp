@@ -326,7 +326,6 @@ PeriodFitSolution fit_periods(const PeriodFitProblem<Model>& problem,
   out.parameters.assign(P, 0.0);
   out.parameters[0] = 1.0 / (best.s * best.s);
   std::copy(q.begin(), q.end(), out.parameters.begin() + 1);
-  out.chi2 = best.sums.rr;
   // (J^T J)^-1 over the fitted parameters at the optimum, g included,
   // judged singular on its column-scaled form, which the parameters' units
   // do not affect.

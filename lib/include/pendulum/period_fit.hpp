@@ -32,7 +32,6 @@ struct PeriodFitProblem {
 
 struct PeriodFitSolution {
   std::vector<double> parameters;  ///< SI, in the model's order
-  double chi2 = 0.0;               ///< sum of squared weighted residuals
   /// (J^T W J)^-1 at the optimum: the parameters' covariance from the
   /// weights alone (row-major, zero rows for held ones; empty when singular).
   std::vector<double> covariance;

@@ -39,6 +39,12 @@
 
 namespace pendulum {
 
+struct ParsedScene;
+struct Analysis;
+/// What a model's own results read of its fit (lib/src/fit_state.hpp).
+template <int P>
+struct FitState;
+
 /// The period model a scene is reduced with: one per registered kind, in
 /// the registry's order (models/registry.hpp).
 enum class PeriodModelKind { simple_pendulum, physical_pendulum };

@@ -79,6 +79,14 @@ struct PhysicalPendulum {
   /// period, so a fit may land on either sign of k; k is reported positive.
   static void canonicalise(double* p) { p[radius_of_gyration] = std::abs(p[radius_of_gyration]); }
 
+  /// Where the fit starts: the straight line T^2 h = (4 pi^2/g)(h^2 + k^2)
+  /// on the measured periods, the centre searched (physical_start, analysis.hpp).
+  static std::array<double, kParameters> start(const ParsedScene& scene, const std::array<bool, kParameters>& fitted);
+  /// Its results beside the fit's: the pivot scan (FitReport::pivot_scan),
+  /// Kater's Bessel g, the parts' k and centre against the fit's, the
+  /// buoyancy a body of unknown volume lacks (models/physical_pendulum.cpp).
+  static void report(const FitState<kParameters>& fit, Analysis& out);
+
   /// k (m): the body's (from its parts) when it has one, else the parameter.
   template <class T>
   static T gyration(const T* p, const Apparatus<T>& app) {

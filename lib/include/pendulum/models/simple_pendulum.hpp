@@ -36,6 +36,13 @@ struct SimplePendulum {
   /// The fitted parameters in their reported form (already unique here).
   static void canonicalise(double*) {}
 
+  /// Where the fit of several observations starts: g from the textbook line
+  /// T^2 = (4 pi^2/g) L through the origin, the offset at 0 (models/simple_pendulum.cpp).
+  static std::array<double, kParameters> start(const ParsedScene& scene, const std::array<bool, kParameters>& fitted);
+  /// Its results beside the fit's: the textbook line (FitReport::textbook),
+  /// lengths too close to separate the offset, a chi2 too small.
+  static void report(const FitState<kParameters>& fit, Analysis& out);
+
   /// The period of one observation at parameters p = (g (m/s^2), length
   /// offset (m)): T0 = 2 pi sqrt(l/g) (Eq. 3) with l = length + offset, times
   /// T/T0 of the corrections (corrections.hpp, compose).

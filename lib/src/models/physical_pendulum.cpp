@@ -1,0 +1,263 @@
+/// \file models/physical_pendulum.cpp
+/// \brief The rigid body's start (a straight line in h^2) and its results
+/// beside the fit: the pivot scan (docs/physical.md, docs/core.md).
+#include "pendulum/models/physical_pendulum.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "../fit_state.hpp"
+#include "../text.hpp"
+#include "pendulum/period_fit.hpp"
+
+namespace pendulum {
+
+static_assert(PhysicalPendulum::kParameters == 3, "physical_start (analysis.hpp) takes three parameters");
+
+std::array<double, 3> physical_start(const ParsedScene& scene, const std::array<bool, 3>& fitted) {
+  using M = PhysicalPendulum;
+  std::array<double, M::kParameters> p = M::kDefaults;
+  const auto& obs = scene.observations;
+  const auto& body = scene.apparatus.body;
+  // A k the body gives is held: the line is then T^2 h = (4 pi^2/g)(k^2 + h^2), through the origin.
+  const bool known_k = body && body->radius_of_gyration;
+  const double known_k2 = known_k ? *body->radius_of_gyration * *body->radius_of_gyration : 0.0;
+  auto line_through = [&](double center, double& ssr) {
+    std::vector<double> x, y, zero(obs.size(), 0.0);
+    for (const auto& o : obs) {
+      const double h = o.setting == Setting::pivot_position ? std::abs(o.length - center) : o.length;
+      x.push_back(h * h + known_k2);
+      y.push_back(o.period * o.period * h);
+    }
+    const StraightLine line =
+        fit_straight_line(x, y, zero, zero, !known_k && obs.size() > 1 && fitted[M::radius_of_gyration]);
+    ssr = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const double r = (line.slope * x[i] + line.intercept - y[i]) / y[i];
+      ssr += r * r;
+    }
+    return line;
+  };
+  double center = body && body->center_of_mass_position ? *body->center_of_mass_position : 0.0;
+  const bool positions = std::any_of(obs.begin(), obs.end(), [](const auto& o) { return o.setting == Setting::pivot_position; });
+  if (positions && fitted[M::center_of_mass_position]) {
+    const auto [lo, hi] = std::minmax_element(obs.begin(), obs.end(), [](const auto& a, const auto& b) { return a.length < b.length; });
+    const double span = std::max(hi->length - lo->length, 1e-3);
+    double best = HUGE_VAL;
+    constexpr int kGrid = 600;
+    for (int i = 0; i <= kGrid; ++i) {
+      const double c = lo->length - span + 3.0 * span * i / kGrid;
+      if (std::any_of(obs.begin(), obs.end(), [&](const auto& o) { return std::abs(o.length - c) < 1e-6 * span; })) continue;
+      double ssr;
+      line_through(c, ssr);
+      if (ssr < best) best = ssr, center = c;
+    }
+    // Then golden-section search within a grid step either side, to 1e-9 of
+    // the span: Levenberg-Marquardt then starts next to the optimum.
+    const double step = 3.0 * span / kGrid, ratio = (std::sqrt(5.0) - 1.0) / 2.0;
+    double a = center - step, b = center + step;
+    auto cost = [&](double c) {
+      double ssr;
+      line_through(c, ssr);
+      return ssr;
+    };
+    double c1 = b - ratio * (b - a), c2 = a + ratio * (b - a), f1 = cost(c1), f2 = cost(c2);
+    while (b - a > 1e-9 * span) {
+      if (f1 < f2) {
+        b = c2, c2 = c1, f2 = f1, c1 = b - ratio * (b - a), f1 = cost(c1);
+      } else {
+        a = c1, c1 = c2, f1 = f2, c2 = a + ratio * (b - a), f2 = cost(c2);
+      }
+    }
+    if (std::min(f1, f2) < best) center = f1 < f2 ? c1 : c2;
+  }
+  double ssr;
+  const StraightLine line = line_through(center, ssr);
+  p[M::g] = 4.0 * kPi * kPi / line.slope;
+  if (known_k) {
+    p[M::radius_of_gyration] = *body->radius_of_gyration;  // held: what the model takes (PhysicalPendulum::gyration)
+  } else if (line.intercept > 0.0) {
+    p[M::radius_of_gyration] = std::sqrt(line.intercept / line.slope);
+  }
+  p[M::center_of_mass_position] = center;
+  return p;
+}
+
+namespace {
+
+/// The pivot scan's textbook curve (PivotScan::Textbook) on the scene's
+/// measured periods.
+PivotScan::Textbook pivot_textbook(const ParsedScene& scene, const std::array<bool, 3>& fitted) {
+  using M = PhysicalPendulum;
+  const std::array<double, 3> t = physical_start(scene, fitted);
+  const auto& obs = scene.observations;
+  const auto& body = scene.apparatus.body;
+  const bool known_k = body && body->radius_of_gyration;
+  const bool positions = std::any_of(obs.begin(), obs.end(), [](const auto& o) { return o.setting == Setting::pivot_position; });
+  const double center = t[M::center_of_mass_position], k2 = known_k ? t[M::radius_of_gyration] * t[M::radius_of_gyration] : 0.0;
+  const bool intercept = !known_k && obs.size() > 1 && fitted[M::radius_of_gyration];
+  // physical_start's unweighted line T^2 h = a (h^2 + k^2) + b: its slope is
+  // sum c_i y_i, c_i = (x_i - mean x)/Sxx (x_i/sum x^2 through the origin),
+  // and y_i - a x_i moves by 2 T h dT + (T^2 - 2 a h) dh.
+  std::vector<double> h(obs.size()), x(obs.size());
+  double mean = 0.0;
+  for (std::size_t i = 0; i < obs.size(); ++i) {
+    h[i] = obs[i].setting == Setting::pivot_position ? std::abs(obs[i].length - center) : obs[i].length;
+    x[i] = h[i] * h[i] + k2;
+    if (intercept) mean += x[i] / obs.size();
+  }
+  double sxx = 0.0;
+  for (double xi : x) sxx += (xi - mean) * (xi - mean);
+  const double a = 4.0 * kPi * kPi / t[M::g];
+  double variance = 0.0;
+  for (std::size_t i = 0; i < obs.size(); ++i) {
+    const double c = (x[i] - mean) / sxx, T = obs[i].period;
+    const auto& u = scene.observation_uncertainties[i];
+    const double dt = 2.0 * T * h[i] * u.period, dh = (T * T - 2.0 * a * h[i]) * u.length;
+    variance += c * c * (dt * dt + dh * dh);
+  }
+  const double sigma = t[M::g] * std::sqrt(variance) / a;
+  return {{t[M::g], std::isfinite(sigma) ? std::optional<double>(sigma) : std::nullopt},
+          t[M::radius_of_gyration],
+          positions ? std::optional<double>(center) : std::nullopt};
+}
+
+/// Air given but not the body's mass and volume: buoyancy is skipped; say
+/// what a steel body's would be (g rises by rho_air/rho, Eq. 16 twice).
+void warn_about_buoyancy(const FitState<PhysicalPendulum::kParameters>& fit, Analysis& out) {
+  const Apparatus<double>& app = fit.scene.apparatus;
+  if (!app.air || (app.body && app.body->mass && app.body->volume)) return;
+  constexpr double kSteel = 7850.0;  // kg/m^3, a carbon steel
+  const double shift = fit.p[0] * air_density(app.air->pressure, app.air->temperature, app.air->molar_mass) / kSteel;
+  if (out.g.uncertainty && shift < fit.options.negligible_fraction * *out.g.uncertainty) return;
+  out.warnings.push_back("air: the body's mass and volume are not known (give the body in parts with their "
+                          "densities), so buoyancy is skipped; a steel body's would raise g by " +
+                          format_number(shift, 3) + " m/s^2");
+}
+
+/// A fitted k or centre against what the body's parts give.
+void check_against_parts(const FitState<PhysicalPendulum::kParameters>& fit, Analysis& out, PivotScan& scan) {
+  if (!fit.scene.body_from_parts) return;
+  const RigidBody<double>& parts = *fit.scene.body_from_parts;
+  const std::pair<int, std::optional<double>*> checks[] = {
+      {PhysicalPendulum::radius_of_gyration, &scan.parts_radius_of_gyration},
+      {PhysicalPendulum::center_of_mass_position, &scan.parts_center_of_mass_position}};
+  for (const auto& [i, field] : checks) {
+    if (!fit.fitted[i]) continue;
+    const double from_parts = i == PhysicalPendulum::radius_of_gyration ? *parts.radius_of_gyration
+                                                                        : *parts.center_of_mass_position;
+    *field = from_parts;
+    const std::optional<double> sigma = fit.deviation(fit.covariance(i, i));
+    if (!sigma || std::abs(fit.p[i] - from_parts) <= 3.0 * *sigma) continue;
+    out.warnings.push_back(std::string("fit: ") + PhysicalPendulum::kParameterInfo[i].name + " = " +
+                            format_number(fit.p[i], 6) + " +- " + format_number(*sigma, 2) + " m, but the body's parts give " +
+                            format_number(from_parts, 6) + " m (" + format_number(std::abs(fit.p[i] - from_parts) / *sigma, 3) +
+                            " standard uncertainties away): a part missing, misplaced or of the wrong mass?");
+  }
+}
+
+/// Kater's reversible pendulum: two pivot positions on opposite sides of
+/// a measured centre, at different distances from it (two pivots on one
+/// side are an ordinary scan of two; at equal distances the periods are
+/// equal by symmetry and Bessel's (T1^2 - T2^2)/(h1 - h2) is 0/0).
+/// Bessel's formula on the ideal periods checks the fit; the rough centre
+/// enters g only through T1^2 - T2^2, and a warning says when the periods
+/// are too far apart for that.
+void review_kater(const FitState<PhysicalPendulum::kParameters>& fit, Analysis& out, PivotScan& scan) {
+  const auto& body = fit.scene.apparatus.body;
+  if (fit.scene.observations.size() != 2 || !body || !body->center_of_mass_position) return;
+  const auto& o1 = fit.scene.observations[0];
+  const auto& o2 = fit.scene.observations[1];
+  if (o1.setting != Setting::pivot_position || o2.setting != Setting::pivot_position) return;
+  const double center = *body->center_of_mass_position;
+  if ((o1.length - center) * (o2.length - center) >= 0.0) return;
+  const double scale = PhysicalPendulum::thermal_scale(fit.scene.apparatus);
+  const double h1 = scale * std::abs(o1.length - center), h2 = scale * std::abs(o2.length - center);
+  if (std::abs(h1 - h2) <= 1e-6 * (h1 + h2)) return;
+  auto ideal = [&](std::size_t k) {
+    const ObservationResult& r = out.observations[k];
+    return r.period_ideal.value / r.period_model * fit.scene.observations[k].period;
+  };
+  scan.bessel_g = bessel_g(ideal(0), ideal(1), h1, h2);
+  double center_share = 0.0, others = 0.0;
+  for (const auto& b : out.budget) {
+    if (b.input == "center_of_mass_position") {
+      center_share = b.contribution;
+    } else {
+      others = std::max(others, b.contribution);
+    }
+  }
+  if (center_share > others && center_share > 0.0) {
+    const double apart = std::abs(o1.period - o2.period);
+    out.warnings.push_back(
+        "kater: the periods differ by " + format_number(apart, 3) + " s, so the roughly located centre of mass "
+        "(center_of_mass_position) contributes " + format_number(center_share, 3) + " m/s^2 to g's uncertainty, more "
+        "than any other input (" + format_number(others, 3) + " m/s^2); Bessel's method needs T1 and T2 close, since the "
+        "centre enters only through T1^2 - T2^2: move the adjustable mass until they agree within " +
+        format_number(apart * others / center_share, 2) + " s, or locate the centre better");
+  }
+}
+
+}  // namespace
+
+std::array<double, PhysicalPendulum::kParameters> PhysicalPendulum::start(const ParsedScene& scene,
+                                                                          const std::array<bool, kParameters>& fitted) {
+  return physical_start(scene, fitted);
+}
+
+void PhysicalPendulum::report(const FitState<kParameters>& fit, Analysis& out) {
+  using M = PhysicalPendulum;
+  using JetP = ceres::Jet<double, kParameters>;
+  const Apparatus<JetP> app = convert_apparatus<JetP>(fit.scene.apparatus, [](const Field&, double x) { return JetP(x); });
+  PivotScan scan;
+  // Only k^2 enters the period: the fit may land on either sign of k.
+  auto k_of = [&](const JetP* p) {
+    using std::abs;
+    return M::thermal_scale(app) * abs(M::gyration(p, app));
+  };
+  scan.minimum_period = fit.derived_estimate([&](const JetP* p) { return minimum_period(p[M::g], k_of(p)); });
+  scan.minimum_pivot_distance = fit.derived_estimate(k_of);
+  const auto& body = fit.scene.apparatus.body;
+  const bool held_center = body && body->center_of_mass_position;
+  const bool positions = std::any_of(fit.scene.observations.begin(), fit.scene.observations.end(),
+                                     [](const auto& o) { return o.setting == Setting::pivot_position; });
+  auto center_of = [&](const JetP* p) {
+    return held_center ? JetP(*body->center_of_mass_position) : p[M::center_of_mass_position];
+  };
+  if (positions) {
+    for (const double side : {-1.0, 1.0}) {
+      scan.minimum_pivot_positions.push_back(
+          fit.derived_estimate([&](const JetP* p) {
+            using std::abs;
+            return center_of(p) + side * abs(M::gyration(p, app));
+          }));
+    }
+  }
+  for (std::size_t k = 0; k < fit.scene.observations.size(); ++k) {
+    const Observation<JetP> o =
+        convert_observation<JetP>(fit.scene.observations[k], [](const Field&, double x) { return JetP(x); });
+    PivotScan::Conjugate c;
+    c.equivalent_length = fit.derived_estimate([&](const JetP* p) { return M::equivalent(p, o, app); });
+    c.pivot_distance = fit.derived_estimate([&](const JetP* p) {
+      return conjugate_pivot_distance(M::gyration(p, app), M::pivot_distance(p, o, app));
+    });
+    if (o.setting == Setting::pivot_position) {
+      c.pivot_position = fit.derived_estimate([&](const JetP* p) {
+        const JetP center = center_of(p);
+        const JetP h = conjugate_pivot_distance(M::gyration(p, app), M::pivot_distance(p, o, app));
+        return o.length < center ? center + h : center - h;
+      });
+    }
+    scan.conjugates.push_back(c);
+  }
+  scan.textbook = pivot_textbook(fit.scene, fit.fitted);
+  review_kater(fit, out, scan);
+  check_against_parts(fit, out, scan);
+  warn_about_buoyancy(fit, out);
+  out.fit.pivot_scan = scan;
+}
+
+}  // namespace pendulum

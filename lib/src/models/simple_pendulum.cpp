@@ -1,0 +1,95 @@
+/// \file models/simple_pendulum.cpp
+/// \brief The ball model's start and its results beside the fit: the
+/// textbook line (docs/core.md, the period model).
+#include "pendulum/models/simple_pendulum.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <boost/math/special_functions/gamma.hpp>
+
+#include "../fit_state.hpp"
+#include "../text.hpp"
+#include "pendulum/period_fit.hpp"
+
+namespace pendulum {
+
+namespace {
+
+/// T^2 against L as a straight line, no corrections (through the origin
+/// unless the length offset is fitted), weighted by the periods' and the
+/// lengths' uncertainties.
+StraightLine textbook_line(const ParsedScene& scene, const std::array<bool, SimplePendulum::kParameters>& fitted) {
+  const std::size_t n = scene.observations.size();
+  std::vector<double> x(n), y(n), sx(n), sy(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto& o = scene.observations[k];
+    const auto& u = scene.observation_uncertainties[k];
+    x[k] = o.length;
+    y[k] = o.period * o.period;
+    sx[k] = u.length;
+    sy[k] = 2.0 * o.period * u.period;
+  }
+  return fit_straight_line(x, y, sx, sy, fitted[SimplePendulum::length_offset]);
+}
+
+}  // namespace
+
+std::array<double, SimplePendulum::kParameters> SimplePendulum::start(const ParsedScene& scene,
+                                                                      const std::array<bool, kParameters>&) {
+  // From the textbook line through the origin, the offset at 0: close
+  // enough at any amplitude for Levenberg-Marquardt, and finite however
+  // close the lengths (the line with an intercept is not).
+  std::array<double, kParameters> p = kDefaults;
+  const std::size_t n = scene.observations.size();
+  std::vector<double> x(n), y(n), zero(n, 0.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    x[k] = scene.observations[k].length;
+    y[k] = scene.observations[k].period * scene.observations[k].period;
+  }
+  p[g] = 4.0 * kPi * kPi / fit_straight_line(x, y, zero, zero, false).slope;
+  return p;
+}
+
+void SimplePendulum::report(const FitState<kParameters>& fit, Analysis& out) {
+  const std::size_t k = fit.scene.observations.size();
+  const StraightLine line = textbook_line(fit.scene, fit.fitted);
+  const double g = 4.0 * kPi * kPi / line.slope, sigma = g * std::sqrt(line.var_slope) / line.slope;
+  if (g > 0.0 && std::isfinite(g) && std::isfinite(sigma)) out.fit.textbook = TextbookFit{{g, sigma}, {}};
+  if (out.fit.textbook && fit.fitted[length_offset]) {  // else no line: the lengths are all equal
+    TextbookFit& t = *out.fit.textbook;
+    const double a = line.slope, b = line.intercept;
+    const double var = line.var_intercept / (a * a) + b * b * line.var_slope / (a * a * a * a) -
+                       2.0 * b * line.cov / (a * a * a);
+    t.length_offset = Estimate{b / a, std::sqrt(std::max(var, 0.0))};
+    if (!fit.singular) {
+      // With the offset unknown, g's uncertainty grows by 1/sqrt(1 - rho^2).
+      const double rho = fit.inverse(0, 1) / std::sqrt(fit.inverse(0, 0) * fit.inverse(1, 1));
+      const double inflation = 1.0 / std::sqrt(std::max(1.0 - rho * rho, 0.0));
+      if (inflation > 10.0) {
+        const auto [lo, hi] = std::minmax_element(
+            fit.scene.observations.begin(), fit.scene.observations.end(),
+            [](const auto& x, const auto& y) { return x.length < y.length; });
+        out.warnings.push_back("observations: the lengths span only " + format_number(lo->length, 5) + " m to " +
+                                format_number(hi->length, 5) + " m, too close together to separate g from "
+                                "length_offset (correlation " + format_number(rho, 6) + "), which makes g's uncertainty " +
+                                format_number(inflation, 3) + " times what a known offset would give; swing at "
+                                "lengths further apart");
+      }
+    }
+  }
+  // Too large a chi2 makes the result suspect (status.cpp); too small a one is only said.
+  if (k > 1 && out.fit.probability) {
+    const double lower = boost::math::gamma_p(out.fit.dof / 2.0, out.fit.chi2 / 2.0);
+    if (lower < 1e-3) {
+      out.warnings.push_back("fit: chi2 = " + format_number(out.fit.chi2, 4) + " for " +
+                              std::to_string(out.fit.dof) + " degrees of freedom (chi2/dof = " +
+                              format_number(out.fit.chi2 / out.fit.dof, 4) + "); so small a chi2 has probability " +
+                              format_number(lower, 2) + ": the periods' uncertainties are too large");
+    }
+  }
+}
+
+}  // namespace pendulum

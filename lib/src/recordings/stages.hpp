@@ -117,6 +117,8 @@ struct Column {
   bool known = false;     ///< the word is in the table of spellings
   std::string word;       ///< the word looked up: lower case, without its unit, prefix or suffix
   std::string decided = "header";  ///< "header", "content" or "option"
+  /// Frames a second of a time column of frame numbers (`--columns "frame:30fps"`); 0 for times.
+  double frame_rate = 0.0;
 };
 
 /// A header cell's role and unit: case folded; the unit from the last
@@ -131,9 +133,13 @@ std::string normal_unit(std::string_view unit);
 
 /// The factor from a time unit to seconds, or nullopt.
 std::optional<double> time_scale(const std::string& unit);
+/// The factor from a time column's numbers to seconds: 1/frame_rate for
+/// frame numbers, else by its unit (nullopt for a unit that is no time's).
+std::optional<double> time_scale(const Column& c);
 
 /// `--columns "t:s,theta:deg"`: one entry per column in file order, a role
-/// and an optional unit; "-" or an empty entry leaves a column unused.
+/// and an optional unit; "-" or an empty entry leaves a column unused;
+/// "frame:30fps" is a time column of frame numbers at 30 frames a second.
 /// Refuses an unknown role or unit, naming the entry ("--columns" in `where`).
 std::vector<std::optional<Column>> parse_column_spec(const std::string& spec, const std::string& where);
 

@@ -217,3 +217,24 @@ TEST_CASE("--columns: two signals of different periods are refused, naming both;
   }
   CHECK(noted);
 }
+
+TEST_CASE("A timer log with a missed stamp reduces end to end", "[cli][recordings][stamps]") {
+  // make_recordings, seed 19: the 18th of 41 presses missing, the file's count running on.
+  const Run imported = run("import " + std::string(PENDULUM_DATA_DIR) + "/recordings/timer_missed_stamp.txt");
+  REQUIRE(imported.status == 0);
+  const json a = json::parse(imported.out);
+  CHECK(a.at("columns")[0].at("role") == "counter");
+  CHECK(a.at("columns")[1].at("role") == "event stamp");
+  CHECK(a.at("periods") == 40);
+  bool mended = false;
+  for (const auto& n : a.at("notes")) {
+    mended |= n.at("text").get<std::string>().find("1 stamp missed") != std::string::npos;
+  }
+  CHECK(mended);
+  const Run r = run("reduce " + std::string(PENDULUM_DATA_DIR) + "/recordings/timer_missed_stamp_scene.json");
+  REQUIRE(r.status == 0);
+  const json out = json::parse(r.out);
+  CHECK(out.at("recordings")[0].at("period") == a.at("period"));
+  // The simulation's g within 3 times g's uncertainty (length, amplitude and the stamps' period).
+  CHECK(std::fabs(out.at("g").at("value").get<double>() - 9.80665) < 3.0 * out.at("g").at("uncertainty").get<double>());
+}

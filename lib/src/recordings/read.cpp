@@ -692,20 +692,22 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
              "\"t:s,theta:deg\"");
   }
 
-  // A time column of whole numbers stepping by one counts frames or events;
-  // read as seconds it would give a period in frames (issue 19: 108 s for
-  // a 1.8 s swing at 60 frames/s). ms and us step so at 1 kHz and 1 MHz.
+  // A time column without a unit whose numbers are whole and step by one
+  // counts frames or events: read as seconds it would give a period in
+  // frames (108 s for a 1.8 s swing at 60 frames/s). A unit written ("Time
+  // (s)", "t:s") is taken at its word: ms and us step so at 1 kHz and 1 MHz.
   const Column& time_column = cols[layout.time];
   const std::vector<double>& times = table.columns[layout.time];
   const bool stepping_by_one = times.size() > 2 && times[0] == std::floor(times[0]) && times[1] - times[0] == 1.0 &&
                                times[2] - times[1] == 1.0;
-  if (time_column.frame_rate == 0.0 && (time_column.unit.empty() || time_column.unit == "s") && stepping_by_one &&
+  if (time_column.frame_rate == 0.0 && time_column.unit.empty() && stepping_by_one &&
       content.facts(layout.time).counter) {
     fail(file, header_line, 1,
          "the time column \"" + names[layout.time] + "\" holds whole numbers stepping by one (" +
              format_number(times.front(), 9) + " to " + format_number(times.back(), 9) +
-             "): frame numbers or a count, not seconds; expected times: give the frame rate with --columns (a scene's "
-             "\"columns\"), e.g. \"" + columns_spec(layout, cols, "frame:30fps") + "\" for 30 frames a second");
+             ") and no unit: frame numbers or a count, not seconds? expected times: give the frame rate with "
+             "--columns (a scene's \"columns\"), e.g. \"" + columns_spec(layout, cols, "frame:30fps") +
+             "\" for 30 frames a second, or \"" + columns_spec(layout, cols, "t:s") + "\" if they are seconds");
   }
 
   // The columns' report, before the numbers move into the recording.

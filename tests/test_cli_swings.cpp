@@ -11,6 +11,7 @@
 #include <string>
 
 #include "cli_run.hpp"
+#include "long_decay.hpp"
 #include "recording_simulation.hpp"
 
 using nlohmann::json;
@@ -237,4 +238,27 @@ TEST_CASE("A timer log with a missed stamp reduces end to end", "[cli][recording
   CHECK(out.at("recordings")[0].at("period") == a.at("period"));
   // The simulation's g within 3 times g's uncertainty (length, amplitude and the stamps' period).
   CHECK(std::fabs(out.at("g").at("value").get<double>() - 9.80665) < 3.0 * out.at("g").at("uncertainty").get<double>());
+}
+
+TEST_CASE("reduce: a long decay's recording scene says swing by swing, and its g is the truth's", "[cli][recordings][swing_series]") {
+  // tests/long_decay.hpp: 81 deg to 17 deg in 375 s (the issue's decay), the length exact.
+  const std::string dir = temporary_file() + ".d";
+  std::filesystem::create_directory(dir);
+  pendulum::test::write_long_decay(dir + "/decay.csv", 81.0, 375.0, 31);
+  write_file(dir + "/scene.json", R"({"schema": "pendulum-g/scene/1", "length": {"value": 2.72, "unit": "m"},
+    "timing": {"recording": "decay.csv"}, "decay": {"data": {"recording": "decay.csv"}}})");
+  const Run r = run("reduce " + dir + "/scene.json");
+  const Run table = run("reduce --format table " + dir + "/scene.json");
+  std::filesystem::remove_all(dir);
+  REQUIRE(r.status == 0);
+  const json out = json::parse(r.out);
+  const json& how = out.at("recordings")[0].at("reduction");
+  CHECK(how.at("requested") == "auto");
+  CHECK(how.at("mode") == "swing_by_swing");
+  CHECK(how.at("amplitude_shift_sigmas").get<double>() > how.at("threshold_sigmas").get<double>());
+  CHECK(out.at("kind") == "series");
+  const double g = out.at("g").at("value").get<double>(), sigma = out.at("g").at("uncertainty").get<double>();
+  CHECK(std::fabs(g - pendulum::test::kLongDecayG) < 3.0 * sigma);
+  REQUIRE(table.status == 0);
+  CHECK_THAT(table.out + table.err, Contains("timing: reduced swing by swing"));
 }

@@ -79,8 +79,9 @@ struct Content {
   const Table& table;
   bool skip_constant = true;  ///< pass over constant columns (a second try takes them)
   mutable std::vector<std::optional<ColumnFacts>> cache = std::vector<std::optional<ColumnFacts>>(table.columns.size());
-  const ColumnFacts& facts(std::size_t j) const {
-    if (!cache[j]) cache[j] = examine(table.columns[j]);
+  /// With `range`, the percentiles too (an angle's unit needs them).
+  const ColumnFacts& facts(std::size_t j, bool range = true) const {
+    if (!cache[j] || (range && !cache[j]->ranged)) cache[j] = examine(table.columns[j], range);
     return *cache[j];
   }
   bool constant(std::size_t j) const { return skip_constant && is_constant(table.columns[j]); }
@@ -437,7 +438,7 @@ void roles_from_content(std::vector<Column>& cols, const Content& content) {
   std::optional<std::size_t> time;
   std::vector<std::size_t> signals;
   for (std::size_t j = 0; j < cols.size(); ++j) {
-    const ColumnFacts& f = content.facts(j);
+    const ColumnFacts& f = content.facts(j, false);
     Column& c = cols[j];
     c.decided = "content";
     c.known = true;
@@ -701,7 +702,7 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
   const bool stepping_by_one = times.size() > 2 && times[0] == std::floor(times[0]) && times[1] - times[0] == 1.0 &&
                                times[2] - times[1] == 1.0;
   if (time_column.frame_rate == 0.0 && time_column.unit.empty() && stepping_by_one &&
-      content.facts(layout.time).counter) {
+      content.facts(layout.time, false).counter) {
     fail(file, header_line, 1,
          "the time column \"" + names[layout.time] + "\" holds whole numbers stepping by one (" +
              format_number(times.front(), 9) + " to " + format_number(times.back(), 9) +

@@ -465,15 +465,18 @@ std::vector<std::optional<Column>> parse_column_spec(const std::string& spec, co
 
 // --- content ----------------------------------------------------------------
 
-ColumnFacts examine(const std::vector<double>& column) {
+ColumnFacts examine(const std::vector<double>& column, bool range) {
   ColumnFacts f;
   std::vector<double> values;
-  values.reserve(column.size());
+  if (range) values.reserve(column.size());
   std::size_t steps = 0, unit_steps = 0, decreases = 0, bad_steps = 0;
   double last = std::numeric_limits<double>::quiet_NaN();
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (double v : column) {
     if (!std::isfinite(v)) continue;
-    values.push_back(v);
+    if (range) values.push_back(v);
+    ++f.finite;
+    lo = std::min(lo, v), hi = std::max(hi, v);
     f.integers &= v == std::floor(v);
     if (!std::isnan(last)) {
       ++steps;
@@ -484,14 +487,14 @@ ColumnFacts examine(const std::vector<double>& column) {
     }
     last = v;
   }
-  f.finite = values.size();
-  if (values.empty()) return f;
-  const auto [mn, mx] = std::minmax_element(values.begin(), values.end());
-  f.constant = *mn == *mx;
+  if (f.finite == 0) return f;
+  f.constant = lo == hi;
   // A few glitches (a missed or doubled stamp, an out-of-order sample) leave a counter or a clock what it is.
   const std::size_t few = steps / 100;
   f.counter = f.integers && steps > 0 && bad_steps <= few && unit_steps * 10 >= steps * 9;
   f.increasing = !f.constant && decreases <= few;
+  if (!range) return f;
+  f.ranged = true;
   const std::size_t k = values.size() / 200;
   std::nth_element(values.begin(), values.begin() + k, values.end());
   f.lo = values[k];

@@ -172,11 +172,14 @@ struct ColumnFacts {
   bool integers = true;     ///< whole numbers only
   bool counter = false;     ///< whole numbers stepping by one, at most a few larger steps
   bool increasing = false;  ///< never decreasing, at most a few glitches (clean decides)
+  bool ranged = false;      ///< lo and hi were found (examine's `range`)
   double lo = 0.0, hi = 0.0;  ///< 0.5th and 99.5th percentiles
   /// Half the range between the percentiles: the swing's amplitude for an angle.
   double half_range() const { return 0.5 * (hi - lo); }
 };
-ColumnFacts examine(const std::vector<double>& column);
+/// Without `range` the percentiles are not found (they take a copy of the
+/// column and two partial sorts: most of inferring a long file's roles).
+ColumnFacts examine(const std::vector<double>& column, bool range = true);
 
 /// The unit of an angle column whose header gives none, from its swing of
 /// +-A = facts.half_range(): "deg" where A > pi/2 (a swing beyond 90 deg is

@@ -135,8 +135,7 @@ constexpr double kFramePeriodTolerance = 1e-5;
 
 }  // namespace
 
-TEST_CASE("--columns: frame numbers under \"t\" are refused with the fix, and read with frame:60fps on import and in "
-          "a scene's columns",
+TEST_CASE("import --columns frame:60fps reads the frame numbers that are refused without it on import and in a scene's columns",
           "[cli][recordings][columns]") {
   const std::string dir = temporary_file() + ".d";
   std::filesystem::create_directory(dir);
@@ -186,7 +185,7 @@ TEST_CASE("--columns: frame numbers under \"t\" are refused with the fix, and re
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("--columns: two signals of different periods are refused, naming both; of one period, noted",
+TEST_CASE("import --columns picks one of two signals whose periods differ and that are refused without it",
           "[cli][recordings][columns]") {
   const std::string file = temporary_file() + ".csv";
   // theta swings at 1.2 s beside x and y at 1.8 s: no file can say which is the pendulum.
@@ -240,7 +239,7 @@ TEST_CASE("A timer log with a missed stamp reduces end to end", "[cli][recording
   CHECK(std::fabs(out.at("g").at("value").get<double>() - 9.80665) < 3.0 * out.at("g").at("uncertainty").get<double>());
 }
 
-TEST_CASE("reduce: a long decay's recording scene says swing by swing, and its g is the truth's", "[cli][recordings][swing_series]") {
+TEST_CASE("reduce: a long decay's recording scene says swing by swing and its g is the truth's", "[cli][recordings][swing_series]") {
   // tests/long_decay.hpp: 81 deg to 17 deg in 375 s (the issue's decay), the length exact.
   const std::string dir = temporary_file() + ".d";
   std::filesystem::create_directory(dir);

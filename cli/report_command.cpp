@@ -100,7 +100,8 @@ Command add_report_command(CLI::App& app) {
     if (family || looks_like_recording(o->file)) {
       const Recording samples = read_recording(o->file, family.value_or(RecordingFormat::automatic), {}, o->set, o->columns);
       const RecordingSummary summary{o->file,      samples.format,  samples.kind,
-                                     samples.rows, samples.dropped, analyse_swings(samples, o->file, o->swing),
+                                     samples.rows, samples.dropped,
+                                     analyse_candidates(samples, o->file, family.value_or(RecordingFormat::automatic), o->swing, {}, o->set),
                                      samples.set,  samples.columns, samples.notes, o->columns};
       const report::RecordingRecord r = report::make_recording_record(summary, &samples);
       write_output(o->output, svg ? report::recording_plot_svg(r, o->plot) : report::recording_report_html(r));

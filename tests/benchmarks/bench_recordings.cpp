@@ -8,6 +8,10 @@
 // and exits; otherwise the benchmark writes it to $TMPDIR if missing and
 // times pendulum::analyse_recording on it, reporting rows per second and
 // the process's peak resident memory (getrusage).
+// BM_TrackNamed and BM_TrackFromContent time the same one-hour video track
+// at 200 Hz (seed 8, x and y with 1.5 mm of noise, tab-separated, the same
+// rows byte for byte) under Logger Pro's header and with none, whose roles
+// the reader infers from the numbers: the cost of that inference.
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
@@ -58,6 +62,39 @@ void BM_ReadAndReduce(benchmark::State& state) {
   state.counters["peak_rss_MiB"] = usage.ru_maxrss / 1024.0;
 }
 BENCHMARK(BM_ReadAndReduce)->Unit(benchmark::kMillisecond)->UseRealTime()->MeasureProcessCPUTime();
+
+std::string track_path(pendulum::test::PublishedLayout layout, const char* name) {
+  const char* dir = std::getenv("TMPDIR");
+  const std::string path = std::string(dir ? dir : "/tmp") + "/pendulum_g_bench_track_1h_200Hz_" + name + ".txt";
+  if (!std::filesystem::exists(path)) {
+    pendulum::test::RecordingSimulation s;
+    s.duration = 3600.0, s.rate_hz = 200.0, s.alpha = 2e-4, s.beta = 4e-4, s.seed = 8, s.jitter = 0.0, s.drop = 0.0;
+    std::ofstream(path, std::ios::binary) << pendulum::test::published_csv(pendulum::test::simulate_recording(s), s.length,
+                                                                           layout, 1.5e-3, 8);
+  }
+  return path;
+}
+
+void time_track(benchmark::State& state, const std::string& path) {
+  double period = 0.0;
+  for (auto _ : state) {
+    const pendulum::RecordingSummary r = pendulum::analyse_recording(path);
+    period = r.swings.period.value;
+    benchmark::DoNotOptimize(r);
+  }
+  char label[64];
+  std::snprintf(label, sizeof label, "period %.7f s", period);
+  state.SetLabel(label);
+}
+
+void BM_TrackNamed(benchmark::State& state) {
+  time_track(state, track_path(pendulum::test::PublishedLayout::logger_pro_video, "logger_pro"));
+}
+void BM_TrackFromContent(benchmark::State& state) {
+  time_track(state, track_path(pendulum::test::PublishedLayout::headerless_txy, "headerless"));
+}
+BENCHMARK(BM_TrackNamed)->Unit(benchmark::kMillisecond)->UseRealTime()->MeasureProcessCPUTime();
+BENCHMARK(BM_TrackFromContent)->Unit(benchmark::kMillisecond)->UseRealTime()->MeasureProcessCPUTime();
 
 }  // namespace
 

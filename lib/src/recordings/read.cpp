@@ -79,8 +79,9 @@ struct Content {
   const Table& table;
   bool skip_constant = true;  ///< pass over constant columns (a second try takes them)
   mutable std::vector<std::optional<ColumnFacts>> cache = std::vector<std::optional<ColumnFacts>>(table.columns.size());
-  const ColumnFacts& facts(std::size_t j) const {
-    if (!cache[j]) cache[j] = examine(table.columns[j]);
+  /// With `range`, the percentiles too (an angle's unit needs them).
+  const ColumnFacts& facts(std::size_t j, bool range = true) const {
+    if (!cache[j] || (range && !cache[j]->ranged)) cache[j] = examine(table.columns[j], range);
     return *cache[j];
   }
   bool constant(std::size_t j) const { return skip_constant && is_constant(table.columns[j]); }
@@ -158,7 +159,7 @@ std::optional<Layout> layout_for(RecordingFormat format, const std::vector<Colum
       l.channels = {*s};
       l.kind = SignalKind::gate_states;
       l.period = find(cols, Role::period);
-      const auto scale = time_scale(cols[*t].unit);
+      const auto scale = time_scale(cols[*t]);
       if (!scale) return std::nullopt;
       l.time_scale = *scale;
       return l;
@@ -167,7 +168,7 @@ std::optional<Layout> layout_for(RecordingFormat format, const std::vector<Colum
       const auto t = find(cols, Role::time, run);
       if (!t) return std::nullopt;
       l.time = *t;
-      l.time_scale = time_scale(cols[*t].unit).value_or(1.0);
+      l.time_scale = time_scale(cols[*t]).value_or(1.0);
       if (const auto a = find(cols, Role::angle, run)) {
         l.kind = SignalKind::angle;
         l.channels = {*a};
@@ -189,6 +190,7 @@ std::optional<Layout> layout_for(RecordingFormat format, const std::vector<Colum
       const auto t = find(cols, Role::time);
       if (!t || (!preamble && cols[*t].name != "t")) return std::nullopt;
       l.time = *t;
+      l.time_scale = time_scale(cols[*t]).value_or(1.0);
       if (const auto a = find(cols, Role::angle, -1, track, content)) {
         l.kind = SignalKind::angle;
         l.channels = {*a};
@@ -210,7 +212,7 @@ std::optional<Layout> layout_for(RecordingFormat format, const std::vector<Colum
       // One column of blocking times; of several, the one named time.
       const auto t = cols.size() == 1 ? std::optional<std::size_t>(0) : find(cols, Role::time);
       if (!t) return std::nullopt;
-      const auto scale = time_scale(cols[*t].unit);
+      const auto scale = time_scale(cols[*t]);
       if (!scale) return std::nullopt;
       l.time = *t;
       l.kind = SignalKind::blocking_times;
@@ -220,9 +222,9 @@ std::optional<Layout> layout_for(RecordingFormat format, const std::vector<Colum
     case RecordingFormat::columns: {
       // By roles alone: a time, then the first signal that varies.
       const auto t = find(cols, Role::time);
-      if (!t || !time_scale(cols[*t].unit)) return std::nullopt;
+      if (!t || !time_scale(cols[*t])) return std::nullopt;
       l.time = *t;
-      l.time_scale = *time_scale(cols[*t].unit);
+      l.time_scale = *time_scale(cols[*t]);
       if (const auto a = find(cols, Role::angle, -1, -1, content)) {
         l.kind = SignalKind::angle;
         l.channels = {*a};
@@ -263,6 +265,94 @@ std::optional<Layout> layout_for(RecordingFormat format, const std::vector<Colum
     case RecordingFormat::automatic: break;
   }
   return std::nullopt;
+}
+
+std::string signal_role(SignalKind kind, Role role) {
+  switch (kind) {
+    case SignalKind::angle: return "angle";
+    case SignalKind::angular_rate: return role == Role::omega ? "angular velocity" : "angular rate";
+    case SignalKind::position: return role == Role::x ? "x" : "y";
+    case SignalKind::gate_states: return "gate state";
+    case SignalKind::acceleration: return "acceleration";
+    case SignalKind::linear_acceleration: return "linear acceleration";
+    case SignalKind::blocking_times:
+    case SignalKind::event_stamps: break;
+  }
+  return role_name(role);
+}
+
+/// The `--columns` text that reads the file with `l` alone: its time (or
+/// `time_entry` in its place), signal, counter and period, "-" for the rest.
+std::string columns_spec(const Layout& l, const std::vector<Column>& cols, const std::string& time_entry = {}) {
+  std::vector<std::string> entries(cols.size(), "-");
+  const Column& t = cols[l.time];
+  entries[l.time] = !time_entry.empty() ? time_entry
+                    : t.frame_rate > 0.0 ? "frame:" + format_number(t.frame_rate, 6) + "fps"
+                                         : "t:" + (t.unit.empty() ? std::string("s") : t.unit);
+  for (std::size_t j : l.channels) {
+    const std::string& unit = cols[j].unit;
+    const bool length = unit == "m" || unit == "cm" || unit == "mm" || unit == "px";
+    switch (l.kind) {
+      case SignalKind::angle: entries[j] = "theta:" + l.channel_unit; break;
+      case SignalKind::angular_rate: entries[j] = (cols[j].role == Role::omega ? "omega:" : "gyro:") + l.channel_unit; break;
+      case SignalKind::linear_acceleration: entries[j] = "linear_a"; break;
+      case SignalKind::acceleration: entries[j] = "a"; break;
+      case SignalKind::position: entries[j] = (cols[j].role == Role::x ? "x" : "y") + (length ? ":" + unit : ""); break;
+      case SignalKind::gate_states: entries[j] = "state"; break;
+      case SignalKind::blocking_times:
+      case SignalKind::event_stamps: break;
+    }
+  }
+  if (l.counter) entries[*l.counter] = "n";
+  if (l.period) entries[*l.period] = "period";
+  while (entries.size() > 1 && entries.back() == "-") entries.pop_back();
+  std::string out;
+  for (const auto& e : entries) out += (out.empty() ? "" : ",") + e;
+  return out;
+}
+
+/// A layout's signal in words, with its columns' names.
+std::string signal_words(const Layout& l, const std::vector<Column>& cols, const std::vector<std::string>& names) {
+  std::string what = l.kind == SignalKind::position ? "the x and y" : "the " + signal_role(l.kind, cols[l.channels[0]].role);
+  for (std::size_t k = 0; k < l.channels.size(); ++k) {
+    what += (k ? ", \"" : " \"") + one_line(names[l.channels[k]], 40) + "\"";
+  }
+  return what;
+}
+
+/// The other signals a sampled recording holds beside `chosen` (an angle
+/// beside a track's x and y, a rate beside an angle), of its run and track,
+/// each as the layout that reads it: the roles layout of the columns with
+/// the signals found so far taken out, until none is left.
+std::vector<Layout> other_signals(const Layout& chosen, std::vector<Column> cols, const Content& content) {
+  std::vector<Layout> out;
+  const int run = cols[chosen.time].run, track = chosen.channels.empty() ? 0 : cols[chosen.channels[0]].track;
+  for (Column& c : cols) {
+    if ((run > 0 && c.run != run) || (track > 0 && c.track != track) || c.role == Role::counter) {
+      c.role = Role::other, c.known = true;
+    }
+  }
+  cols[chosen.time].role = Role::time;
+  auto take_out = [&](const Layout& l) {
+    for (std::size_t j : l.channels) cols[j].role = Role::other, cols[j].known = true;
+  };
+  take_out(chosen);
+  for (;;) {
+    const auto l = layout_for(RecordingFormat::columns, cols, false, -1, -1, &content);
+    const bool sampled = l && l->kind != SignalKind::gate_states && l->kind != SignalKind::event_stamps &&
+                         l->kind != SignalKind::blocking_times;
+    if (!sampled) return out;
+    if (std::any_of(l->channels.begin(), l->channels.end(), [&](std::size_t j) { return content.constant(j); })) {
+      take_out(*l);
+      continue;
+    }
+    Layout alternative = *l;
+    alternative.time = chosen.time;
+    alternative.time_scale = chosen.time_scale;
+    alternative.format = chosen.format;
+    out.push_back(alternative);
+    take_out(alternative);
+  }
 }
 
 /// The quoted names of `cols` (at most 300 bytes).
@@ -316,6 +406,17 @@ Layout detect(RecordingFormat forced, const std::vector<Column>& cols, bool prea
       if (auto l = fit(family)) return *l;
     }
   }
+  if (const auto counter = find(cols, Role::counter); counter && !find(cols, Role::time)) {
+    // Frame numbers without a time: the frame rate makes them one.
+    std::vector<Column> framed = cols;
+    framed[*counter].role = Role::time, framed[*counter].frame_rate = 30.0;
+    if (const auto l = layout_for(RecordingFormat::columns, framed, preamble, run, track, nullptr)) {
+      fail(file, header_line, 1,
+           "a counter \"" + one_line(cols[*counter].name, 40) +
+               "\" and no time column: frame numbers? expected times: give the frame rate with --columns (a scene's "
+               "\"columns\"), e.g. \"" + columns_spec(*l, framed) + "\" for 30 frames a second");
+    }
+  }
   if (headerless) {
     // Reached with content only: the numbers did not say enough.
     fail(file, header_line, 1,
@@ -337,7 +438,7 @@ void roles_from_content(std::vector<Column>& cols, const Content& content) {
   std::optional<std::size_t> time;
   std::vector<std::size_t> signals;
   for (std::size_t j = 0; j < cols.size(); ++j) {
-    const ColumnFacts& f = content.facts(j);
+    const ColumnFacts& f = content.facts(j, false);
     Column& c = cols[j];
     c.decided = "content";
     c.known = true;
@@ -387,20 +488,6 @@ std::string unused_why(const Column& c, const std::vector<double>& numbers, cons
 bool tracked(Role role) {
   return role != Role::time && role != Role::other && role != Role::derivative && role != Role::uncertainty &&
          role != Role::counter;
-}
-
-std::string signal_role(SignalKind kind, Role role) {
-  switch (kind) {
-    case SignalKind::angle: return "angle";
-    case SignalKind::angular_rate: return role == Role::omega ? "angular velocity" : "angular rate";
-    case SignalKind::position: return role == Role::x ? "x" : "y";
-    case SignalKind::gate_states: return "gate state";
-    case SignalKind::acceleration: return "acceleration";
-    case SignalKind::linear_acceleration: return "linear acceleration";
-    case SignalKind::blocking_times:
-    case SignalKind::event_stamps: break;
-  }
-  return role_name(role);
 }
 
 Recording parse_text(std::string_view text, const std::string& file, RecordingFormat format, const std::string& set,
@@ -606,6 +693,24 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
              "\"t:s,theta:deg\"");
   }
 
+  // A time column without a unit whose numbers are whole and step by one
+  // counts frames or events: read as seconds it would give a period in
+  // frames (108 s for a 1.8 s swing at 60 frames/s). A unit written ("Time
+  // (s)", "t:s") is taken at its word: ms and us step so at 1 kHz and 1 MHz.
+  const Column& time_column = cols[layout.time];
+  const std::vector<double>& times = table.columns[layout.time];
+  const bool stepping_by_one = times.size() > 2 && times[0] == std::floor(times[0]) && times[1] - times[0] == 1.0 &&
+                               times[2] - times[1] == 1.0;
+  if (time_column.frame_rate == 0.0 && time_column.unit.empty() && stepping_by_one &&
+      content.facts(layout.time, false).counter) {
+    fail(file, header_line, 1,
+         "the time column \"" + names[layout.time] + "\" holds whole numbers stepping by one (" +
+             format_number(times.front(), 9) + " to " + format_number(times.back(), 9) +
+             ") and no unit: frame numbers or a count, not seconds? expected times: give the frame rate with "
+             "--columns (a scene's \"columns\"), e.g. \"" + columns_spec(layout, cols, "frame:30fps") +
+             "\" for 30 frames a second, or \"" + columns_spec(layout, cols, "t:s") + "\" if they are seconds");
+  }
+
   // The columns' report, before the numbers move into the recording.
   Recording rec;
   rec.set = track > 0 ? tracks[static_cast<std::size_t>(track - 1)] : set;  // a track as Tracker names it
@@ -650,10 +755,16 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
       c.role = "unused";
       why.push_back(unused_why(cols[j], table.columns[j], layout, cols));
     }
+    if (cols[j].frame_rate > 0.0) why.push_back("frame numbers at " + format_number(cols[j].frame_rate, 6) + " frames/s");
     for (const auto& w : why) c.why += (c.why.empty() ? "" : "; ") + w;
     rec.columns.push_back(std::move(c));
   }
   if (!layout.unit_why.empty()) rec.notes.push_back({0, "\"" + names[layout.channels[0]] + "\": " + layout.unit_why});
+  if (!declared) {
+    const std::vector<Layout> others = other_signals(layout, cols, content);
+    if (!others.empty()) rec.candidates.push_back({signal_words(layout, cols, names), columns_spec(layout, cols)});
+    for (const Layout& o : others) rec.candidates.push_back({signal_words(o, cols, names), columns_spec(o, cols)});
+  }
 
   for (std::size_t j : layout.channels) rec.channel_names.push_back(cols[j].name);
   if (layout.period) {

@@ -323,6 +323,11 @@ std::optional<double> time_scale(const std::string& unit) {
   return std::nullopt;
 }
 
+std::optional<double> time_scale(const Column& c) {
+  if (c.frame_rate > 0.0) return 1.0 / c.frame_rate;
+  return time_scale(c.unit);
+}
+
 Column classify(std::string_view raw) {
   Column c;
   c.name = to_utf8(trim(raw));
@@ -380,6 +385,20 @@ Column classify(std::string_view raw) {
   return c;
 }
 
+namespace {
+
+/// "30fps" (any case, spaces allowed) as 30; 0 for anything else.
+double frame_rate(const std::string& text) {
+  const std::string rate = lower(trim_spaces(text));
+  if (rate.size() < 4 || rate.compare(rate.size() - 3, 3, "fps") != 0) return 0.0;
+  const std::string number(trim_spaces(std::string_view(rate).substr(0, rate.size() - 3)));
+  char* stop = nullptr;
+  const double f = std::strtod(number.c_str(), &stop);
+  return stop == number.c_str() + number.size() && std::isfinite(f) && f > 0.0 && f <= 1e6 ? f : 0.0;
+}
+
+}  // namespace
+
 std::vector<std::optional<Column>> parse_column_spec(const std::string& spec, const std::string& where) {
   struct Name {
     const char* word;
@@ -389,7 +408,8 @@ std::vector<std::optional<Column>> parse_column_spec(const std::string& spec, co
                                 {"angle", Role::angle},   {"omega", Role::omega},    {"x", Role::x},
                                 {"y", Role::y},           {"n", Role::counter},      {"count", Role::counter},
                                 {"state", Role::state},   {"period", Role::period},  {"gyro", Role::rate},
-                                {"a", Role::acceleration}, {"linear_a", Role::linear_acceleration}};
+                                {"a", Role::acceleration}, {"linear_a", Role::linear_acceleration},
+                                {"frame", Role::time}};
   std::vector<std::optional<Column>> out;
   std::size_t start = 0;
   for (;;) {
@@ -404,15 +424,23 @@ std::vector<std::optional<Column>> parse_column_spec(const std::string& spec, co
       const Name* name = std::find_if(std::begin(kNames), std::end(kNames), [&](const Name& n) { return word == n.word; });
       if (name == std::end(kNames)) {
         throw InputError(where, "got the column \"" + one_line(entry, 40) +
-                                    "\"; expected a role: t (time), theta (angle), omega, x, y, n (counter), state, "
-                                    "period, gyro, a, linear_a, or - for a column not used");
+                                    "\"; expected a role: t (time), frame (frame numbers: frame:30fps), theta (angle), "
+                                    "omega, x, y, n (counter), state, period, gyro, a, linear_a, or - for a column not used");
       }
       Column c;
       c.role = name->role;
       c.known = true;
       c.unit = unit;
       c.decided = "option";
-      const bool fits = unit.empty() ||
+      if (word == "frame") {
+        c.frame_rate = frame_rate(colon == std::string::npos ? std::string() : entry.substr(colon + 1));
+        c.unit = "frame";
+        if (!(c.frame_rate > 0.0)) {
+          throw InputError(where, "got the column \"" + one_line(entry, 40) +
+                                      "\"; expected frame numbers with their frame rate, e.g. \"frame:30fps\"");
+        }
+      }
+      const bool fits = unit.empty() || c.frame_rate > 0.0 ||
                         (c.role == Role::time || c.role == Role::period ? time_scale(unit).has_value()
                          : c.role == Role::angle                        ? unit == "deg" || unit == "rad"
                          : c.role == Role::omega || c.role == Role::rate ? unit == "rad/s" || unit == "deg/s"
@@ -437,15 +465,18 @@ std::vector<std::optional<Column>> parse_column_spec(const std::string& spec, co
 
 // --- content ----------------------------------------------------------------
 
-ColumnFacts examine(const std::vector<double>& column) {
+ColumnFacts examine(const std::vector<double>& column, bool range) {
   ColumnFacts f;
   std::vector<double> values;
-  values.reserve(column.size());
+  if (range) values.reserve(column.size());
   std::size_t steps = 0, unit_steps = 0, decreases = 0, bad_steps = 0;
   double last = std::numeric_limits<double>::quiet_NaN();
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (double v : column) {
     if (!std::isfinite(v)) continue;
-    values.push_back(v);
+    if (range) values.push_back(v);
+    ++f.finite;
+    lo = std::min(lo, v), hi = std::max(hi, v);
     f.integers &= v == std::floor(v);
     if (!std::isnan(last)) {
       ++steps;
@@ -456,14 +487,14 @@ ColumnFacts examine(const std::vector<double>& column) {
     }
     last = v;
   }
-  f.finite = values.size();
-  if (values.empty()) return f;
-  const auto [mn, mx] = std::minmax_element(values.begin(), values.end());
-  f.constant = *mn == *mx;
+  if (f.finite == 0) return f;
+  f.constant = lo == hi;
   // A few glitches (a missed or doubled stamp, an out-of-order sample) leave a counter or a clock what it is.
   const std::size_t few = steps / 100;
   f.counter = f.integers && steps > 0 && bad_steps <= few && unit_steps * 10 >= steps * 9;
   f.increasing = !f.constant && decreases <= few;
+  if (!range) return f;
+  f.ranged = true;
   const std::size_t k = values.size() / 200;
   std::nth_element(values.begin(), values.begin() + k, values.end());
   f.lo = values[k];

@@ -117,6 +117,8 @@ struct Column {
   bool known = false;     ///< the word is in the table of spellings
   std::string word;       ///< the word looked up: lower case, without its unit, prefix or suffix
   std::string decided = "header";  ///< "header", "content" or "option"
+  /// Frames a second of a time column of frame numbers (`--columns "frame:30fps"`); 0 for times.
+  double frame_rate = 0.0;
 };
 
 /// A header cell's role and unit: case folded; the unit from the last
@@ -131,9 +133,13 @@ std::string normal_unit(std::string_view unit);
 
 /// The factor from a time unit to seconds, or nullopt.
 std::optional<double> time_scale(const std::string& unit);
+/// The factor from a time column's numbers to seconds: 1/frame_rate for
+/// frame numbers, else by its unit (nullopt for a unit that is no time's).
+std::optional<double> time_scale(const Column& c);
 
 /// `--columns "t:s,theta:deg"`: one entry per column in file order, a role
-/// and an optional unit; "-" or an empty entry leaves a column unused.
+/// and an optional unit; "-" or an empty entry leaves a column unused;
+/// "frame:30fps" is a time column of frame numbers at 30 frames a second.
 /// Refuses an unknown role or unit, naming the entry ("--columns" in `where`).
 std::vector<std::optional<Column>> parse_column_spec(const std::string& spec, const std::string& where);
 
@@ -166,11 +172,14 @@ struct ColumnFacts {
   bool integers = true;     ///< whole numbers only
   bool counter = false;     ///< whole numbers stepping by one, at most a few larger steps
   bool increasing = false;  ///< never decreasing, at most a few glitches (clean decides)
+  bool ranged = false;      ///< lo and hi were found (examine's `range`)
   double lo = 0.0, hi = 0.0;  ///< 0.5th and 99.5th percentiles
   /// Half the range between the percentiles: the swing's amplitude for an angle.
   double half_range() const { return 0.5 * (hi - lo); }
 };
-ColumnFacts examine(const std::vector<double>& column);
+/// Without `range` the percentiles are not found (they take a copy of the
+/// column and two partial sorts: most of inferring a long file's roles).
+ColumnFacts examine(const std::vector<double>& column, bool range = true);
 
 /// The unit of an angle column whose header gives none, from its swing of
 /// +-A = facts.half_range(): "deg" where A > pi/2 (a swing beyond 90 deg is

@@ -10,6 +10,7 @@
 #include "pendulum/numeric.hpp"
 #include "pendulum/input_error.hpp"
 #include "pendulum/swing_energy.hpp"
+#include "../text.hpp"
 #include "huge_pages.hpp"
 #include "../text.hpp"
 
@@ -1217,6 +1218,37 @@ std::vector<double> swing_signal(const Recording& r) {
   return make_signal(r).s;
 }
 
+SwingAnalysis analyse_candidates(const Recording& r, const std::string& path, RecordingFormat format,
+                                 const SwingOptions& options, const RecordingLimits& limits, const std::string& set) {
+  const std::string name = r.set.empty() ? path : path + "/" + r.set;
+  SwingAnalysis out = analyse_swings(r, name, options);
+  const PeriodEstimate& first = out.period;
+  for (std::size_t k = 1; k < r.candidates.size(); ++k) {
+    const SignalCandidate& c = r.candidates[k];
+    PeriodEstimate other;
+    try {
+      other = analyse_swings(read_recording(path, format, limits, set, c.columns), name, options).period;
+    } catch (const InputError& e) {
+      out.notes.push_back({0, c.what + " gives no period (" + one_line(e.what(), 160) + "); " + r.candidates[0].what +
+                                  " is used"});
+      continue;
+    }
+    const double difference = other.value - first.value;
+    const double sigma = std::hypot(first.uncertainty, other.uncertainty);
+    const std::string both = r.candidates[0].what + " gives " + format_number(first.value, 8) + " +- " +
+                             format_number(first.uncertainty, 2) + " s, " + c.what + " " + format_number(other.value, 8) +
+                             " +- " + format_number(other.uncertainty, 2) + " s";
+    if (std::fabs(difference) > 5.0 * sigma && std::fabs(difference) > 1e-3 * first.value) {
+      throw InputError(name, "two signals give different periods: " + both +
+                                 "; expected one pendulum's: pick its signal with --columns (a scene's \"columns\"): \"" +
+                                 r.candidates[0].columns + "\" or \"" + c.columns + "\"");
+    }
+    out.notes.push_back({0, both + ": they agree (" + format_number(std::fabs(difference) / sigma, 2) + " sigmas); " +
+                                r.candidates[0].what + " is used (--columns \"" + c.columns + "\" takes the other)"});
+  }
+  return out;
+}
+
 RecordingSummary analyse_recording(const std::string& path, RecordingFormat format, const SwingOptions& options,
                                    const RecordingLimits& limits, const std::string& set,
                                    const std::string& columns) {
@@ -1232,7 +1264,7 @@ RecordingSummary analyse_recording(const std::string& path, RecordingFormat form
   s.notes = r.notes;
   s.column_spec = columns;
   s.channels = r.channel_names;
-  s.swings = analyse_swings(r, r.set.empty() ? path : path + "/" + r.set, options);
+  s.swings = analyse_candidates(r, path, format, options, limits, set);
   return s;
 }
 

@@ -73,6 +73,13 @@ struct RecordingColumn {
   std::string why;         ///< how the role or unit was decided, or why the column is unused
 };
 
+/// A signal a file holds: what it is, and the `--columns` text that reads
+/// the file with it alone.
+struct SignalCandidate {
+  std::string what;     ///< e.g. "the angle \"theta (deg)\"", "the x and y \"x (m)\", \"y (m)\""
+  std::string columns;  ///< e.g. "t:s,theta:deg", "t:s,-,x:m,y:m"
+};
+
 /// A recording in SI units, samples in time order.
 struct Recording {
   RecordingFormat format = RecordingFormat::automatic;
@@ -96,6 +103,11 @@ struct Recording {
   std::vector<RecordingNote> notes;
   /// Every column of the file, the ones used and the ones not (why).
   std::vector<RecordingColumn> columns;
+  /// The file's signals where it holds more than one (an angle beside a
+  /// track's x and y, an angle beside its angular velocity), the one read
+  /// first; empty otherwise, and when the columns were declared.
+  /// analyse_recording compares their periods.
+  std::vector<SignalCandidate> candidates;
   std::size_t rows = 0;     ///< data rows read
   std::size_t dropped = 0;  ///< rows skipped for an empty or NaN cell
   /// The CSV inside a zip archive it was read from ("Gyroscope.csv"), the

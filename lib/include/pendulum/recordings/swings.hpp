@@ -220,8 +220,19 @@ struct RecordingSummary {
   std::vector<std::string> channels = {};  ///< the channels analysed, as the header names them
 };
 
+/// Analyses `recording` (analyse_swings) and, where it holds more than one
+/// signal (Recording::candidates), each of the others, read again from
+/// `path` with its columns: signals whose periods differ by more than 5
+/// combined standard uncertainties and 10^-3 of the period are refused
+/// (InputError naming both and the --columns that picks each: the file
+/// cannot say which one is the pendulum's); otherwise a note says they agree.
+/// A signal that gives no period is noted and passed over.
+SwingAnalysis analyse_candidates(const Recording& recording, const std::string& path, RecordingFormat format,
+                                 const SwingOptions& options = {}, const RecordingLimits& limits = {},
+                                 const std::string& set = {});
+
 /// Reads the recording at `path` (format from its header unless given) and
-/// analyses it: the one call a scene reader makes for a `timing` or
+/// analyses it (analyse_candidates): the one call a scene reader makes for a `timing` or
 /// `decay.data` that names a recording. Throws InputError naming the file
 /// (and line and column for a bad row). `set`: the CSV to read in a zip
 /// archive, a PASCO run or a Tracker track (read_recording); `columns`

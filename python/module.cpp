@@ -140,7 +140,7 @@ py::dict read_recording(const std::string& path, const std::string& format, cons
   out["json"] = json;
   out["crossings_s"] = column(a.crossings, [](const auto& c) { return c.time; });
   out["swings"] = swings;
-  out["periods"] = periods;
+  out["period_curve"] = periods;
   return out;
 }
 

@@ -111,7 +111,7 @@ def read_recording(path, *, columns=None, set=None, format="auto", bob_width_m=N
     and `decay` objects paste into a scene), and as numpy arrays:
     "crossings_s" (each zero crossing or gate passage, s), "swings" (per
     half swing: start_s, end_s, peak_time_s, amplitude_deg; NaN where the
-    recording gives no amplitude) and "periods" (per full period: time_s
+    recording gives no amplitude) and "period_curve" (per full period: time_s
     from the first crossing, amplitude_deg, period_s). columns, set,
     format, bob_width_m, length_m, range=(start, end) (s) and
     stamps_per_period are import's --columns, --set, --format,

@@ -15,6 +15,7 @@
 
 #include "commands.hpp"
 #include "pendulum/analysis.hpp"
+#include "pendulum/batch.hpp"
 #include "pendulum/files.hpp"
 #include "pendulum/output.hpp"
 #include "pendulum/report/html_report.hpp"
@@ -23,21 +24,7 @@
 namespace pendulum::cli {
 namespace {
 
-/// One scene of the batch: a file to read, or a line of standard input.
-struct Job {
-  std::string name;                 ///< as given: the file opened
-  std::optional<std::string> text;  ///< set for standard input
-  /// `name` as printed (printable_name(): escaped, and distinct for
-  /// distinct names).
-  std::string shown() const { return printable_name(name); }
-};
-
-/// ".json" in any case: CLARK.JSON is a scene too.
-bool json_extension(const std::filesystem::path& p) {
-  std::string e = p.extension().string();
-  std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
-  return e == ".json";
-}
+using Job = BatchScene;
 
 /// The scenes on standard input, named "stdin:N" by the line each starts
 /// on: one a line (JSON lines), or pretty-printed over many (cat *.json).
@@ -89,36 +76,15 @@ std::vector<Job> split_documents(const std::string& input) {
 std::vector<Job> gather(const std::vector<std::string>& paths, const std::string& list) {
   std::vector<Job> jobs;
   auto add_path = [&](const std::string& p) {
-    namespace fs = std::filesystem;
     std::error_code ec;
-    if (fs::is_directory(p, ec)) {
-      std::vector<std::string> files;
-      std::vector<std::pair<std::string, std::string>> skipped;
-      for (const auto& entry : fs::directory_iterator(p, ec)) {
-        const fs::path& f = entry.path();
-        if (entry.is_directory(ec)) {
-          skipped.push_back({f.string(), "a folder (batch reads one level; name it to reduce its scenes)"});
-        } else if (!json_extension(f)) {
-          skipped.push_back({f.string(), json_extension(f.stem()) ? "not a .json file; rename it to " +
-                                                                        f.stem().filename().string() + " to reduce it"
-                                                                  : std::string("not a .json file")});
-        } else if (entry.is_symlink(ec) && !fs::exists(entry.status(ec))) {
-          skipped.push_back({f.string(), "a symbolic link to nothing (" + printable_name(fs::read_symlink(f, ec).string()) + ")"});
-        } else if (!entry.is_regular_file(ec)) {
-          // A named pipe would block the reader forever, a device feed it junk.
-          skipped.push_back({f.string(), "not a regular file (a named pipe, a device or a socket)"});
-        } else {
-          files.push_back(f.string());
-        }
-      }
-      std::sort(files.begin(), files.end());
-      std::sort(skipped.begin(), skipped.end());
-      for (const auto& [f, why] : skipped) {
-        std::cerr << "pendulum-g: note: skipped " << printable_name(f) << ": " << why << "\n";
-      }
-      for (auto& f : files) jobs.push_back({std::move(f), std::nullopt});
-    } else {
+    if (!std::filesystem::is_directory(p, ec)) {
       jobs.push_back({p, std::nullopt});
+      return;
+    }
+    std::vector<SkippedEntry> skipped;
+    for (auto& f : folder_scenes(p, skipped)) jobs.push_back({std::move(f), std::nullopt});
+    for (const auto& [f, why] : skipped) {
+      std::cerr << "pendulum-g: note: skipped " << printable_name(f) << ": " << why << "\n";
     }
   };
   for (const auto& p : paths) {
@@ -141,31 +107,6 @@ std::vector<Job> gather(const std::vector<std::string>& paths, const std::string
     }
   }
   return jobs;
-}
-
-/// The summary line of one scene, the recordings it read and, for
-/// --report, its report; never throws.
-struct Outcome {
-  BatchLine line;
-  report::ClassEntry entry;
-  std::vector<std::string> recordings;
-};
-Outcome process(const Job& job, const AnalysisOptions& options, bool with_report, bool allow_outside) {
-  const std::string name = job.shown();
-  try {
-    const ParsedScene scene = parse_scene(job.text ? *job.text : read_input(job.name),
-                                          job.text ? SceneFiles{".", allow_outside} : scene_files(job.name, allow_outside));
-    const Analysis analysis = analyse(scene, options);
-    Outcome out{batch_line(name, scene, analysis), {name, std::nullopt, ""}, {}};
-    for (const auto& r : scene.recordings) out.recordings.push_back(r.summary.file);
-    if (with_report) out.entry.report = report::make_scene_report(name, scene, analysis);
-    return out;
-  } catch (const InputError& e) {
-    return {batch_failure(name, e.what()), {name, std::nullopt, e.what()}, {}};
-  } catch (const std::exception& e) {
-    const std::string error = std::string("internal error: ") + e.what();
-    return {batch_failure(name, error), {name, std::nullopt, error}, {}};
-  }
 }
 
 }  // namespace
@@ -220,14 +161,14 @@ Command add_batch_command(CLI::App& app) {
     refuse_output_over_inputs(o->report, inputs);
     std::vector<std::string> recordings;
     const AnalysisOptions options;
-    std::vector<std::optional<Outcome>> results(jobs.size());
+    std::vector<std::optional<BatchOutcome>> results(jobs.size());
     std::vector<report::ClassEntry> entries;
     std::mutex mutex;
     std::condition_variable ready;
     std::atomic<std::size_t> next{0};
     auto work = [&] {
       for (std::size_t i = next++; i < jobs.size(); i = next++) {
-        auto outcome = process(jobs[i], options, !o->report.empty(), o->allow_outside);
+        auto outcome = reduce_batch_scene(jobs[i], options, !o->report.empty(), o->allow_outside);
         std::lock_guard<std::mutex> lock(mutex);
         results[i] = std::move(outcome);
         ready.notify_one();

@@ -14,12 +14,12 @@
 #include <CLI/CLI.hpp>
 
 #include "pendulum/amplitude.hpp"
+#include "pendulum/output_files.hpp"
 #include "pendulum/scene_json.hpp"
 
 namespace pendulum {
 struct AnalysisOptions;
 struct SwingOptions;
-enum class RecordingFormat;
 }
 
 namespace pendulum::cli {
@@ -30,16 +30,10 @@ inline constexpr int kExitSuspect = 4;
 /// written whole (docs/output.md).
 inline constexpr int kExitOutput = 5;
 
-/// An output that could not be written: what() is "cannot write NAME: reason".
-struct OutputError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-/// Arguments that make no sense together (an output that is an input):
-/// exit status 2, as for the argument parser's errors.
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+using pendulum::OutputError;
+using pendulum::UsageError;
+using pendulum::refuse_output_over_inputs;
+using pendulum::write_output;
 
 /// A registered subcommand and the function that runs it.
 struct Command {
@@ -57,11 +51,6 @@ SceneFiles scene_files(const std::string& file, bool allow_outside);
 
 /// The option --allow-outside of the commands that read a scene.
 void add_allow_outside_option(CLI::App& cmd, bool& allow_outside);
-
-/// Throws UsageError when `output` (not "-") is, by device and inode, one of
-/// `inputs`: `report x.json -o x.json`, or through a link; "-" is standard
-/// input's file (`report - -o x.json < x.json`).
-void refuse_output_over_inputs(const std::string& output, const std::vector<std::string>& inputs);
 
 /// Puts /dev/null in place of a closed standard input, output or error, the
 /// wrong way round for the first two, so that using them fails by name
@@ -100,25 +89,12 @@ Command add_template_command(CLI::App& app);
 /// or one SVG plot (cli/report_command.cpp).
 Command add_report_command(CLI::App& app);
 
-/// Writes `text` to `path` ("-": standard output): a regular file through a
-/// temporary file renamed over it, so that a failure leaves no partial file;
-/// a device or pipe (/dev/stdout) in place. Throws InputError ("output: cannot
-/// write PATH: reason").
-void write_output(const std::string& path, const std::string& text);
-
 /// `pendulum-g fit-decay SCENE`: the decay record -> alpha, beta (cli/fit_decay_command.cpp).
 Command add_fit_decay_command(CLI::App& app);
 
 /// `pendulum-g import RECORDING`: a phone, photogate or video-tracker
 /// recording -> period, amplitudes, timing and decay (cli/import_command.cpp).
 Command add_import_command(CLI::App& app);
-
-/// The recording families for --format: auto, phyphox, vernier, pasco,
-/// plain, tracker (import and report take them alike).
-std::vector<std::string> recording_family_names();
-
-/// The last family named among `formats`; empty when none is.
-std::optional<RecordingFormat> recording_family(const std::vector<std::string>& formats);
 
 /// --bob-width-m and --length-m, a photogate's amplitudes (import and report).
 void add_recording_options(CLI::App& cmd, SwingOptions& options, std::string& set, std::string& columns);

@@ -9,10 +9,9 @@
 #include <memory>
 #include <sstream>
 
-#include <nlohmann/json.hpp>
-
 #include "commands.hpp"
 #include "pendulum/numeric.hpp"
+#include "pendulum/output.hpp"
 #include "pendulum/recordings/swings.hpp"
 #include "pendulum/recordings/table.hpp"
 #include "pendulum/files.hpp"
@@ -22,79 +21,6 @@ namespace pendulum::cli {
 namespace {
 
 constexpr double kDeg = 180.0 / kPi;
-
-nlohmann::ordered_json summary_json(const RecordingSummary& r) {
-  const SwingAnalysis& a = r.swings;
-  const int n = a.period.periods;
-  const std::string source = std::string("pendulum-g import: ") + recording_format_name(r.format) +
-                             " recording " + r.file + (r.set.empty() ? "" : "/" + r.set);
-  nlohmann::ordered_json out;
-  out["format"] = recording_format_name(r.format);
-  out["periods"] = n;
-  out["period"] = {{"value", a.period.value}, {"uncertainty", a.period.uncertainty}, {"unit", "s"}};
-  // Whose angle the amplitudes are: a phone's sensor turns with the bob it
-  // is in (docs/phone.md); paste it with them as the scene's "of".
-  const char* of = sensor_in_bob(r.kind) ? "body" : "pendulum";
-  if (a.decay.amplitudes.empty()) {
-    out["amplitude_range"] = nullptr;
-  } else {
-    // start: the scene's `amplitude`, at the first crossing, where the timing starts.
-    const auto [lo, hi] = std::minmax_element(a.decay.amplitudes.begin(), a.decay.amplitudes.end());
-    // null where the recording cannot say (swings.hpp, start_amplitude_uncertainty).
-    const nlohmann::ordered_json start_uncertainty =
-        std::isfinite(a.start_amplitude_uncertainty) ? nlohmann::ordered_json(a.start_amplitude_uncertainty * kDeg)
-                                                     : nlohmann::ordered_json(nullptr);
-    out["amplitude_range"] = {{"start", a.start_amplitude * kDeg}, {"start_uncertainty", start_uncertainty},
-                              {"end", a.end_amplitude * kDeg},     {"min", *lo * kDeg},
-                              {"max", *hi * kDeg},                 {"unit", "deg"},
-                              {"of", of}};
-  }
-  // One trial of all the periods: its uncertainty is used as is (docs/scene.md).
-  out["timing"] = {{"oscillations_per_trial", n},
-                   {"unit", "s"},
-                   {"trials", {n * a.period.value}},
-                   {"uncertainty", n * a.period.uncertainty},
-                   {"source", source}};
-  if (a.decay.times.size() < 3) {
-    out["decay"] = nullptr;
-  } else {
-    std::vector<double> degrees(a.decay.amplitudes.size());
-    std::transform(a.decay.amplitudes.begin(), a.decay.amplitudes.end(), degrees.begin(),
-                   [](double x) { return x * kDeg; });
-    out["decay"] = {{"data",
-                     {{"time_unit", "s"},
-                      {"times", a.decay.times},
-                      {"amplitude_unit", "deg"},
-                      {"amplitudes", degrees},
-                      {"of", of},
-                      {"source", source}}}};
-  }
-  nlohmann::ordered_json columns = nlohmann::ordered_json::array();
-  for (const RecordingColumn& c : r.columns) {
-    columns.push_back({{"column", c.index},
-                       {"name", c.name},
-                       {"role", c.role},
-                       {"unit", c.unit.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(c.unit)},
-                       {"decided_by", c.decided_by},
-                       {"why", c.why}});
-  }
-  out["columns"] = columns;
-  // Stretches that do not fit the swing (swings.hpp, step 7).
-  out["glitches"] = nlohmann::ordered_json::array();
-  for (const Glitch& g : a.glitches) {
-    out["glitches"].push_back({{"from", g.start}, {"to", g.end}, {"unit", "s"}, {"worst_robust_sigmas", g.worst}});
-  }
-  // What the reader decided and dropped, then what the analysis decided or
-  // mended; each note with the line it names (null: none).
-  out["notes"] = nlohmann::ordered_json::array();
-  for (const auto* list : {&r.notes, &a.notes}) {
-    for (const RecordingNote& note : *list) {
-      out["notes"].push_back({{"line", note.line ? nlohmann::ordered_json(note.line) : nlohmann::ordered_json(nullptr)},
-                              {"text", note.text}});
-    }
-  }
-  return out;
-}
 
 std::string summary_table(const RecordingSummary& r) {
   const SwingAnalysis& a = r.swings;
@@ -148,28 +74,6 @@ std::string summary_table(const RecordingSummary& r) {
 }
 
 }  // namespace
-
-namespace {
-constexpr RecordingFormat kFamilies[] = {RecordingFormat::automatic, RecordingFormat::phyphox,
-                                         RecordingFormat::vernier,   RecordingFormat::pasco,
-                                         RecordingFormat::plain,     RecordingFormat::tracker};
-}  // namespace
-
-std::vector<std::string> recording_family_names() {
-  std::vector<std::string> names;
-  for (auto f : kFamilies) names.push_back(recording_format_name(f));
-  return names;
-}
-
-std::optional<RecordingFormat> recording_family(const std::vector<std::string>& formats) {
-  std::optional<RecordingFormat> family;
-  for (const auto& f : formats) {
-    for (auto candidate : kFamilies) {
-      if (f == recording_format_name(candidate)) family = candidate;
-    }
-  }
-  return family;
-}
 
 void add_recording_options(CLI::App& cmd, SwingOptions& options, std::string& set, std::string& columns) {
   cmd.add_option("--bob-width-m", options.bob_width,
@@ -285,7 +189,7 @@ Command add_import_command(CLI::App& app) {
     }
     const RecordingSummary summary = analyse_recording(
         o->file, recording_family(o->formats).value_or(RecordingFormat::automatic), o->swing, {}, o->set, o->columns);
-    std::cout << (table ? summary_table(summary) : summary_json(summary).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+    std::cout << (table ? summary_table(summary) : recording_json(summary) + "\n");
     return 0;
   }};
 }

@@ -8,15 +8,21 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <string>
 
 #include "pendulum/amplitude.hpp"
 #include "pendulum/analysis.hpp"
+#include "pendulum/batch.hpp"
 #include "pendulum/clock.hpp"
 #include "pendulum/files.hpp"
 #include "pendulum/input_error.hpp"
 #include "pendulum/output.hpp"
+#include "pendulum/output_files.hpp"
+#include "pendulum/recordings/swings.hpp"
+#include "pendulum/recordings/table.hpp"
+#include "pendulum/report/report_page.hpp"
 #include "pendulum/scene_json.hpp"
 #include "pendulum/site.hpp"
 
@@ -87,6 +93,130 @@ std::string fit_decay_json(const std::optional<std::string>& path, const std::op
   std::vector<std::string> warnings = scene.warnings;
   for (auto& w : pendulum::review_decay_fit(fit)) warnings.push_back(std::move(w));
   return pendulum::decay_fit_json(source.input, scene, fit, warnings);
+}
+
+/// A numpy array of f(x) over `items`.
+template <class Items, class F>
+py::array_t<double> column(const Items& items, F f) {
+  py::array_t<double> out(static_cast<py::ssize_t>(items.size()));
+  double* at = out.mutable_data();
+  for (const auto& item : items) *at++ = f(item);
+  return out;
+}
+
+/// `pendulum-g import RECORDING`'s JSON ("json") and, as numpy arrays, what
+/// it summarises: the crossing times, each swing, each full period.
+py::dict read_recording(const std::string& path, const std::string& format, const std::string& set,
+                        const std::string& columns, std::optional<double> bob_width, std::optional<double> length,
+                        std::optional<std::pair<double, double>> range, std::optional<int> stamps_per_period) {
+  const std::optional<pendulum::RecordingFormat> family = pendulum::recording_family({format});
+  if (!family) throw py::value_error("format: got '" + format + "'; expected auto, phyphox, vernier, pasco, plain or tracker");
+  if (range && !(std::isfinite(range->first) && std::isfinite(range->second) && range->first < range->second)) {
+    throw py::value_error("range: expected (start, end) in seconds of the recording's clock, start before end");
+  }
+  pendulum::SwingOptions options;
+  options.bob_width = bob_width;
+  options.length = length;
+  options.range = range;
+  options.stamps_per_period = stamps_per_period;
+  pendulum::RecordingSummary r;
+  std::string json;
+  {
+    py::gil_scoped_release unlocked;
+    r = pendulum::analyse_recording(path, *family, options, {}, set, columns);
+    json = pendulum::recording_json(r);
+  }
+  constexpr double deg = 180.0 / pendulum::kPi;
+  const pendulum::SwingAnalysis& a = r.swings;
+  py::dict swings, periods;
+  swings["start_s"] = column(a.swings, [](const auto& w) { return w.start; });
+  swings["end_s"] = column(a.swings, [](const auto& w) { return w.end; });
+  swings["peak_time_s"] = column(a.swings, [](const auto& w) { return w.peak_time; });
+  swings["amplitude_deg"] = column(a.swings, [](const auto& w) { return w.amplitude * deg; });
+  periods["time_s"] = column(a.period_curve, [](const auto& p) { return p.time; });
+  periods["amplitude_deg"] = column(a.period_curve, [](const auto& p) { return p.amplitude * deg; });
+  periods["period_s"] = column(a.period_curve, [](const auto& p) { return p.period; });
+  py::dict out;
+  out["json"] = json;
+  out["crossings_s"] = column(a.crossings, [](const auto& c) { return c.time; });
+  out["swings"] = swings;
+  out["period_curve"] = periods;
+  return out;
+}
+
+/// `pendulum-g import --table TABLE`'s scene (JSON text) and its warnings.
+std::pair<std::string, std::vector<std::string>> read_table(const std::string& path, const std::string& columns,
+                                                            int oscillations) {
+  if (oscillations < 0 || oscillations > 1000000) {
+    throw py::value_error("oscillations: got " + std::to_string(oscillations) + "; expected 1 to 1000000");
+  }
+  pendulum::TableOptions options;
+  options.oscillations = oscillations;
+  if (!columns.empty()) options.columns = pendulum::parse_table_column_spec(columns, "columns");
+  py::gil_scoped_release unlocked;
+  const pendulum::SettingsTable t = pendulum::read_settings_table(path, options);
+  std::vector<std::string> warnings;
+  for (const auto& w : t.warnings) warnings.push_back(w.text);
+  return {pendulum::table_scene(t, pendulum::printable_name(path)), warnings};
+}
+
+/// `pendulum-g batch PATHS --format jsonl`'s scene lines (without the class
+/// line), and the folder entries it skips with a note, as (path, why).
+std::pair<std::vector<std::string>, std::vector<std::pair<std::string, std::string>>> batch_lines(
+    const std::vector<std::string>& paths, bool allow_outside) {
+  py::gil_scoped_release unlocked;
+  std::vector<pendulum::BatchScene> scenes;
+  std::vector<std::pair<std::string, std::string>> notes;
+  for (const auto& p : paths) {
+    std::error_code ec;
+    if (!std::filesystem::is_directory(p, ec)) {
+      scenes.push_back({p, std::nullopt});
+      continue;
+    }
+    std::vector<pendulum::SkippedEntry> skipped;
+    for (auto& f : pendulum::folder_scenes(p, skipped)) scenes.push_back({std::move(f), std::nullopt});
+    for (const auto& s : skipped) notes.emplace_back(pendulum::printable_name(s.path), s.why);
+  }
+  const pendulum::AnalysisOptions options;
+  std::vector<std::string> lines;
+  for (const auto& scene : scenes) lines.push_back(pendulum::reduce_batch_scene(scene, options, false, allow_outside).line.json);
+  return {lines, notes};
+}
+
+/// `pendulum-g report`'s page for a scene file or recording (path) or scene
+/// text, written to `output` whole or not at all (returned when it is
+/// empty), and the warnings the CLI prints.
+std::pair<std::optional<std::string>, std::vector<std::string>> report(
+    const std::optional<std::string>& path, const std::optional<std::string>& text, const std::string& directory,
+    bool allow_outside, const std::string& output, const std::string& plot, const std::optional<std::string>& format,
+    const std::string& set, const std::string& columns, double negligible_fraction, const std::string& method,
+    int series_terms) {
+  pendulum::report::ReportRequest request;
+  request.file = path.value_or("-");
+  request.text = text;
+  if (text) request.directory = directory;
+  request.allow_outside = allow_outside;
+  request.plot = plot;
+  if (format) {
+    request.family = pendulum::recording_family({*format});
+    if (!request.family) {
+      throw py::value_error("format: got '" + *format + "'; expected auto, phyphox, vernier, pasco, plain or tracker");
+    }
+  }
+  request.set = set;
+  request.columns = columns;
+  request.analysis.negligible_fraction = negligible_fraction;
+  request.analysis.reduction.amplitude_method = amplitude_method(method);
+  request.analysis.reduction.series_terms = series_terms;
+  py::gil_scoped_release unlocked;
+  if (!output.empty() && path) pendulum::refuse_output_over_inputs(output, {*path});
+  pendulum::report::ReportPage page = pendulum::report::make_report_page(
+      request, [&](const std::vector<std::string>& recordings) {
+        if (!output.empty()) pendulum::refuse_output_over_inputs(output, recordings);
+      });
+  if (output.empty()) return {std::move(page.text), page.warnings};
+  pendulum::write_output(output, page.text);
+  return {std::nullopt, page.warnings};
 }
 
 /// f applied to every element of `x` (any shape), into a new array of that
@@ -175,6 +305,11 @@ PYBIND11_MODULE(_core, m) {
       instance.attr("path") = e.path();
       instance.attr("status") = 1;
       PyErr_SetObject(input_error->ptr(), instance.ptr());
+    } catch (const pendulum::OutputError& e) {
+      // The CLI's exit status 5: "output: cannot write NAME: reason".
+      PyErr_SetString(PyExc_OSError, (std::string("output: ") + e.what()).c_str());
+    } catch (const pendulum::UsageError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());  // the CLI's exit status 2
     }
   });
 
@@ -185,6 +320,17 @@ PYBIND11_MODULE(_core, m) {
   m.def("fit_decay_json", &fit_decay_json, py::arg("path"), py::arg("text"), py::arg("directory"),
         py::arg("allow_outside"), py::arg("model"), "The JSON of `pendulum-g fit-decay`.");
 
+  m.def("read_recording", &read_recording, py::arg("path"), py::arg("format"), py::arg("set"), py::arg("columns"),
+        py::arg("bob_width"), py::arg("length"), py::arg("range"), py::arg("stamps_per_period"),
+        "`pendulum-g import RECORDING`'s JSON and the crossings, swings and periods as arrays.");
+  m.def("read_table", &read_table, py::arg("path"), py::arg("columns"), py::arg("oscillations"),
+        "`pendulum-g import --table TABLE`'s scene and its warnings.");
+  m.def("batch_lines", &batch_lines, py::arg("paths"), py::arg("allow_outside"),
+        "`pendulum-g batch PATHS`'s JSON lines of the scenes, and the entries skipped.");
+  m.def("report", &report, py::arg("path"), py::arg("text"), py::arg("directory"), py::arg("allow_outside"),
+        py::arg("output"), py::arg("plot"), py::arg("format"), py::arg("set"), py::arg("columns"),
+        py::arg("negligible_fraction"), py::arg("amplitude_method"), py::arg("series_terms"),
+        "`pendulum-g report`'s page, written to output (or returned), and its warnings.");
   m.def("finite_amplitude", &finite_amplitude, py::arg("theta0"), py::arg("method") = "exact",
         py::arg("terms") = 4, py::arg("excess") = false,
         "T/T0 at amplitude theta0 (rad, any array shape, 0 <= theta0 < pi): exact (the AGM, Nelson & Olsson "

@@ -245,3 +245,187 @@ def test_the_session_in_docs_python_md_prints_what_the_page_shows():
             assert printed.getvalue() == shown, code
     finally:
         os.chdir(here)
+
+
+ARRAY_KEYS = ("crossings_s", "swings", "period_curve")
+RECORDINGS = sorted(os.path.relpath(p, SOURCE) for p in glob.glob(os.path.join(DATA, "recordings", "*"))
+                    if not p.endswith(".json"))
+
+
+def in_source(call):
+    """call() run from the source folder, where the CLI runs."""
+    here = os.getcwd()
+    os.chdir(SOURCE)
+    try:
+        return call()
+    finally:
+        os.chdir(here)
+
+
+@pytest.mark.parametrize("recording", RECORDINGS)
+def test_every_bundled_recording_reads_as_import_does(recording):
+    run = cli("import", recording)
+    if run.returncode != 0:  # two tracks, and no --set to choose
+        same_answer_recording(["import", recording], lambda: in_source(lambda: pendulum_g.read_recording(recording)))
+        return
+    got = in_source(lambda: pendulum_g.read_recording(recording))
+    assert {k: v for k, v in got.items() if k not in ARRAY_KEYS} == json.loads(run.stdout)
+    crossings = got["crossings_s"]
+    assert isinstance(crossings, np.ndarray) and np.all(np.diff(crossings) > 0)
+    # Each full period spans crossings_per_period crossings; the curve has
+    # one point a period, within the crossings' span.
+    periods = got["period_curve"]
+    assert len(periods["period_s"]) == len(periods["time_s"]) == len(periods["amplitude_deg"])
+    assert np.all(periods["time_s"] <= crossings[-1] - crossings[0])
+    swings = got["swings"]
+    assert np.all(swings["end_s"] > swings["start_s"])
+    # The decay record's amplitudes are the swings' (deg), where known.
+    if got["decay"] is not None:
+        known = swings["amplitude_deg"][np.isfinite(swings["amplitude_deg"])]
+        assert np.isin(got["decay"]["data"]["amplitudes"], known).all()
+
+
+def test_recording_options_as_import_takes_them():
+    recording = os.path.join("data", "recordings", "tracker_glitchy_end.txt")
+    run = cli("import", recording, "--range", "0:20")
+    got = in_source(lambda: pendulum_g.read_recording(recording, range=(0, 20)))
+    assert {k: v for k, v in got.items() if k not in ARRAY_KEYS} == json.loads(run.stdout)
+    two = os.path.join("data", "recordings", "tracker_two_tracks.txt")
+    run = cli("import", two, "--set", "mass B")
+    got = in_source(lambda: pendulum_g.read_recording(two, set="mass B"))
+    assert {k: v for k, v in got.items() if k not in ARRAY_KEYS} == json.loads(run.stdout)
+    headerless = os.path.join("data", "recordings", "tracker_headerless_xy.txt")
+    run = cli("import", headerless, "--columns", "t:s,x:m,y:m")
+    got = in_source(lambda: pendulum_g.read_recording(headerless, columns="t:s,x:m,y:m"))
+    assert {k: v for k, v in got.items() if k not in ARRAY_KEYS} == json.loads(run.stdout)
+
+
+def test_bad_recordings_raise_the_import_messages(tmp_path):
+    cases = {"missing.csv": None, "one_line.csv": "t,theta\n", "letters.csv": "t,theta\n0,1\n0.1,x\n0.2,3\n0.3,4\n"}
+    for name, text in cases.items():
+        path = str(tmp_path / name)
+        if text is not None:
+            with open(path, "w") as f:
+                f.write(text)
+        same_answer_recording(["import", path], lambda: pendulum_g.read_recording(path))
+    scene = os.path.join(DATA, "nelson_olsson_1986.json")
+    same_answer_recording(["import", scene], lambda: pendulum_g.read_recording(scene))
+    with pytest.raises(ValueError, match="format: got 'csv'"):
+        pendulum_g.read_recording(scene, format="csv")
+    with pytest.raises(ValueError, match="range"):
+        pendulum_g.read_recording(scene, range=(5, 1))
+
+
+def same_answer_recording(args, call):
+    """The CLI fails with status 1 and call() raises its message."""
+    run = cli(*args)
+    assert run.returncode == 1, (args, run.stdout, run.stderr)
+    with pytest.raises(pendulum_g.InputError) as caught:
+        call()
+    assert error_line(run.stderr).endswith(str(caught.value)), (run.stderr, str(caught.value))
+    assert caught.value.status == 1
+
+
+@pytest.mark.parametrize("table", ["data/pendulum_lengths_table.csv", "data/pivot_scan_table.csv"])
+def test_tables_read_as_import_does(table):
+    run = cli("import", table)
+    assert run.returncode == 0, run.stderr
+    assert in_source(lambda: pendulum_g.read_table(table)) == json.loads(run.stdout)
+
+
+def test_a_table_options_and_errors_as_import_has_them(tmp_path):
+    path = str(tmp_path / "t.csv")
+    with open(path, "w") as f:
+        f.write("0.5,14.2,0.1\n0.7,16.8,0.1\n0.9,19.0,0.1\n1.1,21.0,0.1\n")
+    run = cli("import", path, "--columns", "l:m,t10:s,u")
+    assert run.returncode == 0, run.stderr
+    assert pendulum_g.read_table(path, columns="l:m,t10:s,u") == json.loads(run.stdout)
+    with open(path, "w") as f:
+        f.write("length_m,period_s\n0.5,1.42\n0.7,x\n")
+    same_answer_recording(["import", "--table", path], lambda: pendulum_g.read_table(path))
+
+
+def test_batch_of_the_class_folder_equals_the_cli_rows():
+    run = cli("batch", "data/class", "--format", "jsonl")
+    lines = run.stdout.splitlines()
+    rows = in_source(lambda: pendulum_g.batch("data/class"))
+    assert rows == [json.loads(line) for line in lines[:-1]]
+    assert json.loads(lines[-1])["class"] is True and len(rows) == 3
+
+
+def test_batch_rows_of_failures_and_skipped_entries_as_the_cli_gives_them(tmp_path):
+    folder = tmp_path / "class"
+    folder.mkdir()
+    (folder / "sub").mkdir()
+    (folder / "notes.txt").write_text("no scene\n")
+    (folder / "bad.json").write_text('{"length": {"value": -1, "unit": "m"}}')
+    with open(os.path.join(DATA, "nelson_olsson_1986.json")) as f:
+        (folder / "good.json").write_text(f.read())
+    run = cli("batch", str(folder))
+    assert run.returncode == 1
+    with pytest.warns(UserWarning) as caught:
+        rows = pendulum_g.batch(folder)
+    assert rows == [json.loads(line) for line in run.stdout.splitlines()[:-1]]
+    assert [r["ok"] for r in rows] == [False, True]
+    notes = [line[len("pendulum-g: note: "):] for line in run.stderr.splitlines() if line.startswith("pendulum-g: note")]
+    assert [str(w.message) for w in caught] == notes and len(notes) == 2
+    assert pendulum_g.batch([str(folder / "good.json")]) == rows[1:]
+
+
+@pytest.mark.parametrize("args", [["data/nelson_olsson_1986.json"], ["data/kater_reversible_pendulum.json"],
+                                  ["data/recordings/phyphox_gyroscope.csv"],
+                                  ["data/nelson_olsson_1986_decay.json", "--plot", "decay"]])
+def test_report_writes_the_cli_page(tmp_path, args):
+    expected, got = tmp_path / "cli.out", tmp_path / "module.out"
+    run = cli("report", *args, "-o", str(expected))
+    assert run.returncode == 0, run.stderr
+    plot = args[args.index("--plot") + 1] if "--plot" in args else None
+    import warnings
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        assert in_source(lambda: pendulum_g.report(args[0], got, plot=plot)) is None
+    assert got.read_bytes() == expected.read_bytes()
+    assert [f"pendulum-g: warning: {w.message}" for w in caught] == run.stderr.splitlines()
+    assert in_source(lambda: pendulum_g.report(args[0], plot=plot)) == expected.read_text()
+
+
+def test_report_refuses_what_the_cli_refuses(tmp_path):
+    scene = tmp_path / "scene.json"
+    with open(os.path.join(DATA, "nelson_olsson_1986.json")) as f:
+        scene.write_text(f.read())
+    before = scene.read_bytes()
+    with pytest.raises(ValueError, match="is the input"):
+        pendulum_g.report(scene, scene)
+    assert scene.read_bytes() == before
+    with pytest.raises(OSError, match="output: cannot write .*: Is a directory"):
+        pendulum_g.report(scene, tmp_path)
+    bad = tmp_path / "bad.json"
+    bad.write_text('{"length": {"value": -1, "unit": "m"}}')
+    same_answer_recording(["report", str(bad), "-o", str(tmp_path / "r.html")],
+                          lambda: pendulum_g.report(bad, tmp_path / "r.html"))
+    assert not (tmp_path / "r.html").exists()
+
+
+def test_the_notebook_is_the_page_and_runs_to_its_outputs():
+    # docs/python.ipynb is tests/tools/python_notebook.py's from the page, and
+    # Debian's Jupyter (nbclient, ipykernel) runs it to the outputs it stores.
+    import copy
+    import sys
+    import nbclient
+    import nbformat
+    sys.path.insert(0, os.path.join(SOURCE, "tests", "tools"))
+    import python_notebook
+    with open(os.path.join(SOURCE, "docs", "python.md")) as f:
+        expected = python_notebook.text(f.read())
+    with open(os.path.join(SOURCE, "docs", "python.ipynb")) as f:
+        stored = f.read()
+    assert stored == expected, "run tests/tools/python_notebook.py"
+    notebook = nbformat.reads(stored, as_version=4)
+    ran = copy.deepcopy(notebook)
+    nbclient.NotebookClient(ran, timeout=300, kernel_name="python3",
+                            resources={"metadata": {"path": SOURCE}}).execute()
+    code = [(a, b) for a, b in zip(notebook.cells, ran.cells) if a.cell_type == "code"]
+    assert len(code) >= 8
+    for stored_cell, ran_cell in code:
+        printed = "".join(o.get("text", "") for o in ran_cell.outputs if o.output_type == "stream")
+        assert printed == "".join(o["text"] for o in stored_cell.outputs), stored_cell.source

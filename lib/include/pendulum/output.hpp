@@ -15,6 +15,8 @@
 
 namespace pendulum {
 
+struct RecordingSummary;
+
 /// The result document; `input` names the scene file as the user gave it.
 /// `indent` as for JSON dumps: -1 is one line.
 std::string result_json(const ParsedScene& scene, const Analysis& analysis, const AnalysisOptions& options,
@@ -31,6 +33,11 @@ std::string decay_fit_json(const std::string& input, const ParsedScene& scene, c
 
 /// The same fit as a text table for people (`fit-decay --format table`).
 std::string decay_fit_table(const ParsedScene& scene, const DecayFit& fit, const std::vector<std::string>& warnings);
+
+/// The document of `pendulum-g import RECORDING` (docs/recordings.md), no
+/// newline: the format, the period, the amplitude range, the `timing` and
+/// `decay` parts of a scene, the columns used, the glitches and the notes.
+std::string recording_json(const RecordingSummary& summary);
 
 /// One scene's line in a batch summary (`pendulum-g batch`), as a JSON line
 /// and as a CSV row.

@@ -34,6 +34,28 @@ const char* recording_format_name(RecordingFormat format) {
 }
 
 namespace {
+constexpr RecordingFormat kFamilies[] = {RecordingFormat::automatic, RecordingFormat::phyphox,
+                                         RecordingFormat::vernier,   RecordingFormat::pasco,
+                                         RecordingFormat::plain,     RecordingFormat::tracker};
+}  // namespace
+
+std::vector<std::string> recording_family_names() {
+  std::vector<std::string> names;
+  for (auto f : kFamilies) names.push_back(recording_format_name(f));
+  return names;
+}
+
+std::optional<RecordingFormat> recording_family(const std::vector<std::string>& formats) {
+  std::optional<RecordingFormat> family;
+  for (const auto& f : formats) {
+    for (auto candidate : kFamilies) {
+      if (f == recording_format_name(candidate)) family = candidate;
+    }
+  }
+  return family;
+}
+
+namespace {
 
 using namespace recording_text;
 

@@ -20,6 +20,7 @@
 ///    or "t","θ"/"theta" or "ω"/"omega".
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,6 +34,13 @@ enum class RecordingFormat { automatic, phyphox, vernier, pasco, plain, tracker,
 
 /// "auto", "phyphox", "vernier", "pasco", "plain", "tracker", "columns".
 const char* recording_format_name(RecordingFormat format);
+
+/// The families a user names (`import --format`, pendulum_g.read_recording):
+/// auto, phyphox, vernier, pasco, plain, tracker.
+std::vector<std::string> recording_family_names();
+
+/// The last family named among `formats`; empty when none is.
+std::optional<RecordingFormat> recording_family(const std::vector<std::string>& formats);
 
 /// What the channels of a recording measure.
 enum class SignalKind {

@@ -1,0 +1,96 @@
+// The document of `pendulum-g import RECORDING` (docs/recordings.md): the
+// period, the amplitudes, and the `timing` and `decay` parts of a scene.
+#include <algorithm>
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "pendulum/numeric.hpp"
+#include "pendulum/output.hpp"
+#include "pendulum/recordings/swings.hpp"
+
+namespace pendulum {
+namespace {
+
+constexpr double kDeg = 180.0 / kPi;
+
+nlohmann::ordered_json summary_json(const RecordingSummary& r) {
+  const SwingAnalysis& a = r.swings;
+  const int n = a.period.periods;
+  const std::string source = std::string("pendulum-g import: ") + recording_format_name(r.format) +
+                             " recording " + r.file + (r.set.empty() ? "" : "/" + r.set);
+  nlohmann::ordered_json out;
+  out["format"] = recording_format_name(r.format);
+  out["periods"] = n;
+  out["period"] = {{"value", a.period.value}, {"uncertainty", a.period.uncertainty}, {"unit", "s"}};
+  // Whose angle the amplitudes are: a phone's sensor turns with the bob it
+  // is in (docs/phone.md); paste it with them as the scene's "of".
+  const char* of = sensor_in_bob(r.kind) ? "body" : "pendulum";
+  if (a.decay.amplitudes.empty()) {
+    out["amplitude_range"] = nullptr;
+  } else {
+    // start: the scene's `amplitude`, at the first crossing, where the timing starts.
+    const auto [lo, hi] = std::minmax_element(a.decay.amplitudes.begin(), a.decay.amplitudes.end());
+    // null where the recording cannot say (swings.hpp, start_amplitude_uncertainty).
+    const nlohmann::ordered_json start_uncertainty =
+        std::isfinite(a.start_amplitude_uncertainty) ? nlohmann::ordered_json(a.start_amplitude_uncertainty * kDeg)
+                                                     : nlohmann::ordered_json(nullptr);
+    out["amplitude_range"] = {{"start", a.start_amplitude * kDeg}, {"start_uncertainty", start_uncertainty},
+                              {"end", a.end_amplitude * kDeg},     {"min", *lo * kDeg},
+                              {"max", *hi * kDeg},                 {"unit", "deg"},
+                              {"of", of}};
+  }
+  // One trial of all the periods: its uncertainty is used as is (docs/scene.md).
+  out["timing"] = {{"oscillations_per_trial", n},
+                   {"unit", "s"},
+                   {"trials", {n * a.period.value}},
+                   {"uncertainty", n * a.period.uncertainty},
+                   {"source", source}};
+  if (a.decay.times.size() < 3) {
+    out["decay"] = nullptr;
+  } else {
+    std::vector<double> degrees(a.decay.amplitudes.size());
+    std::transform(a.decay.amplitudes.begin(), a.decay.amplitudes.end(), degrees.begin(),
+                   [](double x) { return x * kDeg; });
+    out["decay"] = {{"data",
+                     {{"time_unit", "s"},
+                      {"times", a.decay.times},
+                      {"amplitude_unit", "deg"},
+                      {"amplitudes", degrees},
+                      {"of", of},
+                      {"source", source}}}};
+  }
+  nlohmann::ordered_json columns = nlohmann::ordered_json::array();
+  for (const RecordingColumn& c : r.columns) {
+    columns.push_back({{"column", c.index},
+                       {"name", c.name},
+                       {"role", c.role},
+                       {"unit", c.unit.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(c.unit)},
+                       {"decided_by", c.decided_by},
+                       {"why", c.why}});
+  }
+  out["columns"] = columns;
+  // Stretches that do not fit the swing (swings.hpp, step 7).
+  out["glitches"] = nlohmann::ordered_json::array();
+  for (const Glitch& g : a.glitches) {
+    out["glitches"].push_back({{"from", g.start}, {"to", g.end}, {"unit", "s"}, {"worst_robust_sigmas", g.worst}});
+  }
+  // What the reader decided and dropped, then what the analysis decided or
+  // mended; each note with the line it names (null: none).
+  out["notes"] = nlohmann::ordered_json::array();
+  for (const auto* list : {&r.notes, &a.notes}) {
+    for (const RecordingNote& note : *list) {
+      out["notes"].push_back({{"line", note.line ? nlohmann::ordered_json(note.line) : nlohmann::ordered_json(nullptr)},
+                              {"text", note.text}});
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string recording_json(const RecordingSummary& r) {
+  return summary_json(r).dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+}  // namespace pendulum

@@ -30,6 +30,11 @@ struct Job {
   /// `name` as printed (printable_name(): escaped, and distinct for
   /// distinct names).
   std::string shown() const { return printable_name(name); }
+  /// Where the files the scene names are looked for: the file's folder, the
+  /// working folder for standard input.
+  SceneFiles files(bool allow_outside) const {
+    return text ? SceneFiles{".", allow_outside} : scene_files(name, allow_outside);
+  }
 };
 
 /// ".json" in any case: CLARK.JSON is a scene too.
@@ -143,28 +148,24 @@ std::vector<Job> gather(const std::vector<std::string>& paths, const std::string
   return jobs;
 }
 
-/// The summary line of one scene, the recordings it read and, for
-/// --report, its report; never throws.
+/// The summary line of one scene and, for --report, its report; never throws.
 struct Outcome {
   BatchLine line;
   report::ClassEntry entry;
-  std::vector<std::string> recordings;
 };
 Outcome process(const Job& job, const AnalysisOptions& options, bool with_report, bool allow_outside) {
   const std::string name = job.shown();
   try {
-    const ParsedScene scene = parse_scene(job.text ? *job.text : read_input(job.name),
-                                          job.text ? SceneFiles{".", allow_outside} : scene_files(job.name, allow_outside));
+    const ParsedScene scene = parse_scene(job.text ? *job.text : read_input(job.name), job.files(allow_outside));
     const Analysis analysis = analyse(scene, options);
-    Outcome out{batch_line(name, scene, analysis), {name, std::nullopt, ""}, {}};
-    for (const auto& r : scene.recordings) out.recordings.push_back(r.summary.file);
+    Outcome out{batch_line(name, scene, analysis), {name, std::nullopt, ""}};
     if (with_report) out.entry.report = report::make_scene_report(name, scene, analysis);
     return out;
   } catch (const InputError& e) {
-    return {batch_failure(name, e.what()), {name, std::nullopt, e.what()}, {}};
+    return {batch_failure(name, e.what()), {name, std::nullopt, e.what()}};
   } catch (const std::exception& e) {
     const std::string error = std::string("internal error: ") + e.what();
-    return {batch_failure(name, error), {name, std::nullopt, error}, {}};
+    return {batch_failure(name, error), {name, std::nullopt, error}};
   }
 }
 
@@ -216,9 +217,17 @@ Command add_batch_command(CLI::App& app) {
     inputs.clear();
     for (const auto& job : jobs) {
       if (!job.text) inputs.push_back(job.name);
+      // The recordings and tables it names too, before any is read.
+      if (o->report.empty()) continue;
+      try {
+        const std::vector<std::string> named =
+            scene_file_names(job.text ? *job.text : read_input(job.name), job.files(o->allow_outside));
+        inputs.insert(inputs.end(), named.begin(), named.end());
+      } catch (const InputError&) {
+        // The scene's own line says why it cannot be read.
+      }
     }
     refuse_output_over_inputs(o->report, inputs);
-    std::vector<std::string> recordings;
     const AnalysisOptions options;
     std::vector<std::optional<Outcome>> results(jobs.size());
     std::vector<report::ClassEntry> entries;
@@ -253,7 +262,6 @@ Command add_batch_command(CLI::App& app) {
         ready.wait(lock, [&] { return results[i].has_value(); });
         line = std::move(results[i]->line);
         if (!o->report.empty()) entries.push_back(std::move(results[i]->entry));
-        for (auto& r : results[i]->recordings) recordings.push_back(std::move(r));
       }
       failed += !line.ok;
       if (o->format == "table") {
@@ -276,10 +284,7 @@ Command add_batch_command(CLI::App& app) {
     std::cout << (o->format == "csv"     ? batch_class_csv(summary)
                   : o->format == "table" ? batch_class_table(summary)
                                          : batch_class_json(summary) + "\n");
-    if (!o->report.empty()) {
-      refuse_output_over_inputs(o->report, recordings);
-      write_output(o->report, report::class_report_html(entries));
-    }
+    if (!o->report.empty()) write_output(o->report, report::class_report_html(entries));
     return failed ? 1 : 0;
   }};
 }

@@ -106,26 +106,28 @@ Command add_report_command(CLI::App& app) {
       write_output(o->output, svg ? report::recording_plot_svg(r, o->plot) : report::recording_report_html(r));
       return 0;
     }
-    const ParsedScene scene = parse_scene(read_input(o->file), scene_files(o->file, o->allow_outside));
-    std::vector<std::string> recordings;
-    for (const auto& r : scene.recordings) recordings.push_back(r.summary.file);
-    refuse_output_over_inputs(o->output, recordings);
+    const std::string text = read_input(o->file);
+    const SceneFiles files = scene_files(o->file, o->allow_outside);
+    refuse_output_over_inputs(o->output, scene_file_names(text, files));  // before any is read
+    const ParsedScene scene = parse_scene(text, files);
     const Analysis analysis = analyse(scene, o->analysis);
     // The recordings the scene names, read again for their signal plots
     // (once each: the report draws a recording named twice once).
+    RecordingLimits limits;
+    limits.within = o->allow_outside ? std::nullopt : files.directory;
     std::vector<Recording> samples;
     for (std::size_t i = 0; i < scene.recordings.size(); ++i) {
       const RecordingSummary& s = scene.recordings[i].summary;
       const bool named_before = std::any_of(scene.recordings.begin(), scene.recordings.begin() + i, [&](const auto& o) {
         return o.summary.file == s.file && o.summary.set == s.set;
       });
-      samples.push_back(named_before ? Recording{} : read_recording(s.file, s.format, {}, s.set, s.column_spec));
+      samples.push_back(named_before ? Recording{} : read_recording(s.file, s.format, limits, s.set, s.column_spec));
     }
     const report::SceneReport r = report::make_scene_report(o->file, scene, analysis, samples);
-    const std::string text = svg ? report::plot_svg(r, o->plot) : report::scene_report_html(r);
+    const std::string page = svg ? report::plot_svg(r, o->plot) : report::scene_report_html(r);
     print_warnings(scene.warnings);
     print_warnings(analysis.warnings);
-    write_output(o->output, text);
+    write_output(o->output, page);
     return 0;
   }};
 }

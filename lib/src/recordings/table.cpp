@@ -671,7 +671,9 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
         fail(file, o.first_line, 1,
              "one row at " + std::string(setting_key(out.setting)) + " " + format_number(o.setting, 6) + " " + su.unit +
                  ", no uncertainty column and no repeats elsewhere in the table to take a scatter from; expected an "
-                 "uncertainty column (\"sigma_T (s)\"), or the setting timed more than once (docs/series.md, Repeats)");
+                 "uncertainty column (\"sigma_T (s)\", each timing's), or the setting timed more than once "
+                 "(docs/series.md, Repeats); the scatter about the fit is not taken instead: it would make chi2/dof "
+                 "1 by construction, and the fit could no longer say when the data disagree with their uncertainties");
       }
     }
   }

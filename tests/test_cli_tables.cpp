@@ -21,6 +21,14 @@ const std::string kData = PENDULUM_DATA_DIR;
 const std::string kTests = PENDULUM_TESTS_DIR;
 
 double g_of(const Run& r) { return json::parse(r.out).at("g").at("value").get<double>(); }
+
+/// A command that must succeed.
+Run succeeded(const std::string& command) {
+  const Run r = run(command);
+  INFO(command << ": " << r.err);
+  REQUIRE(r.status == 0);
+  return r;
+}
 }  // namespace
 
 TEST_CASE("import TABLE prints a scene that reduces to the scene naming the table", "[cli][tables]") {
@@ -87,10 +95,7 @@ TEST_CASE("a scene's table is confined to its folder like a recording", "[cli][t
 
 TEST_CASE("import --format table shows a table's columns and each observation the scene gets", "[cli][tables]") {
   const std::string file = kData + "/pendulum_lengths_table.csv";
-  const Run text = run("import --format table " + file);
-  const Run scene = run("import " + file);
-  REQUIRE(text.status == 0);
-  REQUIRE(scene.status == 0);
+  const Run text = succeeded("import --format table " + file), scene = succeeded("import " + file);
   CHECK_THAT(text.out, Contains("column 1               length (cm) \"L (cm)\", by the header"));
   CHECK_THAT(text.out, Contains("(39 rows, 10 observations)"));
   // One line per observation of the scene: its length, rows and mean time.
@@ -133,10 +138,7 @@ TEST_CASE("The two tables in data/ are tests/tools/make_tables.py's output", "[c
 
 TEST_CASE("The pivot scan's HTML report gives the textbook g with its uncertainty, as the JSON does", "[cli][tables]") {
   const std::string scene = kData + "/pivot_scan_table_scene.json";
-  const Run result = run("reduce " + scene);
-  const Run page = run("report " + scene);
-  REQUIRE(result.status == 0);
-  REQUIRE(page.status == 0);
+  const Run result = succeeded("reduce " + scene), page = succeeded("report " + scene);
   const json g = json::parse(result.out).at("fit").at("pivot_scan").at("textbook").at("g");
   const std::string head = "g of the textbook curve (no corrections)</th><td>";
   const auto at = page.out.find(head);

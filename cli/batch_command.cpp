@@ -157,9 +157,17 @@ Command add_batch_command(CLI::App& app) {
     inputs.clear();
     for (const auto& job : jobs) {
       if (!job.text) inputs.push_back(job.name);
+      // The recordings and tables it names too, before any is read.
+      if (o->report.empty()) continue;
+      try {
+        const std::vector<std::string> named =
+            scene_file_names(job.text ? *job.text : read_input(job.name), job.files(o->allow_outside));
+        inputs.insert(inputs.end(), named.begin(), named.end());
+      } catch (const InputError&) {
+        // The scene's own line says why it cannot be read.
+      }
     }
     refuse_output_over_inputs(o->report, inputs);
-    std::vector<std::string> recordings;
     const AnalysisOptions options;
     std::vector<std::optional<BatchOutcome>> results(jobs.size());
     std::vector<report::ClassEntry> entries;
@@ -194,7 +202,6 @@ Command add_batch_command(CLI::App& app) {
         ready.wait(lock, [&] { return results[i].has_value(); });
         line = std::move(results[i]->line);
         if (!o->report.empty()) entries.push_back(std::move(results[i]->entry));
-        for (auto& r : results[i]->recordings) recordings.push_back(std::move(r));
       }
       failed += !line.ok;
       if (o->format == "table") {
@@ -217,10 +224,7 @@ Command add_batch_command(CLI::App& app) {
     std::cout << (o->format == "csv"     ? batch_class_csv(summary)
                   : o->format == "table" ? batch_class_table(summary)
                                          : batch_class_json(summary) + "\n");
-    if (!o->report.empty()) {
-      refuse_output_over_inputs(o->report, recordings);
-      write_output(o->report, report::class_report_html(entries));
-    }
+    if (!o->report.empty()) write_output(o->report, report::class_report_html(entries));
     return failed ? 1 : 0;
   }};
 }

@@ -22,6 +22,53 @@ namespace {
 
 constexpr double kDeg = 180.0 / kPi;
 
+/// One line per column of a recording or a table: its role, unit, header
+/// name and how that was decided.
+void put_columns(std::ostream& o, const std::vector<RecordingColumn>& columns) {
+  for (const RecordingColumn& c : columns) {
+    const std::string name = c.name.empty() ? "" : " \"" + c.name + "\"";
+    const std::string unit = c.unit.empty() ? "" : " (" + c.unit + ")";
+    const std::string label = "column " + std::to_string(c.index);
+    o << label << std::string(23 - std::min<std::size_t>(22, label.size()), ' ') << c.role << unit << name
+      << ", by the " << c.decided_by << (c.why.empty() ? "" : ": " + c.why) << "\n";
+  }
+}
+
+/// `import --format table` of a table of settings: its columns, what was
+/// decided, and each observation the scene gets (its rows' mean).
+std::string settings_table_text(const SettingsTable& t, const std::string& name) {
+  std::ostringstream o;
+  char line[200];
+  auto put = [&](const char* fmt, auto... args) {
+    std::snprintf(line, sizeof line, fmt, args...);
+    o << line;
+  };
+  put("%-22s %s (%zu rows, %zu observations)\n", "table", name.c_str(), t.rows, t.observations.size());
+  put_columns(o, t.columns);
+  for (const auto* list : {&t.notes, &t.warnings}) {
+    for (const RecordingNote& n : *list) {
+      put("%-22s ", list == &t.warnings ? "warning" : n.line ? ("line " + std::to_string(n.line)).c_str() : "note");
+      o << n.text << "\n";
+    }
+  }
+  if (t.pooled_sigma) {
+    put("%-22s %.3g %s for one time of %d oscillations (%zu degrees of freedom)\n", "repeats' scatter",
+        *t.pooled_sigma, t.time_unit.c_str(), t.oscillations, t.pooled_dof);
+  }
+  const std::string setting = std::string(setting_key(t.setting)) + " (" + t.setting_unit + ")";
+  const std::string time = "mean of " + std::to_string(t.oscillations) + " T (" + t.time_unit + ")";
+  put("\n%-22s %5s %-18s %-18s %s\n", setting.c_str(), "rows", time.c_str(), ("sigma of one (" + t.time_unit + ")").c_str(),
+      "lines");
+  for (const TableObservation& b : t.observations) {
+    double mean = 0.0;
+    for (double x : b.times) mean += x / static_cast<double>(b.times.size());
+    char sigma[32] = "its scatter";
+    if (b.time_sigma) std::snprintf(sigma, sizeof sigma, "%.3g", *b.time_sigma);
+    put("%-22.6g %5zu %-18.7g %-18s %zu-%zu\n", b.setting, b.times.size(), mean, sigma, b.first_line, b.last_line);
+  }
+  return o.str();
+}
+
 std::string summary_table(const RecordingSummary& r) {
   const SwingAnalysis& a = r.swings;
   std::ostringstream o;
@@ -33,12 +80,7 @@ std::string summary_table(const RecordingSummary& r) {
   put("%-22s %s (%zu rows, %zu skipped)\n", "recording", r.file.c_str(), r.rows, r.dropped);
   put("%-22s %s\n", "format", recording_format_name(r.format));
   if (!r.set.empty()) put("%-22s %s\n", "set", r.set.c_str());
-  for (const RecordingColumn& c : r.columns) {
-    const std::string name = c.name.empty() ? "" : " \"" + c.name + "\"";
-    const std::string unit = c.unit.empty() ? "" : " (" + c.unit + ")";
-    put("%-22s ", ("column " + std::to_string(c.index)).c_str());
-    o << c.role << unit << name << ", by the " << c.decided_by << (c.why.empty() ? "" : ": " + c.why) << "\n";
-  }
+  put_columns(o, r.columns);
   for (const RecordingNote& n : r.notes) {
     put("%-22s ", n.line ? ("line " + std::to_string(n.line)).c_str() : "note");
     o << n.text << "\n";
@@ -184,7 +226,7 @@ Command add_import_command(CLI::App& app) {
       const SettingsTable t = read_settings_table(o->file, options);
       const std::string name = printable_name(o->file);
       for (const RecordingNote& w : t.warnings) std::cerr << "warning: " << name << ": " << w.text << "\n";
-      std::cout << table_scene(t, name);
+      std::cout << (table ? settings_table_text(t, name) : table_scene(t, name));
       return 0;
     }
     const RecordingSummary summary = analyse_recording(

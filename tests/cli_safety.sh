@@ -52,6 +52,16 @@ output_over_input)
   mkdir rclass && cp rec.tsv rclass/rec.tsv && cp scene.json rclass/scene.json
   expect 2 "the output rclass/rec.tsv is the input rclass/rec.tsv" "$G" batch rclass --report rclass/rec.tsv
   cmp -s rclass/rec.tsv rec.before || fail "batch --report over a recording changed it"
+  [ ! -s out ] || fail "batch reduced scenes before refusing a report over a recording: $(cat out)"
+  # A scene's table of settings, found before anything is read.
+  cp "$DATA/pendulum_lengths_table.csv" "$DATA/pendulum_lengths_table_scene.json" .
+  cp pendulum_lengths_table.csv table.before
+  expect 2 "the output pendulum_lengths_table.csv is the input pendulum_lengths_table.csv" \
+    "$G" report pendulum_lengths_table_scene.json -o pendulum_lengths_table.csv
+  expect 2 "the output pendulum_lengths_table.csv is the input pendulum_lengths_table.csv" \
+    "$G" batch pendulum_lengths_table_scene.json --report pendulum_lengths_table.csv
+  [ ! -s out ] || fail "batch reduced the table's scene before refusing its report: $(cat out)"
+  cmp -s pendulum_lengths_table.csv table.before || fail "a report over a scene's table changed it"
   echo class/a.json > list.txt
   expect 2 "the output list.txt is the input list.txt" "$G" batch --list list.txt --report list.txt
   ;;
@@ -198,6 +208,14 @@ line.json"
   expect 1 'unrecognised header "Time (s)", "'"$(printf '\303\277\303\276')"' \\x1b\[2J '"$(printf '\303\216\302\270')"' (rad)"' "$G" import bad.csv
   printf 'Time (s),\033[2J \316\270 (rad)\n1,2\n2,3\n3,4\n' > bad.csv
   expect 1 'unrecognised header "Time (s)", "\\x1b\[2J '"$(printf '\316\270')"' (rad)"' "$G" import bad.csv
+  # A header cell of 5000 bytes is quoted cut, each cell on its own (40 bytes).
+  { printf 'Time (s),'; head -c 5000 /dev/zero | tr '\0' x; printf ' (rad),%s\n1,2,3\n2,3,4\n3,4,5\n' "$(printf '\033')w"; } > long.csv
+  expect 1 'unrecognised header "Time (s)", "x\{37\}\.\.\.", "\\x1bw"; expected' "$G" import long.csv
+  [ "$(wc -c < err)" -lt 1000 ] || fail "a long header made a message of $(wc -c < err) bytes"
+  # An infinite cell: named where it is, not an "excursion is inf" later.
+  printf 'time,angle\n0,0.1\n0.1,inf\n0.2,0.1\n' > inf.csv
+  expect 1 'inf.csv:3:5: got "inf" in column "angle"; expected a finite number' "$G" import inf.csv
+  grep -q 'nan' err && fail "the infinite cell's message says nan: $(cat err)"
   ;;
 *)
   fail "no case $CASE"

@@ -2,8 +2,12 @@
 // "Tables"; docs/physical.md, "A pivot scan typed as a table").
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -17,6 +21,14 @@ const std::string kData = PENDULUM_DATA_DIR;
 const std::string kTests = PENDULUM_TESTS_DIR;
 
 double g_of(const Run& r) { return json::parse(r.out).at("g").at("value").get<double>(); }
+
+/// A command that must succeed.
+Run succeeded(const std::string& command) {
+  const Run r = run(command);
+  INFO(command << ": " << r.err);
+  REQUIRE(r.status == 0);
+  return r;
+}
 }  // namespace
 
 TEST_CASE("import TABLE prints a scene that reduces to the scene naming the table", "[cli][tables]") {
@@ -79,4 +91,65 @@ TEST_CASE("a scene's table is confined to its folder like a recording", "[cli][t
   CHECK(declared.status == 0);
   CHECK(g_of(declared) == Approx(g_of(allowed)).epsilon(1e-12));
   fs::remove_all(dir);
+}
+
+TEST_CASE("import --format table shows a table's columns and each observation the scene gets", "[cli][tables]") {
+  const std::string file = kData + "/pendulum_lengths_table.csv";
+  const Run text = succeeded("import --format table " + file), scene = succeeded("import " + file);
+  CHECK_THAT(text.out, Contains("column 1               length (cm) \"L (cm)\", by the header"));
+  CHECK_THAT(text.out, Contains("(39 rows, 10 observations)"));
+  // One line per observation of the scene: its length, rows and mean time.
+  const json observations = json::parse(scene.out).at("observations");
+  REQUIRE(observations.size() == 10);
+  for (const json& o : observations) {
+    const json& trials = o.at("timing").at("trials");
+    double mean = 0.0;
+    for (const json& t : trials) mean += t.get<double>() / static_cast<double>(trials.size());
+    char line[100];
+    std::snprintf(line, sizeof line, "\n%-22.6g %5zu %-18.7g ", o.at("length").at("value").get<double>(),
+                  trials.size(), mean);
+    CHECK_THAT(text.out, Contains(line));
+  }
+  CHECK(text.out.find('{') == std::string::npos);  // no JSON
+}
+
+TEST_CASE("The two tables in data/ are tests/tools/make_tables.py's output", "[cli][tables]") {
+  // The script writes every table of tests/tables/ and data/ from its seeds,
+  // here under a folder of its own.
+  const std::string dir = temporary_file() + ".d";
+  std::filesystem::create_directories(dir);
+  const std::string command = "/usr/bin/python3 " + kTests + "/tools/make_tables.py " + dir + " > /dev/null";
+  REQUIRE(std::system(command.c_str()) == 0);
+  for (const std::string name : {"pendulum_lengths_table.csv", "pivot_scan_table.csv"}) {
+    REQUIRE(std::filesystem::exists(dir + "/data/" + name));
+  }
+  // And every other file it writes (tests/tables/, the bad tables).
+  std::size_t files = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
+    if (!entry.is_regular_file()) continue;
+    const std::string name = std::filesystem::relative(entry.path(), dir).string();
+    INFO(name);
+    CHECK(pendulum::test::read_text(entry.path().string()) == pendulum::test::read_text(kData + "/../" + name));
+    ++files;
+  }
+  CHECK(files == 14);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("The pivot scan's HTML report gives the textbook g with its uncertainty, as the JSON does", "[cli][tables]") {
+  const std::string scene = kData + "/pivot_scan_table_scene.json";
+  const Run result = succeeded("reduce " + scene), page = succeeded("report " + scene);
+  const json g = json::parse(result.out).at("fit").at("pivot_scan").at("textbook").at("g");
+  const std::string head = "g of the textbook curve (no corrections)</th><td>";
+  const auto at = page.out.find(head);
+  REQUIRE(at != std::string::npos);
+  const std::string cell = page.out.substr(at + head.size(), page.out.find("</td>", at) - at - head.size());
+  INFO(cell);
+  const std::string plus_minus = " \u00B1 ";
+  const auto pm = cell.find(plus_minus);
+  REQUIRE(pm != std::string::npos);
+  const double value = std::stod(cell.substr(0, pm)), sigma = std::stod(cell.substr(pm + plus_minus.size()));
+  // Rounded to the uncertainty's first digits (value_with_uncertainty).
+  CHECK(std::abs(value - g.at("value").get<double>()) <= sigma);
+  CHECK(sigma == Approx(g.at("uncertainty").get<double>()).epsilon(0.5));
 }

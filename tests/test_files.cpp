@@ -93,3 +93,32 @@ TEST_CASE("file_id is one file's through every link", "[files]") {
   for (const auto& f : {file, hard, soft}) std::remove(f.c_str());
   CHECK_FALSE(pendulum::file_id(file));
 }
+
+TEST_CASE("A file opened within a folder cannot be led out of it at the open", "[files]") {
+  // What a scene's recording check sees by name can change before the open
+  // (a link swapped in): the open itself must stay beneath the folder.
+  char made[] = "/tmp/pendulum-g-within-XXXXXX";
+  REQUIRE(mkdtemp(made));
+  const std::string folder = made, outside = folder + "-outside.tsv";
+  std::ofstream(outside) << "t\n";
+  std::ofstream(folder + "/inside.tsv") << "t\n";
+  REQUIRE(mkdir((folder + "/sub").c_str(), 0700) == 0);
+  REQUIRE(symlink("../inside.tsv", (folder + "/sub/up.tsv").c_str()) == 0);  // leads up, stays inside
+  REQUIRE(symlink(outside.c_str(), (folder + "/absolute.tsv").c_str()) == 0);
+  REQUIRE(symlink(("../" + outside.substr(outside.rfind('/') + 1)).c_str(), (folder + "/relative.tsv").c_str()) == 0);
+  CHECK(pendulum::InputFile(folder + "/inside.tsv", "a recording file", folder).size() == 2);
+  CHECK(pendulum::InputFile(folder + "/sub/up.tsv", "a recording file", folder).size() == 2);
+  for (const char* link : {"/absolute.tsv", "/relative.tsv"}) {
+    CHECK_THROWS_WITH(pendulum::InputFile(folder + link, "a recording file", folder),
+                      folder + link + ": a symbolic link (or a name) leads out of the folder " + folder +
+                          "; expected a file in it or below: a scene's files are read from elsewhere only with "
+                          "--allow-outside");
+    CHECK(pendulum::InputFile(folder + link, "a recording file").size() == 2);  // unconfined, it opens
+  }
+  CHECK_THROWS_WITH(pendulum::InputFile(folder + "/../x.tsv", "a recording file", folder),
+                    Contains("leads out of the folder"));
+  for (const char* name : {"/sub/up.tsv", "/absolute.tsv", "/relative.tsv", "/inside.tsv"}) std::remove((folder + name).c_str());
+  rmdir((folder + "/sub").c_str());
+  rmdir(folder.c_str());
+  std::remove(outside.c_str());
+}

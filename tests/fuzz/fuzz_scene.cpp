@@ -1,6 +1,9 @@
 // libFuzzer target: any bytes through the scene parser and the whole
 // reduction, with each amplitude method, as `pendulum-g reduce` runs them,
 // and through the clock scene's parser and model, as `pendulum-g clock`.
+// A scene may name the recordings of tests/fuzz/recording_seeds/ (its seeds
+// there name the θ columns without unit, in degrees and in radians, so the
+// reduction meets the unit decision), and nothing else.
 // Bad input must end in an InputError whose message is one printable line;
 // a scene that passes must give finite numbers everywhere and a positive g.
 // Anything else (another exception, a sanitizer report, a failed check
@@ -28,6 +31,15 @@ namespace {
 
 using pendulum::fuzz::require;
 using pendulum::fuzz::require_clear_message;
+
+/// The folder a scene's recordings are read from, confined to it as the CLI
+/// confines a scene's, so that no mutated name opens a FIFO, /dev/zero or a
+/// 1 GiB log.
+pendulum::SceneFiles recording_seeds() {
+  pendulum::SceneFiles files;
+  files.directory = PENDULUM_FUZZ_RECORDINGS;
+  return files;
+}
 
 void require_finite(const nlohmann::ordered_json& j, const std::string& path) {
   if (j.is_structured()) {
@@ -68,7 +80,7 @@ extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t s
       return false;
     }
   };
-  const auto scene_parser = [](const std::string& t) { return pendulum::parse_scene(t); };  // no SceneFiles
+  const auto scene_parser = [](const std::string& t) { return pendulum::parse_scene(t, recording_seeds()); };
   if (!valid(scene_parser) && !valid(pendulum::parse_clock_scene)) {
     return LLVMFuzzerMutate(data, size, max_size);
   }
@@ -119,10 +131,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // Bad input may be found while reading or, for inputs whose uncertainties
   // overflow g's, while propagating them: both as the CLI reports them.
   try {
-    // No SceneFiles: a scene naming a recording is refused (InputError), so no
-    // mutated name makes the target open a file (a FIFO, /dev/zero, a 1 GiB
-    // log); the recording reader has its own seeded mutations (docs/recordings.md).
-    const pendulum::ParsedScene scene = pendulum::parse_scene(text);
+    const pendulum::ParsedScene scene = pendulum::parse_scene(text, recording_seeds());
     using pendulum::AmplitudeMethod;
     for (const auto method : {AmplitudeMethod::agm, AmplitudeMethod::series, AmplitudeMethod::small_angle}) {
       pendulum::AnalysisOptions options;  // --amplitude-method

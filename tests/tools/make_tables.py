@@ -2,7 +2,9 @@
 """Tables of settings and periods for tests/tables/ and data/ (docs/series.md, "Tables").
 
 Seeded (numpy's default_rng), so that running it again writes the same files:
-    /usr/bin/python3 tests/tools/make_tables.py
+    /usr/bin/python3 tests/tools/make_tables.py [FOLDER]
+into the repository, or under FOLDER (data/, tests/tables/, tests/bad_recordings/ made there), as the
+test that the repository's tables are its output does.
 Each table is drawn from the model it is read with: a point bob, T = 2 pi sqrt(L/g) (1 + theta0^2/16)
 for a length, T = 2 pi sqrt((k^2 + h^2)/(g h)) (1 + theta0^2/16) for a rigid body (Kelley 1993,
 Eqs. 55-56, to the first amplitude term), g = 9.81 m/s^2, each timing's amplitude drawn uniform over
@@ -11,6 +13,7 @@ each time read off a stopwatch and rounded to 0.01 s; lengths read off a tape to
 """
 import math
 import os
+import sys
 
 import numpy as np
 
@@ -47,7 +50,9 @@ def scan_table(seed, h_cm, k=1 / math.sqrt(12), oscillations=10):
 
 
 def write(path, text, encoding="utf-8"):
-    with open(os.path.join(ROOT, path), "w", encoding=encoding, newline="") as f:
+    out = os.path.join(sys.argv[1] if len(sys.argv) > 1 else ROOT, path)
+    os.makedirs(os.path.dirname(out), exist_ok=True)
+    with open(out, "w", encoding=encoding, newline="") as f:
         f.write(text)
 
 
@@ -83,6 +88,8 @@ def main():
           "L (cm),t10 (s)\n55,14.91\n75,17.38\n55,14.88\n95,19.55\n")
     write("tests/bad_recordings/table_amplitude_unit_open.csv",
           "L (cm),t10 (s),theta\n55,14.91,0.5\n75,17.38,0.6\n95,19.55,0.9\n")
+    write("tests/bad_recordings/table_single_timings_no_sigma.csv",
+          "L (cm),T (s)\n40,1.270\n60,1.555\n80,1.795\n100,2.006\n120,2.198\n")
 
 
 if __name__ == "__main__":

@@ -11,6 +11,7 @@
 #include "pendulum/analysis.hpp"
 #include "pendulum/output.hpp"
 #include "pendulum/report/html_report.hpp"
+#include "pendulum/scene_json.hpp"
 
 namespace pendulum {
 
@@ -21,6 +22,9 @@ struct BatchScene {
   /// `name` as printed (printable_name(): escaped, and distinct for
   /// distinct names).
   std::string shown() const;
+  /// Where the files the scene names are looked for: the file's folder, the
+  /// working folder for standard input.
+  SceneFiles files(bool allow_outside) const;
 };
 
 /// An entry of a folder that is no scene, and why (a subfolder, a file not
@@ -34,14 +38,12 @@ struct SkippedEntry {
 /// name, each named folder/file; the other entries into `skipped`, sorted.
 std::vector<std::string> folder_scenes(const std::string& folder, std::vector<SkippedEntry>& skipped);
 
-/// One scene's summary line, the recordings it read and, when `with_report`,
-/// its report; an error (InputError, or any other as "internal error: ...")
+/// One scene's summary line and, when `with_report`, its report; an error (InputError, or any other as "internal error: ...")
 /// becomes the failure's line. Never throws. A scene of standard input
 /// looks for its recordings in the current folder.
 struct BatchOutcome {
   BatchLine line;
   report::ClassEntry entry;
-  std::vector<std::string> recordings;
 };
 BatchOutcome reduce_batch_scene(const BatchScene& scene, const AnalysisOptions& options, bool with_report,
                                 bool allow_outside);

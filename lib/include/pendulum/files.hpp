@@ -31,8 +31,13 @@ class InputFile {
   /// Throws InputError(path, "cannot open the file: <reason>"), or (path,
   /// "a directory; expected <expected>"), (path, "not a regular file (a
   /// named pipe ...); expected <expected>") for a pipe, device or socket.
-  /// `path` in the errors as printable_name() writes it.
-  InputFile(const std::string& path, const std::string& expected);
+  /// `path` in the errors as printable_name() writes it. With `within` (a
+  /// folder), `path` must name a file in it or below, and the open itself
+  /// stays beneath it (openat2's RESOLVE_BENEATH: no "..", no absolute
+  /// name, no symbolic link leading out, at the moment of opening), so that
+  /// a link swapped in after a scene's names were checked cannot lead the
+  /// read elsewhere; InputError(path, "a symbolic link leads out of ...") then.
+  InputFile(const std::string& path, const std::string& expected, const std::optional<std::string>& within = {});
   ~InputFile();
   InputFile(const InputFile&) = delete;
   InputFile& operator=(const InputFile&) = delete;
@@ -56,7 +61,9 @@ class InputFile {
 /// `max_bytes`: more is refused as soon as it is read, with the same
 /// message whatever is read (too_large()). Throws InputError naming `path`
 /// ("stdin" for "-") and the read's error; `expected` as for InputFile.
-std::string read_text(const std::string& path, std::size_t max_bytes, const std::string& expected);
+/// `within` as for InputFile.
+std::string read_text(const std::string& path, std::size_t max_bytes, const std::string& expected,
+                      const std::optional<std::string>& within = {});
 
 /// The message of a read past `max_bytes`: "got more than N bytes; expected
 /// at most M MiB (...)".

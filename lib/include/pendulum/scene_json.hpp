@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "pendulum/input_error.hpp"
 #include "pendulum/parsed_scene.hpp"
@@ -35,6 +36,12 @@ struct SceneFiles {
 /// The directory of the scene file at `path`: "." for "-" (standard input)
 /// and for a bare file name.
 std::string scene_directory(const std::string& path);
+
+/// The files the scene text names (its recordings and its table of
+/// settings), as parse_scene() would open them, without opening any: so that
+/// an output over one of them is refused before anything is read. None when
+/// the text is no JSON or `files` has no directory (parse_scene says why).
+std::vector<std::string> scene_file_names(const std::string& text, const SceneFiles& files);
 
 /// Parses and validates scene JSON text. Throws InputError.
 ParsedScene parse_scene(const std::string& text, const SceneFiles& files = {});

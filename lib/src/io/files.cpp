@@ -1,12 +1,15 @@
 #include "pendulum/files.hpp"
 
 #include <fcntl.h>
+#include <linux/openat2.h>
 #include <poll.h>
+#include <sys/syscall.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 
 #include "pendulum/input_error.hpp"
 #include "../text.hpp"
@@ -25,6 +28,36 @@ std::string kind_of(mode_t mode) {
   return "not a regular file (a device)";
 }
 
+constexpr int kReadFlags = O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY;
+
+/// `path` opened beneath the folder `within` (see InputFile); -1 with errno
+/// EXDEV when it leads out. Where openat2 is missing (Linux before 5.6), the
+/// file is opened and what was opened is checked: its resolved name, from
+/// /proc/self/fd, must lie in the folder's.
+int open_beneath(const std::string& path, const std::string& within) {
+  namespace fs = std::filesystem;
+  const fs::path inside = fs::path(path).lexically_normal().lexically_relative(fs::path(within).lexically_normal());
+  if (inside.empty() || *inside.begin() == "..") return errno = EXDEV, -1;
+  const int folder = ::open(within.c_str(), O_PATH | O_DIRECTORY | O_CLOEXEC);
+  if (folder < 0) return -1;
+  open_how how{};
+  how.flags = kReadFlags;
+  how.resolve = RESOLVE_BENEATH;
+  int fd = static_cast<int>(::syscall(SYS_openat2, folder, inside.c_str(), &how, sizeof how));
+  if (fd < 0 && errno == ENOSYS) {
+    fd = ::openat(folder, inside.c_str(), kReadFlags);
+    std::error_code ec;
+    const fs::path root = fs::canonical("/proc/self/fd/" + std::to_string(folder), ec);
+    const fs::path opened = fs::canonical("/proc/self/fd/" + std::to_string(fd), ec);
+    const fs::path below = opened.lexically_relative(root);
+    if (fd >= 0 && (ec || below.empty() || *below.begin() == "..")) ::close(fd), fd = -1, errno = EXDEV;
+  }
+  const int error = errno;
+  ::close(folder);
+  errno = error;
+  return fd;
+}
+
 }  // namespace
 
 std::optional<FileId> file_id(const std::string& path) {
@@ -33,14 +66,20 @@ std::optional<FileId> file_id(const std::string& path) {
   return FileId{st.st_dev, st.st_ino};
 }
 
-InputFile::InputFile(const std::string& path, const std::string& expected) : path_(printable_name(path)) {
+InputFile::InputFile(const std::string& path, const std::string& expected, const std::optional<std::string>& within)
+    : path_(printable_name(path)) {
   // A device is refused before it is opened (opening some has effects),
   // and what is opened is checked again.
   struct stat st;
   if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
     throw InputError(path_, kind_of(st.st_mode) + "; expected " + expected);
   }
-  fd_ = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+  fd_ = within ? open_beneath(path, *within) : ::open(path.c_str(), kReadFlags);
+  if (fd_ < 0 && within && errno == EXDEV) {
+    throw InputError(path_, "a symbolic link (or a name) leads out of the folder " + printable_name(*within) +
+                                "; expected a file in it or below: a scene's files are read from elsewhere only "
+                                "with --allow-outside");
+  }
   if (fd_ < 0) throw InputError(path_, "cannot open the file: " + reason(errno));
   if (::fstat(fd_, &st) != 0) {
     const int error = errno;
@@ -69,9 +108,10 @@ std::string too_large(std::size_t max_bytes) {
          std::to_string(max_bytes >> 20) + " MiB (the limit of a scene file, a list and standard input)";
 }
 
-std::string read_text(const std::string& path, std::size_t max_bytes, const std::string& expected) {
+std::string read_text(const std::string& path, std::size_t max_bytes, const std::string& expected,
+                      const std::optional<std::string>& within) {
   std::optional<InputFile> file;
-  if (path != "-") file.emplace(path, expected);
+  if (path != "-") file.emplace(path, expected, within);
   const int fd = file ? file->fd() : STDIN_FILENO;
   const std::string name = file ? file->path() : "stdin";
   // One byte past the limit tells a file at the limit from a larger one.

@@ -47,14 +47,17 @@ const char* leads_out(const std::string& directory, const std::string& name, con
 
 }  // namespace
 
+std::string scene_file(const std::string& directory, const std::string& name) {
+  return (std::filesystem::path(directory) / name).lexically_normal().string();
+}
+
 std::string RecordingReader::resolve(Object& o, const std::string& key, const char* what) const {
   const std::string name = o.text(key);
   PENDULUM_FAIL_IF(!files_.directory, o.path(key),
                    "got " + shown(o.at(key)) +
                        "; expected numbers: this scene was read as text, not from a file or standard input, "
                        "so no file it names is opened");
-  // Relative to the scene's directory; an absolute name stays as it is.
-  const std::string file = (std::filesystem::path(*files_.directory) / name).lexically_normal().string();
+  const std::string file = scene_file(*files_.directory, name);
   if (!files_.allow_outside) {
     const char* why = leads_out(*files_.directory, name, file);
     PENDULUM_FAIL_IF(why, o.path(key),
@@ -99,9 +102,11 @@ std::size_t RecordingReader::read(Object& o, ParsedScene& out) {
   };
   auto it = std::find_if(done_.begin(), done_.end(), same);
   if (it == done_.end()) {
+    RecordingLimits limits;
+    limits.within = within();
     try {
       done_.push_back({file, recording_format_name(format), set, options.bob_width, options.range,
-                       analyse_recording(file, format, options, {}, set, columns)});
+                       analyse_recording(file, format, options, limits, set, columns)});
     } catch (const InputError& e) {
       throw InputError(at, e.what());  // "file: message" or "file:line:column: message"
     }

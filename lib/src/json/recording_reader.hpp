@@ -17,6 +17,10 @@ namespace pendulum::json_reader {
 /// An object with the key "recording": a reference to a recording file.
 inline bool names_recording(const json& j) { return j.is_object() && j.contains("recording"); }
 
+/// The file a scene in `directory` names `name`: relative to the folder, an
+/// absolute name as it is.
+std::string scene_file(const std::string& directory, const std::string& name);
+
 /// Reads the recordings a scene names, each file (with its options) once.
 class RecordingReader {
  public:
@@ -32,6 +36,12 @@ class RecordingReader {
   /// and confined to it unless --allow-outside (docs/robustness.md):
   /// InputError at `o.key` otherwise, or when the scene was read as text.
   std::string resolve(Object& o, const std::string& key, const char* what) const;
+
+  /// The folder a resolved file is opened beneath (InputFile): the scene's,
+  /// none with --allow-outside.
+  std::optional<std::string> within() const {
+    return files_.allow_outside ? std::nullopt : files_.directory;
+  }
 
  private:
   SceneFiles files_;

@@ -381,6 +381,32 @@ std::string scene_directory(const std::string& path) {
   return parent.empty() ? "." : parent.string();
 }
 
+std::vector<std::string> scene_file_names(const std::string& text, const SceneFiles& files) {
+  std::vector<std::string> out;
+  json doc;
+  try {
+    doc = parse_json(text, kMaxSceneBytes);  // nested at most 10 deep: the walk below is bounded
+  } catch (const InputError&) {
+    return out;
+  }
+  if (!files.directory) return out;
+  const auto add = [&](const json& o, const char* key) {
+    if (o.is_object() && o.contains(key) && o.at(key).is_string()) {
+      out.push_back(scene_file(*files.directory, o.at(key).get<std::string>()));
+    }
+  };
+  // A recording may be named in a timing, a decay's data or a series' observation.
+  const auto walk = [&](const json& j, const auto& self) -> void {
+    add(j, "recording");
+    if (j.is_structured()) {
+      for (const auto& item : j) self(item, self);
+    }
+  };
+  walk(doc, walk);
+  if (doc.is_object() && doc.contains("observations")) add(doc.at("observations"), "table");
+  return out;
+}
+
 ParsedScene parse_scene(const std::string& text, const SceneFiles& files) {
   const json doc = parse_json(text, kMaxSceneBytes);
   RecordingReader recordings(files);

@@ -114,7 +114,7 @@ json read_table_reference(Object& top, ParsedScene& out, const RecordingReader& 
   const std::string file = recordings.resolve(t, "table", "tables");
   SettingsTable table;
   try {
-    table = read_settings_table(file, options);
+    table = read_settings_table(file, options, kMaxTableBytes, recordings.within());
   } catch (const InputError& e) {
     throw InputError(t.path("table"), e.what());  // "file: message" or "file:line:column: message"
   }

@@ -381,8 +381,7 @@ std::vector<Layout> other_signals(const Layout& chosen, std::vector<Column> cols
 std::string quoted_names(const std::vector<Column>& cols) {
   std::string names;
   for (std::size_t j = 0; j < cols.size(); ++j) {
-    const std::string name = cols[j].name.empty() ? "column " + std::to_string(j + 1) : one_line(cols[j].name, 40, true);
-    if (names.size() < 300) names += (names.empty() ? "\"" : ", \"") + name + "\"";
+    if (names.size() < 300) names += (names.empty() ? "\"" : ", \"") + column_label(cols[j].name, j + 1) + "\"";
   }
   return names;
 }
@@ -596,9 +595,10 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
         if (unnamed || (tracked(c.role) && c.track > 0 && twice != cols.begin() + j)) {
           fail(file, header_line - 1, 1,
                "the track names are out of line with the columns: column " + std::to_string(j + 1) + " (\"" +
-                   c.name + "\") " +
+                   column_label(c.name, j + 1) + "\") " +
                    (unnamed ? std::string("comes before the first name")
-                            : "is track \"" + tracks[c.track - 1] + "\"'s second \"" + c.name + "\"") +
+                            : "is track \"" + column_label(tracks[c.track - 1], c.track) + "\"'s second \"" +
+                                  column_label(c.name, j + 1) + "\"") +
                    "; expected each track's name above its first column (Tracker's #multi: export)");
         }
       }
@@ -607,10 +607,8 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
     cols.resize(cells(first_data).size());
     for (std::size_t j = 0; j < cols.size(); ++j) cols[j].decided = "content";
   }
-  std::vector<std::string> names(cols.size());
-  for (std::size_t j = 0; j < cols.size(); ++j) {
-    names[j] = cols[j].name.empty() ? "column " + std::to_string(j + 1) : cols[j].name;
-  }
+  std::vector<std::string> names(cols.size());  // as messages quote them
+  for (std::size_t j = 0; j < cols.size(); ++j) names[j] = column_label(cols[j].name, j + 1);
   // What the option declares replaces what the header says, column by column.
   const bool declared = !column_spec.empty();
   if (declared) {
@@ -635,7 +633,7 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
   int track = -1;
   if (!tracks.empty()) {
     std::string listed;
-    for (const auto& t : tracks) listed += (listed.empty() ? "\"" : ", \"") + t + "\"";
+    for (const auto& t : tracks) listed += (listed.empty() ? "\"" : ", \"") + one_line(t, 40, true) + "\"";
     if (set.empty() && tracks.size() > 1) {
       fail(file, header_line, 1, "a Tracker export of " + std::to_string(tracks.size()) + " tracks (" + listed +
                                      "); expected the pendulum's chosen by its name (import --set, a scene's set)");
@@ -643,20 +641,20 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
     const auto is_set = [&](const std::string& t) { return lower(t) == lower(set); };
     const auto named = std::find_if(tracks.begin(), tracks.end(), is_set);
     if (!set.empty() && named == tracks.end()) {
-      fail(file, header_line, 1, "got the set \"" + set + "\"; expected one of this Tracker export's tracks: " + listed);
+      fail(file, header_line, 1, "got the set \"" + one_line(set, 40, true) + "\"; expected one of this Tracker export's tracks: " + listed);
     }
     if (!set.empty() && std::count_if(tracks.begin(), tracks.end(), is_set) > 1) {
-      fail(file, header_line, 1, "got the set \"" + set + "\", the name of more than one track (" + listed +
+      fail(file, header_line, 1, "got the set \"" + one_line(set, 40, true) + "\", the name of more than one track (" + listed +
                                      "); expected a name of one track (rename the others in Tracker)");
     }
     track = set.empty() ? 1 : static_cast<int>(named - tracks.begin()) + 1;
     const bool positions = find(cols, Role::x, -1, track) && find(cols, Role::y, -1, track);
     if (!find(cols, Role::angle, -1, track) && !find(cols, Role::omega, -1, track) && !positions) {
       std::string own;
-      for (const auto& c : cols) {
-        if (c.track == track) own += (own.empty() ? "\"" : ", \"") + c.name + "\"";
+      for (std::size_t j = 0; j < cols.size(); ++j) {
+        if (cols[j].track == track) own += (own.empty() ? "\"" : ", \"") + column_label(cols[j].name, j + 1) + "\"";
       }
-      fail(file, header_line, 1, "the track \"" + tracks[track - 1] + "\" has the columns " + own +
+      fail(file, header_line, 1, "the track \"" + one_line(tracks[track - 1], 40, true) + "\" has the columns " + own +
                                      "; expected its angle (θ), angular velocity (ω) or x and y");
     }
   }
@@ -669,7 +667,7 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
                         digits < 8 && name.size() - digits < 6;
     const std::string prefix = number ? std::string(trim(name.substr(0, digits))) : std::string();
     if (!number || !(prefix.empty() || prefix == "run #" || prefix == "run")) {
-      fail(file, header_line, 1, "got the set \"" + set + "\"; expected a PASCO run (\"Run #2\") or the name of a track in a Tracker "
+      fail(file, header_line, 1, "got the set \"" + one_line(set, 40, true) + "\"; expected a PASCO run (\"Run #2\") or the name of a track in a Tracker "
                                      "export of several (\"#multi:\")");
     }
     run = std::atoi(name.c_str() + digits);
@@ -700,7 +698,7 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
   const Layout layout = detect(format, cols, preamble, headerless, file, header_line, run, track, &content);
   const bool holds_sets = layout.format == RecordingFormat::pasco || (layout.format == RecordingFormat::tracker && !tracks.empty());
   if (!set.empty() && !holds_sets) {
-    fail(file, header_line, 1, "got the set \"" + set + "\", but this " + recording_format_name(layout.format) +
+    fail(file, header_line, 1, "got the set \"" + one_line(set, 40, true) + "\", but this " + recording_format_name(layout.format) +
                                    " export holds a single set; expected a set in a zip archive, a PASCO file or a Tracker export of "
                                    "several tracks");
   }
@@ -849,7 +847,7 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
 
 Recording read_recording(const std::string& path, RecordingFormat format, const RecordingLimits& limits,
                          const std::string& set, const std::string& columns) {
-  const InputFile file(path, "a recording file");
+  const InputFile file(path, "a recording file", limits.within);
   if (file.size() > limits.max_bytes) {
     throw InputError(file.path(), "the file has " + std::to_string(file.size()) + " bytes; expected at most " +
                                       std::to_string(limits.max_bytes) + " (RecordingLimits::max_bytes)");

@@ -195,6 +195,12 @@ Table read_rows(const char* p, const char* end, std::size_t line_no, const Diale
             fail(file, line_no, column(q), "a number out of the range of double");
           }
           if (r.ec != std::errc() || r.ptr != stop) bad_cell(r.ec != std::errc() ? s : r.ptr);
+          // No sensor reads infinity: a logger's overflow mark, not a sample.
+          if (std::isinf(v)) {
+            fail(file, line_no, column(q),
+                 "got \"" + std::string(q, std::min<const char*>(stop, q + 40)) + "\" in column \"" + names[j] +
+                     "\"; expected a finite number (an empty cell or NaN marks a missing sample)");
+          }
         } else if (!ends_cell(stop)) {
           bad_cell(stop);
         }

@@ -66,6 +66,10 @@ std::string_view strip_bom(std::string_view text) {
   return text;
 }
 
+std::string column_label(const std::string& name, std::size_t index) {
+  return name.empty() ? "column " + std::to_string(index) : one_line(name, 40, true);
+}
+
 std::string to_utf8(std::string_view cell) {
   if (valid_utf8(cell)) return std::string(cell);
   std::string out;

@@ -30,6 +30,11 @@ namespace pendulum::recording_text {
 /// The text without a UTF-8 byte-order mark.
 std::string_view strip_bom(std::string_view text);
 
+/// A header cell as a message quotes it: control bytes escaped, cut to 40
+/// bytes (a header may be any text: a file named by mistake, a log), or
+/// "column N" (`index` from 1) when it is empty.
+std::string column_label(const std::string& name, std::size_t index);
+
 /// A header cell as UTF-8: as it is when it is valid UTF-8, otherwise read
 /// as Latin-1 (Windows exporters write "°" as 0xB0, "µ" as 0xB5).
 std::string to_utf8(std::string_view cell);

@@ -297,10 +297,8 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   } else {
     cols.resize(split_cells(first_data, dialect).size());
   }
-  std::vector<std::string> names(cols.size());
-  for (std::size_t j = 0; j < cols.size(); ++j) {
-    names[j] = cols[j].name.empty() ? "column " + std::to_string(j + 1) : cols[j].name;
-  }
+  std::vector<std::string> names(cols.size());  // as messages quote them
+  for (std::size_t j = 0; j < cols.size(); ++j) names[j] = column_label(cols[j].name, j + 1);
   Table table = read_rows(p, end, lines.data_line, dialect, names, file);
   while (cols.size() > 1 && std::none_of(table.columns.back().begin(), table.columns.back().end(),
                                          [](double v) { return std::isfinite(v); })) {
@@ -314,6 +312,11 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
                                        "timing: pendulum-g template prints one)");
   }
 
+  auto listed = [&] {
+    std::string all;
+    for (const auto& n : names) all += (all.empty() ? "\"" : ", \"") + n + "\"";
+    return all;
+  };
   // Roles: the option's, else the header's words, else the numbers'.
   std::vector<Use> use(cols.size());
   if (!options.columns.empty()) {
@@ -321,16 +324,12 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     for (const TableColumnChoice& c : options.columns) {
       std::size_t j = c.column;
       if (j == 0) {
-        const auto named = std::find(names.begin(), names.end(), c.name);
-        if (named == names.end()) {
-          refuse("the column \"" + c.name + "\" declared for " + c.role + " is not in the header; expected one of \"" +
-                 [&] {
-                   std::string all;
-                   for (const auto& n : names) all += (all.empty() ? "" : "\", \"") + n;
-                   return all;
-                 }() + "\"");
+        const auto named = std::find_if(cols.begin(), cols.end(), [&](const auto& col) { return col.name == c.name; });
+        if (named == cols.end()) {
+          refuse("the column \"" + one_line(c.name, 40, true) + "\" declared for " + c.role +
+                 " is not in the header; expected one of " + listed());
         }
-        j = static_cast<std::size_t>(named - names.begin()) + 1;
+        j = static_cast<std::size_t>(named - cols.begin()) + 1;
       }
       if (j > cols.size()) {
         refuse("column " + std::to_string(j) + " declared for " + c.role + "; expected at most the table's " +
@@ -412,11 +411,6 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     }
     return std::nullopt;
   };
-  auto listed = [&] {
-    std::string all;
-    for (const auto& n : names) all += (all.empty() ? "\"" : ", \"") + one_line(n, 40, true) + "\"";
-    return all;
-  };
   const auto setting_col = find(Kind::setting, false);
   const auto time_col = find(Kind::time, false);
   if (!setting_col) {
@@ -488,7 +482,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
                                    plausible + " is a pendulum's in that unit only)"});
   }
   const auto time_factor = factor_of(kTimeUnits, tu.unit);
-  if (!time_factor) refuse("got the unit \"" + tu.unit + "\" for \"" + names[*time_col] + "\"; expected " + names_of(kTimeUnits));
+  if (!time_factor) refuse("got the unit \"" + one_line(tu.unit, 20, true) + "\" for \"" + names[*time_col] + "\"; expected " + names_of(kTimeUnits));
   out.time_unit = tu.unit;
   const std::vector<double> periods = scaled(table.columns[*time_col], *time_factor / n_osc);
 
@@ -541,7 +535,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   }
   const auto setting_factor = factor_of(kLengthUnits, su.unit);
   if (!setting_factor) {
-    refuse("got the unit \"" + su.unit + "\" for \"" + names[*setting_col] + "\"; expected " + names_of(kLengthUnits));
+    refuse("got the unit \"" + one_line(su.unit, 20, true) + "\" for \"" + names[*setting_col] + "\"; expected " + names_of(kLengthUnits));
   }
   out.setting_unit = su.unit;
   const std::vector<double> meters = scaled(settings, *setting_factor);
@@ -580,7 +574,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     Use& u = use[*col];
     if (u.unit.empty()) u.unit = of.unit;
     const auto f = factor_of(units, u.unit);
-    if (!f) refuse("got the unit \"" + u.unit + "\" for \"" + names[*col] + "\"; expected " + names_of(units));
+    if (!f) refuse("got the unit \"" + one_line(u.unit, 20, true) + "\" for \"" + names[*col] + "\"; expected " + names_of(units));
     return *f;
   };
   const double setting_u_factor = unit_of(setting_u, su, kLengthUnits) / *setting_factor;
@@ -604,7 +598,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
       out.warnings.push_back({0, "\"" + names[*amplitude_col] + "\": no unit; read as " + au.unit});
     }
     const auto f = factor_of(kAngleUnits, au.unit);
-    if (!f) refuse("got the unit \"" + au.unit + "\" for \"" + names[*amplitude_col] + "\"; expected deg or rad");
+    if (!f) refuse("got the unit \"" + one_line(au.unit, 20, true) + "\" for \"" + names[*amplitude_col] + "\"; expected deg or rad");
     amplitude_factor = *f;
     out.amplitude_unit = au.unit;
     (void)unit_of(amplitude_u, au, kAngleUnits);
@@ -677,7 +671,9 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
         fail(file, o.first_line, 1,
              "one row at " + std::string(setting_key(out.setting)) + " " + format_number(o.setting, 6) + " " + su.unit +
                  ", no uncertainty column and no repeats elsewhere in the table to take a scatter from; expected an "
-                 "uncertainty column (\"sigma_T (s)\"), or the setting timed more than once (docs/series.md, Repeats)");
+                 "uncertainty column (\"sigma_T (s)\", each timing's), or the setting timed more than once "
+                 "(docs/series.md, Repeats); the scatter about the fit is not taken instead: it would make chi2/dof "
+                 "1 by construction, and the fit could no longer say when the data disagree with their uncertainties");
       }
     }
   }
@@ -733,8 +729,9 @@ bool looks_like_settings_table(std::string_view text) {
   }
 }
 
-SettingsTable read_settings_table(const std::string& path, const TableOptions& options, std::size_t max_bytes) {
-  return parse_settings_table(read_text(path, max_bytes, "a table of settings and periods"), path, options);
+SettingsTable read_settings_table(const std::string& path, const TableOptions& options, std::size_t max_bytes,
+                                  const std::optional<std::string>& within) {
+  return parse_settings_table(read_text(path, max_bytes, "a table of settings and periods", within), path, options);
 }
 
 bool file_holds_settings_table(const std::string& path) {

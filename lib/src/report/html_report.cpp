@@ -137,7 +137,8 @@ std::string g_comparison(const SceneReport& r) {
                                 format_fixed(*r.g_uncertainty_unscaled, 5) + " m/s\u00B2");
   }
   if (r.pivot_scan) {
-    row("g of the textbook curve (no corrections)", format_fixed(r.pivot_scan->textbook_g, 5) + " m/s\u00B2");
+    row("g of the textbook curve (no corrections)",
+        rounded_estimate({r.pivot_scan->textbook_g, r.pivot_scan->textbook_g_uncertainty}, 5, "m/s\u00B2"));
   } else {
     row(r.series ? "g of the textbook line (no corrections)" : "g uncorrected (Eq. 5)",
         r.g_uncorrected ? rounded_estimate(*r.g_uncorrected, 5, "m/s\u00B2")

@@ -150,6 +150,7 @@ std::optional<PivotScanRecord> pivot_scan_record(const ParsedScene& given, const
   // The textbook's straight line in h^2 on the measured periods, without corrections.
   const PivotScan::Textbook& t = *scan.textbook;
   r.textbook_g = t.g.value;
+  r.textbook_g_uncertainty = t.g.uncertainty;
   r.textbook_k = t.radius_of_gyration;
   r.textbook_center = t.center_of_mass_position.value_or(0.0);
   auto textbook_at = [&](double h) {

@@ -44,22 +44,22 @@ ReportPage make_report_page(const ReportRequest& o,
     const RecordingRecord r = make_recording_record(summary, &samples);
     return {svg ? recording_plot_svg(r, o.plot) : recording_report_html(r), {}};
   }
-  const ParsedScene scene =
-      parse_scene(o.text ? *o.text : read_text(o.file, kMaxSceneBytes, "a scene file"),
-                  {o.directory ? *o.directory : scene_directory(o.file), o.allow_outside});
-  std::vector<std::string> recordings;
-  for (const auto& r : scene.recordings) recordings.push_back(r.summary.file);
-  if (check_recordings) check_recordings(recordings);
+  const std::string text = o.text ? *o.text : read_text(o.file, kMaxSceneBytes, "a scene file");
+  const SceneFiles files{o.directory ? *o.directory : scene_directory(o.file), o.allow_outside};
+  if (check_recordings) check_recordings(scene_file_names(text, files));  // before any is read
+  const ParsedScene scene = parse_scene(text, files);
   const Analysis analysis = analyse(scene, o.analysis);
   // The recordings the scene names, read again for their signal plots
   // (once each: the report draws a recording named twice once).
+  RecordingLimits limits;
+  limits.within = o.allow_outside ? std::nullopt : files.directory;
   std::vector<Recording> samples;
   for (std::size_t i = 0; i < scene.recordings.size(); ++i) {
     const RecordingSummary& s = scene.recordings[i].summary;
     const bool named_before = std::any_of(scene.recordings.begin(), scene.recordings.begin() + i, [&](const auto& r) {
       return r.summary.file == s.file && r.summary.set == s.set;
     });
-    samples.push_back(named_before ? Recording{} : read_recording(s.file, s.format, {}, s.set, s.column_spec));
+    samples.push_back(named_before ? Recording{} : read_recording(s.file, s.format, limits, s.set, s.column_spec));
   }
   const SceneReport r = make_scene_report(o.file, scene, analysis, samples);
   ReportPage page{svg ? plot_svg(r, o.plot) : scene_report_html(r), scene.warnings};

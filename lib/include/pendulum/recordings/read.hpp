@@ -129,6 +129,9 @@ struct RecordingLimits {
   /// 1 GiB: 8 hours at 500 Hz. For a zip archive, also the most its sets
   /// may unpack to, all together.
   std::size_t max_bytes = std::size_t{1} << 30;
+  /// The folder the file must lie in, opened beneath it (InputFile): a
+  /// scene's folder, unless --allow-outside.
+  std::optional<std::string> within;
 };
 
 /// Reads a recording from its text. `file` names it in errors, which are

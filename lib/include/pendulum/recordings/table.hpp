@@ -78,9 +78,14 @@ bool looks_like_settings_table(std::string_view text);
 /// after others (its rows must be together).
 SettingsTable parse_settings_table(std::string_view text, const std::string& file, const TableOptions& options = {});
 
-/// The file at `path` (at most `max_bytes`), parsed.
+/// The largest table read_settings_table reads unless told (256 MiB).
+inline constexpr std::size_t kMaxTableBytes = std::size_t{1} << 28;
+
+/// The file at `path` (at most `max_bytes`, beneath the folder `within`
+/// when given: InputFile), parsed.
 SettingsTable read_settings_table(const std::string& path, const TableOptions& options = {},
-                                  std::size_t max_bytes = std::size_t{1} << 28);
+                                  std::size_t max_bytes = kMaxTableBytes,
+                                  const std::optional<std::string>& within = {});
 
 /// Whether the file at `path` holds a table of settings (its first 64 KiB
 /// read as looks_like_settings_table); false when it cannot be read.

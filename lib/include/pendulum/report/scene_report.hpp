@@ -93,6 +93,7 @@ struct PivotScanRecord {
   /// from the straight line T^2 h = (4 pi^2/g)(k^2 + h^2) in h^2 fitted to
   /// the measured periods (analysis.hpp, physical_start).
   double textbook_g = 0.0, textbook_k = 0.0, textbook_center = 0.0;  ///< (m/s^2, m, m)
+  std::optional<double> textbook_g_uncertainty;  ///< (m/s^2), from the textbook line's fit
   /// The analysis's minimum (ideal period, h = k) and where it lies, with
   /// the model's period there (on the plotted curve).
   Estimate minimum_period{0.0, std::nullopt}, minimum_pivot_distance{0.0, std::nullopt};

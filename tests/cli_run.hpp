@@ -1,7 +1,9 @@
 #pragma once
-// Running the pendulum-g binary from a CLI test (tests/test_cli.cpp,
-// tests/test_cli_swings.cpp): its exit status, stdout and stderr.
+// Running the pendulum-g binary from a CLI test (tests/test_cli*.cpp): its
+// exit status, stdout and stderr, and what several of those tests read of
+// its output.
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -42,6 +44,44 @@ Run run(const std::string& args) {
   Run r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, out, pendulum::test::read_text(err_file)};
   std::remove(err_file.c_str());
   return r;
+}
+
+// The bundled scene of Nelson & Olsson (1986).
+const std::string kNelsonOlsson = std::string(PENDULUM_DATA_DIR) + "/nelson_olsson_1986.json";
+
+inline const nlohmann::json& correction(const nlohmann::json& result, const std::string& id) {
+  for (const auto& c : result.at("corrections")) {
+    if (c.at("id") == id) return c;
+  }
+  FAIL("no correction " << id);
+  throw;
+}
+
+// What in a page would load something from elsewhere: a scheme, a
+// protocol-relative "//", a src, a CSS url() or @import, an element that
+// fetches, or a link that leaves the page. Returns the first found, or "".
+inline std::string external_reference(const std::string& page) {
+  for (const char* bad : {"http:", "https:", "ftp:", "file://", "//", "src=", "srcset", "url(", "@import", "<link",
+                          "<script", "<iframe", "<object", "<embed", "<img", "<base"}) {
+    if (page.find(bad) != std::string::npos) return bad;
+  }
+  for (std::size_t at = page.find("href="); at != std::string::npos; at = page.find("href=", at + 1)) {
+    if (page.compare(at, 7, "href=\"#") != 0) return page.substr(at, 20);
+  }
+  return "";
+}
+
+inline std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// A new empty directory for a test's output.
+inline std::string temporary_directory() {
+  char name[] = "/tmp/pendulum-g-report-XXXXXX";
+  REQUIRE(mkdtemp(name));
+  return name;
 }
 
 }  // namespace

@@ -113,6 +113,9 @@ struct WithoutReport : SimplePendulum {
 struct WithoutPredict : SimplePendulum {
   static void predict() = delete;
 };
+struct WithoutOwnCorrections : SimplePendulum {
+  static void own_corrections() = delete;
+};
 struct WithoutSolveG : SimplePendulum {
   static void solve_g() = delete;
 };
@@ -124,5 +127,6 @@ TEST_CASE("A kind that lacks a piece of the interface is not a period model", "[
   STATIC_REQUIRE_FALSE(is_period_model<WithoutStart>());
   STATIC_REQUIRE_FALSE(is_period_model<WithoutReport>());
   STATIC_REQUIRE_FALSE(is_period_model<WithoutPredict>());
+  STATIC_REQUIRE_FALSE(is_period_model<WithoutOwnCorrections>());
   STATIC_REQUIRE_FALSE(is_period_model<WithoutSolveG>());
 }

@@ -38,7 +38,7 @@ struct NormalSums {
 ///
 /// The parameters reach the corrections through the swing's length alone
 /// (period_model.hpp), so when none of the corrections the apparatus applies
-/// reads the length (corrections_read_length, asked once per fit), each
+/// reads the length (reads_length_of the model's rows, asked once per fit), each
 /// observation's T/T0 is the same at every step: it is composed once, the
 /// scalar pass gives only the length l(q), and the first vector pass takes
 /// h = T0(l, g = 1) T/T0 and h' = h l'/(2 l), bound by the square roots and
@@ -57,8 +57,11 @@ class ProjectedPeriods {
     const auto& obs = *problem.observations;
     const auto& amplitude = *problem.amplitude;
     const Apparatus<double>& app = *problem.apparatus;
-    fixed_ratio_ = !obs.empty() && !corrections_read_length(
-                                       app, Model::swing_at(start.data(), Model::swing(obs[0]), app), amplitude[0]);
+    if (!obs.empty()) {
+      const Swing<double> first = Model::swing_at(start.data(), Model::swing(obs[0]), app);
+      fixed_ratio_ = !reads_length_of<double>(
+          [&](auto& sink) { visit_model_corrections<Model>(app, first, amplitude[0], sink); });
+    }
     settings_.reserve(obs.size());
     columns_.setZero((count_ + kLanes - 1) / kLanes * kLanes, kColumns);
     for (Eigen::Index k = 0; k < count_; ++k) {
@@ -216,7 +219,7 @@ class ProjectedPeriods {
   const Apparatus<Jet> apparatus_;
   const Eigen::Index count_;        ///< observations (the columns' rows without the padding)
   std::vector<Setting> settings_;  ///< each observation's measured swing's setting
-  bool fixed_ratio_;
+  bool fixed_ratio_ = false;
   /// One allocation for every per-observation array of the fit (kColumns).
   mutable Eigen::Array<double, Eigen::Dynamic, kColumns> columns_;
   mutable bool cached_ = false;

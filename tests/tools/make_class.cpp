@@ -14,7 +14,7 @@
 // drafts/ are there to be skipped with a note, CLARK.JSON to be read.
 //
 // Usage: make_class FOLDER   (the folder must exist)
-// tests/test_cli.cpp runs batch on it; docs/instructors.md shows the output.
+// tests/test_cli_batch.cpp runs batch on it; docs/instructors.md shows the output.
 #include <cmath>
 #include <filesystem>
 #include <fstream>

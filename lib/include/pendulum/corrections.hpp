@@ -283,9 +283,11 @@ void visit_corrections(const Apparatus<T>& app, const Swing<T>& s, const Amplitu
   }
 }
 
-/// Every correction as a row: its ratio and method, or why it was skipped.
-template <class T>
-Terms<T> correction_terms(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
+/// The rows a pass over the corrections gives: visit(sink) hands each row to
+/// sink as visit_corrections does; the finite amplitude's bound and terms
+/// from `amplitude`.
+template <class T, class Visit>
+Terms<T> rows_of(const Visit& visit, const AmplitudeChoice& amplitude) {
   struct Rows {
     Terms<T> out;
     void set(CorrectionId id, const T& ratio, const char* method) {
@@ -297,11 +299,17 @@ Terms<T> correction_terms(const Apparatus<T>& app, const Swing<T>& s, const Ampl
       for (CorrectionId id : ids) out[static_cast<int>(id)].skip_reason = reason;
     }
   } rows;
-  visit_corrections(app, s, amplitude, rows);
+  visit(rows);
   auto& amplitude_term = rows.out[static_cast<int>(CorrectionId::finite_amplitude)];
   amplitude_term.error_bound = amplitude.bound;
   if (amplitude.method == AmplitudeMethod::series) amplitude_term.series_terms = amplitude.terms;
   return rows.out;
+}
+
+/// Every correction as a row: its ratio and method, or why it was skipped.
+template <class T>
+Terms<T> correction_terms(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
+  return rows_of<T>([&](auto& sink) { visit_corrections(app, s, amplitude, sink); }, amplitude);
 }
 
 /// T/T0 from the corrections' ratios r_i = DeltaT_i/T0.
@@ -327,10 +335,10 @@ struct Composition {
   }
 };
 
-/// The composition straight from the corrections, without their rows: what
-/// a fit needs at every step.
-template <class T>
-Composition<T> compose(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
+/// The composition of the ratios a pass over the corrections gives (visit as
+/// in rows_of), without their rows: what a fit needs at every step.
+template <class T, class Visit>
+Composition<T> composition_of(const Visit& visit) {
   struct Sums {
     T amplitude{0.0}, others{0.0};
     void set(CorrectionId id, const T& ratio, const char*) {
@@ -338,16 +346,22 @@ Composition<T> compose(const Apparatus<T>& app, const Swing<T>& s, const Amplitu
     }
     void skip(std::initializer_list<CorrectionId>, const char*) {}
   } sums;
-  visit_corrections(app, s, amplitude, sums);
+  visit(sums);
   return Composition<T>::of(sums.amplitude, sums.others);
 }
 
-/// Whether any correction `app` applies reads the swing's length
-/// (CorrectionInfo::reads_length). Which ones apply depends on the
-/// apparatus's parts alone, so a fit asks once: when none does, an
-/// observation's T/T0 is the same at every step and is composed once.
+/// The composition straight from the corrections, without their rows.
 template <class T>
-bool corrections_read_length(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
+Composition<T> compose(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
+  return composition_of<T>([&](auto& sink) { visit_corrections(app, s, amplitude, sink); });
+}
+
+/// Whether any row a pass over the corrections applies (visit as in rows_of)
+/// reads the swing's length (CorrectionInfo::reads_length). Which ones apply
+/// depends on the apparatus's parts alone, so a fit asks once: when none
+/// does, an observation's T/T0 is the same at every step and is composed once.
+template <class T, class Visit>
+bool reads_length_of(const Visit& visit) {
   struct Applied {
     bool reads_length = false;
     void set(CorrectionId id, const T&, const char*) {
@@ -355,8 +369,14 @@ bool corrections_read_length(const Apparatus<T>& app, const Swing<T>& s, const A
     }
     void skip(std::initializer_list<CorrectionId>, const char*) {}
   } applied;
-  visit_corrections(app, s, amplitude, applied);
+  visit(applied);
   return applied.reads_length;
+}
+
+/// Whether any correction `app` applies reads the swing's length (reads_length_of).
+template <class T>
+bool corrections_read_length(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
+  return reads_length_of<T>([&](auto& sink) { visit_corrections(app, s, amplitude, sink); });
 }
 
 template <class T>

@@ -12,6 +12,10 @@
 ///   kCorrectionUse: per row of kCorrections, whether it applies, is
 ///       replaced by the model's own, or does not apply (a test checks
 ///       predict() against it),
+///   template <class T, class Sink> own_corrections(const Apparatus<T>&,
+///       const Swing<T>&, Sink&): the rows it replaces, and why the rows
+///       that do not apply are skipped, as visit_corrections hands rows over
+///       (visit_model_corrections),
 ///   kParameters, kParameterInfo, kDefaults (g is parameter 0),
 ///   canonicalise(double* p): the fitted parameters in their reported form
 ///       (a sign only the square of which matters),
@@ -33,7 +37,9 @@
 /// g^-1/2 times a function of the other parameters, which the fit uses to
 /// project g out.
 
+#include <array>
 #include <cmath>
+#include <optional>
 
 #include "pendulum/corrections.hpp"
 
@@ -59,6 +65,67 @@ struct ParameterInfo {
   const char* unit;  ///< SI
   const char* description;
 };
+
+/// Every row of kCorrections as `Model` declares it (kCorrectionUse), handed
+/// to `sink` as visit_corrections hands them: a row that applies as
+/// visit_corrections computes it; a row replaced or not applicable as
+/// Model::own_corrections gives it, after the rows that apply (the sums'
+/// order), or, where it gives none, skipped with visit_corrections's reason
+/// (a part the scene lacks). Each row is handed over once; a replaced row's
+/// shared formula never.
+template <class Model, class T, class Sink>
+void visit_model_corrections(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude,
+                             Sink& sink) {
+  struct OwnRow {
+    bool given = false;
+    std::optional<T> ratio;
+    const char* text = "";  // the method, or the reason it is skipped
+  };
+  struct Own {
+    std::array<OwnRow, kCorrectionCount> rows;
+    void set(CorrectionId id, const T& ratio, const char* method) { rows[static_cast<int>(id)] = {true, ratio, method}; }
+    void skip(std::initializer_list<CorrectionId> ids, const char* reason) {
+      for (CorrectionId id : ids) rows[static_cast<int>(id)] = {true, std::nullopt, reason};
+    }
+  } own;
+  Model::own_corrections(app, s, own);
+  struct Shared {
+    static bool owned(CorrectionId id) { return Model::kCorrectionUse[static_cast<int>(id)] != CorrectionUse::applies; }
+    const Own& own;
+    Sink& sink;
+    void set(CorrectionId id, const T& ratio, const char* method) {
+      if (!owned(id)) sink.set(id, ratio, method);
+    }
+    void skip(std::initializer_list<CorrectionId> ids, const char* reason) {
+      for (CorrectionId id : ids) {
+        if (!owned(id) || !own.rows[static_cast<int>(id)].given) sink.skip({id}, reason);
+      }
+    }
+  } shared{own, sink};
+  visit_corrections(app, s, amplitude, shared);
+  for (int i = 0; i < kCorrectionCount; ++i) {
+    const auto id = static_cast<CorrectionId>(i);
+    const OwnRow& row = own.rows[i];
+    if (!Shared::owned(id) || !row.given) continue;
+    if (row.ratio) {
+      sink.set(id, *row.ratio, row.text);
+    } else {
+      sink.skip({id}, row.text);
+    }
+  }
+}
+
+/// `Model`'s rows (visit_model_corrections): what its predict() reports.
+template <class Model, class T>
+Terms<T> model_terms(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
+  return rows_of<T>([&](auto& sink) { visit_model_corrections<Model>(app, s, amplitude, sink); }, amplitude);
+}
+
+/// `Model`'s composition without the rows: what its composition() returns.
+template <class Model, class T>
+Composition<T> model_composition(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
+  return composition_of<T>([&](auto& sink) { visit_model_corrections<Model>(app, s, amplitude, sink); });
+}
 
 /// The period (s) `Model` predicts at parameters p (SI, g first) from a
 /// measured swing (Model::swing): predict()'s period without the rows.

@@ -52,8 +52,9 @@ struct PhysicalPendulum {
   static constexpr PeriodModelKind kKind = PeriodModelKind::physical_pendulum;
   static constexpr std::array<Setting, 2> kSettings{{Setting::pivot_distance, Setting::pivot_position}};
   /// The finite amplitude and the damping rows hold for any body; buoyancy is
-  /// the body's own (predict); the ball pendulum's parts and its sphere's added
-  /// mass do not describe a rigid body, whose moment of inertia holds them.
+  /// the body's own (own_corrections); the ball pendulum's parts and its
+  /// sphere's added mass do not describe a rigid body, whose moment of inertia
+  /// holds them (the reader refuses those parts: check_parts_apply).
   static constexpr std::array<CorrectionUse, kCorrectionCount> kCorrectionUse = [] {
     std::array<CorrectionUse, kCorrectionCount> use{};
     for (auto& u : use) u = CorrectionUse::not_applicable;
@@ -64,6 +65,11 @@ struct PhysicalPendulum {
     use[static_cast<int>(CorrectionId::buoyancy)] = CorrectionUse::replaced;
     return use;
   }();
+  /// Why the added-mass row is not a rigid body's, shown where the body's
+  /// buoyancy is known.
+  static constexpr const char* kAddedMassNotApplicable =
+      "Eqs. (54)-(62) are for a sphere; a bar's potential-flow added mass (strip_added_inertia) needs swings "
+      "much smaller than its section, which a pendulum's are not (docs/physical.md, Added mass)";
   static constexpr int kParameters = 3;
   enum Parameter { g, radius_of_gyration, center_of_mass_position };
   static constexpr std::array<ParameterInfo, kParameters> kParameterInfo{{
@@ -126,36 +132,37 @@ struct PhysicalPendulum {
 
   /// The period at parameters p = (g (m/s^2), k (m), x_c (m)):
   /// T0 = 2 pi sqrt(l/g) with l = (k^2 + h^2)/h (Eqs. 55-56), times T/T0 of
-  /// the corrections that hold for any rigid body: the finite amplitude
-  /// (Eq. 56's K), the damping rows (a decay record), and the buoyancy of
-  /// a body whose mass and volume are known, m_air/(2M) (Nelson & Olsson
-  /// Eq. 16, exact for a uniform body, whose centre of buoyancy is its centre
-  /// of mass). The ball pendulum's rows (bob, ring, cap, wire, added mass of
-  /// a sphere, support) are skipped: the body's moment of inertia holds its
-  /// mass distribution.
+  /// the rows kCorrectionUse declares (visit_model_corrections): the
+  /// finite amplitude (Eq. 56's K), the damping rows (a decay record), and
+  /// the body's buoyancy (own_corrections). The ball pendulum's rows (bob,
+  /// ring, cap, wire, added mass of a sphere, support) are skipped: the
+  /// body's moment of inertia holds its mass distribution.
   template <class T>
   static PeriodPrediction<T> predict(const T* p, const Observation<T>& o, const Apparatus<T>& app,
                                      const AmplitudeChoice& amplitude) {
     const Swing<T> s = swing_at(p, swing(o), app);
     PeriodPrediction<T> out;
-    out.terms = correction_terms(app, s, amplitude);
-    auto& buoyancy_term = out.terms[static_cast<int>(CorrectionId::buoyancy)];
-    auto& added_mass_term = out.terms[static_cast<int>(CorrectionId::added_mass)];
-    if (const auto r = body_buoyancy(app)) {
-      buoyancy_term.ratio = *r;
-      buoyancy_term.method = "eq16_body";
-      buoyancy_term.skip_reason = "";
-      added_mass_term.skip_reason =
-          "Eqs. (54)-(62) are for a sphere; a bar's potential-flow added mass (strip_added_inertia) needs swings "
-          "much smaller than its section, which a pendulum's are not (docs/physical.md, Added mass)";
-    } else if (app.air) {
-      buoyancy_term.skip_reason = added_mass_term.skip_reason =
-          "needs the body's mass and volume (a body given in parts with densities)";
-    }
+    out.terms = model_terms<PhysicalPendulum>(app, s, amplitude);
     out.composition = compose(out.terms);
     out.ideal = ideal_period(s.length, p[g]);  // Eq. (56)
     out.period = out.ideal * (1.0 + out.composition.total);
     return out;
+  }
+
+  /// The rows it owns (kCorrectionUse), in air: the buoyancy of a body whose
+  /// mass and volume are known, m_air/(2M) (Nelson & Olsson Eq. 16, exact for
+  /// a uniform body, whose centre of buoyancy is its centre of mass), and why
+  /// the added-mass row is skipped. Without air, visit_corrections's reason.
+  template <class T, class Sink>
+  static void own_corrections(const Apparatus<T>& app, const Swing<T>&, Sink& sink) {
+    if (!app.air) return;
+    if (const auto r = body_buoyancy(app)) {
+      sink.set(CorrectionId::buoyancy, *r, "eq16_body");
+      sink.skip({CorrectionId::added_mass}, kAddedMassNotApplicable);
+    } else {
+      sink.skip({CorrectionId::buoyancy, CorrectionId::added_mass},
+                "needs the body's mass and volume (a body given in parts with densities)");
+    }
   }
 
   /// The part of an observation's swing that no parameter changes (the
@@ -179,9 +186,7 @@ struct PhysicalPendulum {
   /// to a rigid body and its buoyancy.
   template <class T>
   static Composition<T> composition(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
-    const Composition<T> c = compose(app, s, amplitude);
-    const auto r = body_buoyancy(app);
-    return r ? Composition<T>::of(c.amplitude, c.others + *r) : c;
+    return model_composition<PhysicalPendulum>(app, s, amplitude);
   }
 
   /// The closed form for one observation with g the only unknown:

@@ -18,6 +18,12 @@ namespace pendulum {
 
 namespace detail {
 
+/// A sink for the rows a model owns (own_corrections), to check it exists.
+struct RowSink {
+  void set(CorrectionId, const double&, const char*) {}
+  void skip(std::initializer_list<CorrectionId>, const char*) {}
+};
+
 template <class M, class = void>
 struct HasModelPieces : std::false_type {};
 
@@ -34,6 +40,8 @@ struct HasModelPieces<
                    decltype(M::predict(std::declval<const double*>(), std::declval<const Observation<double>&>(),
                                        std::declval<const Apparatus<double>&>(),
                                        std::declval<const AmplitudeChoice&>())),
+                   decltype(M::own_corrections(std::declval<const Apparatus<double>&>(),
+                                               std::declval<const Swing<double>&>(), std::declval<RowSink&>())),
                    decltype(M::swing(std::declval<const Observation<double>&>())),
                    decltype(M::swing_at(std::declval<const double*>(), std::declval<Swing<double>>(),
                                         std::declval<const Apparatus<double>&>())),

@@ -51,12 +51,16 @@ struct SimplePendulum {
                                      const AmplitudeChoice& amplitude) {
     const Swing<T> s = swing_at(p, swing(o), app);
     PeriodPrediction<T> out;
-    out.terms = correction_terms(app, s, amplitude);
+    out.terms = model_terms<SimplePendulum>(app, s, amplitude);
     out.composition = compose(out.terms);
     out.ideal = ideal_period(s.length, p[g]);  // Eq. (3)
     out.period = out.ideal * (1.0 + out.composition.total);
     return out;
   }
+
+  /// It owns no row: every one applies (kCorrectionUse).
+  template <class T, class Sink>
+  static void own_corrections(const Apparatus<T>&, const Swing<T>&, Sink&) {}
 
   /// The part of an observation's swing that no parameter changes (the
   /// length as measured): a fit computes it once per observation.
@@ -76,7 +80,7 @@ struct SimplePendulum {
   /// predict()'s composition without the rows (corrections.hpp, compose).
   template <class T>
   static Composition<T> composition(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
-    return compose(app, s, amplitude);
+    return model_composition<SimplePendulum>(app, s, amplitude);
   }
 
   /// The closed form for one observation with g the only unknown (the

@@ -1,0 +1,285 @@
+// The pendulum-g command's import: recordings into timing and decay, a scene
+// naming a recording, phyphox's zip export, the catalogue of bad recordings.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+#include <string>
+
+#include "catalogue.hpp"
+#include "cli_run.hpp"
+
+using nlohmann::json;
+using Catch::Matchers::Contains;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+TEST_CASE("import: a phone recording becomes timing and decay that a scene takes as they are",
+          "[cli][import]") {
+  const std::string file = std::string(PENDULUM_DATA_DIR) + "/recordings/phyphox_gyroscope.csv";
+  const Run r = run("import " + file);
+  REQUIRE(r.status == 0);
+  CHECK(r.err.empty());
+  const json out = json::parse(r.out);
+  std::vector<std::string> keys;
+  const nlohmann::ordered_json in_order = nlohmann::ordered_json::parse(r.out);
+  for (const auto& item : in_order.items()) keys.push_back(item.key());
+  // The six keys first, as ever; then what the reader used, the glitches
+  // and the notes (issue 19).
+  CHECK(keys == std::vector<std::string>{"format", "periods", "period", "amplitude_range", "timing", "decay",
+                                         "columns", "glitches", "notes"});
+  CHECK(out.at("format") == "phyphox");
+  CHECK(out.at("periods") == 10);
+  const double period = out.at("period").at("value").get<double>();
+  CHECK(out.at("period").at("unit") == "s");
+  CHECK_THAT(out.at("timing").at("trials")[0].get<double>() / out.at("timing").at("oscillations_per_trial").get<int>(),
+             WithinAbs(period, 1e-12));
+  // Pasted into the Nelson-Olsson scene with this pendulum's length and
+  // amplitude, the scene reduces: the period it reads is the recording's.
+  json scene = json::parse(pendulum::test::read_text(kNelsonOlsson));
+  scene["timing"] = out.at("timing");
+  scene["decay"] = out.at("decay");
+  scene["length"] = {{"value", 0.80}, {"unit", "m"}, {"uncertainty", 0.001}};
+  scene["amplitude"] = {{"value", out.at("amplitude_range").at("start")}, {"unit", "deg"}};
+  const std::string scene_file = temporary_file();
+  std::ofstream(scene_file) << scene.dump();
+  const Run reduced = run("reduce " + scene_file);
+  std::remove(scene_file.c_str());
+  INFO(reduced.err);
+  REQUIRE(reduced.status == 0);
+  CHECK_THAT(json::parse(reduced.out).at("period").at("measured").at("value").get<double>(), WithinAbs(period, 1e-9));
+
+  const Run table = run("import --format table " + file);
+  REQUIRE(table.status == 0);
+  CHECK_THAT(table.out, Contains("period") && Contains("+-"));
+  const Run forced = run("import --format tracker " + file);
+  CHECK(forced.status == 1);
+  CHECK(forced.out.empty());
+  CHECK_THAT(forced.err, Contains("does not fit a tracker export"));
+}
+
+namespace {
+
+/// Runs pendulum-g from the folder `dir`, as a student would.
+Run run_in(const std::string& dir, const std::string& args) {
+  const auto before = std::filesystem::current_path();
+  std::filesystem::current_path(dir);
+  const Run r = run(args);
+  std::filesystem::current_path(before);
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("A scene naming a recording reduces as the scene import's output pasted, from any folder",
+          "[cli][import][scene]") {
+  const std::string recordings = std::string(PENDULUM_DATA_DIR) + "/recordings";
+  const std::string scene = recordings + "/phyphox_pendulum_raw_from_file.json";
+  // The same scene with import's timing, decay and start amplitude pasted in.
+  const json imported = json::parse(run("import " + recordings + "/phyphox_pendulum_raw.tsv").out);
+  json pasted = json::parse(pendulum::test::read_text(scene));
+  pasted["timing"] = imported.at("timing");
+  pasted["decay"] = imported.at("decay");
+  pasted["amplitude"] = {{"value", imported.at("amplitude_range").at("start")}, {"unit", "deg"},
+                         {"of", imported.at("amplitude_range").at("of")}};
+  // A gyroscope turns with the bob: import says its angles are the bob's (docs/phone.md).
+  CHECK(imported.at("amplitude_range").at("of") == "body");
+  CHECK(imported.at("decay").at("data").at("of") == "body");
+  const std::string pasted_file = temporary_file();
+  std::ofstream(pasted_file) << pasted.dump();
+  const json expected = json::parse(run("reduce " + pasted_file).out);
+  std::remove(pasted_file.c_str());
+  const double g = expected.at("g").at("value").get<double>();
+
+  const Run r = run("reduce " + scene);  // from the build folder: the scene's folder decides
+  INFO(r.err);
+  REQUIRE(r.status == 0);
+  // 19 amplitudes over 16 s fix the decay's total rate only (docs/decay_fit.md).
+  CHECK(r.err.rfind("pendulum-g: warning: decay fit: the record cannot tell linear from quadratic damping", 0) == 0);
+  CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);  // that warning alone
+  const json result = json::parse(r.out);
+  // The pasted numbers went through decimal text and degrees: equal to rounding.
+  CHECK_THAT(result.at("g").at("value").get<double>(), WithinRel(g, 1e-12));
+  CHECK_THAT(result.at("g").at("uncertainty").get<double>(),
+             WithinRel(expected.at("g").at("uncertainty").get<double>(), 1e-9));
+  CHECK_THAT(result.at("period").at("measured").at("value").get<double>(),
+             WithinRel(expected.at("period").at("measured").at("value").get<double>(), 1e-15));
+  CHECK(result.at("period").at("oscillations_per_trial") == imported.at("periods"));
+  CHECK(result.at("decay_fit").at("points") == expected.at("decay_fit").at("points"));
+  // Where the timing and the decay record came from; no other key changed.
+  const json& from = result.at("recordings");
+  REQUIRE(from.size() == 2);
+  CHECK(from[0].at("path") == "timing");
+  CHECK(from[1].at("path") == "decay.data");
+  CHECK(from[0].at("recording") == "phyphox_pendulum_raw.tsv");
+  CHECK(from[0].at("file") == recordings + "/phyphox_pendulum_raw.tsv");
+  CHECK(from[0].at("format") == "phyphox");
+  CHECK(from[0].at("periods") == imported.at("periods"));
+  CHECK(from[0].at("period") == imported.at("period"));
+  json without = result;
+  without.erase("recordings");
+  without.erase("input");
+  without.erase("assumptions");
+  json expected_without = expected;
+  expected_without.erase("input");
+  expected_without.erase("assumptions");
+  std::vector<std::string> keys, expected_keys;
+  for (const auto& item : without.items()) keys.push_back(item.key());
+  for (const auto& item : expected_without.items()) expected_keys.push_back(item.key());
+  CHECK(keys == expected_keys);
+
+  // Standard input: relative to the current folder.
+  const Run here = run_in(recordings, "reduce - < " + scene);
+  CHECK(here.status == 0);
+  CHECK_THAT(json::parse(here.out).at("g").at("value").get<double>(), WithinRel(g, 1e-12));
+  const Run elsewhere = run_in(PENDULUM_DATA_DIR, "reduce - < " + scene);
+  CHECK(elsewhere.status == 1);
+  CHECK(elsewhere.out.empty());
+  CHECK_THAT(elsewhere.err, Contains("timing.recording: phyphox_pendulum_raw.tsv: cannot open the file"));
+
+  // batch (a file, and stdin from the scene's folder), report and fit-decay.
+  for (const Run& b : {run("batch " + scene), run_in(recordings, "batch - < " + scene)}) {
+    INFO(b.err);
+    CHECK(b.status == 0);
+    CHECK_THAT(json::parse(b.out.substr(0, b.out.find('\n'))).at("g_m_s2").get<double>(), WithinRel(g, 1e-12));
+  }
+  const std::string html = temporary_file() + ".html";
+  CHECK(run("report " + scene + " -o " + html).status == 0);
+  CHECK(std::filesystem::file_size(html) > 1000);
+  std::remove(html.c_str());
+  const Run decay = run("fit-decay " + scene);
+  REQUIRE(decay.status == 0);
+  const json fit = json::parse(decay.out);
+  CHECK(fit.at("points") == imported.at("decay").at("data").at("times").size());
+  CHECK(fit.at("recordings")[1].at("path") == "decay.data");
+}
+
+TEST_CASE("import: phyphox's zip export reads its best set, or the one named", "[cli][import][zip]") {
+  // data/recordings/phyphox_export.zip holds the three phyphox CSVs of
+  // data/recordings byte for byte (tests/tools/make_phyphox_zips.py): each set
+  // must give what its CSV gives.
+  const std::string recordings = std::string(PENDULUM_DATA_DIR) + "/recordings/";
+  const std::string zip = recordings + "phyphox_export.zip";
+  const std::pair<std::string, std::string> sets[] = {
+      {"", "phyphox_gyroscope.csv"},  // by default the rate: a gyroscope beats the accelerometers
+      {" --set Accelerometer", "phyphox_acceleration.csv"},
+      {" --set 'Linear Acceleration.csv'", "phyphox_linear_acceleration.csv"}};
+  for (const auto& [option, csv] : sets) {
+    INFO(option);
+    const Run r = run("import" + option + " " + zip);
+    REQUIRE(r.status == 0);
+    const json from_zip = json::parse(r.out), from_csv = json::parse(run("import " + recordings + csv).out);
+    CHECK(from_zip.at("period") == from_csv.at("period"));
+    CHECK(from_zip.at("periods") == from_csv.at("periods"));
+    CHECK(from_zip.at("amplitude_range") == from_csv.at("amplitude_range"));
+  }
+  const Run table = run("import --format table " + zip);
+  CHECK_THAT(table.out, Contains("set                    Gyroscope.csv"));
+  const Run missing = run("import --set Magnetometer " + zip);
+  CHECK(missing.status == 1);
+  CHECK_THAT(missing.err, Contains("a zip archive with no set \"Magnetometer\"; expected one of its CSV sets: "
+                                   "\"Gyroscope.csv\", \"Accelerometer.csv\", \"Linear Acceleration.csv\""));
+  // A scene names the zip and its set; the output says which set was read.
+  const std::string scene = temporary_file();
+  std::ofstream(scene) << json{{"timing", {{"recording", zip}, {"set", "Linear Acceleration.csv"}}},
+                               {"length", {{"value", 0.8}, {"unit", "m"}}}}
+                              .dump();
+  const Run reduced = run("reduce --allow-outside " + scene);
+  std::remove(scene.c_str());
+  INFO(reduced.err);
+  REQUIRE(reduced.status == 0);
+  const json result = json::parse(reduced.out);
+  CHECK(result.at("recordings")[0].at("set") == "Linear Acceleration.csv");
+  CHECK(result.at("period").at("measured").at("value") ==
+        json::parse(run("import " + recordings + "phyphox_linear_acceleration.csv").out).at("period").at("value"));
+}
+
+TEST_CASE("A scene's amplitude from a video track carries the track's uncertainty into g's budget",
+          "[cli][import]") {
+  // import's amplitude_range.start_uncertainty (deg) is the scene's amplitude
+  // uncertainty; a gyroscope's is null, and its amplitude stays without one.
+  for (const std::string file : {"tracker_xy.txt", "phyphox_gyroscope.csv"}) {
+    INFO(file);
+    const std::string recording = std::string(PENDULUM_DATA_DIR) + "/recordings/" + file;
+    const json imported = json::parse(run("import " + recording).out);
+    const json& sigma = imported.at("amplitude_range").at("start_uncertainty");
+    const std::string scene = temporary_file();
+    std::ofstream(scene) << json{{"timing", {{"recording", recording}}},
+                                 {"length", {{"value", 0.8}, {"unit", "m"}, {"uncertainty", 0.001}}}}
+                                .dump();
+    const Run reduced = run("reduce --allow-outside " + scene);
+    std::remove(scene.c_str());
+    REQUIRE(reduced.status == 0);
+    const json result = json::parse(reduced.out);
+    bool in_budget = false;
+    for (const auto& row : result.at("g").at("budget")) in_budget |= row.at("input") == "amplitude";
+    CHECK(in_budget == sigma.is_number());
+    if (sigma.is_number()) {
+      CHECK(sigma.get<double>() > 0.0);
+      CHECK_THAT(reduced.out, Contains("from its swings' scatter and its circle's radius"));
+    }
+  }
+}
+
+TEST_CASE("A scene naming a named pipe or an unreadable file fails at once, naming both", "[cli][import][errors]") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(temporary_file() + ".d");
+  fs::create_directory(dir);
+  const json scene = {{"timing", {{"recording", "run.csv"}}},
+                      {"length", {{"value", 0.8}, {"unit", "m"}}},
+                      {"amplitude", {{"value", 5}, {"unit", "deg"}}}};
+  std::ofstream(dir / "scene.json") << scene.dump();
+  // A FIFO without a writer: refused, not waited on.
+  REQUIRE(mkfifo((dir / "run.csv").c_str(), 0600) == 0);
+  const Run pipe = run("reduce " + (dir / "scene.json").string());
+  CHECK(pipe.status == 1);
+  CHECK(pipe.out.empty());
+  CHECK_THAT(pipe.err, Contains("timing.recording: " + (dir / "run.csv").string() + ": not a regular file"));
+  fs::remove(dir / "run.csv");
+  // A file its owner may not read (root reads it all the same).
+  fs::copy_file(std::string(PENDULUM_DATA_DIR) + "/recordings/phyphox_gyroscope.csv", dir / "run.csv");
+  fs::permissions(dir / "run.csv", fs::perms::none);
+  const Run locked = run("reduce " + (dir / "scene.json").string());
+  if (geteuid() != 0) {
+    CHECK(locked.status == 1);
+    CHECK_THAT(locked.err, Contains("timing.recording: " + (dir / "run.csv").string() +
+                                    ": cannot open the file: Permission denied"));
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("import: catalogue of bad recordings (tests/bad_recordings/)", "[cli][import][errors]") {
+  const std::string dir = std::string(PENDULUM_TESTS_DIR) + "/bad_recordings/";
+  const json expected = json::parse(pendulum::test::read_text(dir + "expected.json"));
+  REQUIRE(expected.size() >= 8);
+  for (const auto& [name, message] : expected.items()) {
+    INFO(name);
+    const Run r = run("import " + dir + name);
+    CHECK(r.status == 1);
+    CHECK(r.out.empty());
+    CHECK_THAT(r.err, Contains(message.get<std::string>()));
+  }
+  // A huge file (sparse: 2 GiB of nothing on disk) is refused before reading.
+  const std::string huge = temporary_file();
+  std::filesystem::resize_file(huge, std::uintmax_t{2} << 30);
+  const Run big = run("import " + huge);
+  std::remove(huge.c_str());
+  CHECK(big.status == 1);
+  CHECK(big.out.empty());
+  CHECK_THAT(big.err, Contains("bytes; expected at most"));
+  // A named pipe is refused without waiting for a writer.
+  const std::string fifo = temporary_file();
+  std::remove(fifo.c_str());
+  REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+  const Run pipe = run("import " + fifo);
+  std::remove(fifo.c_str());
+  CHECK(pipe.status == 1);
+  CHECK_THAT(pipe.err, Contains("not a regular file"));
+}

@@ -30,6 +30,8 @@ namespace py = pybind11;
 
 namespace {
 
+constexpr double kDegreesPerRadian = 180.0 / pendulum::kPi;
+
 using pendulum::AmplitudeMethod;
 
 constexpr const char* kAmplitudeRange = "expected an amplitude 0 <= theta0 < pi rad";
@@ -126,15 +128,14 @@ py::dict read_recording(const std::string& path, const std::string& format, cons
     r = pendulum::analyse_recording(path, *family, options, {}, set, columns);
     json = pendulum::recording_json(r);
   }
-  constexpr double deg = 180.0 / pendulum::kPi;
   const pendulum::SwingAnalysis& a = r.swings;
   py::dict swings, periods;
   swings["start_s"] = column(a.swings, [](const auto& w) { return w.start; });
   swings["end_s"] = column(a.swings, [](const auto& w) { return w.end; });
   swings["peak_time_s"] = column(a.swings, [](const auto& w) { return w.peak_time; });
-  swings["amplitude_deg"] = column(a.swings, [](const auto& w) { return w.amplitude * deg; });
+  swings["amplitude_deg"] = column(a.swings, [](const auto& w) { return w.amplitude * kDegreesPerRadian; });
   periods["time_s"] = column(a.period_curve, [](const auto& p) { return p.time; });
-  periods["amplitude_deg"] = column(a.period_curve, [](const auto& p) { return p.amplitude * deg; });
+  periods["amplitude_deg"] = column(a.period_curve, [](const auto& p) { return p.amplitude * kDegreesPerRadian; });
   periods["period_s"] = column(a.period_curve, [](const auto& p) { return p.period; });
   py::dict out;
   out["json"] = json;

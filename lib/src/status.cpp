@@ -335,6 +335,11 @@ void judge_decay_record(const ParsedScene& scene, std::vector<std::string>& reas
                           : "degrees labelled rad? fix decay.data.amplitude_unit (\"deg\")"));
 }
 
+bool offset_fitted(const Analysis& a) {
+  return std::any_of(a.fit.parameters.begin(), a.fit.parameters.end(),
+                     [](const ParameterResult& p) { return p.fitted && std::string(p.name) == "length_offset"; });
+}
+
 /// Fits whose chi2 is improbably large (dispersion.hpp): what scatters, by
 /// how much, what it means, and the uncertainty the scatter supports.
 void judge_dispersion(const ParsedScene& scene, const Analysis& a, std::vector<std::string>& reasons) {
@@ -345,7 +350,10 @@ void judge_dispersion(const ParsedScene& scene, const Analysis& a, std::vector<s
         ": uncertainties understated, or something the model misses (" +
         (rigid ? "a pivot position misread, a miscounted oscillation, a body that is not rigid"
                : "a miscounted oscillation, a length misread or taken to another point") +
-        ")? g's uncertainty is the one the scatter supports, " + format_number(*a.g.uncertainty, 3) +
+        ")?" + (rigid || offset_fitted(a) ? std::string()
+                                          : " Lengths measured to another point than the bob's centre (its top, "
+                                            "the knot) are fitted out by \"fit\": [\"length_offset\"].") +
+        " g's uncertainty is the one the scatter supports, " + format_number(*a.g.uncertainty, 3) +
         " m/s^2: the share of the observations' own uncertainties scaled by the Birge ratio S = " +
         format_number(*a.fit.birge_ratio, 3) + " (from the stated uncertainties alone " +
         format_number(*a.g_uncertainty_unscaled, 3) + " m/s^2)");

@@ -41,8 +41,9 @@ bool looks_like_recording(const std::string& file);
 
 /// The report of `request`: a recording's when request.family is set or the
 /// file looks like one, else the scene's. `check_recordings` is called with
-/// the recordings a scene names, once it is read and before it is analysed
-/// (the CLI refuses an output that would replace one). Throws InputError.
+/// the files a scene names (recordings, tables; scene_file_names()) before
+/// any of them is read (the CLI refuses an output that would replace one).
+/// Throws InputError.
 ReportPage make_report_page(const ReportRequest& request,
                             const std::function<void(const std::vector<std::string>&)>& check_recordings = {});
 

@@ -55,7 +55,8 @@ def main():
         subprocess.run([bench, "--write", path], check=True)
         env = dict(os.environ, TMPDIR=tmp)
         out = json.loads(subprocess.run(
-            [bench, "--benchmark_repetitions=5", "--benchmark_format=json"],
+            [bench, "--benchmark_filter=BM_ReadAndReduce", "--benchmark_repetitions=5",
+             "--benchmark_format=json"],
             check=True, capture_output=True, text=True, env=env).stdout)
         runs = [b for b in out["benchmarks"] if b.get("run_type") == "iteration"]
         ours = float(np.median([b["real_time"] for b in runs])) / 1e3  # ms -> s

@@ -39,6 +39,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 
 #include "pendulum/corrections.hpp"
@@ -74,44 +75,79 @@ struct ParameterInfo {
 /// (a part the scene lacks). Each row is handed over once; a replaced row's
 /// shared formula never.
 template <class Model, class T, class Sink>
-void visit_model_corrections(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude,
+void visit_owned_corrections(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude,
                              Sink& sink) {
-  struct OwnRow {
-    bool given = false;
-    std::optional<T> ratio;
-    const char* text = "";  // the method, or the reason it is skipped
-  };
+  // Bit i of a mask is row i. Only the bits are cleared per call: the rows'
+  // values are read where a bit says they were given.
+  static_assert(kCorrectionCount <= 32, "one bit per row");
+  constexpr std::uint32_t owned = [] {
+    std::uint32_t mask = 0;
+    for (int i = 0; i < kCorrectionCount; ++i) {
+      if (Model::kCorrectionUse[i] != CorrectionUse::applies) mask |= 1u << i;
+    }
+    return mask;
+  }();
   struct Own {
-    std::array<OwnRow, kCorrectionCount> rows;
-    void set(CorrectionId id, const T& ratio, const char* method) { rows[static_cast<int>(id)] = {true, ratio, method}; }
+    std::uint32_t given = 0, valued = 0;  // rows own_corrections gave; those with a ratio
+    std::array<T, kCorrectionCount> ratio;
+    std::array<const char*, kCorrectionCount> text;  // the method, or the reason it is skipped
+    void set(CorrectionId id, const T& r, const char* method) {
+      const int i = static_cast<int>(id);
+      given |= 1u << i;
+      valued |= 1u << i;
+      ratio[i] = r;
+      text[i] = method;
+    }
     void skip(std::initializer_list<CorrectionId> ids, const char* reason) {
-      for (CorrectionId id : ids) rows[static_cast<int>(id)] = {true, std::nullopt, reason};
+      for (CorrectionId id : ids) {
+        const int i = static_cast<int>(id);
+        given |= 1u << i;
+        valued &= ~(1u << i);
+        text[i] = reason;
+      }
     }
   } own;
   Model::own_corrections(app, s, own);
   struct Shared {
-    static bool owned(CorrectionId id) { return Model::kCorrectionUse[static_cast<int>(id)] != CorrectionUse::applies; }
     const Own& own;
     Sink& sink;
     void set(CorrectionId id, const T& ratio, const char* method) {
-      if (!owned(id)) sink.set(id, ratio, method);
+      if (!(owned >> static_cast<int>(id) & 1u)) sink.set(id, ratio, method);
     }
     void skip(std::initializer_list<CorrectionId> ids, const char* reason) {
       for (CorrectionId id : ids) {
-        if (!owned(id) || !own.rows[static_cast<int>(id)].given) sink.skip({id}, reason);
+        if (!((owned & own.given) >> static_cast<int>(id) & 1u)) sink.skip({id}, reason);
       }
     }
   } shared{own, sink};
   visit_corrections(app, s, amplitude, shared);
   for (int i = 0; i < kCorrectionCount; ++i) {
+    if (!((owned & own.given) >> i & 1u)) continue;
     const auto id = static_cast<CorrectionId>(i);
-    const OwnRow& row = own.rows[i];
-    if (!Shared::owned(id) || !row.given) continue;
-    if (row.ratio) {
-      sink.set(id, *row.ratio, row.text);
+    if (own.valued >> i & 1u) {
+      sink.set(id, own.ratio[i], own.text[i]);
     } else {
-      sink.skip({id}, row.text);
+      sink.skip({id}, own.text[i]);
     }
+  }
+}
+
+/// visit_owned_corrections, or for a model that owns no row (every
+/// kCorrectionUse `applies`) visit_corrections itself: a fit composes every
+/// observation's rows, and the bookkeeping of owned rows would double that cost.
+template <class Model, class T, class Sink>
+void visit_model_corrections(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude,
+                             Sink& sink) {
+  constexpr bool owns_none = [] {
+    for (CorrectionUse use : Model::kCorrectionUse) {
+      if (use != CorrectionUse::applies) return false;
+    }
+    return true;
+  }();
+  if constexpr (owns_none) {
+    visit_corrections(app, s, amplitude, sink);
+  } else {
+    visit_owned_corrections<Model>(app, s, amplitude, sink);
   }
 }
 

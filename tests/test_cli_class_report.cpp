@@ -268,7 +268,7 @@ TEST_CASE("Every bundled report: the same bytes twice with no malformed number a
   const std::regex malformed("[0-9]10\u207B?(\u2070|\u00B9|\u00B2|\u00B3|\u2074|\u2075|\u2076|\u2077|\u2078|\u2079)|"
                              "\u00D710\u2070|[0-9]\\.[0-9]{13,}");
   const std::regex url("(https?|ftp)://(?!www\\.w3\\.org/2000/svg)");
-  int made = 0;
+  int made = 0, correction_rows = 0;
   for (const auto& input : inputs) {
     INFO(input);
     const std::string a = out.path + "/a.html", b = out.path + "/b.html";
@@ -282,6 +282,23 @@ TEST_CASE("Every bundled report: the same bytes twice with no malformed number a
     CHECK_FALSE(std::regex_search(page, m, malformed));
     if (!m.empty()) INFO(m.str());
     CHECK_FALSE(std::regex_search(page, url));
+    // Each correction's Delta T rounded as its uncertainty: the same decimals,
+    // the uncertainty to two significant digits (more only in whole us, and
+    // fewer at the table's finest digit, 0.1 ns).
+    const std::size_t table = page.find("<table class=\"corrections\">");
+    const std::string rows = table == std::string::npos ? "" : page.substr(table, page.find("</table>", table) - table);
+    const std::regex row("<td class=\"num\">(\\+|\u2212)?([0-9]+)(\\.[0-9]+)?</td><td class=\"num\">([0-9]+)(\\.[0-9]+)?</td>");
+    for (auto it = std::sregex_iterator(rows.begin(), rows.end(), row); it != std::sregex_iterator(); ++it) {
+      const std::smatch& cells = *it;
+      INFO(cells.str());
+      ++correction_rows;
+      CHECK(cells[3].length() == cells[5].length());
+      const std::string u = cells[4].str() + (cells[5].length() > 0 ? cells[5].str().substr(1) : "");
+      // Leading zeros and the zeros a rounding up leaves (0.0996 as 0.100) are not significant.
+      const std::size_t first = u.find_first_not_of('0'), last = u.find_last_not_of('0');
+      if (cells[5].length() > 0 && first != std::string::npos) CHECK(last - first < 2);
+      if (cells[5].length() > 0) CHECK(cells[5].length() <= 5);
+    }
     // A scene's page has a verdict; a recording's alone has no g to judge.
     if (input.size() > 5 && input.compare(input.size() - 5, 5, ".json") == 0 &&
         input.find("/recordings/") == std::string::npos) {
@@ -289,6 +306,7 @@ TEST_CASE("Every bundled report: the same bytes twice with no malformed number a
     }
   }
   CHECK(made >= 15);
+  CHECK(correction_rows >= 50);  // the rounding check saw the tables
 }
 
 TEST_CASE("The series page's residuals: measured - model over reduce's effective sigma", "[cli][report][residual]") {

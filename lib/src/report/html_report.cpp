@@ -75,7 +75,11 @@ std::string rounded_estimate(const Estimate& e, int decimals, const std::string&
   return value_with_uncertainty(e.value, *e.uncertainty, false) + (unit.empty() ? "" : " " + unit);
 }
 
-std::string signed_fixed(double v, int decimals) { return (v > 0.0 ? "+" : "") + format_fixed(v, decimals); }
+/// "+1.20", "−1.20", and "0.00" for what rounds to zero from either side.
+std::string signed_fixed(double v, int decimals) {
+  const std::string text = format_fixed(v, decimals);
+  return (v > 0.0 && text.find_first_not_of("0.") != std::string::npos ? "+" : "") + text;
+}
 
 std::string optional_fixed(const std::optional<double>& v, double scale, int decimals, bool sign) {
   if (!v) return "\u2014";
@@ -158,6 +162,11 @@ std::string short_equation(const std::string& equation) {
   return equation.compare(0, prefix.size(), prefix) == 0 ? equation.substr(prefix.size()) : equation;
 }
 
+/// Decimals of a correction's cell in us or 1e-5 m/s^2: its uncertainty `u`
+/// to two significant digits (decimals_for), at most the 4 (0.1 ns) that a
+/// row without an uncertainty shows.
+int cell_decimals(std::optional<double> u) { return u && *u > 0.0 && std::isfinite(*u) ? std::min(decimals_for(*u), 4) : 4; }
+
 std::string corrections_table(const SceneReport& r) {
   std::string s = "<p>A correction smaller than " + duration_text(r.negligible_below, 3) +
                   " (a tenth of the period's uncertainty) is negligible; it is still applied.</p>\n"
@@ -166,14 +175,21 @@ std::string corrections_table(const SceneReport& r) {
                   "<th scope=\"col\" class=\"num\">\u0394g (10\u207B\u2075 m/s\u00B2)</th><th scope=\"col\">status</th>"
                   "<th scope=\"col\">method</th><th scope=\"col\">equation (Nelson &amp; Olsson 1986)</th></tr></thead>\n"
                   "<tbody>\n";
+  // Each row rounded to its uncertainty, as a lab report writes it.
   for (const auto& c : r.corrections) {
     const std::string status = c.status == "skipped" && !c.reason.empty() ? c.status + ": " + c.reason : c.status;
+    const std::optional<double> u_us =
+        c.delta_T_uncertainty ? std::optional<double>(*c.delta_T_uncertainty * 1e6) : std::nullopt;
+    // Delta g (1e-5 m/s^2) is proportional to Delta T, and so is its uncertainty.
+    const double g_per_us = c.delta_T && c.delta_g && *c.delta_T != 0.0 ? std::abs(*c.delta_g * 1e5 / (*c.delta_T * 1e6)) : 1.0;
+    const int t_decimals = cell_decimals(u_us);
+    const int g_decimals = cell_decimals(u_us ? std::optional<double>(*u_us * g_per_us) : std::nullopt);
     s += "<tr class=\"" + esc(c.status) + "\"><td>" + esc(c.title) + "</td><td class=\"num\">" +
-         optional_fixed(c.delta_T, 1e6, 4, true) + "</td><td class=\"num\">" +
+         optional_fixed(c.delta_T, 1e6, t_decimals, true) + "</td><td class=\"num\">" +
          (c.delta_T && !c.delta_T_uncertainty ? std::string(kUncertaintyUnknown)
-                                              : optional_fixed(c.delta_T_uncertainty, 1e6, 4, false)) +
+                                              : optional_fixed(c.delta_T_uncertainty, 1e6, t_decimals, false)) +
          "</td><td class=\"num\">" +
-         optional_fixed(c.delta_g, 1e5, 4, true) + "</td><td>" + esc(status) + "</td><td class=\"method\">" +
+         optional_fixed(c.delta_g, 1e5, g_decimals, true) + "</td><td>" + esc(status) + "</td><td class=\"method\">" +
          (c.method.empty() ? "\u2014" : esc(c.method)) + "</td><td>" + esc(short_equation(c.equation)) + "</td></tr>\n";
   }
   return s + "</tbody>\n</table>\n";

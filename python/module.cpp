@@ -7,6 +7,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -223,10 +224,27 @@ std::pair<std::optional<std::string>, std::vector<std::string>> report(
 /// f applied to every element of `x` (any shape), into a new array of that
 /// shape; the GIL released over the loop. An element f refuses raises
 /// ValueError naming its flat index and value.
+using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+/// What a function of `x` writes into: `out` where given (numpy's `out=`: a
+/// writable C-contiguous float64 array of x's shape, x itself included), else
+/// a new array. A reused array spares the page faults of fresh memory.
+py::array_t<double> output_for(const Doubles& x, const py::object& out) {
+  if (out.is_none()) return py::array_t<double>(std::vector<py::ssize_t>(x.shape(), x.shape() + x.ndim()));
+  if (!py::array_t<double, py::array::c_style>::check_(out)) {
+    throw py::type_error("out: expected a C-contiguous numpy array of float64");
+  }
+  auto a = py::reinterpret_borrow<py::array_t<double>>(out);
+  if (!a.writeable()) throw py::value_error("out: the array is read-only");
+  if (a.ndim() != x.ndim() || !std::equal(x.shape(), x.shape() + x.ndim(), a.shape())) {
+    throw py::value_error("out: its shape is not theta0's");
+  }
+  return a;
+}
+
 template <class F>
-py::array_t<double> map_elements(const py::array_t<double, py::array::c_style | py::array::forcecast>& x,
-                                 const char* name, F f) {
-  py::array_t<double> out(std::vector<py::ssize_t>(x.shape(), x.shape() + x.ndim()));
+py::array_t<double> map_elements(const Doubles& x, const char* name, F f, const py::object& into = py::none()) {
+  py::array_t<double> out = output_for(x, into);
   const double* in = x.data();
   double* result = out.mutable_data();
   const py::ssize_t n = x.size();
@@ -251,14 +269,14 @@ py::array_t<double> map_elements(const py::array_t<double, py::array::c_style | 
   return out;
 }
 
-py::array_t<double> finite_amplitude(const py::array_t<double, py::array::c_style | py::array::forcecast>& theta0,
-                                     const std::string& method, int terms, bool excess) {
+py::array_t<double> finite_amplitude(const Doubles& theta0, const std::string& method, int terms, bool excess,
+                                     const py::object& into) {
   const AmplitudeMethod m = amplitude_method(method);
   if (m == AmplitudeMethod::automatic) throw py::value_error("method: auto needs a tolerance; use exact");
   if (terms < 1) throw py::value_error("terms: got " + std::to_string(terms) + "; expected at least 1");
   const double one = excess ? 0.0 : 1.0;
   if (m == AmplitudeMethod::agm) {
-    py::array_t<double> out(std::vector<py::ssize_t>(theta0.shape(), theta0.shape() + theta0.ndim()));
+    py::array_t<double> out = output_for(theta0, into);
     double* result = out.mutable_data();
     const auto n = static_cast<std::size_t>(theta0.size());
     std::size_t stop = 0;
@@ -280,7 +298,7 @@ py::array_t<double> finite_amplitude(const py::array_t<double, py::array::c_styl
       throw std::domain_error(kAmplitudeRange);
     }
     return one + pendulum::finite_amplitude(m, t, terms);
-  });
+  }, into);
 }
 
 /// ValueError naming the argument `name` unless `value` is finite.
@@ -333,10 +351,12 @@ PYBIND11_MODULE(_core, m) {
         py::arg("negligible_fraction"), py::arg("amplitude_method"), py::arg("series_terms"),
         "`pendulum-g report`'s page, written to output (or returned), and its warnings.");
   m.def("finite_amplitude", &finite_amplitude, py::arg("theta0"), py::arg("method") = "exact",
-        py::arg("terms") = 4, py::arg("excess") = false,
+        py::arg("terms") = 4, py::arg("excess") = false, py::arg("out") = py::none(),
         "T/T0 at amplitude theta0 (rad, any array shape, 0 <= theta0 < pi): exact (the AGM, Nelson & Olsson "
         "Eq. 8 summed), series (Eq. 8 through `terms` terms) or small_angle (1 + theta0^2/16). "
-        "excess=True gives T/T0 - 1 at full relative precision.");
+        "excess=True gives T/T0 - 1 at full relative precision. out: a float64 array of theta0's shape to write "
+        "into and return, as numpy's out= (theta0 itself may be it; on an error it holds the elements before "
+        "the refused one).");
   m.def(
       "normal_gravity",
       [](const py::array_t<double>& latitude, const py::array_t<double>& height) {

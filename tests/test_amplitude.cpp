@@ -546,4 +546,17 @@ TEST_CASE("finite_amplitude_agm_many: the scalar function's values, bit for bit"
     CHECK(out[699] == finite_amplitude_agm(some[699]));
     CHECK(std::all_of(out.begin() + 768, out.end(), [](double v) { return v == -1.0; }));
   }
+
+  // Blocks wholly in the first case (not sorted), its limit included, and a
+  // bad amplitude among them still named.
+  std::vector<double> low;
+  for (int i = 0; low.size() < 1000; ++i) low.push_back(std::fmod(i * 0.7548776662466927, 1.0) * detail::kOneAgmStepLimit);
+  low[3] = detail::kOneAgmStepLimit;
+  std::vector<double> out(low.size(), -1.0);
+  REQUIRE(finite_amplitude_agm_many(low.data(), out.data(), low.size()) == low.size());
+  for (std::size_t i = 0; i < low.size(); ++i) CHECK(out[i] == finite_amplitude_agm(low[i]));
+  for (double bad : {-0.5, std::numeric_limits<double>::quiet_NaN()}) {
+    low[600] = bad;
+    CHECK(finite_amplitude_agm_many(low.data(), out.data(), low.size()) == 600);
+  }
 }

@@ -5,7 +5,8 @@
 // cases without a branch, each case runs as a straight loop over its own
 // contiguous values (vectorised: the first two cases are arithmetic and
 // sqrt; the third, above 160 deg, calls log and stays scalar), and the
-// results go back in place. Compiled with -ffp-contract=off (lib/CMakeLists.txt),
+// results go back in place. A block wholly in the first case (below 90 deg)
+// is not sorted: the sorting cost more than the formula. Compiled with -ffp-contract=off (lib/CMakeLists.txt),
 // so that no multiply-add is fused: the values are the scalar function's, bit
 // for bit, in every instruction set.
 
@@ -39,7 +40,24 @@ PENDULUM_CASE_LOOP(two_agm_steps_loop, exact_two_agm_steps<double>)
 #undef PENDULUM_CASE_LOOP
 #undef PENDULUM_INLINE_ALL
 
+/// Whether every amplitude is valid and in the first case (most pendulums'
+/// every amplitude): such a block needs no sorting. A loop without a branch.
+bool all_in_first_case(const double* theta0, std::size_t n) {
+  bool valid = true;
+  double highest = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = theta0[i];
+    valid &= t >= 0.0;  // false for NaN
+    highest = t > highest ? t : highest;
+  }
+  return valid && highest <= detail::kOneAgmStepLimit;
+}
+
 std::size_t agm_block(const double* theta0, double* excess, std::size_t n) {
+  if (all_in_first_case(theta0, n)) {
+    one_agm_step_loop(theta0, excess, n);
+    return n;
+  }
   // Every amplitude is written to all three lists and counted in the one of
   // its case: no branch, and the counts stay in registers.
   double first[kBlock], second[kBlock], third[kBlock];

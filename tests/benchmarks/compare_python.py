@@ -11,7 +11,9 @@ built, the CLI beside it):
    2*scipy.special.ellipk(np.sin(t/2)**2)/np.pi, median of 7 runs each, run
    alternately (one thread, the same array), and each one's worst error against mpmath at 40
    digits over the first 10^4 of the same amplitudes, in units of the
-   result's ulp.
+   result's ulp. Then the same with each one writing into arrays it
+   reuses (numpy's out=: pendulum_g's one output, scipy's formula step by
+   step into one buffer), which leaves out the page faults of fresh memory.
 2. The Nelson-Olsson scene: pendulum_g.reduce in this process against a
    subprocess call of `pendulum-g reduce` on the same file, median of 21.
 """
@@ -60,6 +62,22 @@ def main():
               f"{worst_ulp(pendulum_g.finite_amplitude(sample), sample):7.1f} ulp")
         print(f"  scipy.special.ellipk formula     {peer * 1e3:8.2f} ms   worst error "
               f"{worst_ulp(scipy_ratio()[:10_000], sample):7.1f} ulp")
+        print(f"  ratio scipy / pendulum_g         {peer / ours:8.1f}x")
+        ours_out, peer_out = np.empty_like(theta), np.empty_like(theta)
+
+        def scipy_into():
+            np.multiply(theta, 0.5, out=peer_out)
+            np.sin(peer_out, out=peer_out)
+            np.square(peer_out, out=peer_out)
+            scipy.special.ellipk(peer_out, out=peer_out)
+            np.multiply(peer_out, 2 / np.pi, out=peer_out)
+
+        ours, peer = median_seconds(lambda: pendulum_g.finite_amplitude(theta, out=ours_out), scipy_into, 7)
+        assert np.array_equal(ours_out, pendulum_g.finite_amplitude(theta))
+        assert np.allclose(peer_out, scipy_ratio(), rtol=1e-15, atol=0)
+        print("  the same into reused arrays (out=):")
+        print(f"  pendulum_g.finite_amplitude      {ours * 1e3:8.2f} ms")
+        print(f"  scipy.special.ellipk formula     {peer * 1e3:8.2f} ms")
         print(f"  ratio scipy / pendulum_g         {peer / ours:8.1f}x")
 
     scene = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "data", "nelson_olsson_1986.json")

@@ -188,6 +188,28 @@ def test_finite_amplitude_methods_and_limits():
         pendulum_g.finite_amplitude(1.0, method="elliptic")
 
 
+def test_finite_amplitude_into_out_as_numpy_does():
+    theta = np.radians(np.linspace(0.0, 179.0, 1000)).reshape(10, 100)
+    expected = pendulum_g.finite_amplitude(theta)
+    for method in ("exact", "series"):
+        out = np.full_like(theta, np.nan)
+        assert pendulum_g.finite_amplitude(theta, method=method, out=out) is out
+        np.testing.assert_array_equal(out, pendulum_g.finite_amplitude(theta, method=method))
+    in_place = theta.copy()  # the amplitudes themselves may be the output
+    pendulum_g.finite_amplitude(in_place, out=in_place)
+    np.testing.assert_array_equal(in_place, expected)
+    with pytest.raises(ValueError, match="out: its shape is not theta0's"):
+        pendulum_g.finite_amplitude(theta, out=np.empty(1000))
+    with pytest.raises(TypeError, match="out: expected a C-contiguous numpy array of float64"):
+        pendulum_g.finite_amplitude(theta, out=np.empty((10, 100), dtype=np.float32))
+    with pytest.raises(TypeError, match="out: expected a C-contiguous"):
+        pendulum_g.finite_amplitude(theta, out=np.empty((100, 10)).T)
+    read_only = np.empty_like(theta)
+    read_only.flags.writeable = False
+    with pytest.raises(ValueError, match="out: the array is read-only"):
+        pendulum_g.finite_amplitude(theta, out=read_only)
+
+
 def test_normal_gravity_at_the_wgs84_defining_values():
     # WGS84 (NIMA TR8350.2, Table 3.4): normal gravity at the equator
     # 9.7803253359 and at the poles 9.8321849378 m/s^2, on the ellipsoid.

@@ -1,5 +1,6 @@
 #include "text.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -59,6 +60,19 @@ std::string format_percent(double fraction) {
   os.precision(0);
   os << percent << "%";
   return os.str();
+}
+
+int decimals_for_uncertainty(double u, int most) {
+  if (!(u > 0.0) || !std::isfinite(u)) return 5;
+  return std::clamp(1 - static_cast<int>(std::floor(std::log10(u))), 0, most);
+}
+
+CorrectionDecimals correction_decimals(double delta_T, const std::optional<double>& delta_T_uncertainty, double delta_g) {
+  auto decimals = [](double u) { return u > 0.0 && std::isfinite(u) ? std::min(decimals_for_uncertainty(u, 9), 4) : 4; };
+  if (!delta_T_uncertainty) return {4, 4};
+  const double u_us = *delta_T_uncertainty * 1e6;
+  const double g_per_us = delta_T != 0.0 ? std::abs(delta_g * 1e5 / (delta_T * 1e6)) : 1.0;
+  return {decimals(u_us), decimals(u_us * g_per_us)};
 }
 
 }  // namespace pendulum

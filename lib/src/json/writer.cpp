@@ -8,6 +8,7 @@
 
 #include "pendulum/output.hpp"
 #include "writer.hpp"
+#include "../text.hpp"
 
 namespace pendulum {
 
@@ -428,12 +429,8 @@ std::string plus_minus(const std::optional<double>& u, const char* format) {
   return std::string("+- ") + text;
 }
 
-/// Decimals that show `u` to two significant digits, as a lab report
-/// rounds a value to its uncertainty.
-int decimals_of(double u) {
-  if (!(u > 0.0) || !std::isfinite(u)) return 5;
-  return std::clamp(1 - static_cast<int>(std::floor(std::log10(u))), 0, 12);
-}
+/// Decimals that show `u` to two significant digits (5 for none, at most 12).
+int decimals_of(double u) { return decimals_for_uncertainty(u, 12); }
 
 /// "9.8034 +- 0.0015": the value rounded to its uncertainty.
 std::string rounded(double value, const std::optional<double>& u) {
@@ -565,10 +562,13 @@ void correction_table(std::ostringstream& os, const ObservationResult& o) {
   os << line;
   for (const auto& row : o.corrections) {
     if (row.delta_T) {
+      // Rounded to the row's uncertainty, as the pages' table (correction_decimals).
+      const CorrectionDecimals d = correction_decimals(*row.delta_T, row.delta_T_uncertainty, *row.delta_g);
       char sigma[32] = "?";
-      if (row.delta_T_uncertainty) std::snprintf(sigma, sizeof sigma, "%10.4f", *row.delta_T_uncertainty * 1e6);
-      std::snprintf(line, sizeof line, "%-26s %+12.4f %10s %+16.4f  %-10s %s\n", row.info.title, *row.delta_T * 1e6,
-                    sigma, *row.delta_g * 1e5, status_name(row.status), row.method.c_str());
+      if (row.delta_T_uncertainty) std::snprintf(sigma, sizeof sigma, "%10.*f", d.delta_T, *row.delta_T_uncertainty * 1e6);
+      std::snprintf(line, sizeof line, "%-26s %+12.*f %10s %+16.*f  %-10s %s\n", row.info.title, d.delta_T,
+                    *row.delta_T * 1e6, sigma, d.delta_g, *row.delta_g * 1e5, status_name(row.status),
+                    row.method.c_str());
     } else {
       std::snprintf(line, sizeof line, "%-26s %12s %10s %16s  %-10s %s\n", row.info.title, "-", "", "-",
                     status_name(row.status), row.reason.c_str());

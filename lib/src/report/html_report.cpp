@@ -9,6 +9,7 @@
 #include "pendulum/status.hpp"
 #include "pendulum/report/plots.hpp"
 #include "pendulum/report/svg_plot.hpp"
+#include "../text.hpp"
 
 namespace pendulum::report {
 
@@ -61,12 +62,8 @@ tr.suspect td { background: #FFF4EC; }
   h2, h3 { break-after: avoid; } figure, table { break-inside: avoid; } }
 )";
 
-/// Decimals that show `u` to two significant digits, as a lab report rounds
-/// a value to its uncertainty (5 for none, at most 9).
-int decimals_for(double u) {
-  if (!(u > 0.0) || !std::isfinite(u)) return 5;
-  return std::clamp(1 - static_cast<int>(std::floor(std::log10(u))), 0, 9);
-}
+/// Decimals that show `u` to two significant digits (5 for none, at most 9).
+int decimals_for(double u) { return decimals_for_uncertainty(u, 9); }
 
 /// An estimate rounded to its uncertainty, as a lab report writes it:
 /// "9.693 ± 0.020 m/s²"; `decimals` fixed digits where it is unknown.
@@ -162,11 +159,6 @@ std::string short_equation(const std::string& equation) {
   return equation.compare(0, prefix.size(), prefix) == 0 ? equation.substr(prefix.size()) : equation;
 }
 
-/// Decimals of a correction's cell in us or 1e-5 m/s^2: its uncertainty `u`
-/// to two significant digits (decimals_for), at most the 4 (0.1 ns) that a
-/// row without an uncertainty shows.
-int cell_decimals(std::optional<double> u) { return u && *u > 0.0 && std::isfinite(*u) ? std::min(decimals_for(*u), 4) : 4; }
-
 std::string corrections_table(const SceneReport& r) {
   std::string s = "<p>A correction smaller than " + duration_text(r.negligible_below, 3) +
                   " (a tenth of the period's uncertainty) is negligible; it is still applied.</p>\n"
@@ -178,18 +170,13 @@ std::string corrections_table(const SceneReport& r) {
   // Each row rounded to its uncertainty, as a lab report writes it.
   for (const auto& c : r.corrections) {
     const std::string status = c.status == "skipped" && !c.reason.empty() ? c.status + ": " + c.reason : c.status;
-    const std::optional<double> u_us =
-        c.delta_T_uncertainty ? std::optional<double>(*c.delta_T_uncertainty * 1e6) : std::nullopt;
-    // Delta g (1e-5 m/s^2) is proportional to Delta T, and so is its uncertainty.
-    const double g_per_us = c.delta_T && c.delta_g && *c.delta_T != 0.0 ? std::abs(*c.delta_g * 1e5 / (*c.delta_T * 1e6)) : 1.0;
-    const int t_decimals = cell_decimals(u_us);
-    const int g_decimals = cell_decimals(u_us ? std::optional<double>(*u_us * g_per_us) : std::nullopt);
+    const CorrectionDecimals decimals = correction_decimals(c.delta_T.value_or(0.0), c.delta_T_uncertainty, c.delta_g.value_or(0.0));
     s += "<tr class=\"" + esc(c.status) + "\"><td>" + esc(c.title) + "</td><td class=\"num\">" +
-         optional_fixed(c.delta_T, 1e6, t_decimals, true) + "</td><td class=\"num\">" +
+         optional_fixed(c.delta_T, 1e6, decimals.delta_T, true) + "</td><td class=\"num\">" +
          (c.delta_T && !c.delta_T_uncertainty ? std::string(kUncertaintyUnknown)
-                                              : optional_fixed(c.delta_T_uncertainty, 1e6, t_decimals, false)) +
+                                              : optional_fixed(c.delta_T_uncertainty, 1e6, decimals.delta_T, false)) +
          "</td><td class=\"num\">" +
-         optional_fixed(c.delta_g, 1e5, g_decimals, true) + "</td><td>" + esc(status) + "</td><td class=\"method\">" +
+         optional_fixed(c.delta_g, 1e5, decimals.delta_g, true) + "</td><td>" + esc(status) + "</td><td class=\"method\">" +
          (c.method.empty() ? "\u2014" : esc(c.method)) + "</td><td>" + esc(short_equation(c.equation)) + "</td></tr>\n";
   }
   return s + "</tbody>\n</table>\n";

@@ -119,6 +119,26 @@ struct WithoutOwnCorrections : SimplePendulum {
 struct WithoutSolveG : SimplePendulum {
   static void solve_g() = delete;
 };
+struct WithoutReadKeys : PhysicalPendulum {
+  static void read_keys() = delete;
+};
+struct WithoutExpectation : SimplePendulum {
+  static void expectation() = delete;
+};
+struct WithoutCheckRows : SimplePendulum {
+  static void check_rows() = delete;
+};
+struct WithoutSkippedPartWarnings : SimplePendulum {
+  static void skipped_part_warnings() = delete;
+};
+// The verdict's words in another type than SuspectCauses.
+struct WithoutSuspectCauses : PhysicalPendulum {
+  static constexpr const char* kSuspectCauses = "a pivot position misread";
+};
+// The plausibility checks' expectation in another type than Expectation.
+struct ExpectingAPeriodAlone : SimplePendulum {
+  static std::optional<double> expectation(const ParsedScene&, const Observation<double>&) { return 1.0; }
+};
 }  // namespace
 
 TEST_CASE("A kind that lacks a piece of the interface is not a period model", "[models]") {
@@ -129,4 +149,10 @@ TEST_CASE("A kind that lacks a piece of the interface is not a period model", "[
   STATIC_REQUIRE_FALSE(is_period_model<WithoutPredict>());
   STATIC_REQUIRE_FALSE(is_period_model<WithoutOwnCorrections>());
   STATIC_REQUIRE_FALSE(is_period_model<WithoutSolveG>());
+  STATIC_REQUIRE_FALSE(is_period_model<WithoutReadKeys>());
+  STATIC_REQUIRE_FALSE(is_period_model<WithoutExpectation>());
+  STATIC_REQUIRE_FALSE(is_period_model<WithoutCheckRows>());
+  STATIC_REQUIRE_FALSE(is_period_model<WithoutSkippedPartWarnings>());
+  STATIC_REQUIRE_FALSE(is_period_model<WithoutSuspectCauses>());
+  STATIC_REQUIRE_FALSE(is_period_model<ExpectingAPeriodAlone>());
 }

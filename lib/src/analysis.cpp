@@ -591,7 +591,11 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
     out.drag = predict_drag(scene.apparatus, scene.observations[0]);
   }
   visit_period_model(scene.model, [&](auto model) { Fit<decltype(model)>(scene, options, out).run(); });
-  for (auto& w : warn_about_skipped_parts(scene, options.negligible_fraction)) out.warnings.push_back(std::move(w));
+  for (auto& w : visit_period_model(scene.model, [&](auto model) {
+         return decltype(model)::skipped_part_warnings(scene, options.negligible_fraction);
+       })) {
+    out.warnings.push_back(std::move(w));
+  }
 
   if (scene.site) out.expected_g = expected_gravity(*scene.site);
   if (!out.expected_g) out.surface_g = earth_surface_gravity();

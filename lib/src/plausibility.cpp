@@ -7,7 +7,7 @@
 
 #include "pendulum/air.hpp"
 #include "pendulum/input_error.hpp"
-#include "pendulum/models/physical_pendulum.hpp"
+#include "pendulum/models/registry.hpp"
 #include "pendulum/reduction.hpp"
 #include "pendulum/status.hpp"
 #include "pendulum/units.hpp"
@@ -26,27 +26,9 @@ constexpr double kPeriodFactor = 10.0;
 constexpr double kPeriodFit = 0.01;
 constexpr double kSmallAngleLab = 20.0;  // (deg)
 
-/// The period this pendulum has at standard gravity, with every correction:
-/// 2 pi sqrt(l/g) T/T0 (Eqs. 3, 6); a rigid body's from its k and centre
-/// (measured or from its parts, also where the fit replaces them), none
-/// when the scene does not give them.
-std::optional<double> expected_period(const ParsedScene& scene, const Observation<double>& o) {
-  if (scene.model == PeriodModelKind::simple_pendulum) {
-    return ideal_period(o.length, kStandardGravity) * (1.0 + reduce(scene.apparatus, o).total_ratio);
-  }
-  Apparatus<double> app = scene.apparatus;
-  if (!app.body) return std::nullopt;
-  RigidBody<double>& body = *app.body;
-  if (scene.body_from_parts) {
-    if (!body.radius_of_gyration) body.radius_of_gyration = scene.body_from_parts->radius_of_gyration;
-    if (!body.center_of_mass_position) body.center_of_mass_position = scene.body_from_parts->center_of_mass_position;
-  }
-  if (!body.radius_of_gyration || (o.setting == Setting::pivot_position && !body.center_of_mass_position)) {
-    return std::nullopt;
-  }
-  const double p[PhysicalPendulum::kParameters] = {kStandardGravity, 0.0, 0.0};  // k and the centre: the body's
-  return predicted_period<PhysicalPendulum>(p, PhysicalPendulum::swing(o), app,
-                                            cheapest_amplitude_method(o.amplitude, 0.0));
+/// What the scene's model expects of observation o (Expectation).
+std::optional<Expectation> expectation(const ParsedScene& scene, const Observation<double>& o) {
+  return visit_period_model(scene.model, [&](auto model) { return decltype(model)::expectation(scene, o); });
 }
 
 /// Where the period came from a recording, the recording as a likely cause:
@@ -71,29 +53,15 @@ std::string off_by(double ratio) {
   return format_percent(std::abs(ratio - 1.0)) + " " + (ratio > 1.0 ? "longer" : "shorter");
 }
 
-void check_first_order(const Apparatus<double>& app, const Observation<double>& o) {
-  const Reduction<double> r = reduce(app, o);
-  for (int i = 0; i < kCorrectionCount; ++i) {
-    const std::optional<double>& x = r.terms[i].ratio;
-    const CorrectionInfo& info = kCorrections[i];
-    if (!x || std::abs(*x) < info.max_ratio) continue;
-    // A bob light as a balloon is most often a unit slip: say which.
-    const auto bob = bob_density_slip(app);
-    throw InputError(info.part, "got DeltaT/T0 = " + format_number(*x) + " for \"" + info.title + "\" (" +
-                                    info.equation + "); expected |DeltaT/T0| below " +
-                                    format_number(info.max_ratio) + ", where its first-order formula holds" +
-                                    (bob ? "; " + *bob : ""));
-  }
-}
 
-/// `expected_or_none`: expected_period of observation k.
-void check_observation(ParsedScene& scene, std::size_t k, const std::optional<double>& expected_or_none) {
+/// `expected_or_none`: the expectation of observation k.
+void check_observation(ParsedScene& scene, std::size_t k, const std::optional<Expectation>& expected_or_none) {
   const Apparatus<double>& app = scene.apparatus;
   const Observation<double>& o = scene.observations[k];
   const ObservationSource& source = scene.sources[k];
   const std::string& at = source.path;
   if (!expected_or_none) return;  // a body whose k or centre the fit finds
-  const double expected = *expected_or_none;
+  const double expected = expected_or_none->period;
   const double ratio = o.period / expected;
   const std::string standard = "standard gravity (" + format_number(kStandardGravity) + " m/s^2)";
   const std::string at_g = "this pendulum has at " + standard;
@@ -105,7 +73,7 @@ void check_observation(ParsedScene& scene, std::size_t k, const std::optional<do
     const double raw = source.amplitude_raw;
     Observation<double> alt = o;
     alt.amplitude = raw * find_unit(other, Dimension::angle)->factor;
-    const double alt_ratio = alt.amplitude < kPi ? o.period / *expected_period(scene, alt) : 0.0;
+    const double alt_ratio = alt.amplitude < kPi ? o.period / expectation(scene, alt)->period : 0.0;
     if (std::abs(alt_ratio - 1.0) <= kPeriodFit) {
       throw InputError(source.path_of("amplitude.unit"), "got \"" + unit + "\": at " + format_number(raw) + " " + unit +
                                                   " the measured period is " + off_by(ratio) + " than the one " +
@@ -114,11 +82,9 @@ void check_observation(ParsedScene& scene, std::size_t k, const std::optional<do
     }
   }
 
-  // Against the finite-amplitude correction alone, so that a wrong unit is
-  // named as such before it drives a correction out of its range.
-  const double swing = scene.model == PeriodModelKind::simple_pendulum
-                           ? ideal_period(o.length, kStandardGravity) * (1.0 + finite_amplitude_agm(o.amplitude))
-                           : expected;
+  // Against the model's slip check (a ball's finite amplitude alone), so that
+  // a wrong unit is named as such before it drives a correction out of its range.
+  const double swing = expected_or_none->slip_check;
   // A frequency (1/s) typed where the trial times belong: its inverse is the
   // pendulum's period, or the time of the oscillations per trial.
   const double trial = o.period * o.oscillations_per_trial;  // (s) the mean trial, as typed
@@ -144,7 +110,7 @@ void check_observation(ParsedScene& scene, std::size_t k, const std::optional<do
                          recording_cause(scene, source));
   }
 
-  if (scene.model == PeriodModelKind::simple_pendulum) check_first_order(app, o);  // a ball's rows
+  visit_period_model(scene.model, [&](auto model) { decltype(model)::check_rows(scene, o); });
 
   if (std::abs(ratio - 1.0) > kPeriodWarning) {
     scene.warnings.push_back(at + "timing.trials: the measured period " + format_number(o.period, 5) + " s is " +
@@ -165,6 +131,21 @@ void check_observation(ParsedScene& scene, std::size_t k, const std::optional<do
 }
 
 }  // namespace
+
+void check_first_order(const Apparatus<double>& app, const Observation<double>& o) {
+  const Reduction<double> r = reduce(app, o);
+  for (int i = 0; i < kCorrectionCount; ++i) {
+    const std::optional<double>& x = r.terms[i].ratio;
+    const CorrectionInfo& info = kCorrections[i];
+    if (!x || std::abs(*x) < info.max_ratio) continue;
+    // A bob light as a balloon is most often a unit slip: say which.
+    const auto bob = bob_density_slip(app);
+    throw InputError(info.part, "got DeltaT/T0 = " + format_number(*x) + " for \"" + info.title + "\" (" +
+                                    info.equation + "); expected |DeltaT/T0| below " +
+                                    format_number(info.max_ratio) + ", where its first-order formula holds" +
+                                    (bob ? "; " + *bob : ""));
+  }
+}
 
 void check_first_order(const ParsedScene& scene) {
   for (const auto& o : scene.observations) check_first_order(scene.apparatus, o);
@@ -203,11 +184,11 @@ std::optional<std::string> warn_about_unknown_ball(const ParsedScene& scene, dou
 
 }  // namespace
 
-std::vector<std::string> warn_about_skipped_parts(const ParsedScene& scene, double negligible_fraction) {
+std::vector<std::string> warn_about_skipped_ball_parts(const ParsedScene& scene, double negligible_fraction) {
   const Apparatus<double>& app = scene.apparatus;
   std::vector<std::string> warnings;
   if (!app.bob) {
-    if (!app.air && !app.vacuum && scene.model == PeriodModelKind::simple_pendulum) {
+    if (!app.air && !app.vacuum) {
       if (auto w = warn_about_unknown_ball(scene, negligible_fraction)) warnings.push_back(std::move(*w));
     }
     return warnings;
@@ -262,15 +243,15 @@ std::string in_observation(std::string text, const ObservationSource& source) {
 /// explains, unless every observation gives the same: that slip shows in
 /// the fitted g itself (status.cpp), while one slipped observation only
 /// drags the fit somewhere no slip names. `expected`: each observation's
-/// expected_period.
-void name_observation_slips(ParsedScene& scene, const std::vector<std::optional<double>>& expected) {
+/// expectation.
+void name_observation_slips(ParsedScene& scene, const std::vector<std::optional<Expectation>>& expected) {
   const std::size_t n = scene.observations.size();
   if (n < 2) return;
   std::vector<std::optional<std::string>> slips(n);
   std::vector<double> ratios(n);
   for (std::size_t k = 0; k < n; ++k) {
     if (!expected[k]) return;  // a body whose k or centre the fit finds
-    const double ratio = *expected[k] / scene.observations[k].period;
+    const double ratio = expected[k]->period / scene.observations[k].period;
     ratios[k] = ratio * ratio;  // g = 4 pi^2 l / T^2
     slips[k] = name_slip(ratios[k]);
   }
@@ -285,8 +266,8 @@ void name_observation_slips(ParsedScene& scene, const std::vector<std::optional<
 }
 
 void check_plausibility(ParsedScene& scene) {
-  std::vector<std::optional<double>> expected;
-  for (const auto& o : scene.observations) expected.push_back(expected_period(scene, o));
+  std::vector<std::optional<Expectation>> expected;
+  for (const auto& o : scene.observations) expected.push_back(expectation(scene, o));
   for (std::size_t k = 0; k < scene.observations.size(); ++k) check_observation(scene, k, expected[k]);
   name_observation_slips(scene, expected);
 }

@@ -15,8 +15,12 @@ namespace pendulum {
 inline constexpr const char* kFrequencyTyped = "a frequency (Hz) typed where trial times belong?";
 
 /// Throws InputError naming the part whose correction leaves its
-/// first-order range (|DeltaT/T0| >= its limit in kCorrections) for any
-/// observation. The analysis runs it again on a fitted decay.
+/// first-order range (|DeltaT/T0| >= its limit in kCorrections) for
+/// observation o of a ball on a wire (reduce's rows).
+void check_first_order(const Apparatus<double>& app, const Observation<double>& o);
+
+/// check_first_order for every observation. The analysis runs it again on a
+/// fitted decay.
 void check_first_order(const ParsedScene& scene);
 
 /// Refuses a period no laboratory's g explains and an amplitude in the other
@@ -24,11 +28,12 @@ void check_first_order(const ParsedScene& scene);
 /// check_first_order.
 void check_plausibility(ParsedScene& scene);
 
-/// Warnings about corrections skipped for a part the scene does not describe
-/// that would not be negligible for typical values: room air (20 degC,
-/// 101.325 kPa) where the scene gives no air, a steel bob (7850 kg/m^3) of
-/// the given diameter where it gives no bob mass. Negligible as in the
-/// analysis: below `negligible_fraction` of the period's uncertainty.
-std::vector<std::string> warn_about_skipped_parts(const ParsedScene& scene, double negligible_fraction);
+/// Warnings about corrections skipped for a part a ball's scene does not
+/// describe that would not be negligible for typical values: room air (20
+/// degC, 101.325 kPa) where the scene gives no air, a steel bob (7850
+/// kg/m^3) of the given diameter where it gives no bob mass, a steel and a
+/// wooden ball where it gives neither. Negligible as in the analysis: below
+/// `negligible_fraction` of the period's uncertainty.
+std::vector<std::string> warn_about_skipped_ball_parts(const ParsedScene& scene, double negligible_fraction);
 
 }  // namespace pendulum

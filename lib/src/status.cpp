@@ -8,6 +8,7 @@
 #include "pendulum/analysis.hpp"
 #include "pendulum/dispersion.hpp"
 #include "pendulum/drag.hpp"
+#include "pendulum/models/registry.hpp"
 #include "pendulum/numeric.hpp"
 #include "plausibility.hpp"
 #include "text.hpp"
@@ -24,6 +25,11 @@ const char* result_status_name(ResultStatus s) {
 }
 
 namespace {
+
+/// The words of the scene's model for what goes wrong with it.
+const SuspectCauses& suspect_causes(const ParsedScene& scene) {
+  return *visit_period_model(scene.model, [](auto model) { return &decltype(model)::kSuspectCauses; });
+}
 
 /// A slip and the ratio it makes g / true g, from g = 4 pi^2 L / T^2.
 struct Slip {
@@ -93,7 +99,7 @@ std::optional<std::string> name_systematic(const ParsedScene& scene, const Analy
   const Observation<double>& o = scene.observations.front();
   const double sigma = std::abs(a.g.value - expected) / std::abs(z);  // the combined standard uncertainty
   const auto& bob = scene.apparatus.bob;
-  if (top_of_ball && scene.model == PeriodModelKind::simple_pendulum && bob &&
+  if (top_of_ball && suspect_causes(scene).lengths_to_bob && bob &&
       scene.sources.front().measured_to == "center" && a.g.value < expected) {
     const double radius = bob->knot_to_center();
     const bool ball = bob->shape == BobShape::sphere;
@@ -344,15 +350,14 @@ bool offset_fitted(const Analysis& a) {
 /// how much, what it means, and the uncertainty the scatter supports.
 void judge_dispersion(const ParsedScene& scene, const Analysis& a, std::vector<std::string>& reasons) {
   if (a.fit.scaled && a.g.uncertainty && a.g_uncertainty_unscaled) {
-    const bool rigid = scene.model == PeriodModelKind::physical_pendulum;
+    const SuspectCauses& causes = suspect_causes(scene);
     reasons.push_back(
         "fit: " + dispersion_finding(dispersion(a.fit.chi2, a.fit.dof), "the observations scatter about the fit") +
         ": uncertainties understated, or something the model misses (" +
-        (rigid ? "a pivot position misread, a miscounted oscillation, a body that is not rigid"
-               : "a miscounted oscillation, a length misread or taken to another point") +
-        ")?" + (rigid || offset_fitted(a) ? std::string()
-                                          : " Lengths measured to another point than the bob's centre (its top, "
-                                            "the knot) are fitted out by \"fit\": [\"length_offset\"].") +
+        causes.scatter + ")?" +
+        (!causes.lengths_to_bob || offset_fitted(a) ? std::string()
+                                                    : " Lengths measured to another point than the bob's centre (its "
+                                                      "top, the knot) are fitted out by \"fit\": [\"length_offset\"].") +
         " g's uncertainty is the one the scatter supports, " + format_number(*a.g.uncertainty, 3) +
         " m/s^2: the share of the observations' own uncertainties scaled by the Birge ratio S = " +
         format_number(*a.fit.birge_ratio, 3) + " (from the stated uncertainties alone " +
@@ -380,11 +385,8 @@ std::optional<std::string> name_slip(double ratio) {
 Verdict judge(const ParsedScene& scene, const Analysis& analysis) {
   Verdict v;
   auto bob = bob_density_slip(scene.apparatus);
-  const bool rigid = scene.model == PeriodModelKind::physical_pendulum;
-  const std::string settings =
-      !rigid ? "the length (pivot to the bob's centre)"
-      : scene.body_from_parts ? "the pivots, and the body's parts (masses, dimensions, positions and their units)"
-                              : "the pivots, the radius of gyration and the centre of mass";
+  const SuspectCauses& causes = suspect_causes(scene);
+  const std::string settings = scene.body_from_parts ? causes.settings_from_parts : causes.settings;
   // What the reader and the plausibility checks found first: they name a
   // cause where the ratio of g only matches a slip by chance (a frequency
   // typed as trials gives g (T^2)^2 times too large).

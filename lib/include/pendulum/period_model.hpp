@@ -31,6 +31,16 @@
 ///       amplitude): T/T0 - 1 and its parts, predict()'s without the rows,
 ///   template <class T> T solve_g(const T* p, observation, apparatus, amplitude):
 ///       the closed form for one observation with g the only unknown,
+///   start(scene, fitted) and report(const FitState&, Analysis&): where its
+///       fit starts, and its results beside the fit's,
+///   read_keys(json_reader::Object&, ParsedScene&): the scene's keys it
+///       reads beyond the shared ones, and check_scene(const ParsedScene&):
+///       its parts against its observations (the scene reader),
+///   expectation(scene, observation) -> std::optional<Expectation>,
+///       check_rows(scene, observation) and skipped_part_warnings(scene,
+///       negligible_fraction): its plausibility checks (plausibility.cpp),
+///   kSuspectCauses: the verdict's words for what goes wrong with it;
+/// the non-templated functions in lib/src/models/<kind>.cpp, the templates
 /// generic in the scalar so that the fit (period_fit.hpp) and the
 /// propagation of uncertainties (analysis.hpp) run it on ceres::Jet. Its
 /// period is then ideal_period(swing_at(...).length, g) (1 + composition):
@@ -48,6 +58,9 @@ namespace pendulum {
 
 struct ParsedScene;
 struct Analysis;
+namespace json_reader {
+class Object;  // a JSON object as the scene reader reads it (lib/src/json/reader.hpp)
+}
 /// What a model's own results read of its fit (lib/src/fit_state.hpp).
 template <int P>
 struct FitState;
@@ -65,6 +78,27 @@ struct ParameterInfo {
   const char* name;  ///< as in the scene's "fit" and the output
   const char* unit;  ///< SI
   const char* description;
+};
+
+/// What a model expects of one observation before any fit, at standard
+/// gravity (its expectation(); the plausibility checks, plausibility.cpp).
+struct Expectation {
+  double period;  ///< (s) with every correction the scene's parts give
+  /// (s) the period a unit typed wrong, a frequency or a miscount is judged
+  /// against: where another row could leave its range first on such a slip,
+  /// the one with the finite amplitude alone.
+  double slip_check;
+};
+
+/// The words the verdict uses for a model's observations (its
+/// kSuspectCauses; status.cpp).
+struct SuspectCauses {
+  const char* settings;             ///< what to check when g is far from the expected
+  const char* settings_from_parts;  ///< the same for a body given by its parts
+  const char* scatter;              ///< what scatters the observations about a fit
+  /// Lengths measured to a point of the bob: its top misread as its centre,
+  /// and the length_offset that a series fits for it, are named.
+  bool lengths_to_bob;
 };
 
 /// Every row of kCorrections as `Model` declares it (kCorrectionUse), handed

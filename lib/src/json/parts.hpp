@@ -31,8 +31,4 @@ void read_decay(Object& top, ParsedScene& out, RecordingReader& recordings);
 /// site: a measured reference g, or latitude and height for normal gravity.
 void read_site(Object& top, ParsedScene& out);
 
-/// A physical pendulum's keys (physical_reader.cpp): center_of_mass_position,
-/// body, temperature; with the checks across its observations. After "fit".
-void read_physical(Object& top, ParsedScene& out);
-
 }  // namespace pendulum::json_reader

@@ -1,4 +1,4 @@
-// The keys of a physical pendulum (docs/physical.md): a measured centre of
+// The keys of a physical pendulum (PhysicalPendulum::read_keys; docs/physical.md): a measured centre of
 // mass, a body given in parts, the temperature; and the checks of a scene
 // whose observations hang a rigid body at pivots.
 #include <algorithm>
@@ -210,7 +210,12 @@ void read_temperature(Object& top, RigidBody<double>& v, RigidBody<double>& u, P
 
 }  // namespace
 
-void read_physical(Object& top, ParsedScene& out) {
+}  // namespace pendulum::json_reader
+
+namespace pendulum {
+
+void PhysicalPendulum::read_keys(json_reader::Object& top, ParsedScene& out) {
+  using namespace json_reader;
   RigidBody<double> v, u;
   if (top.has("body")) read_body(top, v, u);
   const bool fit_k = std::find(out.fit.begin(), out.fit.end(), "radius_of_gyration") != out.fit.end();
@@ -276,4 +281,4 @@ void read_physical(Object& top, ParsedScene& out) {
   out.apparatus_uncertainty.body = u;
 }
 
-}  // namespace pendulum::json_reader
+}  // namespace pendulum

@@ -328,8 +328,29 @@ std::string unknown_names(const std::vector<std::string>& fit) {
   return out;
 }
 
-/// The parts against every observation's length.
-void check_geometry(const ParsedScene& out) {
+/// schema, title, source, notes: what every document may say about itself.
+void read_header(Object& top, ParsedScene& out) {
+  if (top.has("schema")) {
+    const std::string schema = top.text("schema");
+    PENDULUM_FAIL_IF(schema != kSceneSchema, "schema",
+                     "got " + shown(top.at("schema")) + "; expected \"" + kSceneSchema + "\"" +
+                         (schema == kClockSceneSchema ? " (a clock scene is for pendulum-g clock)" : ""));
+  }
+  if (top.has("title")) {
+    // The table prints the title as is: no control character may reach the terminal.
+    out.title = top.text("title");
+    PENDULUM_FAIL_IF(std::any_of(out.title.begin(), out.title.end(),
+                                 [](unsigned char c) { return c < 0x20 || c == 0x7f; }),
+                     "title", "got " + shown(top.at("title")) + "; expected one line of printable text");
+  }
+  if (top.has("source")) out.source = top.text("source");
+  if (top.has("notes")) top.text("notes");
+}
+
+}  // namespace
+
+// The ball model's parts against its lengths (period_model.hpp, check_scene).
+void SimplePendulum::check_scene(const ParsedScene& out) {
   const Apparatus<double>& v = out.apparatus;
   for (std::size_t k = 0; k < out.observations.size(); ++k) {
     const double length = out.observations[k].length;
@@ -353,27 +374,6 @@ void check_geometry(const ParsedScene& out) {
     }
   }
 }
-
-/// schema, title, source, notes: what every document may say about itself.
-void read_header(Object& top, ParsedScene& out) {
-  if (top.has("schema")) {
-    const std::string schema = top.text("schema");
-    PENDULUM_FAIL_IF(schema != kSceneSchema, "schema",
-                     "got " + shown(top.at("schema")) + "; expected \"" + kSceneSchema + "\"" +
-                         (schema == kClockSceneSchema ? " (a clock scene is for pendulum-g clock)" : ""));
-  }
-  if (top.has("title")) {
-    // The table prints the title as is: no control character may reach the terminal.
-    out.title = top.text("title");
-    PENDULUM_FAIL_IF(std::any_of(out.title.begin(), out.title.end(),
-                                 [](unsigned char c) { return c < 0x20 || c == 0x7f; }),
-                     "title", "got " + shown(top.at("title")) + "; expected one line of printable text");
-  }
-  if (top.has("source")) out.source = top.text("source");
-  if (top.has("notes")) top.text("notes");
-}
-
-}  // namespace
 
 std::string scene_directory(const std::string& path) {
   if (path == "-") return ".";
@@ -424,9 +424,10 @@ ParsedScene parse_scene(const std::string& text, const SceneFiles& files) {
   if (top.has("decay")) read_decay(top, out, recordings);
   reduce_swing_by_swing(out);
   if (top.has("site")) read_site(top, out);
-  const bool physical = out.model == PeriodModelKind::physical_pendulum;
-  if (top.has("fit")) visit_period_model(out.model, [&](auto model) { read_fit<decltype(model)>(top, out); });
-  if (physical) read_physical(top, out);
+  visit_period_model(out.model, [&](auto model) {
+    if (top.has("fit")) read_fit<decltype(model)>(top, out);
+    decltype(model)::read_keys(top, out);
+  });
   check_parts_apply(top, out);
   top.finish();
   const std::size_t unknowns = out.fit.size() + 1;
@@ -436,7 +437,7 @@ ParsedScene parse_scene(const std::string& text, const SceneFiles& files) {
                        " unknowns (g" + unknown_names(out.fit) + "); expected at least as many observations "
                        "as unknowns");
   refer_lengths_to_centre(out);
-  if (!physical) check_geometry(out);
+  visit_period_model(out.model, [&](auto model) { decltype(model)::check_scene(out); });
   note_body_amplitudes(out);
   check_plausibility(out);
   return out;

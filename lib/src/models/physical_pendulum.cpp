@@ -260,4 +260,21 @@ void PhysicalPendulum::report(const FitState<kParameters>& fit, Analysis& out) {
   out.fit.pivot_scan = scan;
 }
 
+std::optional<Expectation> PhysicalPendulum::expectation(const ParsedScene& scene, const Observation<double>& o) {
+  Apparatus<double> app = scene.apparatus;
+  if (!app.body) return std::nullopt;
+  RigidBody<double>& body = *app.body;
+  if (scene.body_from_parts) {
+    if (!body.radius_of_gyration) body.radius_of_gyration = scene.body_from_parts->radius_of_gyration;
+    if (!body.center_of_mass_position) body.center_of_mass_position = scene.body_from_parts->center_of_mass_position;
+  }
+  if (!body.radius_of_gyration || (o.setting == Setting::pivot_position && !body.center_of_mass_position)) {
+    return std::nullopt;
+  }
+  const double p[kParameters] = {kStandardGravity, 0.0, 0.0};  // k and the centre: the body's
+  const double period =
+      predicted_period<PhysicalPendulum>(p, swing(o), app, cheapest_amplitude_method(o.amplitude, 0.0));
+  return Expectation{period, period};
+}
+
 }  // namespace pendulum

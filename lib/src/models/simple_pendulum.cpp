@@ -11,6 +11,7 @@
 #include <boost/math/special_functions/gamma.hpp>
 
 #include "../fit_state.hpp"
+#include "../plausibility.hpp"
 #include "../text.hpp"
 #include "pendulum/period_fit.hpp"
 
@@ -90,6 +91,20 @@ void SimplePendulum::report(const FitState<kParameters>& fit, Analysis& out) {
                               format_number(lower, 2) + ": the periods' uncertainties are too large");
     }
   }
+}
+
+std::optional<Expectation> SimplePendulum::expectation(const ParsedScene& scene, const Observation<double>& o) {
+  const double ideal = ideal_period(o.length, kStandardGravity);  // Eq. (3)
+  return Expectation{ideal * (1.0 + reduce(scene.apparatus, o).total_ratio),
+                     ideal * (1.0 + finite_amplitude_agm(o.amplitude))};
+}
+
+void SimplePendulum::check_rows(const ParsedScene& scene, const Observation<double>& o) {
+  check_first_order(scene.apparatus, o);
+}
+
+std::vector<std::string> SimplePendulum::skipped_part_warnings(const ParsedScene& scene, double negligible_fraction) {
+  return warn_about_skipped_ball_parts(scene, negligible_fraction);
 }
 
 }  // namespace pendulum

@@ -67,8 +67,8 @@ AmplitudeChoice amplitude_choice(const ObservationResult& o) {
 }  // namespace
 
 std::optional<PivotScanRecord> pivot_scan_record(const ParsedScene& given, const Analysis& a) {
-  if (given.model != PeriodModelKind::physical_pendulum || !a.fit.pivot_scan || !a.fit.pivot_scan->textbook ||
-      a.observations.empty()) {
+  // Only the rigid body's model reports a pivot scan (PhysicalPendulum::report).
+  if (!a.fit.pivot_scan || !a.fit.pivot_scan->textbook || a.observations.empty()) {
     return std::nullopt;
   }
   // The apparatus the analysis fitted with: alpha and beta from the decay record's fit.

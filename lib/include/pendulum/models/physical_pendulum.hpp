@@ -9,6 +9,9 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "pendulum/air.hpp"
 #include "pendulum/bodies.hpp"
@@ -92,6 +95,26 @@ struct PhysicalPendulum {
   /// Kater's Bessel g, the parts' k and centre against the fit's, the
   /// buoyancy a body of unknown volume lacks (models/physical_pendulum.cpp).
   static void report(const FitState<kParameters>& fit, Analysis& out);
+
+  /// center_of_mass_position, body, temperature, with the checks across
+  /// its observations (json/physical_reader.cpp). After "fit".
+  static void read_keys(json_reader::Object& top, ParsedScene& out);
+  /// Its parts are checked as read_keys reads them.
+  static void check_scene(const ParsedScene&) {}
+  /// At standard gravity from the body's k and centre (measured or from
+  /// its parts, also where the fit replaces them) with every correction;
+  /// none where the fit finds them (models/physical_pendulum.cpp).
+  static std::optional<Expectation> expectation(const ParsedScene& scene, const Observation<double>& o);
+  /// None before the fit: its damping rows depend on the equivalent
+  /// length, which needs k and the centre, that the fit may find.
+  static void check_rows(const ParsedScene&, const Observation<double>&) {}
+  /// None: the warnings are a ball's air and mass (without air, the body's
+  /// buoyancy row says why it is skipped).
+  static std::vector<std::string> skipped_part_warnings(const ParsedScene&, double) { return {}; }
+  static constexpr SuspectCauses kSuspectCauses{
+      "the pivots, the radius of gyration and the centre of mass",
+      "the pivots, and the body's parts (masses, dimensions, positions and their units)",
+      "a pivot position misread, a miscounted oscillation, a body that is not rigid", false};
 
   /// k (m): the body's (from its parts) when it has one, else the parameter.
   template <class T>

@@ -6,6 +6,7 @@
 /// instead of switching on a kind (docs/core.md).
 
 #include <algorithm>
+#include <optional>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -50,7 +51,15 @@ struct HasModelPieces<
                                            std::declval<const AmplitudeChoice&>())),
                    decltype(M::solve_g(std::declval<const double*>(), std::declval<const Observation<double>&>(),
                                        std::declval<const Apparatus<double>&>(),
-                                       std::declval<const AmplitudeChoice&>()))>> : std::true_type {};
+                                       std::declval<const AmplitudeChoice&>())),
+                   decltype(M::read_keys(std::declval<json_reader::Object&>(), std::declval<ParsedScene&>())),
+                   decltype(M::check_scene(std::declval<const ParsedScene&>())),
+                   decltype(M::expectation(std::declval<const ParsedScene&>(),
+                                           std::declval<const Observation<double>&>())),
+                   decltype(M::check_rows(std::declval<const ParsedScene&>(),
+                                          std::declval<const Observation<double>&>())),
+                   decltype(M::skipped_part_warnings(std::declval<const ParsedScene&>(), 0.0)),
+                   decltype(M::kSuspectCauses)>> : std::true_type {};
 
 }  // namespace detail
 
@@ -61,7 +70,11 @@ constexpr bool is_period_model() {
   if constexpr (!detail::HasModelPieces<M>::value) {
     return false;
   } else {
-    return M::kParameters >= 1 && M::kParameterInfo.size() == std::size_t(M::kParameters) &&
+    return std::is_same_v<decltype(M::expectation(std::declval<const ParsedScene&>(),
+                                                  std::declval<const Observation<double>&>())),
+                          std::optional<Expectation>> &&
+           std::is_same_v<std::remove_cv_t<decltype(M::kSuspectCauses)>, SuspectCauses> &&
+           M::kParameters >= 1 && M::kParameterInfo.size() == std::size_t(M::kParameters) &&
            M::kDefaults.size() == std::size_t(M::kParameters) && M::kCorrectionUse.size() == kCorrectionCount &&
            !M::kSettings.empty();
   }

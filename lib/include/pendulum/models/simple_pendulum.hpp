@@ -5,6 +5,9 @@
 /// needs, with g and a common length offset as its parameters.
 
 #include <array>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "pendulum/corrections.hpp"
 #include "pendulum/period_model.hpp"
@@ -42,6 +45,24 @@ struct SimplePendulum {
   /// Its results beside the fit's: the textbook line (FitReport::textbook),
   /// lengths too close to separate the offset, a chi2 too small.
   static void report(const FitState<kParameters>& fit, Analysis& out);
+
+  /// Its keys are the shared ones (length, bob, ring, cap, wire, air, ...).
+  static void read_keys(json_reader::Object&, ParsedScene&) {}
+  /// The bob, ring and cap fit above every observation's length
+  /// (json/scene_reader.cpp).
+  static void check_scene(const ParsedScene& scene);
+  /// At standard gravity: 2 pi sqrt(l/g) (Eq. 3) times every row's T/T0;
+  /// a slip is judged with the finite amplitude alone, before it drives
+  /// another row out of its range (models/simple_pendulum.cpp).
+  static std::optional<Expectation> expectation(const ParsedScene& scene, const Observation<double>& o);
+  /// Each first-order row within its range (plausibility.hpp, check_first_order).
+  static void check_rows(const ParsedScene& scene, const Observation<double>& o);
+  /// The air's and a bob mass's share where the scene lacks them
+  /// (plausibility.hpp, warn_about_skipped_ball_parts).
+  static std::vector<std::string> skipped_part_warnings(const ParsedScene& scene, double negligible_fraction);
+  static constexpr SuspectCauses kSuspectCauses{
+      "the length (pivot to the bob's centre)", "the length (pivot to the bob's centre)",
+      "a miscounted oscillation, a length misread or taken to another point", true};
 
   /// The period of one observation at parameters p = (g (m/s^2), length
   /// offset (m)): T0 = 2 pi sqrt(l/g) (Eq. 3) with l = length + offset, times

@@ -12,6 +12,7 @@
 
 #include "newton_decrement.hpp"
 #include "decay_kernel.hpp"
+#include "text.hpp"
 #include "pendulum/numeric.hpp"
 #include "pendulum/scene_json.hpp"
 
@@ -165,9 +166,11 @@ std::array<double, 3> initial_guess(const DecayData& data, DecayModel model) {
   if (model == DecayModel::linear_only || !std::isfinite(beta)) beta = 0.0;
   alpha = std::max(alpha, 0.0);
   beta = std::max(beta, 0.0);
-  const double theta0 = data.initial_amplitude
-                            ? *data.initial_amplitude
-                            : data.amplitudes[0] * std::exp((alpha + beta * data.amplitudes[0]) * t0);
+  double theta0 = data.initial_amplitude ? *data.initial_amplitude
+                                          : data.amplitudes[0] * std::exp((alpha + beta * data.amplitudes[0]) * t0);
+  // A decay so fast that its extrapolation to t = 0 overflows (a last
+  // reading of 1e-300 deg) starts from the first reading instead.
+  if (!std::isfinite(theta0)) theta0 = data.amplitudes[0];
   return {alpha, beta, theta0};
 }
 
@@ -254,7 +257,9 @@ DecayFit report(const DecayData& data, DecayModel model, const Solution& s,
   // fit to report, and the record is to blame.
   if (s.summary.termination_type == ceres::FAILURE || !(s.summary.final_cost >= 0.0) ||
       !std::isfinite(s.summary.final_cost)) {
-    throw InputError("decay.data", "the fit of Eq. (25) failed (" + s.summary.message +
+    // Ceres's own words, its first line only (the rest names its internals).
+    const std::string message = s.summary.message.substr(0, s.summary.message.find('\n'));
+    throw InputError("decay.data", "the fit of Eq. (25) failed (" + one_line(message, 200) +
                                        "); expected a record the decay law can be evaluated on");
   }
   DecayFit f;

@@ -84,9 +84,10 @@ struct ParameterInfo {
 /// gravity (its expectation(); the plausibility checks, plausibility.cpp).
 struct Expectation {
   double period;  ///< (s) with every correction the scene's parts give
-  /// (s) the period a unit typed wrong, a frequency or a miscount is judged
-  /// against: where another row could leave its range first on such a slip,
-  /// the one with the finite amplitude alone.
+  /// (s) the period against which one off by a factor (a unit typed wrong,
+  /// a miscount) is refused and its slip named: where such a slip could
+  /// drive another row out of its range first, the one with the finite
+  /// amplitude alone.
   double slip_check;
 };
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <string_view>
 
 #include "../plausibility.hpp"
 #include "parts.hpp"
@@ -302,19 +303,30 @@ void note_body_amplitudes(ParsedScene& out) {
   }
 }
 
+/// Per row of kCorrections, whether `M` uses some correction of that row's
+/// part (its kCorrectionUse): fixed per model, so found at compile time.
+template <class M>
+constexpr std::array<bool, kCorrectionCount> parts_used() {
+  std::array<bool, kCorrectionCount> used{};
+  for (int i = 0; i < kCorrectionCount; ++i) {
+    for (const CorrectionInfo& other : kCorrections) {
+      used[i] = used[i] || (std::string_view(kCorrections[i].part) == other.part &&
+                            M::kCorrectionUse[static_cast<int>(other.correction)] != CorrectionUse::not_applicable);
+    }
+  }
+  return used;
+}
+
 /// Refuses a part none of whose corrections the scene's kind uses (its
 /// kCorrectionUse, models/registry.hpp): a ball's ring or wire on a rigid body.
 void check_parts_apply(Object& top, const ParsedScene& out) {
   visit_period_model(out.model, [&](auto model) {
     using M = decltype(model);
-    for (const CorrectionInfo& info : kCorrections) {
-      const std::string part = info.part;
-      if (!top.has(part) || !top.at(part).is_object()) continue;
-      bool used = false;
-      for (const CorrectionInfo& other : kCorrections) {
-        used |= part == other.part && M::kCorrectionUse[static_cast<int>(other.correction)] != CorrectionUse::not_applicable;
-      }
-      PENDULUM_FAIL_IF(!used, part,
+    static constexpr std::array<bool, kCorrectionCount> used = parts_used<M>();
+    for (int i = 0; i < kCorrectionCount; ++i) {
+      if (used[i]) continue;
+      const std::string part = kCorrections[i].part;
+      PENDULUM_FAIL_IF(top.has(part) && top.at(part).is_object(), part,
                        "got a " + part + " in a scene of a " + M::kName + "; expected none: no correction of a " +
                            M::kName + " uses it (docs/core.md)");
     }

@@ -169,6 +169,9 @@ Command add_batch_command(CLI::App& app) {
     }
     refuse_output_over_inputs(o->report, inputs);
     const AnalysisOptions options;
+    const BatchFormat format = o->format == "csv"     ? BatchFormat::csv
+                               : o->format == "table" ? BatchFormat::table
+                                                      : BatchFormat::jsonl;
     std::vector<std::optional<BatchOutcome>> results(jobs.size());
     std::vector<report::ClassEntry> entries;
     std::mutex mutex;
@@ -176,7 +179,7 @@ Command add_batch_command(CLI::App& app) {
     std::atomic<std::size_t> next{0};
     auto work = [&] {
       for (std::size_t i = next++; i < jobs.size(); i = next++) {
-        auto outcome = reduce_batch_scene(jobs[i], options, !o->report.empty(), o->allow_outside);
+        auto outcome = reduce_batch_scene(jobs[i], options, format, !o->report.empty(), o->allow_outside);
         std::lock_guard<std::mutex> lock(mutex);
         results[i] = std::move(outcome);
         ready.notify_one();
@@ -204,10 +207,10 @@ Command add_batch_command(CLI::App& app) {
         if (!o->report.empty()) entries.push_back(std::move(results[i]->entry));
       }
       failed += !line.ok;
-      if (o->format == "table") {
-        std::cout << line.table.insert(0, jobs[i].name + std::string(file_width + 2 - jobs[i].name.size(), ' ')) << "\n";
+      if (format == BatchFormat::table) {
+        std::cout << jobs[i].name << std::string(file_width + 2 - jobs[i].name.size(), ' ') << line.text << "\n";
       } else {
-        std::cout << (o->format == "csv" ? line.csv : line.json + "\n");
+        std::cout << line.text << (format == BatchFormat::jsonl ? "\n" : "");
       }
       printed.push_back(std::move(line));
       const auto now = std::chrono::steady_clock::now();

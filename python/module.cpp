@@ -181,7 +181,7 @@ std::pair<std::vector<std::string>, std::vector<std::pair<std::string, std::stri
   }
   const pendulum::AnalysisOptions options;
   std::vector<std::string> lines;
-  for (const auto& scene : scenes) lines.push_back(pendulum::reduce_batch_scene(scene, options, false, allow_outside).line.json);
+  for (const auto& scene : scenes) lines.push_back(pendulum::reduce_batch_scene(scene, options, pendulum::BatchFormat::jsonl, false, allow_outside).line.text);
   return {lines, notes};
 }
 

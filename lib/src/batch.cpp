@@ -58,21 +58,21 @@ SceneFiles BatchScene::files(bool allow_outside) const {
   return text ? SceneFiles{".", allow_outside} : SceneFiles{scene_directory(name), allow_outside};
 }
 
-BatchOutcome reduce_batch_scene(const BatchScene& job, const AnalysisOptions& options, bool with_report,
-                                bool allow_outside) {
+BatchOutcome reduce_batch_scene(const BatchScene& job, const AnalysisOptions& options, BatchFormat format,
+                                bool with_report, bool allow_outside) {
   const std::string name = job.shown();
   try {
     const ParsedScene scene =
         parse_scene(job.text ? *job.text : read_text(job.name, kMaxSceneBytes, "a scene file"), job.files(allow_outside));
     const Analysis analysis = analyse(scene, options);
-    BatchOutcome out{batch_line(name, scene, analysis), {name, std::nullopt, ""}};
+    BatchOutcome out{batch_line(name, scene, analysis, format), {name, std::nullopt, ""}};
     if (with_report) out.entry.report = report::make_scene_report(name, scene, analysis);
     return out;
   } catch (const InputError& e) {
-    return {batch_failure(name, e.what()), {name, std::nullopt, e.what()}};
+    return {batch_failure(name, e.what(), format), {name, std::nullopt, e.what()}};
   } catch (const std::exception& e) {
     const std::string error = std::string("internal error: ") + e.what();
-    return {batch_failure(name, error), {name, std::nullopt, error}};
+    return {batch_failure(name, error, format), {name, std::nullopt, error}};
   }
 }
 

@@ -51,7 +51,7 @@ const std::vector<std::string>& decay_scenes() {
 /// Everything `pendulum-g batch` does for one scene but the file read.
 std::string whole(const std::string& text) {
   const pendulum::ParsedScene scene = pendulum::parse_scene(text);
-  return pendulum::batch_line("-", scene, pendulum::analyse(scene)).json;
+  return pendulum::batch_line("-", scene, pendulum::analyse(scene)).text;
 }
 
 template <class F>

@@ -38,14 +38,15 @@ struct SkippedEntry {
 /// name, each named folder/file; the other entries into `skipped`, sorted.
 std::vector<std::string> folder_scenes(const std::string& folder, std::vector<SkippedEntry>& skipped);
 
-/// One scene's summary line and, when `with_report`, its report; an error (InputError, or any other as "internal error: ...")
-/// becomes the failure's line. Never throws. A scene of standard input
-/// looks for its recordings in the current folder.
+/// One scene's summary line in `format` and, when `with_report`, its report;
+/// an error (InputError, or any other as "internal error: ...") becomes the
+/// failure's line. Never throws. A scene of standard input looks for its
+/// recordings in the current folder.
 struct BatchOutcome {
   BatchLine line;
   report::ClassEntry entry;
 };
-BatchOutcome reduce_batch_scene(const BatchScene& scene, const AnalysisOptions& options, bool with_report,
-                                bool allow_outside);
+BatchOutcome reduce_batch_scene(const BatchScene& scene, const AnalysisOptions& options, BatchFormat format,
+                                bool with_report, bool allow_outside);
 
 }  // namespace pendulum

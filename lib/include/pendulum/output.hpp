@@ -39,21 +39,27 @@ std::string decay_fit_table(const ParsedScene& scene, const DecayFit& fit, const
 /// `decay` parts of a scene, the columns used, the glitches and the notes.
 std::string recording_json(const RecordingSummary& summary);
 
-/// One scene's line in a batch summary (`pendulum-g batch`), as a JSON line
-/// and as a CSV row.
+/// The forms of a batch summary's line (`pendulum-g batch --format`).
+enum class BatchFormat {
+  jsonl,  ///< one JSON line, no newline
+  csv,    ///< one row, with its newline: the warnings counted, the first given
+  /// one row of `--format table` after the file column, no newline: status,
+  /// g rounded to its uncertainty, z, the first reason in brief
+  table,
+};
+
+/// One scene's line in a batch summary (`pendulum-g batch`), in one form:
+/// a batch prints one, and each costs its formatting.
 struct BatchLine {
   bool ok;               ///< a result exists (status ok or suspect)
   ResultStatus status;
   std::optional<double> g;  ///< (m/s^2), when ok
-  std::string json;      ///< one line, no newline
-  std::string csv;       ///< one row, with its newline: the warnings counted, the first given
-  /// One row of `batch --format table` after the file column, no newline:
-  /// status, g rounded to its uncertainty, z, the first reason in brief.
-  std::string table;
+  std::string text;      ///< the line in the form asked for (BatchFormat)
 };
-BatchLine batch_line(const std::string& input, const ParsedScene& scene, const Analysis& analysis);
+BatchLine batch_line(const std::string& input, const ParsedScene& scene, const Analysis& analysis,
+                     BatchFormat format = BatchFormat::jsonl);
 /// The line of a scene that failed: its input and the error.
-BatchLine batch_failure(const std::string& input, const std::string& error);
+BatchLine batch_failure(const std::string& input, const std::string& error, BatchFormat format = BatchFormat::jsonl);
 std::string batch_csv_header();
 /// The table's header, its file column `file_width` wide (and 2 spaces).
 std::string batch_table_header(std::size_t file_width);

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <stdexcept>
 #include <sstream>
 
@@ -462,9 +463,19 @@ std::string csv_of(json line) {
   return csv_row(line);
 }
 
+/// A line's text in `format`: the JSON line, its CSV row, or its table row.
+std::string batch_text(const json& line, BatchFormat format, const std::function<std::string()>& table) {
+  switch (format) {
+    case BatchFormat::jsonl: return json_text(line, -1);
+    case BatchFormat::csv: return csv_of(line);
+    case BatchFormat::table: return table();
+  }
+  return {};
+}
+
 }  // namespace
 
-BatchLine batch_line(const std::string& input, const ParsedScene& scene, const Analysis& a) {
+BatchLine batch_line(const std::string& input, const ParsedScene& scene, const Analysis& a, BatchFormat format) {
   const json line = {{"input", input},
                      {"ok", true},
                      {"status", result_status_name(a.status)},
@@ -477,19 +488,22 @@ BatchLine batch_line(const std::string& input, const ParsedScene& scene, const A
                      {"expected_g_m_s2", a.expected_g ? json(a.expected_g->value) : json(nullptr)},
                      {"z", optional_number(a.z_score)},
                      {"warnings", warnings_json(scene, a)}};
-  return {true, a.status, a.g.value, json_text(line, -1), csv_of(line),
-          table_row(result_status_name(a.status), a.g.value, a.g.uncertainty, a.expected_g ? a.z_score : a.surface_z,
-                    a.status_reasons.empty() ? "" : a.status_reasons.front())};
+  return {true, a.status, a.g.value, batch_text(line, format, [&] {
+            return table_row(result_status_name(a.status), a.g.value, a.g.uncertainty,
+                             a.expected_g ? a.z_score : a.surface_z,
+                             a.status_reasons.empty() ? "" : a.status_reasons.front());
+          })};
 }
 
-BatchLine batch_failure(const std::string& input, const std::string& error) {
+BatchLine batch_failure(const std::string& input, const std::string& error, BatchFormat format) {
   const json line = {{"input", input},
                      {"ok", false},
                      {"status", result_status_name(ResultStatus::failed)},
                      {"status_reasons", json::array()},
                      {"error", error}};
-  return {false, ResultStatus::failed, std::nullopt, json_text(line, -1), csv_of(line),
-          table_row(result_status_name(ResultStatus::failed), std::nullopt, std::nullopt, std::nullopt, error)};
+  return {false, ResultStatus::failed, std::nullopt, batch_text(line, format, [&] {
+            return table_row(result_status_name(ResultStatus::failed), std::nullopt, std::nullopt, std::nullopt, error);
+          })};
 }
 
 ClassSummary summarise_class(const std::vector<BatchLine>& lines) {

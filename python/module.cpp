@@ -7,6 +7,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <glog/logging.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -310,6 +312,9 @@ void require_finite(double value, const char* name, const char* expected) {
 
 PYBIND11_MODULE(_core, m) {
   m.doc() = "pendulum-g's library: the compiled part of the pendulum_g package (docs/python.md)";
+  // Ceres reports through glog, to the notebook's stderr; the module reports
+  // through its exceptions, as the CLI through its messages (cli/main.cpp).
+  FLAGS_minloglevel = google::GLOG_FATAL;
 
   // InputError(ValueError): what the CLI reports with exit status 1. Its
   // `path` is the JSON path (or file and line) the CLI's message starts with.

@@ -107,6 +107,21 @@ def test_the_bad_scene_catalogue_raises_the_cli_messages(catalogue_files):
         assert expected in str(caught.value), case["name"]
 
 
+def test_a_fit_that_fails_raises_and_prints_nothing(capfd):
+    # A decay record's last time 1e300 min: Ceres's evaluation fails, and it
+    # says so through glog on stderr unless the module silences it, as the CLI does.
+    with open(os.path.join(DATA, "nelson_olsson_1986.json")) as f:
+        scene = json.load(f)
+    scene["decay"] = {"data": {"time_unit": "min", "amplitude_unit": "deg", "times": [0, 1, 2, 3, 4, 1e300],
+                               "amplitudes": [5.05, 4.91, 4.82, 4.74, 4.65, 4.18], "sigma": 0.05}}
+    text = json.dumps(scene)
+    with pytest.raises(pendulum_g.InputError) as caught:
+        pendulum_g.reduce(text)
+    assert str(caught.value) == error_line(cli("reduce", "-", stdin=text).stderr).removeprefix("-: ")
+    assert "the fit of Eq. (25) failed (Residual and Jacobian evaluation failed.)" in str(caught.value)
+    assert capfd.readouterr().err == ""
+
+
 def test_bad_arguments_raise_python_errors_not_crashes():
     with pytest.raises(pendulum_g.InputError) as caught:
         pendulum_g.reduce({"length": {"value": float("nan"), "unit": "m"}})

@@ -53,7 +53,6 @@ std::string off_by(double ratio) {
   return format_percent(std::abs(ratio - 1.0)) + " " + (ratio > 1.0 ? "longer" : "shorter");
 }
 
-
 /// `expected_or_none`: the expectation of observation k.
 void check_observation(ParsedScene& scene, std::size_t k, const std::optional<Expectation>& expected_or_none) {
   const Apparatus<double>& app = scene.apparatus;

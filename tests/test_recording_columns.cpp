@@ -155,6 +155,33 @@ TEST_CASE("Clean: repeated stamps kept with their quantum, glitches dropped with
   CHECK_THAT(c.notes[0].text, Contains("about 1 missing"));
 }
 
+
+TEST_CASE("Skipped rows: an empty cell, a sample out of order and a repeated one, each counted and noted",
+          "[recordings][columns]") {
+  // 400 samples at 100 Hz of a 4 deg swing of period 2 s; then row 101's
+  // and 102's samples swapped, row 201's written twice, and row 301's angle
+  // left empty: 401 data rows, of which the reader keeps 398.
+  std::vector<std::string> rows;
+  for (int k = 0; k < 400; ++k) {
+    rows.push_back(std::to_string(k * 0.01) + "," + std::to_string(4.0 * std::cos(M_PI * k * 0.01)));
+  }
+  std::swap(rows[100], rows[101]);
+  rows.insert(rows.begin() + 200, rows[200]);
+  rows[301] = rows[301].substr(0, rows[301].find(',') + 1);
+  std::string text = "t (s),theta (deg)\n";
+  for (const std::string& r : rows) text += r + "\n";
+  const Recording r = parse_recording(text, "s.csv");
+  CHECK(r.rows == 401);
+  CHECK(r.dropped == 3);
+  CHECK(r.time.size() == 398);
+  const auto noted = [&](const std::string& words) {
+    return std::count_if(r.notes.begin(), r.notes.end(), [&](const RecordingNote& n) {
+      return n.text.find(words) != std::string::npos;
+    });
+  };
+  CHECK(noted("out of time order") == 1);
+  CHECK(noted("a repeated sample") == 1);
+}
 TEST_CASE("Published layouts: the roles the reader chose and what it said", "[recordings][columns]") {
   test::RecordingSimulation s;
   s.duration = 20.0, s.drop = 0.0, s.noise = 0.0, s.theta0 = 5.0 * M_PI / 180.0;

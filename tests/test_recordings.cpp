@@ -597,6 +597,34 @@ TEST_CASE("A zip export is unpacked within the limit, its sets all together", "[
   CHECK(one.time == csv.time);
 }
 
+TEST_CASE("A zip's sets are candidate signals: compared, and refused with the --set of each when they disagree",
+          "[recordings][zip]") {
+  // data/recordings/phyphox_export.zip's three sets are one pendulum's
+  // (tests/tools/make_phyphox_zips.py): the gyroscope's is used, and a note
+  // says each other set agrees and which --set takes it.
+  const RecordingSummary both = analyse_recording(kDir + "phyphox_export.zip");
+  CHECK(both.set == "Gyroscope.csv");
+  for (const std::string other : {"Accelerometer.csv", "Linear Acceleration.csv"}) {
+    CHECK(std::count_if(both.swings.notes.begin(), both.swings.notes.end(), [&](const RecordingNote& n) {
+            return n.text.find("they agree") != std::string::npos &&
+                   n.text.find("(--set \"" + other + "\" takes the other)") != std::string::npos;
+          }) == 1);
+  }
+  // two_pendulums.zip: the accelerometer's times stretched by 1.1.
+  const std::string two = std::string(PENDULUM_TESTS_DIR) + "/bad_recordings/two_pendulums.zip";
+  CHECK_THROWS_WITH(analyse_recording(two), Contains("two_pendulums.zip: two signals give different periods") &&
+                                                Contains("pick its set with --set (a scene's \"set\"): \"Gyroscope.csv\" "
+                                                         "or \"Accelerometer.csv\""));
+  // Each --set the refusal offers reads its set alone: the stretched one
+  // gives 1.1 times the bundled accelerometer's period (the same samples).
+  const double gyroscope = analyse_recording(two, RecordingFormat::automatic, {}, {}, "Gyroscope.csv").swings.period.value;
+  const double stretched = analyse_recording(two, RecordingFormat::automatic, {}, {}, "Accelerometer.csv").swings.period.value;
+  const double accelerometer =
+      analyse_recording(kDir + "phyphox_export.zip", RecordingFormat::automatic, {}, {}, "Accelerometer.csv").swings.period.value;
+  CHECK(gyroscope == both.swings.period.value);
+  CHECK(stretched == Approx(1.1 * accelerometer).epsilon(1e-9));
+}
+
 TEST_CASE("A PASCO run after the first is read by its number", "[recordings][pasco]") {
   // pasco_rotary.csv's run 1, and beside it a run 2 of its first 600 rows
   // (the rest of run 2's cells empty, as Capstone leaves a shorter run).

@@ -8,7 +8,10 @@ the synthetic phyphox CSVs in data/recordings, with Python's zipfile module:
   tests/bad_recordings/truncated_export.zip   its first half;
   tests/bad_recordings/not_really_a_zip.zip   a zip signature, then text;
   tests/bad_recordings/meta_only.zip          meta/ files and no sensor set;
-  tests/bad_recordings/zip_bomb.zip           a 2 GiB uncompressed size stated.
+  tests/bad_recordings/zip_bomb.zip           a 2 GiB uncompressed size stated;
+  tests/bad_recordings/two_pendulums.zip      the gyroscope's set beside an
+      accelerometer's whose times are stretched by 1.1 (another pendulum's
+      run, of period 1.98 s, left in the phone's export).
 
 Usage, from the repository root: /usr/bin/python3 tests/tools/make_phyphox_zips.py
 """
@@ -55,3 +58,10 @@ bomb[local + 22:local + 26] = huge
 central = bomb.find(b"PK\x01\x02")
 bomb[central + 24:central + 28] = huge
 write("tests/bad_recordings/zip_bomb.zip", bytes(bomb))
+
+# The accelerometer's times stretched by 1.1: the two sets' periods, 1.801 and
+# 1.981 s, disagree, and the archive is refused with the --set of each.
+lines = open(SETS[1][1]).read().splitlines()
+stretched = [lines[0]] + [f"{float(time) * 1.1:.9E},{rest}" for time, rest in (x.split(",", 1) for x in lines[1:])]
+write("tests/bad_recordings/two_pendulums.zip",
+      archive([(SETS[0][0], open(SETS[0][1], "rb").read()), (SETS[1][0], "\n".join(stretched) + "\n")] + META))

@@ -832,6 +832,7 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
   rec.time_quantum = cleaned.quantum;
   rec.notes.insert(rec.notes.end(), cleaned.notes.begin(), cleaned.notes.end());
   if (!cleaned.all) {
+    rec.dropped += rec.time.size() - cleaned.keep.size();  // out of time order or repeated, each in a note
     auto keep = [&](std::vector<double>& v) {
       for (std::size_t k = 0; k < cleaned.keep.size(); ++k) v[k] = v[cleaned.keep[k]];
       v.resize(cleaned.keep.size());

@@ -1223,28 +1223,34 @@ SwingAnalysis analyse_candidates(const Recording& r, const std::string& path, Re
   const std::string name = r.set.empty() ? path : path + "/" + r.set;
   SwingAnalysis out = analyse_swings(r, name, options);
   const PeriodEstimate& first = out.period;
+  const SignalCandidate& used = r.candidates.empty() ? SignalCandidate{} : r.candidates[0];
+  // A zip's sets are picked with --set, a file's signals with --columns.
+  const auto option = [](const SignalCandidate& c) {
+    return c.set.empty() ? "--columns \"" + c.columns + "\"" : "--set \"" + c.set + "\"";
+  };
   for (std::size_t k = 1; k < r.candidates.size(); ++k) {
     const SignalCandidate& c = r.candidates[k];
     PeriodEstimate other;
     try {
-      other = analyse_swings(read_recording(path, format, limits, set, c.columns), name, options).period;
+      other = analyse_swings(read_recording(path, format, limits, c.set.empty() ? set : c.set, c.columns), name, options).period;
     } catch (const InputError& e) {
-      out.notes.push_back({0, c.what + " gives no period (" + one_line(e.what(), 160) + "); " + r.candidates[0].what +
-                                  " is used"});
+      out.notes.push_back({0, c.what + " gives no period (" + one_line(e.what(), 160) + "); " + used.what + " is used"});
       continue;
     }
     const double difference = other.value - first.value;
     const double sigma = std::hypot(first.uncertainty, other.uncertainty);
-    const std::string both = r.candidates[0].what + " gives " + format_number(first.value, 8) + " +- " +
+    const std::string both = used.what + " gives " + format_number(first.value, 8) + " +- " +
                              format_number(first.uncertainty, 2) + " s, " + c.what + " " + format_number(other.value, 8) +
                              " +- " + format_number(other.uncertainty, 2) + " s";
     if (std::fabs(difference) > 5.0 * sigma && std::fabs(difference) > 1e-3 * first.value) {
-      throw InputError(name, "two signals give different periods: " + both +
-                                 "; expected one pendulum's: pick its signal with --columns (a scene's \"columns\"): \"" +
-                                 r.candidates[0].columns + "\" or \"" + c.columns + "\"");
+      throw InputError(c.set.empty() ? name : path, "two signals give different periods: " + both + "; expected one pendulum's: pick its " +
+                                 (c.set.empty() ? "signal with --columns (a scene's \"columns\"): \"" + used.columns +
+                                                      "\" or \"" + c.columns + "\""
+                                                : "set with --set (a scene's \"set\"): \"" + used.set + "\" or \"" +
+                                                      c.set + "\""));
     }
     out.notes.push_back({0, both + ": they agree (" + format_number(std::fabs(difference) / sigma, 2) + " sigmas); " +
-                                r.candidates[0].what + " is used (--columns \"" + c.columns + "\" takes the other)"});
+                                used.what + " is used (" + option(c) + " takes the other)"});
   }
   return out;
 }

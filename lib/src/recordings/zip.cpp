@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cctype>
 #include <memory>
-#include <optional>
 #include <vector>
 
 #include "pendulum/input_error.hpp"
@@ -95,7 +94,8 @@ Recording read_zip_recording(std::string_view bytes, const std::string& file, Re
          " bytes (RecordingLimits::max_bytes; a zip bomb?); expected a recording that fits");
   }
 
-  std::optional<Recording> best;
+  std::vector<Recording> read;  // the sets that read, in the archive's order
+  std::vector<RecordingNote> unread;
   std::string refused;
   for (const Entry& e : sets) {
     const std::string name = file + "/" + one_line(e.name, 80, true);
@@ -109,18 +109,24 @@ Recording read_zip_recording(std::string_view bytes, const std::string& file, Re
       fail("a damaged zip archive (" + one_line(e.name, 80, true) + ": " + why + "); expected phyphox's zip export, whole");
     }
     try {
-      Recording r = parse_recording(text, name, format);
-      r.set = e.name;
-      if (!best || rank(r.kind) < rank(best->kind)) best = std::move(r);
+      read.push_back(parse_recording(text, name, format));
+      read.back().set = e.name;
     } catch (const InputError& bad) {
       if (!set.empty()) throw;  // the set asked for: its own error
       if (refused.size() < 400) refused += std::string(refused.empty() ? "" : "; ") + bad.what();
+      unread.push_back({0, "the set \"" + one_line(e.name, 80, true) + "\" is not used: " + one_line(bad.what(), 200)});
     }
-    if (best && rank(best->kind) == 0) break;  // nothing beats a rate
   }
-  if (!best) fail("a zip archive with no set that reads as a recording (" + refused + ")");
+  if (read.empty()) fail("a zip archive with no set that reads as a recording (" + refused + ")");
   zip_error_fini(&error);
-  return std::move(*best);
+  std::stable_sort(read.begin(), read.end(), [](const Recording& a, const Recording& b) { return rank(a.kind) < rank(b.kind); });
+  // The sets are the candidates; a set's own columns cannot be declared in a zip.
+  std::vector<SignalCandidate> candidates;
+  for (const Recording& r : read) candidates.push_back({"the set \"" + one_line(r.set, 80, true) + "\"", "", r.set});
+  Recording best = std::move(read.front());
+  if (candidates.size() > 1) best.candidates = std::move(candidates);
+  best.notes.insert(best.notes.end(), unread.begin(), unread.end());
+  return best;
 }
 
 }  // namespace pendulum

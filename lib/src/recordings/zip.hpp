@@ -17,9 +17,12 @@ bool looks_like_zip(std::string_view bytes);
 /// candidate set; `set` (its name inside, with or without ".csv") picks one,
 /// and otherwise the set with the best signal is read: an angular rate, then
 /// a linear acceleration, then an acceleration with g, then any other that
-/// reads. Refused (InputError naming `file`): a damaged archive, no usable
-/// set, a set that unpacks to more than limits.max_bytes in all (a zip bomb).
-/// A set's own errors name "file/set:line:column".
+/// reads. Without `set`, every set that reads is a candidate
+/// (Recording::candidates, the one read first), whose periods
+/// analyse_recording compares, and each set that does not read is a note.
+/// Refused (InputError naming `file`): a damaged archive, no usable set, a
+/// set that unpacks to more than limits.max_bytes in all (a zip bomb). A
+/// set's own errors name "file/set:line:column".
 Recording read_zip_recording(std::string_view bytes, const std::string& file, RecordingFormat format,
                              const std::string& set, const RecordingLimits& limits);
 

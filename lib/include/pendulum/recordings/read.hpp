@@ -81,11 +81,12 @@ struct RecordingColumn {
   std::string why;         ///< how the role or unit was decided, or why the column is unused
 };
 
-/// A signal a file holds: what it is, and the `--columns` text that reads
-/// the file with it alone.
+/// A signal a file holds: what it is, and the `--columns` text (or, in a
+/// zip archive, the `--set`) that reads the file with it alone.
 struct SignalCandidate {
-  std::string what;     ///< e.g. "the angle \"theta (deg)\"", "the x and y \"x (m)\", \"y (m)\""
-  std::string columns;  ///< e.g. "t:s,theta:deg", "t:s,-,x:m,y:m"
+  std::string what;     ///< e.g. "the angle \"theta (deg)\"", "the x and y \"x (m)\", \"y (m)\"", "the set \"Gyroscope.csv\""
+  std::string columns;  ///< e.g. "t:s,theta:deg", "t:s,-,x:m,y:m"; empty for a zip's set
+  std::string set = {};  ///< a zip archive's set that holds it ("Accelerometer.csv"); empty: the file's columns
 };
 
 /// A recording in SI units, samples in time order.
@@ -112,12 +113,12 @@ struct Recording {
   /// Every column of the file, the ones used and the ones not (why).
   std::vector<RecordingColumn> columns;
   /// The file's signals where it holds more than one (an angle beside a
-  /// track's x and y, an angle beside its angular velocity), the one read
-  /// first; empty otherwise, and when the columns were declared.
-  /// analyse_recording compares their periods.
+  /// track's x and y, an angle beside its angular velocity; a zip archive's
+  /// sets that read), the one read first; empty otherwise, and when the
+  /// columns or the set were given. analyse_recording compares their periods.
   std::vector<SignalCandidate> candidates;
   std::size_t rows = 0;     ///< data rows read
-  std::size_t dropped = 0;  ///< rows skipped for an empty or NaN cell
+  std::size_t dropped = 0;  ///< rows skipped: an empty or NaN cell, a sample out of time order or repeated (noted)
   /// The CSV inside a zip archive it was read from ("Gyroscope.csv"), the
   /// PASCO run asked for ("Run #2"), or the Tracker track read, as Tracker
   /// names it ("mass B"); empty otherwise.

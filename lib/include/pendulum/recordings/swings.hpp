@@ -211,7 +211,7 @@ struct RecordingSummary {
   RecordingFormat format = RecordingFormat::automatic;
   SignalKind kind = SignalKind::angular_rate;
   std::size_t rows = 0;     ///< data rows read
-  std::size_t dropped = 0;  ///< rows skipped for an empty or NaN cell
+  std::size_t dropped = 0;  ///< rows skipped: an empty or NaN cell, a sample out of time order or repeated (noted)
   SwingAnalysis swings;     ///< period, its uncertainty, periods, per-swing data, decay record
   std::string set = {};     ///< the set read (Recording::set); empty for a file of one set
   std::vector<RecordingColumn> columns = {};  ///< how each column was used (Recording::columns)
@@ -222,10 +222,11 @@ struct RecordingSummary {
 
 /// Analyses `recording` (analyse_swings) and, where it holds more than one
 /// signal (Recording::candidates), each of the others, read again from
-/// `path` with its columns: signals whose periods differ by more than 5
-/// combined standard uncertainties and 10^-3 of the period are refused
-/// (InputError naming both and the --columns that picks each: the file
-/// cannot say which one is the pendulum's); otherwise a note says they agree.
+/// `path` with its columns (a zip's, with its set): signals whose periods
+/// differ by more than 5 combined standard uncertainties and 10^-3 of the
+/// period are refused (InputError naming both and the --columns or --set
+/// that picks each: the file cannot say which one is the pendulum's);
+/// otherwise a note says they agree.
 /// A signal that gives no period is noted and passed over.
 SwingAnalysis analyse_candidates(const Recording& recording, const std::string& path, RecordingFormat format,
                                  const SwingOptions& options = {}, const RecordingLimits& limits = {},

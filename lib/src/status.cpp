@@ -144,7 +144,8 @@ std::optional<std::string> name_systematic(const ParsedScene& scene, const Analy
 /// periods, stays within standard gravity's 5% but not within the range.
 /// (Beyond 5%, judge_g's own message names what to check.)
 void judge_against_earth_range(const ParsedScene& scene, const Analysis& a, bool bob_slip, const std::string& bob,
-                               const std::string& settings, std::vector<std::string>& reasons) {
+                               const std::string& settings, const SuspectCauses& causes,
+                               std::vector<std::string>& reasons) {
   if (a.expected_g || !a.surface_g || !a.surface_g->range || !a.g.uncertainty || !(*a.g.uncertainty > 0.0)) return;
   const auto [low, high] = *a.surface_g->range;
   const double sigma = *a.g.uncertainty;
@@ -161,15 +162,15 @@ void judge_against_earth_range(const ParsedScene& scene, const Analysis& a, bool
                     (bob_slip     ? bob
                      : systematic ? ": " + *systematic
                                   : ": an uncertainty stated too small, or a systematic error: check " + settings +
-                                        ", the length's reference point (pivot to the bob's centre), the trials and "
-                                        "timing.oscillations_per_trial"));
+                                        ", " + causes.reference + ", the trials and timing.oscillations_per_trial"));
 }
 
 /// `bob_slip`: the bob's density is implausible, which explains a g far off
 /// through buoyancy and added mass.
-/// `settings` names what sets the period besides the timing, for the hint.
+/// `settings` names what sets the period besides the timing, for the hint;
+/// `causes`, the model's words for the rest.
 void judge_g(const ParsedScene& scene, const Analysis& a, bool bob_slip, const std::string& settings,
-             std::vector<std::string>& reasons) {
+             const SuspectCauses& causes, std::vector<std::string>& reasons) {
   const std::string bob = ": the bob's implausible density (bob.mass, below) drives buoyancy and added mass";
   const double expected = a.expected_g ? a.expected_g->value : kStandardGravity;
   const std::string against = a.expected_g ? "the site's expected " + format_number(expected, 6) + " m/s^2"
@@ -196,13 +197,12 @@ void judge_g(const ParsedScene& scene, const Analysis& a, bool bob_slip, const s
                       " m/s^2)" +
                       (bob_slip     ? bob
                        : systematic ? ": " + *systematic
-                                    : ": an uncertainty stated too small, or a systematic error (the length's "
-                                      "reference point, pivot to the bob's centre; the amplitude; a miscounted "
-                                      "oscillation)"));
+                                    : std::string(": an uncertainty stated too small, or a systematic error (") +
+                                          causes.systematic + ")"));
     return;
   }
   if (std::abs(ratio - 1.0) <= kSuspectFraction) {
-    judge_against_earth_range(scene, a, bob_slip, bob, settings, reasons);
+    judge_against_earth_range(scene, a, bob_slip, bob, settings, causes, reasons);
     return;
   }
   // Without a stated uncertainty of the expected g, 5% stands for 3 sigma.
@@ -391,7 +391,7 @@ Verdict judge(const ParsedScene& scene, const Analysis& analysis) {
   // cause where the ratio of g only matches a slip by chance (a frequency
   // typed as trials gives g (T^2)^2 times too large).
   v.reasons = scene.suspicions;
-  judge_g(scene, analysis, bob.has_value(), settings, v.reasons);
+  judge_g(scene, analysis, bob.has_value(), settings, causes, v.reasons);
   if (!analysis.g.uncertainty) {
     v.reasons.push_back("g has no uncertainty: the observations cannot separate the unknowns (the fit's covariance "
                         "is singular); add observations at other settings, or fit fewer unknowns");

@@ -97,6 +97,8 @@ struct SuspectCauses {
   const char* settings;             ///< what to check when g is far from the expected
   const char* settings_from_parts;  ///< the same for a body given by its parts
   const char* scatter;              ///< what scatters the observations about a fit
+  const char* reference;            ///< the point the lengths are measured from, to check when g is off
+  const char* systematic;           ///< the systematic errors that move g, where no slip explains it
   /// Lengths measured to a point of the bob: its top misread as its centre,
   /// and the length_offset that a series fits for it, are named.
   bool lengths_to_bob;

@@ -114,7 +114,9 @@ struct PhysicalPendulum {
   static constexpr SuspectCauses kSuspectCauses{
       "the pivots, the radius of gyration and the centre of mass",
       "the pivots, and the body's parts (masses, dimensions, positions and their units)",
-      "a pivot position misread, a miscounted oscillation, a body that is not rigid", false};
+      "a pivot position misread, a miscounted oscillation, a body that is not rigid",
+      "the pivot positions' reference point (every pivot and the centre of mass from the same end)",
+      "the pivot positions' reference point; the amplitude; a miscounted oscillation", false};
 
   /// k (m): the body's (from its parts) when it has one, else the parameter.
   template <class T>

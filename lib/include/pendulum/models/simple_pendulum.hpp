@@ -62,7 +62,9 @@ struct SimplePendulum {
   static std::vector<std::string> skipped_part_warnings(const ParsedScene& scene, double negligible_fraction);
   static constexpr SuspectCauses kSuspectCauses{
       "the length (pivot to the bob's centre)", "the length (pivot to the bob's centre)",
-      "a miscounted oscillation, a length misread or taken to another point", true};
+      "a miscounted oscillation, a length misread or taken to another point",
+      "the length's reference point (pivot to the bob's centre)",
+      "the length's reference point, pivot to the bob's centre; the amplitude; a miscounted oscillation", true};
 
   /// The period of one observation at parameters p = (g (m/s^2), length
   /// offset (m)): T0 = 2 pi sqrt(l/g) (Eq. 3) with l = length + offset, times

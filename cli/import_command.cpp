@@ -201,8 +201,8 @@ Command add_import_command(CLI::App& app) {
   std::vector<std::string> formats = recording_family_names();
   formats.insert(formats.end(), {"json", "table"});
   cmd->add_option("--format", o->formats,
-                  "The recording's family (auto, phyphox, vernier, pasco, plain, tracker; default: from the "
-                  "header) and/or the output (json, the default, or table); may be given twice")
+                  "The recording's family (" + recording_family_words() + "; default: from the header) and/or the "
+                  "output (json, the default, or table); may be given twice")
       ->check(CLI::IsMember(formats))
       ->allow_extra_args(false)  // one value each time: the file after it is not a format
       ->take_all();

@@ -27,8 +27,7 @@ Command add_report_command(CLI::App& app) {
   for (const auto& f : recording_family_names()) formats.push_back(f);
   cmd->add_option("--format", o->formats,
                   "html (default: the whole report) or svg (one plot, see --plot), and/or a recording's family "
-                  "as for import (auto, phyphox, vernier, pasco, plain, tracker: the input is a recording); may "
-                  "be given twice")
+                  "as for import (" + recording_family_words() + ": the input is a recording); may be given twice")
       ->check(CLI::IsMember(formats))
       ->allow_extra_args(false)  // one value each time: the file after it is not a format
       ->take_all();

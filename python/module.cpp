@@ -115,7 +115,7 @@ py::dict read_recording(const std::string& path, const std::string& format, cons
                         const std::string& columns, std::optional<double> bob_width, std::optional<double> length,
                         std::optional<std::pair<double, double>> range, std::optional<int> stamps_per_period) {
   const std::optional<pendulum::RecordingFormat> family = pendulum::recording_family({format});
-  if (!family) throw py::value_error("format: got '" + format + "'; expected auto, phyphox, vernier, pasco, plain or tracker");
+  if (!family) throw py::value_error("format: got '" + format + "'; expected " + pendulum::recording_family_words());
   if (range && !(std::isfinite(range->first) && std::isfinite(range->second) && range->first < range->second)) {
     throw py::value_error("range: expected (start, end) in seconds of the recording's clock, start before end");
   }
@@ -204,7 +204,7 @@ std::pair<std::optional<std::string>, std::vector<std::string>> report(
   if (format) {
     request.family = pendulum::recording_family({*format});
     if (!request.family) {
-      throw py::value_error("format: got '" + *format + "'; expected auto, phyphox, vernier, pasco, plain or tracker");
+      throw py::value_error("format: got '" + *format + "'; expected " + pendulum::recording_family_words());
     }
   }
   request.set = set;

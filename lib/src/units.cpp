@@ -7,7 +7,6 @@
 namespace pendulum {
 namespace {
 
-constexpr double kDegree = kPi / 180.0;
 constexpr double kMmHg = 133.322387415;  // Pa, conventional (13.5951 g/cm^3, 9.80665 m/s^2)
 
 constexpr std::array<Unit, 64> kUnits{{
@@ -27,9 +26,9 @@ constexpr std::array<Unit, 64> kUnits{{
     {"h", Dimension::time, 3600.0, 0.0},
     {"rad", Dimension::angle, 1.0, 0.0},
     {"mrad", Dimension::angle, 1e-3, 0.0},
-    {"deg", Dimension::angle, kDegree, 0.0},
-    {"arcmin", Dimension::angle, kDegree / 60.0, 0.0},
-    {"arcsec", Dimension::angle, kDegree / 3600.0, 0.0},
+    {"deg", Dimension::angle, kRadiansPerDegree, 0.0},
+    {"arcmin", Dimension::angle, kRadiansPerDegree / 60.0, 0.0},
+    {"arcsec", Dimension::angle, kRadiansPerDegree / 3600.0, 0.0},
     {"Pa", Dimension::pressure, 1.0, 0.0},
     {"hPa", Dimension::pressure, 1e2, 0.0},
     {"kPa", Dimension::pressure, 1e3, 0.0},
@@ -64,7 +63,7 @@ constexpr std::array<Unit, 64> kUnits{{
     {"1/s", Dimension::rate, 1.0, 0.0},
     {"1/min", Dimension::rate, 1.0 / 60.0, 0.0},
     {"1/(s rad)", Dimension::rate_per_angle, 1.0, 0.0},
-    {"1/(s deg)", Dimension::rate_per_angle, 1.0 / kDegree, 0.0},
+    {"1/(s deg)", Dimension::rate_per_angle, 1.0 / kRadiansPerDegree, 0.0},
     {"m/s^2", Dimension::acceleration, 1.0, 0.0},
     {"cm/s^2", Dimension::acceleration, 1e-2, 0.0},
     {"Gal", Dimension::acceleration, 1e-2, 0.0},

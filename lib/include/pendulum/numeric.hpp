@@ -23,6 +23,11 @@ double value_of(const T& x) {
 /// pi to double precision.
 inline constexpr double kPi = 3.14159265358979323846;
 
+/// One degree in radians, and one radian in degrees: a name for each
+/// direction, so that a constant called "degree" cannot mean either.
+inline constexpr double kRadiansPerDegree = kPi / 180.0;
+inline constexpr double kDegreesPerRadian = 180.0 / kPi;
+
 /// Standard gravity (m/s^2), used only to judge plausibility, never in g.
 inline constexpr double kStandardGravity = 9.80665;
 

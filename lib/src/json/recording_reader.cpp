@@ -10,18 +10,12 @@ namespace pendulum::json_reader {
 
 namespace {
 
-constexpr RecordingFormat kFormats[] = {RecordingFormat::automatic, RecordingFormat::phyphox,
-                                        RecordingFormat::vernier,   RecordingFormat::pasco,
-                                        RecordingFormat::plain,     RecordingFormat::tracker};
-
 RecordingFormat format_at(Object& o) {
   if (!o.has("format")) return RecordingFormat::automatic;
   const std::string name = o.text("format");
+  if (const auto family = recording_family({name})) return *family;
   std::string names;
-  for (const auto f : kFormats) {
-    if (name == recording_format_name(f)) return f;
-    names += (names.empty() ? "\"" : ", \"") + std::string(recording_format_name(f)) + "\"";
-  }
+  for (const std::string& f : recording_family_names()) names += (names.empty() ? "\"" : ", \"") + f + "\"";
   throw InputError(o.path("format"), "got " + shown(o.at("format")) + "; expected a recording format: " + names);
 }
 

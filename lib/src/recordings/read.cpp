@@ -45,6 +45,13 @@ std::vector<std::string> recording_family_names() {
   return names;
 }
 
+std::string recording_family_words() {
+  const std::vector<std::string> names = recording_family_names();
+  std::string words;
+  for (std::size_t k = 0; k < names.size(); ++k) words += (k == 0 ? "" : k + 1 == names.size() ? " or " : ", ") + names[k];
+  return words;
+}
+
 std::optional<RecordingFormat> recording_family(const std::vector<std::string>& formats) {
   std::optional<RecordingFormat> family;
   for (const auto& f : formats) {

@@ -39,6 +39,9 @@ const char* recording_format_name(RecordingFormat format);
 /// auto, phyphox, vernier, pasco, plain, tracker.
 std::vector<std::string> recording_family_names();
 
+/// The same in words, for help and messages: "auto, phyphox, ... or tracker".
+std::string recording_family_words();
+
 /// The last family named among `formats`; empty when none is.
 std::optional<RecordingFormat> recording_family(const std::vector<std::string>& formats);
 

@@ -13,6 +13,9 @@ The convention (docs/output.md, "Command output in the docs"):
   the commands of one page share that copy, in the page's order;
 - a block that shows volatile output (timings, benchmark figures) is not checked
   when the last non-blank line before it is "<!-- unchecked: REASON -->";
+- a block with no info string after its fence is output, so it must be one of those two:
+  a page fails when one shows lines no command of it prints and no reason says why
+  (code, scenes and diagrams name their language: ```json, ```sh, ```text);
 - a block after "<!-- file: NAME -->" (a scene the page shows) is written to NAME in the
   copy, for the page's later commands.
 docs/python.md is executed by tests/python/test_pendulum_g.py instead.
@@ -36,7 +39,7 @@ SKIPPED_PAGES = {"docs/python.md"}
 
 
 def blocks(text):
-    """(first line number, lines, the comment before it) of each fenced block."""
+    """(first line number, lines, the comment before it, the info string) of each fenced block."""
     lines = text.split("\n")
     i = 0
     while i < len(lines):
@@ -49,7 +52,7 @@ def blocks(text):
         while j < len(lines) and not lines[j].strip().startswith(fence):
             j += 1
         before = next((l.strip() for l in reversed(lines[:start]) if l.strip()), "")
-        yield start + 1, lines[i + 1:j], before
+        yield start + 1, lines[i + 1:j], before, lines[i].strip()[len(fence):].strip()
         i = j + 1
 
 
@@ -149,13 +152,17 @@ def check_page(source, page, tools, update):
     with open(path, encoding="utf-8") as f:
         text = f.read()
     found = list(blocks(text))
-    checked = [(n, body) for n, body, before in found
+    checked = [(n, body) for n, body, before, _ in found
                if body and body[0].startswith("$ ") and not UNCHECKED.match(before)]
-    files = {n: AS_FILE.match(before).group(1) for n, body, before in found if AS_FILE.match(before)}
-    for n, body, before in found:
+    files = {n: AS_FILE.match(before).group(1) for n, body, before, _ in found if AS_FILE.match(before)}
+    for n, body, before, info in found:
         m = UNCHECKED.match(before)
         if before.startswith("<!--") and "unchecked" in before and not m:
             raise SystemExit(f"{page}:{n}: an unchecked block needs a reason: {before}")
+        if not info and not m and not (body and body[0].startswith("$ ")):
+            raise SystemExit(f"{page}:{n}: a block of output that no command of the page prints; expected "
+                             "its command (\"$ ...\" first), or \"<!-- unchecked: REASON -->\" before it, "
+                             "or an info string (```json, ```text) if it is not output")
     if not checked:
         return 0, []
     root, work, bindir = copy_of_repository(source, *tools)
@@ -163,7 +170,7 @@ def check_page(source, page, tools, update):
                COLUMNS="100")
     failures, count, lines = [], 0, text.split("\n")
     try:
-        for n, body, before in found:
+        for n, body, before, _ in found:
             if n in files:  # a file the page shows, which its later commands read
                 with open(os.path.join(work, files[n]), "w", encoding="utf-8") as f:
                     f.write("\n".join(body) + "\n")

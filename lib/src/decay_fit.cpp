@@ -74,12 +74,9 @@ namespace {
 /// record is read once per evaluation (kernel::decay_sums).
 /// Every evaluation computes the Jacobian sums and keeps them, because Ceres
 /// asks for the Jacobian at a trial point right after accepting it.
-class CompressedDecayCost final : public ceres::CostFunction {
+class CompressedDecayCost final : public CompressedCost<3> {
  public:
-  explicit CompressedDecayCost(const Record& record) : record_(record) {
-    set_num_residuals(4);
-    mutable_parameter_block_sizes()->push_back(3);
-  }
+  explicit CompressedDecayCost(const Record& record) : record_(record) {}
 
   /// The sums at p, from the last evaluation when it was at p.
   const kernel::DecaySums& sums_at(const double* p) const {
@@ -99,29 +96,11 @@ class CompressedDecayCost final : public ceres::CostFunction {
       for (int b = 0; b < 3; ++b) gram(a, b) = sums_.jtj[a][b];
     }
     const Eigen::Vector3d jtr(sums_.jtr[0], sums_.jtr[1], sums_.jtr[2]);
-    double* jacobian = jacobians ? jacobians[0] : nullptr;
-    const double q2 = compress_residuals<3>(gram, jtr, sums_.rr, residuals, jacobian);
-    if (q2 < 0.0) return false;
-    if (jacobian) {
-      decrement_ = q2;
-      rr_ = sums_.rr;
-      std::copy(parameters[0], parameters[0] + 3, judged_.begin());
-    }
-    return true;
+    return compressed(parameters[0], gram, jtr, sums_.rr, residuals, jacobians);
   }
-
-  /// At the last point whose Jacobian Ceres asked for (its current iterate):
-  /// |q|^2 = r^T J (J^T J)^-1 J^T r, twice the cost a full Gauss-Newton step
-  /// would still remove, and |r|^2.
-  double decrement() const { return decrement_; }
-  double rr() const { return rr_; }
-  /// That point: the parameters NewtonDecrement judged.
-  const std::array<double, 3>& judged() const { return judged_; }
 
  private:
   const Record& record_;
-  mutable double decrement_ = 0.0, rr_ = 0.0;
-  mutable std::array<double, 3> judged_{};
   mutable bool cached_ = false;
   mutable std::array<double, 3> cached_p_{};
   mutable kernel::DecaySums sums_;

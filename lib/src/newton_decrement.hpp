@@ -3,10 +3,12 @@
 // fit): their residuals from the normal sums, and their stopping rule.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <ceres/cost_function.h>
 #include <ceres/iteration_callback.h>
 
 namespace pendulum {
@@ -47,6 +49,43 @@ double compress_residuals(const Eigen::Matrix<double, N, N>& jtj, const Eigen::M
   }
   return q.squaredNorm();
 }
+
+/// A cost of N parameters in one block whose N + 1 residuals are the
+/// compressed ones of its normal sums (compress_residuals). It keeps what
+/// NewtonDecrement judges: at the last point whose Jacobian Ceres asked for
+/// (its current iterate), |q|^2 = r^T J (J^T J)^-1 J^T r, twice the cost a
+/// full Gauss-Newton step would still remove, |r|^2, and the point.
+template <int N>
+class CompressedCost : public ceres::CostFunction {
+ public:
+  double decrement() const { return decrement_; }
+  double rr() const { return rr_; }
+  const std::array<double, N>& judged() const { return judged_; }
+
+ protected:
+  CompressedCost() {
+    set_num_residuals(N + 1);
+    mutable_parameter_block_sizes()->push_back(N);
+  }
+
+  /// Evaluate's work from the sums at `p`: false where they cannot be compressed.
+  bool compressed(const double* p, const Eigen::Matrix<double, N, N>& jtj, const Eigen::Matrix<double, N, 1>& jtr,
+                  double rr, double* residuals, double** jacobians) const {
+    double* jacobian = jacobians ? jacobians[0] : nullptr;
+    const double q2 = compress_residuals<N>(jtj, jtr, rr, residuals, jacobian);
+    if (q2 < 0.0) return false;
+    if (jacobian) {
+      decrement_ = q2;
+      rr_ = rr;
+      std::copy(p, p + N, judged_.begin());
+    }
+    return true;
+  }
+
+ private:
+  mutable double decrement_ = 0.0, rr_ = 0.0;
+  mutable std::array<double, N> judged_{};
+};
 
 /// Stops when a full Gauss-Newton step would lower the sum of squares by
 /// less than 1e-14 of the residual variance s^2 = |r|^2/dof: the parameters

@@ -230,40 +230,19 @@ class ProjectedPeriods {
 /// The projected problem handed to Ceres compressed to Q + 1 residuals
 /// (compress_residuals, newton_decrement.hpp), as the decay fit is.
 template <class Model>
-class CompressedPeriodResiduals : public ceres::CostFunction {
+class CompressedPeriodResiduals final : public CompressedCost<Model::kParameters - 1> {
  public:
   static constexpr int Q = Model::kParameters - 1;
 
-  explicit CompressedPeriodResiduals(const ProjectedPeriods<Model>& projected) : projected_(projected) {
-    set_num_residuals(Q + 1);
-    mutable_parameter_block_sizes()->push_back(Q);
-  }
+  explicit CompressedPeriodResiduals(const ProjectedPeriods<Model>& projected) : projected_(projected) {}
 
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
     const NormalSums<Q>& s = projected_.at(parameters[0]).sums;
-    double* jacobian = jacobians ? jacobians[0] : nullptr;
-    const double q2 = compress_residuals<Q>(s.jtj, s.jtr, s.rr, residuals, jacobian);
-    if (q2 < 0.0) return false;
-    if (jacobian) {
-      decrement_ = q2;
-      rr_ = s.rr;
-      std::copy(parameters[0], parameters[0] + Q, judged_.begin());
-    }
-    return true;
+    return this->compressed(parameters[0], s.jtj, s.jtr, s.rr, residuals, jacobians);
   }
-
-  /// At the last point whose Jacobian Ceres asked for: |q|^2 = r^T J
-  /// (J^T J)^-1 J^T r, twice the cost a full Gauss-Newton step would still
-  /// remove, and |r|^2 (NewtonDecrement).
-  double decrement() const { return decrement_; }
-  double rr() const { return rr_; }
-  /// That point: the parameters NewtonDecrement judged.
-  const std::array<double, Q>& judged() const { return judged_; }
 
  private:
   const ProjectedPeriods<Model>& projected_;
-  mutable double decrement_ = 0.0, rr_ = 0.0;
-  mutable std::array<double, Q> judged_{};
 };
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "text.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <sstream>
 
@@ -20,6 +21,12 @@ std::size_t printable_utf8_length(const std::string& s, std::size_t i) {
     if ((byte(i + k) & 0xc0) != 0x80) return 0;
   }
   return want;
+}
+
+std::string lower_case(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
 }
 
 std::string one_line(const std::string& s, std::size_t max, bool keep_utf8) {

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace pendulum {
 
@@ -12,6 +13,10 @@ namespace pendulum {
 /// says θ or µs; bytes that are not UTF-8 are escaped all the same), cut to
 /// at most `max` bytes with "..." (at a character's start).
 std::string one_line(const std::string& s, std::size_t max, bool keep_utf8 = false);
+
+/// `s` with its ASCII letters in lower case (headers, set and file names are
+/// matched in any case; other bytes are kept).
+std::string lower_case(std::string_view s);
 
 /// The length of the well-formed UTF-8 sequence at s[i] (1 to 4; RFC 3629:
 /// no overlong forms, no surrogates, nothing above U+10FFFF), 0 if none or

@@ -217,4 +217,18 @@ struct PeriodPrediction {
   Composition<T> composition;
 };
 
+/// predict() as a model computes it from its swing_at and its rows: T0 =
+/// 2 pi sqrt(l/g) at swing_at's length l, times T/T0 of model_terms.
+template <class Model, class T>
+PeriodPrediction<T> prediction_of(const T* p, const Observation<T>& o, const Apparatus<T>& app,
+                                  const AmplitudeChoice& amplitude) {
+  const Swing<T> s = Model::swing_at(p, Model::swing(o), app);
+  PeriodPrediction<T> out;
+  out.terms = model_terms<Model>(app, s, amplitude);
+  out.composition = compose(out.terms);
+  out.ideal = ideal_period(s.length, p[0]);
+  out.period = out.ideal * (1.0 + out.composition.total);
+  return out;
+}
+
 }  // namespace pendulum

@@ -66,20 +66,6 @@ namespace {
 
 using namespace recording_text;
 
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\r' || s.front() == '"')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\r' || s.back() == '"')) s.remove_suffix(1);
-  return s;
-}
-
-bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
-
 /// Which columns hold what, and their scale to SI.
 struct Layout {
   RecordingFormat format = RecordingFormat::automatic;
@@ -562,12 +548,8 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
   const std::size_t header_line = lines.header_line;
   const bool preamble = lines.preamble;
   refuse_binary(original, static_cast<std::size_t>(text.data() - original.data()) + lines.data_offset, file);
-  const char* p = text.data() + lines.data_offset;
-  const char* const end = text.data() + text.size();
-  if (p >= end) fail(file, lines.data_line + 1, 1, "no data rows; expected a recording");
-  const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
-  const std::string_view first_data(p, static_cast<std::size_t>((nl ? static_cast<const char*>(nl) : end) - p));
-  const Dialect dialect = sniff(header, first_data);
+  const DataRows data = data_rows(text, lines, file, "a recording");
+  const Dialect dialect = sniff(header, data.first);
   const auto cells = [&](std::string_view line) { return split_cells(line, dialect); };
   const std::optional<std::string_view> above_header = lines.above;
   const bool several_tracks = lines.several_tracks;
@@ -611,7 +593,7 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
       }
     }
   } else {
-    cols.resize(cells(first_data).size());
+    cols.resize(cells(data.first).size());
     for (std::size_t j = 0; j < cols.size(); ++j) cols[j].decided = "content";
   }
   std::vector<std::string> names(cols.size());  // as messages quote them
@@ -645,7 +627,7 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
       fail(file, header_line, 1, "a Tracker export of " + std::to_string(tracks.size()) + " tracks (" + listed +
                                      "); expected the pendulum's chosen by its name (import --set, a scene's set)");
     }
-    const auto is_set = [&](const std::string& t) { return lower(t) == lower(set); };
+    const auto is_set = [&](const std::string& t) { return lower_case(t) == lower_case(set); };
     const auto named = std::find_if(tracks.begin(), tracks.end(), is_set);
     if (!set.empty() && named == tracks.end()) {
       fail(file, header_line, 1, "got the set \"" + one_line(set, 40, true) + "\"; expected one of this Tracker export's tracks: " + listed);
@@ -668,11 +650,11 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
   // A PASCO run other than the first, by its number ("Run #2", "run 2" or "2").
   int run = 1;
   if (!set.empty() && tracks.empty()) {
-    const std::string name = lower(set);
+    const std::string name = lower_case(set);
     const std::size_t digits = name.find_first_of("0123456789");
     const bool number = digits != std::string::npos && name.find_first_not_of("0123456789", digits) == std::string::npos &&
                         digits < 8 && name.size() - digits < 6;
-    const std::string prefix = number ? std::string(trim(name.substr(0, digits))) : std::string();
+    const std::string prefix = number ? std::string(trim_cell(name.substr(0, digits))) : std::string();
     if (!number || !(prefix.empty() || prefix == "run #" || prefix == "run")) {
       fail(file, header_line, 1, "got the set \"" + one_line(set, 40, true) + "\"; expected a PASCO run (\"Run #2\") or the name of a track in a Tracker "
                                      "export of several (\"#multi:\")");
@@ -692,7 +674,7 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
   // A header no layout fits is refused before its rows are read.
   if (!headerless) (void)detect(format, cols, preamble, false, file, header_line, run, track, nullptr);
 
-  Table table = read_rows(p, end, lines.data_line, dialect, names, file);
+  Table table = read_rows(data.begin, data.end, lines.data_line, dialect, names, file);
   if (headerless) {
     // A trailing delimiter on every row is no column.
     while (cols.size() > 1 && is_constant(table.columns.back()) &&

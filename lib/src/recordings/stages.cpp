@@ -19,28 +19,23 @@ void fail(const std::string& file, std::size_t line, std::size_t column, const s
   throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(column), one_line(message, 800, true));
 }
 
-namespace {
-
 bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
-bool ends_with(std::string_view s, std::string_view p) {
-  return s.size() >= p.size() && s.substr(s.size() - p.size()) == p;
+
+std::string_view trim_cell(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\r' || s.front() == '"')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\r' || s.back() == '"')) s.remove_suffix(1);
+  return s;
 }
 
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
+namespace {
+
+bool ends_with(std::string_view s, std::string_view p) {
+  return s.size() >= p.size() && s.substr(s.size() - p.size()) == p;
 }
 
 std::string_view trim_spaces(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\r' || s.front() == '\t')) s.remove_prefix(1);
   while (!s.empty() && (s.back() == ' ' || s.back() == '\r' || s.back() == '\t')) s.remove_suffix(1);
-  return s;
-}
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\r' || s.front() == '"')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\r' || s.back() == '"')) s.remove_suffix(1);
   return s;
 }
 
@@ -100,6 +95,14 @@ bool is_data(const char* p, const char* e) {
   return p < e && (std::isdigit(static_cast<unsigned char>(*p)) || *p == '.');
 }
 
+DataRows data_rows(std::string_view text, const HeaderLines& lines, const std::string& file, const std::string& what) {
+  const char* begin = text.data() + lines.data_offset;
+  const char* const end = text.data() + text.size();
+  if (begin >= end) fail(file, lines.data_line + 1, 1, "no data rows; expected " + what);
+  const void* nl = std::memchr(begin, '\n', static_cast<std::size_t>(end - begin));
+  return {begin, end, std::string_view(begin, static_cast<std::size_t>((nl ? static_cast<const char*>(nl) : end) - begin))};
+}
+
 HeaderLines find_header(std::string_view text, const std::string& file) {
   const char* const begin = text.data();
   const char* const end = begin + text.size();
@@ -156,7 +159,7 @@ std::vector<std::string_view> split_cells(std::string_view line, const Dialect& 
         stop = close == std::string_view::npos ? line.size() : close + 1;
       }
       stop = std::min(line.find(' ', stop), line.size());
-      const std::string_view cell = trim(line.substr(start, stop - start));
+      const std::string_view cell = trim_cell(line.substr(start, stop - start));
       // "Time (s)" written with spaces: the unit joins its word.
       if (!out.empty() && (starts_with(cell, "(") || starts_with(cell, "["))) {
         const char* first = out.back().data();
@@ -182,7 +185,7 @@ std::vector<std::string_view> split_cells(std::string_view line, const Dialect& 
       }
       d = line.find(dialect.delimiter, from);
     }
-    out.push_back(trim(line.substr(start, d == std::string_view::npos ? d : d - start)));
+    out.push_back(trim_cell(line.substr(start, d == std::string_view::npos ? d : d - start)));
     if (d == std::string_view::npos) return out;
     start = d + 1;
   }
@@ -313,7 +316,7 @@ const std::pair<const char*, const char*> kUnits[] = {
 }  // namespace
 
 std::string normal_unit(std::string_view unit) {
-  const std::string u = lower(trim_spaces(unit));
+  const std::string u = lower_case(trim_spaces(unit));
   for (const auto& [spelt, normal] : kUnits) {
     if (u == spelt) return normal;
   }
@@ -334,8 +337,8 @@ std::optional<double> time_scale(const Column& c) {
 
 Column classify(std::string_view raw) {
   Column c;
-  c.name = to_utf8(trim(raw));
-  std::string s = lower(c.name);
+  c.name = to_utf8(trim_cell(raw));
+  std::string s = lower_case(c.name);
   if (const auto pos = s.find(" run #"); pos != std::string::npos) {
     c.run = std::atoi(s.c_str() + pos + 6);
     s.erase(pos);
@@ -393,7 +396,7 @@ namespace {
 
 /// "30fps" (any case, spaces allowed) as 30; 0 for anything else.
 double frame_rate(const std::string& text) {
-  const std::string rate = lower(trim_spaces(text));
+  const std::string rate = lower_case(trim_spaces(text));
   if (rate.size() < 4 || rate.compare(rate.size() - 3, 3, "fps") != 0) return 0.0;
   const std::string number(trim_spaces(std::string_view(rate).substr(0, rate.size() - 3)));
   char* stop = nullptr;
@@ -423,7 +426,7 @@ std::vector<std::optional<Column>> parse_column_spec(const std::string& spec, co
       out.emplace_back();
     } else {
       const std::size_t colon = entry.find(':');
-      const std::string word = lower(entry.substr(0, colon));
+      const std::string word = lower_case(entry.substr(0, colon));
       const std::string unit = colon == std::string::npos ? std::string() : normal_unit(entry.substr(colon + 1));
       const Name* name = std::find_if(std::begin(kNames), std::end(kNames), [&](const Name& n) { return word == n.word; });
       if (name == std::end(kNames)) {

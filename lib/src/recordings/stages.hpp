@@ -61,6 +61,18 @@ struct HeaderLines {
 /// no numbers in its first 100 lines.
 HeaderLines find_header(std::string_view text, const std::string& file);
 
+/// The data rows after the header: where they begin and end in the text, and
+/// the first row, which the dialect is sniffed from.
+struct DataRows {
+  const char* begin;
+  const char* end;
+  std::string_view first;
+};
+
+/// The data rows of `text` after `lines`; refused as "no data rows;
+/// expected `what`" where there are none.
+DataRows data_rows(std::string_view text, const HeaderLines& lines, const std::string& file, const std::string& what);
+
 // --- split ------------------------------------------------------------------
 
 /// How the cells of a line are separated: '\t', ';', ',' or ' ' (a run of
@@ -75,6 +87,12 @@ struct Dialect {
 /// without one); otherwise runs of spaces when the first row has two or more
 /// numbers so separated. A comma in the first row is then a decimal comma.
 Dialect sniff(std::optional<std::string_view> header, std::string_view first_data);
+
+/// Whether `s` starts with `p`.
+bool starts_with(std::string_view s, std::string_view p);
+
+/// `s` without the spaces, CRs and quotes around it: a cell's text.
+std::string_view trim_cell(std::string_view s);
 
 /// The cells of a line, spaces, CR and quotes trimmed (a quoted cell keeps
 /// its delimiters). With runs of spaces, a header's "(s)" or "[deg]" joins

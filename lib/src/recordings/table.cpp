@@ -253,8 +253,7 @@ std::vector<TableColumnChoice> parse_table_column_spec(const std::string& spec, 
     entry.erase(entry.find_last_not_of(' ') + 1);
     if (!entry.empty() && entry != "-") {
       const std::size_t colon = entry.find(':');
-      std::string word = entry.substr(0, colon);
-      for (char& c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      const std::string word = lower_case(entry.substr(0, colon));
       TableColumnChoice c;
       c.column = column;
       c.unit = colon == std::string::npos ? std::string() : normal_unit(entry.substr(colon + 1));
@@ -283,23 +282,19 @@ std::vector<TableColumnChoice> parse_table_column_spec(const std::string& spec, 
 SettingsTable parse_settings_table(std::string_view text, const std::string& file, const TableOptions& options) {
   text = strip_bom(text);
   const HeaderLines lines = find_header(text, file);
-  const char* p = text.data() + lines.data_offset;
-  const char* const end = text.data() + text.size();
-  if (p >= end) fail(file, lines.data_line + 1, 1, "no data rows; expected a table of settings and periods");
-  const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
-  const std::string_view first_data(p, static_cast<std::size_t>((nl ? static_cast<const char*>(nl) : end) - p));
-  const Dialect dialect = sniff(lines.header, first_data);
+  const DataRows data = data_rows(text, lines, file, "a table of settings and periods");
+  const Dialect dialect = sniff(lines.header, data.first);
 
   std::vector<Column> cols;
   if (lines.header) {
     for (std::string_view cell : split_cells(*lines.header, dialect)) cols.push_back(classify(cell));
     while (cols.size() > 1 && cols.back().name.empty()) cols.pop_back();  // a trailing delimiter
   } else {
-    cols.resize(split_cells(first_data, dialect).size());
+    cols.resize(split_cells(data.first, dialect).size());
   }
   std::vector<std::string> names(cols.size());  // as messages quote them
   for (std::size_t j = 0; j < cols.size(); ++j) names[j] = column_label(cols[j].name, j + 1);
-  Table table = read_rows(p, end, lines.data_line, dialect, names, file);
+  Table table = read_rows(data.begin, data.end, lines.data_line, dialect, names, file);
   while (cols.size() > 1 && std::none_of(table.columns.back().begin(), table.columns.back().end(),
                                          [](double v) { return std::isfinite(v); })) {
     cols.pop_back(), names.pop_back(), table.columns.pop_back();

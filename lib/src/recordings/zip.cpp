@@ -15,10 +15,7 @@ namespace pendulum {
 namespace {
 
 bool ends_with_csv(const std::string& name) {
-  if (name.size() < 4) return false;
-  std::string end = name.substr(name.size() - 4);
-  for (char& c : end) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return end == ".csv";
+  return name.size() >= 4 && lower_case(name.substr(name.size() - 4)) == ".csv";
 }
 
 /// Lower rank, better pendulum signal: a rate turns with the pendulum.

@@ -165,13 +165,7 @@ struct PhysicalPendulum {
   template <class T>
   static PeriodPrediction<T> predict(const T* p, const Observation<T>& o, const Apparatus<T>& app,
                                      const AmplitudeChoice& amplitude) {
-    const Swing<T> s = swing_at(p, swing(o), app);
-    PeriodPrediction<T> out;
-    out.terms = model_terms<PhysicalPendulum>(app, s, amplitude);
-    out.composition = compose(out.terms);
-    out.ideal = ideal_period(s.length, p[g]);  // Eq. (56)
-    out.period = out.ideal * (1.0 + out.composition.total);
-    return out;
+    return prediction_of<PhysicalPendulum>(p, o, app, amplitude);  // T0: Eq. (56)
   }
 
   /// The rows it owns (kCorrectionUse), in air: the buoyancy of a body whose

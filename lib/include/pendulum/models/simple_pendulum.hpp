@@ -72,13 +72,7 @@ struct SimplePendulum {
   template <class T>
   static PeriodPrediction<T> predict(const T* p, const Observation<T>& o, const Apparatus<T>& app,
                                      const AmplitudeChoice& amplitude) {
-    const Swing<T> s = swing_at(p, swing(o), app);
-    PeriodPrediction<T> out;
-    out.terms = model_terms<SimplePendulum>(app, s, amplitude);
-    out.composition = compose(out.terms);
-    out.ideal = ideal_period(s.length, p[g]);  // Eq. (3)
-    out.period = out.ideal * (1.0 + out.composition.total);
-    return out;
+    return prediction_of<SimplePendulum>(p, o, app, amplitude);  // T0: Eq. (3)
   }
 
   /// It owns no row: every one applies (kCorrectionUse).

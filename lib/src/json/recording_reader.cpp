@@ -220,10 +220,11 @@ void reduce_swing_by_swing(ParsedScene& out) {
     u.period = g.uncertainty;
     v.oscillations_per_trial = u.oscillations_per_trial = g.periods;
     v.amplitude = g.amplitude;
-    u.amplitude = 0.0;  // the smooth curve's error is common to the groups: not an independent input of each
+    // The smooth curve's error is common to the groups: one shared input, not an independent one of each.
+    u.amplitude = g.amplitude_uncertainty;
     ObservationSource s = source;
     s.path = "swings[" + std::to_string(j) + "].";
-    s.shared = {setting_key(v.setting)};
+    s.shared = {setting_key(v.setting), "amplitude"};
     s.amplitude_raw = g.amplitude * 180.0 / kPi;
     s.amplitude_unit = "deg";
     out.observations.push_back(v);

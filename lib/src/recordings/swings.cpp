@@ -19,6 +19,12 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+/// The smooth amplitude curve (a polynomial in time fitted to log theta): a
+/// term joins while its F statistic exceeds this (3 sigmas), up to this
+/// order (81 deg to 17 deg in 375 s takes 6 or 7).
+constexpr double kSmoothTermF = 9.0;
+constexpr int kMaxSmoothOrder = 8;
+
 /// The swing signal: one value per sample, zero on average.
 struct Signal {
   std::vector<double> s;
@@ -556,12 +562,19 @@ Recording restricted(const Recording& r, std::pair<double, double> range, const 
 /// units of its own noise (sqrt(1/w_a + 1/w_b), w the crossings' weights)
 /// relative to the median's) and of the robust sigma of all (1.4826 median
 /// |e|, at least the q/sqrt(6) of two times on a clock of resolution q, and
-/// 1e-9 of the interval). Beyond 6 robust sigmas is an outlier (1 in 5e8
+/// 1e-9 of the interval). With `lengths` (one per interval, in index
+/// steps: 1 + DeltaT/T0 of its swing's smooth amplitude) each interval is
+/// taken per its own length: a strong decay shortens the intervals by more
+/// than their noise from one to the next, and the median of such a
+/// monotonic window is the interval itself (e = 0 for nearly all, a robust
+/// sigma of nothing, and each interval the noise reorders an outlier).
+/// Beyond 6 robust sigmas is an outlier (1 in 5e8
 /// for normal noise); outliers 4 intervals apart or less are one stretch,
 /// stretches less than 10 periods apart are one, and one within 10 periods
 /// of the record's start or end reaches it (a glitchy end).
 std::vector<Glitch> find_glitches(const std::vector<Crossing>& c, const std::vector<long>& index, int groups,
-                                  const std::vector<double>& weight, double quantum) {
+                                  const std::vector<double>& weight, double quantum,
+                                  const std::vector<double>& lengths = {}) {
   constexpr double kOutlier = 6.0;
   constexpr std::size_t kJoin = 4, kNeighbours = 10;
   const std::size_t n = c.size();
@@ -570,7 +583,7 @@ std::vector<Glitch> find_glitches(const std::vector<Crossing>& c, const std::vec
   std::vector<double> d(n - 1), sd(n - 1);
   std::vector<int> group(n - 1);
   for (std::size_t i = 0; i + 1 < n; ++i) {
-    const double steps = static_cast<double>(index[i + 1] - index[i]);
+    const double steps = static_cast<double>(index[i + 1] - index[i]) * (lengths.empty() ? 1.0 : lengths[i]);
     d[i] = (c[i + 1].time - c[i].time) / steps;
     sd[i] = std::sqrt(1.0 / weight[i] + 1.0 / weight[i + 1]) / steps;
     group[i] = static_cast<int>(index[i] % groups);
@@ -1010,11 +1023,25 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
   };
   // A mean removed from a record of no whole number of swings leaves an
   // offset delta that alternates in sign between swings: |p_i| = A_i +- delta.
-  // The weights 1/4, 1/2, 1/4 over three swings cancel it (and keep a linear
-  // decay centred); the first and last swing get no amplitude.
+  // The weights 1/4, 1/2, 1/4 over three swings cancel it, but lift a curved
+  // decay by a quarter of its second difference (90 ppm at 81 deg, 18 ppm of
+  // g swing by swing). Less that difference over alternate swings, whose
+  // offsets agree, they are (-1, 4, 10, 4, -1)/16: blind to the offset and
+  // exact for a quadratic, as (1, 5, 3, -1)/8 is for the second swing (and
+  // mirrored, the last but one). The first and last get no amplitude.
   if (!events && r.kind != SignalKind::acceleration) {
-    std::vector<double> smooth(raw.size(), kNaN);
-    for (std::size_t i = 1; i + 1 < raw.size(); ++i) smooth[i] = (raw[i - 1] + 2.0 * raw[i] + raw[i + 1]) / 4.0;
+    const std::size_t n = raw.size();
+    std::vector<double> smooth(n, kNaN);
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+      if (i >= 2 && i + 2 < n) {
+        smooth[i] = (-raw[i - 2] + 4.0 * raw[i - 1] + 10.0 * raw[i] + 4.0 * raw[i + 1] - raw[i + 2]) / 16.0;
+      } else if (n >= 4) {
+        const std::size_t j = i == 1 ? i - 1 : i + 1, k = i == 1 ? i + 1 : i - 1;  // outward, towards the middle
+        smooth[i] = (raw[j] + 5.0 * raw[i] + 3.0 * raw[k] - raw[2 * k - i]) / 8.0;
+      }
+      // Beside a swing without a peak (a sparse or glitchy track), the three.
+      if (!std::isfinite(smooth[i])) smooth[i] = (raw[i - 1] + 2.0 * raw[i] + raw[i + 1]) / 4.0;
+    }
     raw = smooth;
   }
   // Amplitudes (rad), by kind; those from a rate or a speed need T0, hence the period.
@@ -1082,37 +1109,79 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
   std::vector<double> index_amplitudes;  // the smooth amplitude the period's index took, one per swing
   if (tk.size() >= 8 && tk.size() * 2 >= theta.size() / (cpp / 2)) {
     const double mid = (tk.front() + tk.back()) / 2.0, half = (tk.back() - tk.front()) / 2.0;
-    // The order grows with the record: the value at the ends of a fit of
-    // order q through n noisy points scatters as (q + 1)/sqrt(n), and a short
-    // record's log theta is a line (Eq. 25 over a few per cent of decay).
-    const int order = tk.size() >= 400 ? 3 : tk.size() >= 100 ? 2 : 1;
-    Eigen::MatrixXd a(tk.size(), order + 1);
-    for (std::size_t k = 0; k < tk.size(); ++k) {
-      for (int j = 0; j <= order; ++j) a(k, j) = std::pow((tk[k] - mid) / half, j);
-    }
     const Eigen::Map<const Eigen::VectorXd> y(lk.data(), lk.size());
-    const Eigen::VectorXd c = a.colPivHouseholderQr().solve(y);
-    // Covariance of the coefficients, scaled by the residual variance; the
-    // 1/4, 1/2, 1/4 average over neighbouring swings (above) leaves the slow
-    // part of the noise as it was but shrinks the residuals' variance by
-    // 1/16 + 1/4 + 1/16 = 3/8: the factor 8/3 restores it.
-    const double dof = static_cast<double>(tk.size()) - (order + 1);
-    const double averaged = !events && r.kind != SignalKind::acceleration ? 8.0 / 3.0 : 1.0;
-    const Eigen::MatrixXd cov = (a.transpose() * a).inverse() * ((y - a * c).squaredNorm() / dof * averaged);
+    auto design = [&](int q) {
+      Eigen::MatrixXd a(tk.size(), q + 1);
+      for (std::size_t k = 0; k < tk.size(); ++k) {
+        for (int j = 0; j <= q; ++j) a(k, j) = std::pow((tk[k] - mid) / half, j);
+      }
+      return a;
+    };
+    // The average over neighbouring swings (above) leaves the slow part of
+    // the noise as it was but shrinks the residuals' variance by the sum of
+    // its squared weights, (1 + 16 + 100 + 16 + 1)/256: the factor 128/67
+    // restores it.
+    const double averaged = !events && r.kind != SignalKind::acceleration ? 128.0 / 67.0 : 1.0;
     auto smooth_with = [&](const Eigen::VectorXd& coef, double t) {
       const double x = (t - mid) / half;  // beyond +-1 by half a swing at most
       double v = 0.0;
-      for (int j = order; j >= 0; --j) v = v * x + coef[j];
+      for (Eigen::Index j = coef.size(); j-- > 0;) v = v * x + coef[j];
       return std::exp(v);
     };
-    auto smooth_at = [&](double t) { return smooth_with(c, t); };
     // Not for a photogate: its amplitudes take the bob's speed as constant
     // through the beam, which reads theta0 low by about theta_g^2/(6 theta0^2)
     // (theta_g the beam's half-width in angle), a bias that drifts as the
     // swing decays and, through the index, moves the period by several of its
     // sub-microsecond uncertainties. The cubic model of the plain index is
     // unbiased there (tests/test_recordings.cpp, photogate coverage).
-    if (cpp == 2 && !events) {
+    const bool indexed = cpp == 2 && !events;
+    // The sum of squares of the period's fit whose index takes the curve;
+    // NaN where the curve passes 180 deg.
+    auto crossing_ssr = [&](const Eigen::VectorXd& coef) {
+      std::vector<double> smooth(theta.size());
+      for (std::size_t i = 0; i < theta.size(); ++i) {
+        if (!((smooth[i] = smooth_with(coef, out.swings[i].peak_time)) < kPi)) return kNaN;
+      }
+      const PeriodEstimate p = fit_crossing_times(out.crossings, cpp, smooth, quantum);
+      return p.residual_rms * p.residual_rms * (static_cast<double>(nc) - 4.0);
+    };
+    // The order grows with the record: the value at the ends of a fit of
+    // order q through n noisy points scatters as (q + 1)/sqrt(n), and a short
+    // record's log theta is a line (Eq. 25 over a few per cent of decay).
+    int order = tk.size() >= 400 ? 3 : tk.size() >= 100 ? 2 : 1;
+    Eigen::MatrixXd a = design(order);
+    Eigen::VectorXd c = a.colPivHouseholderQr().solve(y);
+    double ssr = (y - a * c).squaredNorm(), crossings = indexed ? crossing_ssr(c) : kNaN;
+    // A strong decay (81 deg to 17 deg) bends log theta more than that: a
+    // misfit of a per cent, summed into the index, scattered the crossings
+    // 180 times their noise. A term joins while it is beyond 3 sigmas in the
+    // swings' log amplitudes or in the crossings (whose index sums the
+    // curve's errors: they see a misfit the swings' scatter hides), with at
+    // least 20 swings a coefficient.
+    while (order < kMaxSmoothOrder && static_cast<int>(tk.size()) >= 20 * (order + 2)) {
+      const Eigen::MatrixXd a1 = design(order + 1);
+      const Eigen::VectorXd c1 = a1.colPivHouseholderQr().solve(y);
+      const double ssr1 = (y - a1 * c1).squaredNorm();
+      const double s2 = ssr1 / (static_cast<double>(tk.size()) - (order + 2)) * averaged;
+      const double crossings1 = indexed ? crossing_ssr(c1) : kNaN;
+      if (indexed && !std::isfinite(crossings1)) break;
+      const bool swings_say = ssr - ssr1 > kSmoothTermF * s2;
+      const bool crossings_say = indexed && crossings - crossings1 > kSmoothTermF * crossings1 / (nc - 5.0);
+      if (!swings_say && !crossings_say) break;
+      ++order, a = a1, c = c1, ssr = ssr1, crossings = crossings1;
+    }
+    // Covariance of the coefficients from the residuals, each its own swing's
+    // variance (the sandwich (A^T A)^-1 A^T diag(r_i^2 / (1 - h_i)) A (A^T
+    // A)^-1, h_i the leverage, unbiased for equal variances): a constant noise
+    // in angle is a relative one that grows as the swing decays, 0.02 % at
+    // 81 deg to 0.07 % at 17 deg, and one variance for all put the curve's
+    // error at the start twice its scatter.
+    const Eigen::MatrixXd inverse = (a.transpose() * a).inverse();
+    Eigen::VectorXd r2 = (y - a * c).array().square();
+    for (Eigen::Index k = 0; k < r2.size(); ++k) r2[k] /= 1.0 - a.row(k).dot(inverse * a.row(k).transpose());
+    const Eigen::MatrixXd cov = inverse * (a.transpose() * r2.asDiagonal() * a) * inverse * averaged;
+    auto smooth_at = [&](double t) { return smooth_with(c, t); };
+    if (indexed) {
       auto period_with = [&](const Eigen::VectorXd& coef) {
         std::vector<double> smooth(theta.size());
         for (std::size_t i = 0; i < theta.size(); ++i) {
@@ -1151,6 +1220,11 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
     for (std::size_t i = 0; i < theta.size(); ++i) out.smooth_amplitudes[i] = smooth_at(out.swings[i].peak_time);
     out.start_amplitude = smooth_at(out.crossings.front().time);
     out.end_amplitude = smooth_at(out.crossings.back().time);
+    out.smooth_curve.mid = mid, out.smooth_curve.half = half;
+    out.smooth_curve.coefficients.assign(c.data(), c.data() + c.size());
+    Eigen::MatrixXd scaled = cov;
+    scaled(0, 0) += sig.scale_uncertainty * sig.scale_uncertainty;
+    out.smooth_curve.covariance.assign(scaled.data(), scaled.data() + scaled.size());  // symmetric: either order
     if (r.kind == SignalKind::angle || r.kind == SignalKind::position) {
       // log theta's variance at the start from the coefficients', x^T C x.
       Eigen::VectorXd x(order + 1);
@@ -1166,7 +1240,9 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
     index[i] = static_cast<long>(i);
     if (!events) weight[i] = out.crossings[i].slope * out.crossings[i].slope * out.crossings[i].samples;
   }
-  out.glitches = find_glitches(out.crossings, index, cpp, weight, quantum);
+  std::vector<double> lengths;
+  for (double theta_i : index_amplitudes) lengths.push_back(1.0 + finite_amplitude_agm(theta_i));
+  out.glitches = find_glitches(out.crossings, index, cpp, weight, quantum, lengths);
   report_glitches(out, [&](std::size_t a, std::size_t b) {
     const std::vector<Crossing> part(out.crossings.begin() + a, out.crossings.begin() + b + 1);
     const std::vector<double> amplitudes =

@@ -19,11 +19,18 @@ struct SwingGroup {
   double end = 0.0;          ///< (s) its last crossing
   int periods = 0;           ///< whole periods timed
   double period = 0.0;       ///< (s) mean period over the group (fit_crossing_times on its crossings)
-  double uncertainty = 0.0;  ///< (s) with the whole record's residual variance and AR(1) factor
+  /// (s) with the residual variance and AR(1) factor pooled over the groups' own fits
+  double uncertainty = 0.0;
   /// (rad) the amplitude whose exact finite-amplitude factor (N&O Eq. 8,
   /// finite_amplitude_agm) is the mean of its swings' on the smooth curve:
   /// the one amplitude at which a constant swing has the group's mean period.
   double amplitude = 0.0;
+  /// (rad) one uncertainty for the amplitudes of all the groups, which share
+  /// the smooth curve's error: the common shift of them all that moves the
+  /// groups' weighted mean of ln(1 + DeltaT/T0) (weights (T/sigma_T)^2, as
+  /// the series weighs them) as much as the curve's coefficients'
+  /// covariance does. 0 without it.
+  double amplitude_uncertainty = 0.0;
 };
 
 /// Whole periods per group: at least 4, and at most 50 groups.
@@ -49,7 +56,10 @@ double amplitude_of_factor(double factor);
 double amplitude_shift_sigmas(const SwingAnalysis& a, bool decay_corrected);
 
 /// The rule (docs/recordings.md, read off the speed-against-error table):
-/// swing by swing beyond this shift.
-constexpr double kSwingBySwingShift = 0.3;
+/// swing by swing beyond this shift. One mean period with the decay
+/// correction errs by at most 0.087 sigma a sigma of shift there (20 deg), so
+/// by less than 2 sigmas up to 20, where swing by swing costs 5 to 12 times
+/// its uncertainty (its groups share no crossing).
+constexpr double kSwingBySwingShift = 20.0;
 
 }  // namespace pendulum

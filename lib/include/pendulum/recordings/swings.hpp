@@ -152,7 +152,8 @@ struct SwingAnalysis {
   /// Amplitude (rad) at the first and the last crossing, the start and end of
   /// the timing, from the smooth amplitude curve (a polynomial in time fitted
   /// to log theta over the swings: a line below 100 swings, a quadratic below
-  /// 400, a cubic beyond; extrapolated to the crossings);
+  /// 400, a cubic beyond, and a higher order, up to 8, while each term is
+  /// beyond 3 sigmas in the swings or the crossings; extrapolated to the crossings);
   /// NaN without amplitudes. The scene's `amplitude` is the start one.
   double start_amplitude = 0.0;
   double end_amplitude = 0.0;
@@ -168,6 +169,15 @@ struct SwingAnalysis {
   /// (the index of step 3 takes it): the curve of start_amplitude. Empty
   /// without it.
   std::vector<double> smooth_amplitudes;
+  /// That curve: log theta(t) = sum_j coefficients[j] x^j, x = (t - mid) /
+  /// half (t in s on the file's clock), and the covariance of its
+  /// coefficients (row-major) from the swings' scatter and, for a video
+  /// track, its circle's radius (which scales every angle: the constant
+  /// term's). Empty coefficients without it.
+  struct SmoothCurve {
+    double mid = 0.0, half = 1.0;  ///< (s)
+    std::vector<double> coefficients, covariance;
+  } smooth_curve;
   /// Amplitude of each swing against time from the first crossing (empty
   /// when the recording gives no amplitudes); no sigmas, so the decay fit
   /// scales its covariance by the residual variance.

@@ -591,10 +591,14 @@ TEST_CASE("A zip export is unpacked within the limit, its sets all together", "[
   } catch (const pendulum::InputError& e) {
     CHECK_THAT(e.what(), Contains("unpack to over 150000 bytes"));
   }
-  // One set under the limit alone still reads.
+  // One set under the limit alone still reads, named in any case.
   const auto one = pendulum::read_recording(folder + "phyphox_export.zip", pendulum::RecordingFormat::automatic,
                                             limits, "Gyroscope.csv");
   CHECK(one.time == csv.time);
+  const auto typed = pendulum::read_recording(folder + "phyphox_export.zip", pendulum::RecordingFormat::automatic,
+                                              limits, "gyroscope");
+  CHECK(typed.set == "Gyroscope.csv");
+  CHECK(typed.time == csv.time);
 }
 
 TEST_CASE("A zip's sets are candidate signals: compared, and refused with the --set of each when they disagree",

@@ -75,7 +75,8 @@ Recording read_zip_recording(std::string_view bytes, const std::string& file, Re
     const std::string name = st.name;
     if (name.rfind("meta/", 0) == 0 || !ends_with_csv(name)) continue;
     if (names.size() < 300) names += (names.empty() ? "\"" : ", \"") + one_line(name, 80, true) + "\"";
-    if (!set.empty() && name != set && name != set + ".csv") continue;
+    // A set asked for in any case, with or without ".csv": "gyroscope" is Gyroscope.csv.
+    if (!set.empty() && lower_case(name) != lower_case(set) && lower_case(name) != lower_case(set) + ".csv") continue;
     sets.push_back({static_cast<zip_uint64_t>(i), name, st.size});
   }
   if (sets.empty()) {

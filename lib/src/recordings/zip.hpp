@@ -14,7 +14,8 @@ namespace pendulum {
 bool looks_like_zip(std::string_view bytes);
 
 /// Reads the recording in a zip archive. Each CSV outside meta/ is a
-/// candidate set; `set` (its name inside, with or without ".csv") picks one,
+/// candidate set; `set` (its name inside, in any case, with or without
+/// ".csv") picks one,
 /// and otherwise the set with the best signal is read: an angular rate, then
 /// a linear acceleration, then an acceleration with g, then any other that
 /// reads. Without `set`, every set that reads is a candidate

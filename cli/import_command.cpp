@@ -153,8 +153,9 @@ void add_recording_options(CLI::App& cmd, SwingOptions& options, std::string& se
                  "consecutive intervals alternate, else 1")
       ->check(CLI::IsMember({1, 2}));
   cmd.add_option("--set", set,
-                 "Zip exports: the CSV inside to read (Gyroscope.csv; default: the one with the best pendulum "
-                 "signal, a rate, then linear acceleration, then acceleration). PASCO: the run (\"Run #2\"; "
+                 "Zip exports: the CSV inside to read (Gyroscope.csv, in any case; default: the one with the best "
+                 "pendulum signal, a rate, then linear acceleration, then acceleration, the others' periods "
+                 "compared with it). PASCO: the run (\"Run #2\"; "
                  "default run 1). Tracker's export of several tracks: the pendulum's track by its name "
                  "(\"mass B\")");
   cmd.add_option("--columns", columns,

@@ -43,6 +43,7 @@ TEST_CASE("fit-decay on the bundled record", "[cli][decay_fit]") {
   REQUIRE(reduced.status == 0);
   const json result = json::parse(reduced.out);
   CHECK(result.at("decay_fit").at("alpha").at("value").get<double>() == alpha);
+  CHECK(result.at("decay_fit").at("angle_of") == "pendulum");  // amplitudes typed, no "of"
   CHECK(correction(result, "amplitude_decay").at("status") == "applied");
 
   const Run none = run("fit-decay " + kNelsonOlsson);

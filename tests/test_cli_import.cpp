@@ -113,6 +113,9 @@ TEST_CASE("A scene naming a recording reduces as the scene import's output paste
              WithinRel(expected.at("period").at("measured").at("value").get<double>(), 1e-15));
   CHECK(result.at("period").at("oscillations_per_trial") == imported.at("periods"));
   CHECK(result.at("decay_fit").at("points") == expected.at("decay_fit").at("points"));
+  // Its beta is the bob's, as the pasted record's "of" says (docs/output.md, decay_fit).
+  CHECK(result.at("decay_fit").at("angle_of") == "body");
+  CHECK(expected.at("decay_fit").at("angle_of") == "body");
   // Where the timing and the decay record came from; no other key changed.
   const json& from = result.at("recordings");
   REQUIRE(from.size() == 2);

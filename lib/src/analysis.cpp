@@ -66,7 +66,7 @@ std::vector<std::string> review_decay_fit(const DecayFit& fit) {
 }
 
 void use_fitted_decay(ParsedScene& scene, const DecayFit& fit) {
-  const AngleOf of = scene.decay_data ? scene.decay_data->angle_of : AngleOf::pendulum;  // beta is of this angle
+  const AngleOf of = decay_angle_of(scene);  // beta is of this angle
   const bool over_timing = !scene.swing_by_swing;
   scene.apparatus.decay = Decay<double>{fit.alpha.value, fit.beta.value, of, over_timing};
   scene.apparatus_uncertainty.decay =

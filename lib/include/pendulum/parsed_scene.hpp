@@ -111,4 +111,10 @@ struct ParsedScene {
   std::vector<std::string> suspicions;
 };
 
+/// Whose angle the scene's decay record followed, and so the angle its
+/// fitted beta is of: the bob's for a sensor in it, else the pendulum's.
+inline AngleOf decay_angle_of(const ParsedScene& scene) {
+  return scene.decay_data ? scene.decay_data->angle_of : AngleOf::pendulum;
+}
+
 }  // namespace pendulum

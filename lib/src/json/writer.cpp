@@ -60,8 +60,10 @@ json parameter(const FittedParameter& q, const char* unit) {
           {"uncertainty_unscaled", optional_number(q.uncertainty_unscaled)}};
 }
 
-json decay_fit_to_json(const DecayFit& f, const std::optional<Decay<double>>& given) {
+/// `of`: whose angle the record followed, and so the angle beta is of.
+json decay_fit_to_json(const DecayFit& f, const std::optional<Decay<double>>& given, AngleOf of) {
   json out = {{"equation", "Nelson & Olsson (1986) Eq. (25)"},
+              {"angle_of", angle_of_name(of)},
               {"model", decay_model_name(f.model)},
               {"model_reason", f.model_reason},
               {"alpha", parameter(f.alpha, "1/s")},
@@ -387,7 +389,7 @@ std::string result_json(const ParsedScene& scene, const Analysis& a, const Analy
     out["comparison"] = {{"difference_m_s2", a.g.value - expected->value},
                          {"z", optional_number(a.expected_g ? a.z_score : a.surface_z)}};
   }
-  if (a.decay_fit) out["decay_fit"] = decay_fit_to_json(*a.decay_fit, a.decay_given);
+  if (a.decay_fit) out["decay_fit"] = decay_fit_to_json(*a.decay_fit, a.decay_given, decay_angle_of(scene));
   if (!scene.recordings.empty()) out["recordings"] = recordings_json(scene);
   if (a.drag) {
     const Decay<double> used = a.decay_fit ? Decay<double>{a.decay_fit->alpha.value, a.decay_fit->beta.value}
@@ -400,7 +402,7 @@ std::string result_json(const ParsedScene& scene, const Analysis& a, const Analy
 std::string decay_fit_json(const std::string& input, const ParsedScene& scene, const DecayFit& fit,
                            const std::vector<std::string>& warnings) {
   json out = {{"schema", "pendulum-g/decay-fit/1"}, {"input", input}};
-  out.update(decay_fit_to_json(fit, scene.apparatus.decay));
+  out.update(decay_fit_to_json(fit, scene.apparatus.decay, decay_angle_of(scene)));
   if (!scene.recordings.empty()) out["recordings"] = recordings_json(scene);
   ParsedScene fitted = scene;
   use_fitted_decay(fitted, fit);

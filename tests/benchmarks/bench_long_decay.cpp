@@ -18,6 +18,7 @@
 
 #include "../long_decay.hpp"
 #include "pendulum/analysis.hpp"
+#include "pendulum/input_error.hpp"
 #include "pendulum/recordings/swing_series.hpp"
 #include "pendulum/scene_json.hpp"
 
@@ -58,6 +59,12 @@ void BM_Reduce(benchmark::State& state) {
   const ParsedScene scene = parse_scene(long_decay_scene("decay.csv", method, mean_deg), files);
   const bool by_swing = method == LongDecayMethod::swing_by_swing;
   Analysis a;
+  try {
+    a = analyse(scene);
+  } catch (const InputError& refused) {  // Eq. 50 beyond its first order at 90 deg: a row, not an abort
+    state.SkipWithError(refused.what());
+    return;
+  }
   for (auto _ : state) {
     if (by_swing) {
       const std::vector<SwingGroup> groups = swing_groups(scene.recordings[0].summary.swings);

@@ -4,7 +4,6 @@
 #include "pendulum/recordings/read.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstring>

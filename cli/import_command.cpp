@@ -20,8 +20,6 @@
 namespace pendulum::cli {
 namespace {
 
-constexpr double kDeg = 180.0 / kPi;
-
 /// One line per column of a recording or a table: its role, unit, header
 /// name and how that was decided.
 void put_columns(std::ostream& o, const std::vector<RecordingColumn>& columns) {
@@ -94,7 +92,7 @@ std::string summary_table(const RecordingSummary& r) {
   }
   if (!a.decay.amplitudes.empty()) {
     put("%-22s %.3f deg at the first crossing (amplitude_range.start) -> %.3f deg at the last\n", "amplitude",
-        a.start_amplitude * kDeg, a.end_amplitude * kDeg);
+        a.start_amplitude * kDegreesPerRadian, a.end_amplitude * kDegreesPerRadian);
   }
   for (const RecordingNote& note : a.notes) o << "note                   " << note.text << "\n";
   // The period against amplitude in ten slices of the record.
@@ -107,7 +105,7 @@ std::string summary_table(const RecordingSummary& r) {
     for (std::size_t m = i; m < j; ++m) t += c[m].time, amp += c[m].amplitude, per += c[m].period;
     const double count = static_cast<double>(j - i);
     if (std::isfinite(amp)) {
-      put("%10.1f %14.3f %14.6f\n", t / count, amp / count * kDeg, per / count);
+      put("%10.1f %14.3f %14.6f\n", t / count, amp / count * kDegreesPerRadian, per / count);
     } else {
       put("%10.1f %14s %14.6f\n", t / count, "-", per / count);
     }

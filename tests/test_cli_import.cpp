@@ -31,9 +31,10 @@ TEST_CASE("import: a phone recording becomes timing and decay that a scene takes
   std::vector<std::string> keys;
   const nlohmann::ordered_json in_order = nlohmann::ordered_json::parse(r.out);
   for (const auto& item : in_order.items()) keys.push_back(item.key());
-  // The six keys first, as ever; then what the reader used, the glitches
-  // and the notes (issue 19).
-  CHECK(keys == std::vector<std::string>{"format", "periods", "period", "amplitude_range", "timing", "decay",
+  // The format and the set read (null here: no zip, PASCO run or Tracker
+  // track), the five keys of before issue 19; then what the reader used,
+  // the glitches and the notes.
+  CHECK(keys == std::vector<std::string>{"format", "set", "periods", "period", "amplitude_range", "timing", "decay",
                                          "columns", "glitches", "notes"});
   CHECK(out.at("format") == "phyphox");
   CHECK(out.at("periods") == 10);
@@ -182,7 +183,10 @@ TEST_CASE("import: phyphox's zip export reads its best set, or the one named", "
     CHECK(from_zip.at("period") == from_csv.at("period"));
     CHECK(from_zip.at("periods") == from_csv.at("periods"));
     CHECK(from_zip.at("amplitude_range") == from_csv.at("amplitude_range"));
+    CHECK(from_zip.at("set") != nullptr);
+    CHECK(from_csv.at("set") == nullptr);
   }
+  CHECK(json::parse(run("import --set gyroscope " + zip).out).at("set") == "Gyroscope.csv");
   const Run table = run("import --format table " + zip);
   CHECK_THAT(table.out, Contains("set                    Gyroscope.csv"));
   const Run missing = run("import --set Magnetometer " + zip);

@@ -274,15 +274,15 @@ void judge_air(const ParsedScene& scene, std::vector<std::string>& reasons) {
 }
 
 void judge_amplitudes(const ParsedScene& scene, std::vector<std::string>& reasons) {
-  constexpr double kOneDegree = kPi / 180.0, kSmallAngleLab = 20.0 * kOneDegree;
+  constexpr double kSmallAngleLab = 20.0 * kRadiansPerDegree;
   for (std::size_t k = 0; k < scene.observations.size(); ++k) {
     const ObservationSource& s = scene.sources[k];
     const double raw = s.amplitude_raw;
-    if (s.amplitude_unit != "deg" || raw < kOneDegree || raw > kSmallAngleLab) continue;
-    const double arc_mm = scene.observations[k].length * raw * kOneDegree * 1e3;
+    if (s.amplitude_unit != "deg" || raw < kRadiansPerDegree || raw > kSmallAngleLab) continue;
+    const double arc_mm = scene.observations[k].length * raw * kRadiansPerDegree * 1e3;
     reasons.push_back(s.path_of("amplitude") + ": " + format_number(raw, 4) + " deg moves the bob by " +
                       format_number(arc_mm, 2) + " mm, too little to start and watch by hand, while " +
-                      format_number(raw, 4) + " rad is " + format_number(raw / kOneDegree, 3) +
+                      format_number(raw, 4) + " rad is " + format_number(raw / kRadiansPerDegree, 3) +
                       " deg, a small-angle lab's amplitude: radians written as deg? fix " + s.path_of("amplitude.unit") +
                       " (\"rad\")");
   }

@@ -12,8 +12,6 @@
 namespace pendulum {
 namespace {
 
-constexpr double kDeg = 180.0 / kPi;
-
 nlohmann::ordered_json summary_json(const RecordingSummary& r) {
   const SwingAnalysis& a = r.swings;
   const int n = a.period.periods;
@@ -21,6 +19,7 @@ nlohmann::ordered_json summary_json(const RecordingSummary& r) {
                              " recording " + r.file + (r.set.empty() ? "" : "/" + r.set);
   nlohmann::ordered_json out;
   out["format"] = recording_format_name(r.format);
+  out["set"] = r.set.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(r.set);
   out["periods"] = n;
   out["period"] = {{"value", a.period.value}, {"uncertainty", a.period.uncertainty}, {"unit", "s"}};
   // Whose angle the amplitudes are: a phone's sensor turns with the bob it
@@ -33,11 +32,11 @@ nlohmann::ordered_json summary_json(const RecordingSummary& r) {
     const auto [lo, hi] = std::minmax_element(a.decay.amplitudes.begin(), a.decay.amplitudes.end());
     // null where the recording cannot say (swings.hpp, start_amplitude_uncertainty).
     const nlohmann::ordered_json start_uncertainty =
-        std::isfinite(a.start_amplitude_uncertainty) ? nlohmann::ordered_json(a.start_amplitude_uncertainty * kDeg)
+        std::isfinite(a.start_amplitude_uncertainty) ? nlohmann::ordered_json(a.start_amplitude_uncertainty * kDegreesPerRadian)
                                                      : nlohmann::ordered_json(nullptr);
-    out["amplitude_range"] = {{"start", a.start_amplitude * kDeg}, {"start_uncertainty", start_uncertainty},
-                              {"end", a.end_amplitude * kDeg},     {"min", *lo * kDeg},
-                              {"max", *hi * kDeg},                 {"unit", "deg"},
+    out["amplitude_range"] = {{"start", a.start_amplitude * kDegreesPerRadian}, {"start_uncertainty", start_uncertainty},
+                              {"end", a.end_amplitude * kDegreesPerRadian},     {"min", *lo * kDegreesPerRadian},
+                              {"max", *hi * kDegreesPerRadian},                 {"unit", "deg"},
                               {"of", of}};
   }
   // One trial of all the periods: its uncertainty is used as is (docs/scene.md).
@@ -51,7 +50,7 @@ nlohmann::ordered_json summary_json(const RecordingSummary& r) {
   } else {
     std::vector<double> degrees(a.decay.amplitudes.size());
     std::transform(a.decay.amplitudes.begin(), a.decay.amplitudes.end(), degrees.begin(),
-                   [](double x) { return x * kDeg; });
+                   [](double x) { return x * kDegreesPerRadian; });
     out["decay"] = {{"data",
                      {{"time_unit", "s"},
                       {"times", a.decay.times},

@@ -266,7 +266,6 @@ std::string recording_part(const RecordingRecord& r, const std::string& anchor, 
   auto heading = [](const std::string& tag, const std::string& text) {
     return "<" + tag + ">" + text + "</" + tag + ">\n";
   };
-  constexpr double kDeg = 180.0 / kPi;
   std::string s = heading(h, "Recording <code>" + esc(r.input) + "</code>") +
                   "<p class=\"meta\">Recording file: <code>" + breakable(r.input) + "</code><br/>Format: " + esc(r.format) +
                   ", " + esc(r.signal) + "; " + std::to_string(r.rows) + " rows read, " +
@@ -291,8 +290,8 @@ std::string recording_part(const RecordingRecord& r, const std::string& anchor, 
     row("small-amplitude period T\u2080", format_fixed(r.small_amplitude_period, 7) + " s");
   }
   if (std::isfinite(r.start_amplitude)) {
-    row("amplitude", format_fixed(r.start_amplitude * kDeg, 3) + "\u00B0 at the first crossing, " +
-                         format_fixed(r.end_amplitude * kDeg, 3) + "\u00B0 at the last");
+    row("amplitude", format_fixed(r.start_amplitude * kDegreesPerRadian, 3) + "\u00B0 at the first crossing, " +
+                         format_fixed(r.end_amplitude * kDegreesPerRadian, 3) + "\u00B0 at the last");
   }
   s += "</table>\n";
   if (auto f = signal_figure(r, anchor + "-signal")) {

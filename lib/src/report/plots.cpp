@@ -12,7 +12,6 @@ namespace pendulum::report {
 namespace {
 constexpr double kMicro = 1e6;   // s -> us
 constexpr double kMilli = 1e3;   // m/s^2 -> mm/s^2
-constexpr double kDegreesPerRadian = 180.0 / kPi;
 }  // namespace
 
 Figure fit_figure(const FitPlotData& d) {

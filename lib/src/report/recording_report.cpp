@@ -15,7 +15,6 @@ namespace pendulum::report {
 
 namespace {
 
-constexpr double kDegreesPerRadian = 180.0 / kPi;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 /// Slices of the drawn signal: the figure's width in px, at least one per
 /// pixel column of its plotting area.

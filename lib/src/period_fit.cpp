@@ -249,7 +249,7 @@ class CompressedPeriodResiduals final : public CompressedCost<Model::kParameters
 
 template <class Model>
 PeriodFitSolution fit_periods(const PeriodFitProblem<Model>& problem,
-                              const std::array<double, Model::kParameters>& initial) {
+                              const std::array<double, Model::kParameters>& initial, bool with_covariance) {
   constexpr int P = Model::kParameters;
   constexpr int Q = P - 1;
   static_assert(Q >= 1, "a period model has parameters besides g");
@@ -308,6 +308,7 @@ PeriodFitSolution fit_periods(const PeriodFitProblem<Model>& problem,
   out.parameters.assign(P, 0.0);
   out.parameters[0] = 1.0 / (best.s * best.s);
   std::copy(q.begin(), q.end(), out.parameters.begin() + 1);
+  if (!with_covariance) return out;
   // (J^T J)^-1 over the fitted parameters at the optimum, g included,
   // judged singular on its column-scaled form, which the parameters' units
   // do not affect.
@@ -328,9 +329,9 @@ PeriodFitSolution fit_periods(const PeriodFitProblem<Model>& problem,
 }
 
 template PeriodFitSolution fit_periods<SimplePendulum>(const PeriodFitProblem<SimplePendulum>&,
-                                                        const std::array<double, 2>&);
+                                                        const std::array<double, 2>&, bool);
 template PeriodFitSolution fit_periods<PhysicalPendulum>(const PeriodFitProblem<PhysicalPendulum>&,
-                                                          const std::array<double, 3>&);
+                                                          const std::array<double, 3>&, bool);
 
 StraightLine fit_straight_line(const std::vector<double>& x, const std::vector<double>& y,
                                const std::vector<double>& sigma_x, const std::vector<double>& sigma_y,

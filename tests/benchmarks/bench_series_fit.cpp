@@ -73,7 +73,7 @@ int export_data(const std::string& dir) {
     std::ofstream csv(dir + "/series_" + std::to_string(n) + ".csv");
     csv.precision(17);
     for (const auto& o : s.observations) csv << o.length << "," << o.amplitude << "," << o.period << "," << kSigma << "\n";
-    const pendulum::PeriodFitSolution f = pendulum::fit_periods(s.problem(), s.start);
+    const pendulum::PeriodFitSolution f = pendulum::fit_periods(s.problem(), s.start, /*with_covariance=*/true);
     fits.push_back({{"observations", n},
                     {"g", f.parameters[0]},
                     {"length_offset", f.parameters[1]},

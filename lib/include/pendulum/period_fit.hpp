@@ -33,7 +33,8 @@ struct PeriodFitProblem {
 struct PeriodFitSolution {
   std::vector<double> parameters;  ///< SI, in the model's order
   /// (J^T W J)^-1 at the optimum: the parameters' covariance from the
-  /// weights alone (row-major, zero rows for held ones; empty when singular).
+  /// weights alone (row-major, zero rows for held ones); empty when singular
+  /// or not asked for (the analysis propagates g's uncertainty itself).
   std::vector<double> covariance;
   bool converged = false;
   std::string termination;  ///< Ceres's message
@@ -44,15 +45,15 @@ struct PeriodFitSolution {
 /// g in closed form for given others, the others by Levenberg-Marquardt from
 /// `initial` (g's start is not used), until a Gauss-Newton step would remove
 /// less than 1e-14 of the residual variance (the tests recover noiseless
-/// parameters to 1e-12).
+/// parameters to 1e-12). The covariance only `with_covariance`.
 template <class Model>
 PeriodFitSolution fit_periods(const PeriodFitProblem<Model>& problem,
-                              const std::array<double, Model::kParameters>& initial);
+                              const std::array<double, Model::kParameters>& initial, bool with_covariance = false);
 
 extern template PeriodFitSolution fit_periods<SimplePendulum>(const PeriodFitProblem<SimplePendulum>&,
-                                                               const std::array<double, 2>&);
+                                                               const std::array<double, 2>&, bool);
 extern template PeriodFitSolution fit_periods<PhysicalPendulum>(const PeriodFitProblem<PhysicalPendulum>&,
-                                                                 const std::array<double, 3>&);
+                                                                 const std::array<double, 3>&, bool);
 
 /// A weighted straight line y = slope x + intercept (intercept 0 when
 /// `with_intercept` is false) with the effective-variance weights

@@ -13,6 +13,7 @@
 // Read by the CLI tests and by the fuzzer's seed writer.
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -50,5 +51,19 @@ inline std::string catalogue_text(const nlohmann::json& entry, const nlohmann::j
   }
   return text;
 }
+
+#ifdef PENDULUM_TESTS_DIR
+/// Nelson & Olsson's scene and every case of tests/valid_scenes.json, as
+/// text: scenes of every kind, with every part and correction between them.
+/// Their recordings are named by absolute path (parse with allow_outside).
+inline std::vector<std::string> valid_scene_texts() {
+  const nlohmann::json base = nlohmann::json::parse(nelson_olsson_text());
+  const nlohmann::json catalogue =
+      nlohmann::json::parse(read_text(std::string(PENDULUM_TESTS_DIR) + "/valid_scenes.json"));
+  std::vector<std::string> out{nelson_olsson_text()};
+  for (const nlohmann::json& entry : catalogue.at("cases")) out.push_back(catalogue_text(entry, base));
+  return out;
+}
+#endif
 
 }  // namespace pendulum::test

@@ -61,6 +61,19 @@ TEST_CASE("import of a headerless pivot scan reads a table, not blocking times",
   CHECK_THAT(r.err, Contains("no unit; read as m"));
 }
 
+// The message names the column's own symbol and letter (kSettingInfo): a
+// position's was a distance's "h (cm)" before.
+TEST_CASE("import of a unitless pivot-position column that fits two units names its symbol", "[cli][tables]") {
+  const std::string file = temporary_file();
+  std::ofstream(file) << "x,T\n5,1.60\n10,1.55\n20,1.53\n60,1.60\n";
+  const Run r = run("import --columns x,T " + file);
+  std::remove(file.c_str());
+  CHECK(r.status == 1);
+  CHECK(r.out.empty());
+  CHECK_THAT(r.err, Contains("fit the periods in cm or mm; expected its unit in the header (\"x (cm)\") or declared: "
+                             "--columns \"x:cm,...\" (a scene's \"columns\": {\"pivot_position\": {\"column\": 1"));
+}
+
 TEST_CASE("reduce TABLE says what to do instead of 'not valid JSON'", "[cli][tables]") {
   const Run r = run("reduce " + kData + "/pendulum_lengths_table.csv");
   CHECK(r.status == 1);

@@ -3,12 +3,15 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cmath>
+#include <string>
 
 #include "pendulum/analysis.hpp"
 #include "pendulum/decay_simulation.hpp"
 #include "pendulum/scene_json.hpp"
 #include "reference.hpp"
+#include "catalogue.hpp"
 #include "scene_files.hpp"
 
 using namespace pendulum;
@@ -94,32 +97,55 @@ TEST_CASE("A bare scene computes only what it has", "[reduction]") {
 
 // A fit composes T/T0 once per observation when no applied correction reads
 // the swing's length (period_fit.cpp): a correction marked as not reading it
-// must not change with it. Nelson & Olsson's apparatus applies all sixteen.
+// must not change with it. Each row is checked in every scene that applies it,
+// Nelson & Olsson's and tests/valid_scenes.json's, and must apply in one: a new
+// correction's part comes with a valid scene that has it.
 // The support's Eq. (87), m g/(2 K l) with the working g = omega^2 l, reads
 // the length but leaves m omega^2/(2 K): marked as reading it, the safe side.
+// An angle of the body's (a sensor in the bob) reaches the amplitude and the
+// damping rows as the pendulum's theta = c psi, c from the length
+// (pendulum_over_body_angle): only where a bob on a string is, whose
+// bob_radius row reads the length, so a fit still composes at every step.
 TEST_CASE("The corrections marked reads_length are those that change with the swing's length", "[reduction][fit]") {
-  const ParsedScene s = parse_scene(test::nelson_olsson_text());
-  const Observation<double>& o = s.observations.front();
-  const AmplitudeChoice amplitude = cheapest_amplitude_method(o.amplitude, 0.0);
-  const Swing<double> swing = Swing<double>::of(o, 0.0);
-  Swing<double> longer = swing;
-  longer.length *= 1.25;
-  const Terms<double> at = correction_terms(s.apparatus, swing, amplitude);
-  const Terms<double> at_longer = correction_terms(s.apparatus, longer, amplitude);
+  std::array<int, kCorrectionCount> applied{};
+  const SceneFiles files{std::string(PENDULUM_TESTS_DIR), true};
+  for (const std::string& text : test::valid_scene_texts()) {
+    const ParsedScene s = parse_scene(text, files);
+    const Observation<double>& o = s.observations.front();
+    const AmplitudeChoice amplitude = cheapest_amplitude_method(o.amplitude, 0.0);
+    const Swing<double> swing = Swing<double>::of(o, 0.0);
+    Swing<double> longer = swing;
+    longer.length *= 1.25;
+    const Terms<double> at = correction_terms(s.apparatus, swing, amplitude);
+    const Terms<double> at_longer = correction_terms(s.apparatus, longer, amplitude);
+    const bool body_angle = o.amplitude_of == AngleOf::body || (s.apparatus.decay && s.apparatus.decay->angle_of == AngleOf::body);
+    const bool through_c = body_angle && pendulum_over_body_angle(s.apparatus, swing.length) != 1.0;
+    CHECK_FALSE((through_c && !at[static_cast<int>(CorrectionId::bob_radius)].ratio));
+    bool reads_length = false;
+    for (int i = 0; i < kCorrectionCount; ++i) {
+      INFO(s.title << ": " << kCorrections[i].id);
+      REQUIRE(at[i].ratio.has_value() == at_longer[i].ratio.has_value());
+      if (!at[i].ratio) continue;
+      ++applied[i];
+      reads_length |= kCorrections[i].reads_length;
+      const bool changes = *at[i].ratio != *at_longer[i].ratio;
+      if (!kCorrections[i].reads_length) {
+        CHECK_FALSE((changes && !through_c));
+      } else if (kCorrections[i].correction != CorrectionId::support_motion) {
+        CHECK(changes);
+      }
+    }
+    CHECK(corrections_read_length(s.apparatus, swing, amplitude) == reads_length);
+  }
   for (int i = 0; i < kCorrectionCount; ++i) {
     INFO(kCorrections[i].id);
-    REQUIRE(at[i].ratio.has_value());
-    const bool changes = *at[i].ratio != *at_longer[i].ratio;
-    if (!kCorrections[i].reads_length) {
-      CHECK_FALSE(changes);
-    } else if (kCorrections[i].correction != CorrectionId::support_motion) {
-      CHECK(changes);
-    }
+    CHECK(applied[i] > 0);
   }
-  CHECK(corrections_read_length(s.apparatus, swing, amplitude));
+  const ParsedScene s = parse_scene(test::nelson_olsson_text());
+  const Swing<double> swing = Swing<double>::of(s.observations.front(), 0.0);
   Apparatus<double> damped_only;  // the amplitude and the damping rows read no length
   damped_only.decay = s.apparatus.decay;
-  CHECK_FALSE(corrections_read_length(damped_only, swing, amplitude));
+  CHECK_FALSE(corrections_read_length(damped_only, swing, cheapest_amplitude_method(swing.amplitude, 0.0)));
 }
 
 namespace {

@@ -5,6 +5,7 @@
 /// the period's ratio T/T0. Generic in the scalar type (double, ceres::Jet).
 
 #include <array>
+#include <iterator>
 #include <limits>
 #include <optional>
 
@@ -19,7 +20,9 @@
 
 namespace pendulum {
 
-/// The corrections, in the order of Nelson & Olsson's Table II.
+/// The corrections, in the order of Nelson & Olsson's Table II. A new one is
+/// an entry here and its row at the same place in kCorrections (checked at
+/// compile time), its function and its call in visit_corrections.
 enum class CorrectionId {
   finite_amplitude,
   bob_radius,
@@ -38,7 +41,6 @@ enum class CorrectionId {
   wire_stretch,
   support_motion,
 };
-inline constexpr int kCorrectionCount = 16;
 
 /// First-order theories hold while |DeltaT/T0| stays below this: the terms
 /// they neglect, of order (DeltaT/T0)^2, would reach 1% of the period.
@@ -57,11 +59,13 @@ struct CorrectionInfo {
   /// Whether its ratio reads the swing's length (directly, or through the
   /// working g = omega^2 l or the added mass's x): only these change with a
   /// fit's parameters, which reach the corrections through the length alone.
+  /// A body's angle (a sensor in the bob) makes the amplitude and damping rows
+  /// read it too, through theta = c psi; only beside the bob's rows, which do.
   bool reads_length;
 };
 
 /// The table of corrections, indexed by CorrectionId.
-inline constexpr std::array<CorrectionInfo, kCorrectionCount> kCorrections{{
+inline constexpr CorrectionInfo kCorrections[] = {
     {CorrectionId::finite_amplitude, "finite_amplitude", "Finite amplitude",
      "Nelson & Olsson (1986) Eq. (8)", "amplitude", kNoLimit, false},
     {CorrectionId::bob_radius, "bob_radius", "Finite radius of bob", "Nelson & Olsson (1986) Eq. (10)", "bob",
@@ -91,7 +95,9 @@ inline constexpr std::array<CorrectionInfo, kCorrectionCount> kCorrections{{
      kFirstOrderLimit, true},
     {CorrectionId::support_motion, "support_motion", "Motion of support",
      "Nelson & Olsson (1986) Eqs. (83), (87), (88)", "support", kFirstOrderLimit, true},
-}};
+};
+/// The number of corrections: kCorrections's rows.
+inline constexpr int kCorrectionCount = static_cast<int>(std::size(kCorrections));
 
 namespace detail {
 constexpr bool table_follows_enum() {

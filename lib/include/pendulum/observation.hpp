@@ -3,6 +3,8 @@
 /// \brief What was measured at one setting of the apparatus: the length, the
 /// amplitude and the timing, and the swing the corrections act on.
 
+#include <cstddef>
+#include <iterator>
 #include <type_traits>
 
 #include "pendulum/fields.hpp"
@@ -12,12 +14,43 @@ namespace pendulum {
 
 /// Which distance an observation's setting is (its `length`). A ball on a
 /// wire is set by its length; a rigid body by where it hangs from, given
-/// either way (docs/physical.md).
+/// either way (docs/physical.md). A new one is an entry here and its row at
+/// the same place in kSettingInfo, and belongs to one model's kSettings.
 enum class Setting {
   length,          ///< pivot to the bob's centre, or to the mark of length_offset
   pivot_distance,  ///< pivot to the body's centre of mass
   pivot_position,  ///< the pivot's place along the body, from a mark on it
 };
+
+/// What the reader and the output say of a setting.
+struct SettingInfo {
+  Setting setting;     ///< its place in the table (checked at compile time)
+  const char* key;     ///< the scene's key, also its JSON path
+  const char* symbol;  ///< a table's heading, with " (m)"
+  const char* letter;  ///< a table column's declaration (--columns "l:cm,T")
+  const char* words;   ///< in words, for messages and the report's headings
+  bool signed_distance;  ///< whether it may be negative (a position from a mark)
+};
+
+/// The settings, indexed by Setting.
+inline constexpr SettingInfo kSettingInfo[] = {
+    {Setting::length, "length", "L", "l", "length", false},
+    {Setting::pivot_distance, "pivot_distance", "h", "h", "pivot distance", false},
+    {Setting::pivot_position, "pivot_position", "x", "x", "pivot position", true},
+};
+
+namespace detail {
+constexpr bool setting_table_follows_enum() {
+  for (std::size_t i = 0; i < std::size(kSettingInfo); ++i) {
+    if (static_cast<std::size_t>(kSettingInfo[i].setting) != i) return false;
+  }
+  return true;
+}
+}  // namespace detail
+static_assert(detail::setting_table_follows_enum(), "kSettingInfo must list the settings in Setting order");
+
+/// What the reader and the output say of `s`.
+constexpr const SettingInfo& setting_info(Setting s) { return kSettingInfo[static_cast<int>(s)]; }
 
 /// Whose angle an amplitude is. The corrections take the pendulum's (the
 /// line from the pivot to the bob's centre); a sensor in the bob (a phone's
@@ -32,14 +65,7 @@ enum class AngleOf {
 inline const char* angle_of_name(AngleOf a) { return a == AngleOf::body ? "body" : "pendulum"; }
 
 /// The scene's key of a setting, which is also its JSON path.
-inline const char* setting_key(Setting s) {
-  switch (s) {
-    case Setting::length: return "length";
-    case Setting::pivot_distance: return "pivot_distance";
-    case Setting::pivot_position: return "pivot_position";
-  }
-  return "length";
-}
+constexpr const char* setting_key(Setting s) { return setting_info(s).key; }
 
 /// One timed setting of the pendulum, in SI units.
 template <class T>

@@ -108,6 +108,21 @@ void refuse_unknown_amplitude(Object& owner) {
                        format_number(v + u) + "], \"unit\": \"" + unit_name + "\"} (or \"not recorded\", docs/scene.md)");
 }
 
+/// Each registered kind's setting keys: "by length (simple_pendulum), or by
+/// pivot_distance or pivot_position (physical_pendulum)".
+std::string settings_of_kinds() {
+  std::string out;
+  for_each_period_model([&](auto model) {
+    using M = decltype(model);
+    out += out.empty() ? "by " : ", or by ";
+    for (std::size_t i = 0; i < M::kSettings.size(); ++i) {
+      out += std::string(i == 0 ? "" : " or ") + setting_key(M::kSettings[i]);
+    }
+    out += std::string(" (") + M::kName + ")";
+  });
+  return out;
+}
+
 /// The keys of one observation, under `o` (the top level, or an item of
 /// "observations") with `prefix` on every path; `shared`, in a series, holds
 /// the length or amplitude given once for all.
@@ -121,26 +136,31 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
   } else {
     read_timing(o, prefix, v, u, source, out);
   }
-  // A rigid body is set by its pivot (docs/physical.md), a ball by its length.
-  const bool distance = o.has("pivot_distance"), position = o.has("pivot_position");
-  PENDULUM_FAIL_IF(distance && position, prefix + "pivot_position",
-                   "got both pivot_distance and pivot_position; expected one");
-  v.setting = u.setting = distance ? Setting::pivot_distance : position ? Setting::pivot_position : Setting::length;
+  // The setting is the one whose key the observation has (kSettingInfo), the length where none is there.
+  v.setting = Setting::length;
+  for (const SettingInfo& setting : kSettingInfo) {
+    if (!o.has(setting.key) || setting.setting == v.setting) continue;
+    PENDULUM_FAIL_IF(o.has(setting_key(v.setting)), prefix + setting.key,
+                     std::string("got both ") + setting_key(v.setting) + " and " + setting.key + "; expected one");
+    v.setting = setting.setting;
+  }
+  u.setting = v.setting;
   const char* key = setting_key(v.setting);
+  // The ball's length alone may be given once for a series (a top-level length).
   const bool physical = v.setting != Setting::length;
   Object& length_owner = physical ? o : owner(o, shared, "length", source);
-  PENDULUM_FAIL_IF(physical && o.has("length"), prefix + "length",
-                   std::string("got both length and ") + key + "; expected one");
   PENDULUM_FAIL_IF(physical && shared && shared->has("length"), "length",
                    std::string("got both length and ") + prefix + key + "; expected one");
   // The kind is the registered model's that reads this setting (models/registry.hpp).
   const PeriodModelKind kind = kind_of_setting(v.setting);
-  PENDULUM_FAIL_IF(!out.observations.empty() && kind != out.model,
-                   prefix + key, "got a mix of length and pivot keys; expected every observation to give length "
-                   "(a ball on a wire) or every one pivot_distance or pivot_position (a rigid body)");
+  PENDULUM_FAIL_IF(!out.observations.empty() && kind != out.model, prefix + key,
+                   std::string("got ") + key + " after observations set by " +
+                       setting_key(out.observations.back().setting) +
+                       "; expected every observation set as one kind of pendulum: " + settings_of_kinds());
   out.model = kind;
   if (physical) {
-    put(o, key, Dimension::length, position ? Range::any : Range::non_negative, v.length, u.length);
+    put(o, key, Dimension::length, setting_info(v.setting).signed_distance ? Range::any : Range::non_negative, v.length,
+        u.length);
     within(std::abs(v.length), 0.0, 1e3, prefix + key + ".value", "m", "a laboratory body's pivot, within 1 km");
   } else {
     const Measured length = quantity(length_owner, "length", Dimension::length, Range::positive, &source.measured_to);

@@ -669,11 +669,8 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     }
   } else {
     // The setting's column: a length, a pivot's position along the body, or its distance from the centre.
-    const Setting setting = scene.observations.front().setting;
-    const char* heading = setting == Setting::pivot_position   ? "x (m)"
-                          : setting == Setting::pivot_distance ? "h (m)"
-                                                               : "L (m)";
-    std::snprintf(line, sizeof line, "%5s %9s %12s %12s %10s %12s %9s %12s\n", "obs", heading, "theta0 (deg)",
+    const std::string heading = std::string(setting_info(scene.observations.front().setting).symbol) + " (m)";
+    std::snprintf(line, sizeof line, "%5s %9s %12s %12s %10s %12s %9s %12s\n", "obs", heading.c_str(), "theta0 (deg)",
                   "T meas (s)", "+- (s)", "T model (s)", "resid (sd)", "T-T0 (us)");
     os << line;
     for (std::size_t k = 0; k < a.observations.size(); ++k) {

@@ -238,6 +238,21 @@ std::vector<double> scaled(const std::vector<double>& v, double f) {
   return out;
 }
 
+/// The setting a --columns word declares (its letter or its key), if any.
+const SettingInfo* setting_declared(const std::string& word) {
+  for (const SettingInfo& s : kSettingInfo) {
+    if (word == s.letter || word == s.key) return &s;
+  }
+  return nullptr;
+}
+
+/// "l (length), h (pivot distance), x (pivot position)".
+std::string setting_declarations() {
+  std::string out;
+  for (const SettingInfo& s : kSettingInfo) out += std::string(out.empty() ? "" : ", ") + s.letter + " (" + s.words + ")";
+  return out;
+}
+
 }  // namespace
 
 std::vector<TableColumnChoice> parse_table_column_spec(const std::string& spec, const std::string& where) {
@@ -256,16 +271,15 @@ std::vector<TableColumnChoice> parse_table_column_spec(const std::string& spec, 
       TableColumnChoice c;
       c.column = column;
       c.unit = colon == std::string::npos ? std::string() : normal_unit(entry.substr(colon + 1));
-      if (word == "l" || word == "length") c.role = "length";
-      else if (word == "h" || word == "pivot_distance") c.role = "pivot_distance";
-      else if (word == "x" || word == "pivot_position") c.role = "pivot_position";
+      const SettingInfo* setting = setting_declared(word);
+      if (setting) c.role = setting->key;
       else if (word == "t" || word == "period") c.role = "period";
       else if (word == "theta" || word == "amplitude") c.role = "amplitude";
       else if (const int n = oscillations_in(word); n > 0 && word[0] == 't') c.role = "time", c.oscillations = n;
       else if (word == "u" && !previous.empty()) c.role = previous + "_uncertainty";
       else {
         throw InputError(where, "got the column \"" + one_line(entry, 40) +
-                                    "\"; expected l (length), h (pivot distance), x (pivot position), T (period), "
+                                    "\"; expected " + setting_declarations() + ", T (period), "
                                     "tN (time of N oscillations: t10), theta (amplitude), u (the uncertainty of "
                                     "the column before), or - for a column not used; each with :unit if wanted");
       }
@@ -334,10 +348,9 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
       u.decided = "option";
       const std::string base = c.role.substr(0, c.role.find("_uncertainty"));
       u.uncertainty = base.size() != c.role.size();
-      if (base == "length" || base == "pivot_distance" || base == "pivot_position") {
+      if (const SettingInfo* setting = setting_declared(base)) {
         u.kind = Kind::setting;
-        u.setting = base == "length" ? Setting::length : base == "pivot_distance" ? Setting::pivot_distance
-                                                                                   : Setting::pivot_position;
+        u.setting = setting->setting;
       } else if (base == "period" || base == "time") {
         u.kind = Kind::time;
         u.oscillations = base == "period" ? 1 : c.oscillations;
@@ -513,8 +526,8 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
       for (const auto& u : plausible) choice += (choice.empty() ? "" : " or ") + u;
       refuse("the column \"" + names[*setting_col] + "\" (" + setting_key(su.setting) + ") has no unit and its values, " +
              range + ", " + (plausible.empty() ? "fit the periods in no unit (m, cm, mm)" : "fit the periods in " + choice) +
-             "; expected its unit in the header (\"" + (su.setting == Setting::length ? "L" : "h") +
-             " (cm)\") or declared: --columns \"" + (su.setting == Setting::length ? "l" : su.setting == Setting::pivot_distance ? "h" : "x") +
+             "; expected its unit in the header (\"" + setting_info(su.setting).symbol +
+             " (cm)\") or declared: --columns \"" + setting_info(su.setting).letter +
              ":cm,...\" (a scene's \"columns\": {\"" + what + "\": {\"column\": " + std::to_string(*setting_col + 1) +
              ", \"unit\": \"cm\"}})");
     }

@@ -334,7 +334,8 @@ std::string scene_section(const SceneReport& r, const std::string& anchor) {
     s += "<h3>Series fit</h3>\n" + figure_html(to_svg(*f, false), f->description) + series_table(*r.series, "L (m)");
   }
   if (auto f = pivot_scan_figure(r, anchor + "-pivot-scan")) {
-    const std::string setting = r.pivot_scan->setting == Setting::pivot_position ? "pivot position x (m)" : "pivot distance h (m)";
+    const SettingInfo& info = setting_info(r.pivot_scan->setting);
+    const std::string setting = std::string(info.words) + " " + info.symbol + " (m)";
     s += std::string(r.pivot_scan->bessel_g ? "<h3>Kater's pendulum</h3>\n" : "<h3>Pivot scan</h3>\n") +
          figure_html(to_svg(*f, false), f->description) + series_table(*r.series, setting);
   }

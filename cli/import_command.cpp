@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <sstream>
+#include <vector>
 
 #include "commands.hpp"
 #include "pendulum/numeric.hpp"
@@ -224,7 +225,9 @@ Command add_import_command(CLI::App& app) {
       if (!o->columns.empty()) options.columns = parse_table_column_spec(o->columns, "--columns");
       const SettingsTable t = read_settings_table(o->file, options);
       const std::string name = printable_name(o->file);
-      for (const RecordingNote& w : t.warnings) std::cerr << "warning: " << name << ": " << w.text << "\n";
+      std::vector<std::string> warnings;
+      for (const RecordingNote& w : t.warnings) warnings.push_back(name + ": " + w.text);
+      print_warnings(warnings);
       std::cout << (table ? settings_table_text(t, name) : table_scene(t, name));
       return 0;
     }

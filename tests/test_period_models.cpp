@@ -125,6 +125,9 @@ struct WithoutSolveG : SimplePendulum {
 struct WithoutReadKeys : PhysicalPendulum {
   static void read_keys() = delete;
 };
+struct WithoutUnknownsOfObservationsAlone : PhysicalPendulum {
+  static void unknowns_of_observations_alone() = delete;
+};
 struct WithoutExpectation : SimplePendulum {
   static void expectation() = delete;
 };
@@ -153,6 +156,7 @@ TEST_CASE("A kind that lacks a piece of the interface is not a period model", "[
   STATIC_REQUIRE_FALSE(is_period_model<WithoutOwnCorrections>());
   STATIC_REQUIRE_FALSE(is_period_model<WithoutSolveG>());
   STATIC_REQUIRE_FALSE(is_period_model<WithoutReadKeys>());
+  STATIC_REQUIRE_FALSE(is_period_model<WithoutUnknownsOfObservationsAlone>());
   STATIC_REQUIRE_FALSE(is_period_model<WithoutExpectation>());
   STATIC_REQUIRE_FALSE(is_period_model<WithoutCheckRows>());
   STATIC_REQUIRE_FALSE(is_period_model<WithoutSkippedPartWarnings>());

@@ -29,14 +29,15 @@ struct SettingInfo {
   const char* symbol;  ///< a table's heading, with " (m)"
   const char* letter;  ///< a table column's declaration (--columns "l:cm,T")
   const char* words;   ///< in words, for messages and the report's headings
+  const char* series;  ///< what a table of its observations is, in a title
   bool signed_distance;  ///< whether it may be negative (a position from a mark)
 };
 
 /// The settings, indexed by Setting.
 inline constexpr SettingInfo kSettingInfo[] = {
-    {Setting::length, "length", "L", "l", "length", false},
-    {Setting::pivot_distance, "pivot_distance", "h", "h", "pivot distance", false},
-    {Setting::pivot_position, "pivot_position", "x", "x", "pivot position", true},
+    {Setting::length, "length", "L", "l", "length", "a length series", false},
+    {Setting::pivot_distance, "pivot_distance", "h", "h", "pivot distance", "a pivot scan", false},
+    {Setting::pivot_position, "pivot_position", "x", "x", "pivot position", "a pivot scan", true},
 };
 
 namespace detail {

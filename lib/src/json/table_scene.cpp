@@ -4,6 +4,7 @@
 
 #include "recording_reader.hpp"
 #include "table_reader.hpp"
+#include "pendulum/models/registry.hpp"
 
 namespace pendulum {
 
@@ -129,14 +130,16 @@ std::string table_scene(const SettingsTable& table, const std::string& table_nam
   using json_reader::json;
   nlohmann::ordered_json scene;
   scene["schema"] = json_reader::kSceneSchema;
-  const bool scan = table.setting != Setting::length;
-  scene["title"] = table_name + ": " + (scan ? "a pivot scan" : "a length series");
+  scene["title"] = table_name + ": " + setting_info(table.setting).series;
   scene["source"] = "pendulum-g import: table " + table_name;
-  if (scan) {
-    scene["fit"] = table.setting == Setting::pivot_position
-                       ? nlohmann::ordered_json{"radius_of_gyration", "center_of_mass_position"}
-                       : nlohmann::ordered_json{"radius_of_gyration"};
-  }
+  // What the table's kind cannot know without its parts (models/registry.hpp).
+  visit_period_model(kind_of_setting(table.setting), [&](auto model) {
+    using M = decltype(model);
+    const auto unknowns = M::unknowns_of_observations_alone(table.setting);
+    for (int p = 1; p < M::kParameters; ++p) {
+      if (unknowns[p]) scene["fit"].push_back(M::kParameterInfo[p].name);
+    }
+  });
   const bool amplitudes = !table.observations.empty() && table.observations.front().amplitude;
   if (!amplitudes) scene["amplitude"] = "not recorded";
   scene["observations"] = json_reader::observations_as<nlohmann::ordered_json>(table, table_name);

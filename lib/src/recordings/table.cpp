@@ -227,10 +227,29 @@ bool fits_pivot_position(const std::vector<double>& x, const std::vector<double>
   return *hi - *lo >= 0.05 && *hi - *lo <= 2.0 * l;
 }
 
-bool fits(Setting s, const std::vector<double>& x, const std::vector<double>& t) {
-  return s == Setting::length ? fits_length(x, t) : s == Setting::pivot_distance ? fits_pivot_distance(x, t)
-                                                                                : fits_pivot_position(x, t);
+/// How a setting column without a unit gets one, a row per setting in
+/// kSettingInfo's order: whether its values (m) fit the periods (s), and
+/// what only the right unit gives.
+struct UnitCheck {
+  Setting setting;
+  bool (*fits)(const std::vector<double>& x, const std::vector<double>& t);
+  const char* alone;  ///< the note's reason: "in that unit alone ..."
+};
+constexpr UnitCheck kUnitChecks[] = {
+    {Setting::length, fits_length, "in that unit alone 4 pi^2 L/T^2 is a g near the Earth's"},
+    {Setting::pivot_distance, fits_pivot_distance, "in that unit alone the pivots give one radius of gyration"},
+    {Setting::pivot_position, fits_pivot_position, "in that unit alone the positions span a body of these periods"},
+};
+constexpr bool unit_checks_follow_settings() {
+  if (std::size(kUnitChecks) != std::size(kSettingInfo)) return false;
+  for (std::size_t i = 0; i < std::size(kUnitChecks); ++i) {
+    if (kUnitChecks[i].setting != kSettingInfo[i].setting) return false;
+  }
+  return true;
 }
+static_assert(unit_checks_follow_settings(), "kUnitChecks has a row for each setting, in kSettingInfo's order");
+
+const UnitCheck& unit_check(Setting s) { return kUnitChecks[static_cast<int>(s)]; }
 
 std::vector<double> scaled(const std::vector<double>& v, double f) {
   std::vector<double> out(v);
@@ -499,7 +518,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     std::vector<std::string> plausible;
     for (const Scale& s : kLengthUnits) {
       if (std::string(s.name) == "in" || std::string(s.name) == "ft") continue;  // a metric lab's, unless said
-      if (fits(su.setting, scaled(settings, s.factor), periods)) plausible.emplace_back(s.name);
+      if (unit_check(su.setting).fits(scaled(settings, s.factor), periods)) plausible.emplace_back(s.name);
     }
     const auto [lo, hi] = std::minmax_element(settings.begin(), settings.end());
     const std::string range = format_number(*lo, 4) + " to " + format_number(*hi, 4);
@@ -534,11 +553,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     su.unit = plausible.front();
     if (su.decided != "option") su.decided = "content";
     out.warnings.push_back({0, "\"" + names[*setting_col] + "\": no unit; read as " + su.unit + " (" + range + " " +
-                                   su.unit + "; " +
-                                   (su.setting == Setting::length ? "in that unit alone 4 pi^2 L/T^2 is a g near the Earth's"
-                                    : su.setting == Setting::pivot_distance ? "in that unit alone the pivots give one radius of gyration"
-                                                                            : "in that unit alone the positions span a body of these periods") +
-                                   ")"});
+                                   su.unit + "; " + unit_check(su.setting).alone + ")"});
   }
   const auto setting_factor = factor_of(kLengthUnits, su.unit);
   if (!setting_factor) {

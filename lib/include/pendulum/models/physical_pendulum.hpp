@@ -99,6 +99,12 @@ struct PhysicalPendulum {
   /// center_of_mass_position, body, temperature, with the checks across
   /// its observations (json/physical_reader.cpp). After "fit".
   static void read_keys(json_reader::Object& top, ParsedScene& out);
+  /// The unknowns besides g a scene of observations alone (a table's: no
+  /// parts, no measured centre) fits: k, and the centre from pivot positions
+  /// (read_keys refuses the scene otherwise).
+  static constexpr std::array<bool, kParameters> unknowns_of_observations_alone(Setting s) {
+    return {false, true, s == Setting::pivot_position};
+  }
   /// Its parts are checked as read_keys reads them.
   static void check_scene(const ParsedScene&) {}
   /// At standard gravity from the body's k and centre (measured or from

@@ -53,6 +53,7 @@ struct HasModelPieces<
                                        std::declval<const Apparatus<double>&>(),
                                        std::declval<const AmplitudeChoice&>())),
                    decltype(M::read_keys(std::declval<json_reader::Object&>(), std::declval<ParsedScene&>())),
+                   decltype(M::unknowns_of_observations_alone(Setting::length)),
                    decltype(M::check_scene(std::declval<const ParsedScene&>())),
                    decltype(M::expectation(std::declval<const ParsedScene&>(),
                                            std::declval<const Observation<double>&>())),
@@ -74,6 +75,8 @@ constexpr bool is_period_model() {
                                                   std::declval<const Observation<double>&>())),
                           std::optional<Expectation>> &&
            std::is_same_v<std::remove_cv_t<decltype(M::kSuspectCauses)>, SuspectCauses> &&
+           std::is_same_v<decltype(M::unknowns_of_observations_alone(Setting::length)),
+                          std::array<bool, M::kParameters>> &&
            M::kParameters >= 1 && M::kParameterInfo.size() == std::size_t(M::kParameters) &&
            M::kDefaults.size() == std::size_t(M::kParameters) && M::kCorrectionUse.size() == kCorrectionCount &&
            !M::kSettings.empty();

@@ -48,6 +48,9 @@ struct SimplePendulum {
 
   /// Its keys are the shared ones (length, bob, ring, cap, wire, air, ...).
   static void read_keys(json_reader::Object&, ParsedScene&) {}
+  /// The unknowns besides g a scene of observations alone (a table's) fits:
+  /// none, the lengths being to the bob's centre.
+  static constexpr std::array<bool, kParameters> unknowns_of_observations_alone(Setting) { return {}; }
   /// The bob, ring and cap fit above every observation's length
   /// (json/scene_reader.cpp).
   static void check_scene(const ParsedScene& scene);

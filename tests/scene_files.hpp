@@ -1,8 +1,11 @@
 #pragma once
 // Reading the bundled scene files in tests.
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace pendulum::test {
@@ -12,6 +15,15 @@ inline std::string read_text(const std::string& path) {
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+/// A new empty directory in the temporary directory, named `stem` and six
+/// random characters: two test runs at once (two clones on one machine) do
+/// not share it.
+inline std::string new_temporary_directory(const std::string& stem) {
+  std::string name = (std::filesystem::temp_directory_path() / (stem + "-XXXXXX")).string();
+  if (!mkdtemp(name.data())) throw std::runtime_error("cannot make a directory " + name);
+  return name;
 }
 
 /// What a command prints on stdout; `status` gets its exit status.

@@ -17,6 +17,7 @@
 #include "quad_reference.hpp"
 #include "recording_simulation.hpp"
 #include "reference.hpp"
+#include "scene_files.hpp"
 
 using namespace pendulum;
 using test::Quad;
@@ -254,8 +255,7 @@ TEST_CASE("A phyphox gyroscope recording of a phone on a string, reduced end to 
   for (auto& axis : sim.rate) {
     for (double& x : axis) x /= c;
   }
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "pendulum-g-phone-test";
-  std::filesystem::create_directories(dir);
+  const std::filesystem::path dir = test::new_temporary_directory("pendulum-g-phone-test");
   std::ofstream(dir / "phone.csv") << test::phyphox_gyroscope_csv(sim, false);
   const std::string scene_text = R"J({
     "timing": {"recording": "phone.csv", "reduce": "mean_period"},

@@ -16,6 +16,7 @@
 #include "pendulum/output.hpp"
 #include "pendulum/recordings/swing_series.hpp"
 #include "pendulum/scene_json.hpp"
+#include "scene_files.hpp"
 
 using namespace pendulum;
 using namespace pendulum::test;
@@ -73,7 +74,7 @@ ParsedScene parse_recorded_decay(const std::string& dir, double start_deg, doubl
 }  // namespace
 
 TEST_CASE("A long decay from 81 deg is reduced swing by swing, and its g is the per-swing one", "[recordings][swing_series]") {
-  const std::string dir = (std::filesystem::temp_directory_path() / "pendulum_g_swing_series_81").string();
+  const std::string dir = new_temporary_directory("pendulum_g_swing_series_81");
   // By default (auto), with the decay record: swing by swing.
   const ParsedScene parsed = parse_recorded_decay(dir, 81.0, 375.0, 31);
   REQUIRE(parsed.swing_by_swing);
@@ -123,9 +124,8 @@ struct Coverage {
 
 Coverage swing_by_swing_coverage(double start_deg) {
   constexpr int kRuns = 200;
-  const std::string dir = (std::filesystem::temp_directory_path() /
-                           ("pendulum_g_swing_series_coverage_" + std::to_string(static_cast<int>(start_deg)))).string();
-  std::filesystem::create_directories(dir);
+  const std::string dir =
+      new_temporary_directory("pendulum_g_swing_series_coverage_" + std::to_string(static_cast<int>(start_deg)));
   int within = 0;
   double sum = 0.0, sum2 = 0.0, sigmas = 0.0;
   for (int seed = 1; seed <= kRuns; ++seed) {
@@ -167,7 +167,7 @@ TEST_CASE("Swing by swing g's uncertainty covers the truth at 81 deg", "[recordi
 }
 
 TEST_CASE("A short small decay stays one mean period: the rule's other side", "[recordings][swing_series]") {
-  const std::string dir = (std::filesystem::temp_directory_path() / "pendulum_g_swing_series_5").string();
+  const std::string dir = new_temporary_directory("pendulum_g_swing_series_5");
   const ParsedScene parsed = parse_recorded_decay(dir, 5.0, 60.0, 32);
   const RecordingReduction& how = *parsed.recordings[0].reduction;
   CHECK(how.shift_sigmas < kSwingBySwingShift);

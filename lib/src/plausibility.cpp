@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "pendulum/air.hpp"
 #include "pendulum/input_error.hpp"
@@ -225,6 +226,55 @@ std::vector<std::string> warn_about_skipped_ball_parts(const ParsedScene& scene,
                        "this diameter would change the period by " + change + "; give the bob's mass");
   }
   return warnings;
+}
+
+namespace {
+
+/// The added mass (kg) of a box or upright cylinder swinging broadside in air
+/// of density rho (kg/m^3): rho pi (a/2)^2 b, the potential flow's about an
+/// elliptic cylinder moving along an axis, pi rho q^2 per unit length with q
+/// the semi-axis across the motion whatever the other (Lamb, Hydrodynamics,
+/// Ch. IV), for a section a wide across the swing and b long: a box's depth
+/// and height (a, b the shorter and the longer), a cylinder's diameter and
+/// height. An estimate: a rectangle's section carries somewhat more than its
+/// inscribed ellipse's, finite ends less, and the boundary layer adds to it.
+double unmodelled_added_mass(const Bob<double>& bob, double rho) {
+  const double across = bob.shape == BobShape::box ? bob.depth : bob.diameter;
+  const double a = std::min(across, bob.height), b = std::max(across, bob.height);
+  return rho * kPi * a * a / 4.0 * b;
+}
+
+}  // namespace
+
+std::optional<std::string> warn_about_unmodelled_added_mass(const ParsedScene& scene, double negligible_fraction) {
+  const Apparatus<double>& app = scene.apparatus;
+  if (!app.bob || app.bob->shape == BobShape::sphere || !app.air || !app.bob->mass) return std::nullopt;
+  const double rho = air_density(app.air->pressure, app.air->temperature, app.air->molar_mass);
+  const double ratio = unmodelled_added_mass(*app.bob, rho) / (2.0 * *app.bob->mass);  // DeltaT/T, a point bob's
+  double worst = 0.0, worst_delta = 0.0, worst_threshold = 0.0;
+  for (std::size_t k = 0; k < scene.observations.size(); ++k) {
+    const double delta = ratio * scene.observations[k].period;
+    const double threshold = negligible_fraction * scene.observation_uncertainties[k].period;
+    const double size = threshold > 0.0 ? delta / threshold : HUGE_VAL;
+    if (size > worst) worst = size, worst_delta = delta, worst_threshold = threshold;
+  }
+  if (worst < 1.0) return std::nullopt;
+  const Bob<double>& bob = *app.bob;
+  std::string text = std::string("bob: a ") + (bob.shape == BobShape::box ? "box" : "cylinder") +
+                     "'s added mass in air is not modelled (Eqs. (54)-(62) are a sphere's); estimated as the "
+                     "potential flow's about its section across the swing, " +
+                     format_number(unmodelled_added_mass(bob, rho) * 1e3, 2) + " g, it would lengthen the period by " +
+                     format_number(ratio, 2) + " of itself (" + format_number(worst_delta * 1e6, 3) + " us, over the " +
+                     format_number(worst_threshold * 1e6, 3) + " us below which a correction is negligible), and g "
+                     "comes out low by about " + format_number(2.0 * ratio, 2) + " of itself";
+  if (bob.shape == BobShape::box && bob.depth > bob.width) {
+    Bob<double> turned = bob;
+    std::swap(turned.width, turned.depth);
+    text += "; swung a quarter turn about the vertical (bob.width " + format_number(bob.depth * 100.0, 3) +
+            " cm along the swing, its face in the swing's plane) it would carry " +
+            format_number(unmodelled_added_mass(bob, rho) / unmodelled_added_mass(turned, rho), 2) + " times less";
+  }
+  return text;
 }
 
 /// A slip's text (status.cpp) with the keys it names as this observation's paths.

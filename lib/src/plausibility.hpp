@@ -36,4 +36,10 @@ void check_plausibility(ParsedScene& scene);
 /// `negligible_fraction` of the period's uncertainty.
 std::vector<std::string> warn_about_skipped_ball_parts(const ParsedScene& scene, double negligible_fraction);
 
+/// A box or cylinder bob in air carries an added mass no row models (Eqs.
+/// 54-62 are a sphere's): a warning where its estimate, the potential flow's
+/// about an elliptic section across the swing (unmodelled_added_mass), would
+/// lengthen some period by more than `negligible_fraction` of its uncertainty.
+std::optional<std::string> warn_about_unmodelled_added_mass(const ParsedScene& scene, double negligible_fraction);
+
 }  // namespace pendulum

@@ -14,10 +14,14 @@
 #include <random>
 #include <sstream>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 #include "pendulum/amplitude.hpp"
 #include "pendulum/decay_fit.hpp"
@@ -627,6 +631,28 @@ TEST_CASE("A zip's sets are candidate signals: compared, and refused with the --
       analyse_recording(kDir + "phyphox_export.zip", RecordingFormat::automatic, {}, {}, "Accelerometer.csv").swings.period.value;
   CHECK(gyroscope == both.swings.period.value);
   CHECK(stretched == Approx(1.1 * accelerometer).epsilon(1e-9));
+}
+
+TEST_CASE("A zip's sets are each unpacked once: the candidates are compared as the reader parsed them",
+          "[recordings][zip]") {
+  // Each zip is read from a copy that is gone before analyse_candidates runs:
+  // a set unpacked again would give no period (a note) instead of its own.
+  const auto analyse_gone = [](const std::string& zip) {
+    char name[] = "/tmp/pendulum-g-zip-XXXXXX";
+    const int fd = mkstemp(name);
+    REQUIRE(fd >= 0);
+    close(fd);
+    std::filesystem::copy_file(zip, name, std::filesystem::copy_options::overwrite_existing);
+    const Recording r = read_recording(name);
+    std::filesystem::remove(name);
+    return analyse_candidates(r, name, RecordingFormat::automatic);
+  };
+  const SwingAnalysis agree = analyse_gone(kDir + "phyphox_export.zip");
+  CHECK(std::count_if(agree.notes.begin(), agree.notes.end(), [](const RecordingNote& n) {
+          return n.text.find("they agree") != std::string::npos;
+        }) == 2);
+  CHECK_THROWS_WITH(analyse_gone(std::string(PENDULUM_TESTS_DIR) + "/bad_recordings/two_pendulums.zip"),
+                    Contains("two signals give different periods"));
 }
 
 TEST_CASE("A PASCO run after the first is read by its number", "[recordings][pasco]") {

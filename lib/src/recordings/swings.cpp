@@ -1304,11 +1304,13 @@ SwingAnalysis analyse_candidates(const Recording& r, const std::string& path, Re
   const auto option = [](const SignalCandidate& c) {
     return c.set.empty() ? "--columns \"" + c.columns + "\"" : "--set \"" + c.set + "\"";
   };
+  const auto period = [&](const Recording& signal) { return analyse_swings(signal, name, options).period; };
   for (std::size_t k = 1; k < r.candidates.size(); ++k) {
     const SignalCandidate& c = r.candidates[k];
     PeriodEstimate other;
     try {
-      other = analyse_swings(read_recording(path, format, limits, c.set.empty() ? set : c.set, c.columns), name, options).period;
+      // A zip's sets come parsed; a file's other signal is its columns read again.
+      other = c.recording ? period(*c.recording) : period(read_recording(path, format, limits, set, c.columns));
     } catch (const InputError& e) {
       out.notes.push_back({0, c.what + " gives no period (" + one_line(e.what(), 160) + "); " + used.what + " is used"});
       continue;

@@ -117,11 +117,16 @@ Recording read_zip_recording(std::string_view bytes, const std::string& file, Re
   if (read.empty()) fail("a zip archive with no set that reads as a recording (" + refused + ")");
   zip_error_fini(&error);
   std::stable_sort(read.begin(), read.end(), [](const Recording& a, const Recording& b) { return rank(a.kind) < rank(b.kind); });
-  // The sets are the candidates; a set's own columns cannot be declared in a zip.
-  std::vector<SignalCandidate> candidates;
-  for (const Recording& r : read) candidates.push_back({"the set \"" + one_line(r.set, 80, true) + "\"", "", r.set});
+  // The sets are the candidates, the others handed on as parsed (analyse_candidates
+  // compares them without unpacking them again); a set's own columns cannot be declared in a zip.
+  const auto what = [](const Recording& r) { return "the set \"" + one_line(r.set, 80, true) + "\""; };
   Recording best = std::move(read.front());
-  if (candidates.size() > 1) best.candidates = std::move(candidates);
+  if (read.size() > 1) {
+    best.candidates.push_back({what(best), "", best.set});
+    for (auto r = read.begin() + 1; r != read.end(); ++r) {
+      best.candidates.push_back({what(*r), "", r->set, std::make_shared<const Recording>(std::move(*r))});
+    }
+  }
   best.notes.insert(best.notes.end(), unread.begin(), unread.end());
   return best;
 }

@@ -19,7 +19,8 @@ bool looks_like_zip(std::string_view bytes);
 /// and otherwise the set with the best signal is read: an angular rate, then
 /// a linear acceleration, then an acceleration with g, then any other that
 /// reads. Without `set`, every set that reads is a candidate
-/// (Recording::candidates, the one read first), whose periods
+/// (Recording::candidates, the one read first, each other one with its
+/// parsed recording: no set is unpacked twice), whose periods
 /// analyse_recording compares, and each set that does not read is a note.
 /// Refused (InputError naming `file`): a damaged archive, no usable set, a
 /// set that unpacks to more than limits.max_bytes in all (a zip bomb). A

@@ -20,6 +20,7 @@
 ///    or "t","θ"/"theta" or "ω"/"omega".
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -84,12 +85,17 @@ struct RecordingColumn {
   std::string why;         ///< how the role or unit was decided, or why the column is unused
 };
 
+struct Recording;
+
 /// A signal a file holds: what it is, and the `--columns` text (or, in a
 /// zip archive, the `--set`) that reads the file with it alone.
 struct SignalCandidate {
   std::string what;     ///< e.g. "the angle \"theta (deg)\"", "the x and y \"x (m)\", \"y (m)\"", "the set \"Gyroscope.csv\""
   std::string columns;  ///< e.g. "t:s,theta:deg", "t:s,-,x:m,y:m"; empty for a zip's set
   std::string set = {};  ///< a zip archive's set that holds it ("Accelerometer.csv"); empty: the file's columns
+  /// A zip's set other than the one read, as the reader parsed it, so that no
+  /// set is unpacked twice; null for the one read and for a file's columns.
+  std::shared_ptr<const Recording> recording = {};
 };
 
 /// A recording in SI units, samples in time order.

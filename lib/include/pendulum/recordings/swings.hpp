@@ -231,8 +231,9 @@ struct RecordingSummary {
 };
 
 /// Analyses `recording` (analyse_swings) and, where it holds more than one
-/// signal (Recording::candidates), each of the others, read again from
-/// `path` with its columns (a zip's, with its set): signals whose periods
+/// signal (Recording::candidates), each of the others: a zip's set as the
+/// reader parsed it (SignalCandidate::recording), a file's other signal read
+/// again from `path` with its columns: signals whose periods
 /// differ by more than 5 combined standard uncertainties and 10^-3 of the
 /// period are refused (InputError naming both and the --columns or --set
 /// that picks each: the file cannot say which one is the pendulum's);

@@ -311,6 +311,16 @@ void read_parts(Object& top, ParsedScene& out) {
                        "got " + shown(bob.at("shape")) + "; expected \"sphere\", \"box\" or \"cylinder\"");
       bv.shape = bu.shape = shape == "box" ? BobShape::box : shape == "cylinder" ? BobShape::cylinder : BobShape::sphere;
     }
+    // A ball is measured across: its radius is a slip for the diameter, said as such.
+    // (The raw object: Object::has would take "radius" for a known key.)
+    const json& written = top.at("bob");
+    if (bv.shape != BobShape::box && written.contains("radius") && !written.contains("diameter")) {
+      json twice = written.at("radius");
+      for (const char* key : {"value", "uncertainty"}) {
+        if (twice.is_object() && twice.contains(key) && twice[key].is_number()) twice[key] = 2.0 * twice[key].get<double>();
+      }
+      throw InputError("bob.radius", "got a radius; expected the diameter, twice it: \"diameter\": " + shown(twice));
+    }
     // A shape's own dimensions (apparatus.hpp, Bob), each required.
     if (bv.shape != BobShape::box) put(bob, "diameter", Dimension::length, Range::positive, bv.diameter, bu.diameter);
     if (bv.shape == BobShape::box) put(bob, "width", Dimension::length, Range::positive, bv.width, bu.width);

@@ -160,7 +160,8 @@ void add_recording_options(CLI::App& cmd, SwingOptions& options, std::string& se
   cmd.add_option("--columns", columns,
                  "Each column's role and unit in file order, where the file cannot tell (a headerless file, an "
                  "angle without its unit): \"t:s,theta:deg\"; roles t, theta, omega, x, y, n (counter), state, "
-                 "period, gyro, a, linear_a; - for a column not used (docs/recordings.md, Columns)");
+                 "period, gyro, a, linear_a; - for a column not used (docs/recordings.md, Columns). A table's "
+                 "(docs/series.md, Tables): " + table_column_roles() + ", e.g. \"x:cm,T:s,u\"");
 }
 
 /// Whether --columns names a table's columns (a length, a pivot, a time of

@@ -76,6 +76,17 @@ TEST_CASE("import of a unitless pivot-position column that fits two units names 
                              "--columns \"x:cm,...\" (a scene's \"columns\": {\"pivot_position\": {\"column\": 1"));
 }
 
+// import --help and the message for a column it cannot read list the same roles
+// (table_column_roles), the settings' letters among them.
+TEST_CASE("import --help names a table's column roles, as the message for a wrong one does", "[cli][tables]") {
+  const std::string roles = "l (length), h (pivot distance), x (pivot position), T (period), tN (time of N "
+                            "oscillations: t10), theta (amplitude), u (the uncertainty of the column before)";
+  CHECK_THAT(run("import --help").out, Contains(roles));
+  const Run wrong = run("import --columns l,T,q " + kData + "/pendulum_lengths_table.csv");
+  CHECK(wrong.status == 1);
+  CHECK_THAT(wrong.err, Contains("got the column \"q\"; expected " + roles + ", or - for a column not used"));
+}
+
 TEST_CASE("reduce TABLE says what to do instead of 'not valid JSON'", "[cli][tables]") {
   const Run r = run("reduce " + kData + "/pendulum_lengths_table.csv");
   CHECK(r.status == 1);

@@ -265,14 +265,14 @@ const SettingInfo* setting_declared(const std::string& word) {
   return nullptr;
 }
 
-/// "l (length), h (pivot distance), x (pivot position)".
-std::string setting_declarations() {
+}  // namespace
+
+std::string table_column_roles() {
   std::string out;
   for (const SettingInfo& s : kSettingInfo) out += std::string(out.empty() ? "" : ", ") + s.letter + " (" + s.words + ")";
-  return out;
+  return out + ", T (period), tN (time of N oscillations: t10), theta (amplitude), u (the uncertainty of the column "
+               "before)";
 }
-
-}  // namespace
 
 std::vector<TableColumnChoice> parse_table_column_spec(const std::string& spec, const std::string& where) {
   std::vector<TableColumnChoice> out;
@@ -298,9 +298,8 @@ std::vector<TableColumnChoice> parse_table_column_spec(const std::string& spec, 
       else if (word == "u" && !previous.empty()) c.role = previous + "_uncertainty";
       else {
         throw InputError(where, "got the column \"" + one_line(entry, 40) +
-                                    "\"; expected " + setting_declarations() + ", T (period), "
-                                    "tN (time of N oscillations: t10), theta (amplitude), u (the uncertainty of "
-                                    "the column before), or - for a column not used; each with :unit if wanted");
+                                    "\"; expected " + table_column_roles() +
+                                    ", or - for a column not used; each with :unit if wanted");
       }
       if (c.role.find("_uncertainty") == std::string::npos) previous = c.role;
       out.push_back(c);

@@ -97,6 +97,10 @@ bool file_holds_settings_table(const std::string& path);
 /// it), - (not used); each with an optional ":unit". InputError at `where`.
 std::vector<TableColumnChoice> parse_table_column_spec(const std::string& spec, const std::string& where);
 
+/// The roles a table's --columns entry takes, in words, for help and messages:
+/// "l (length), h (pivot distance), x (pivot position), T (period), ...".
+std::string table_column_roles();
+
 }  // namespace pendulum
 
 namespace pendulum {

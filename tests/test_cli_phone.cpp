@@ -30,7 +30,7 @@ TEST_CASE("template phone: three string lengths reduce to standard gravity and t
   const std::string file = "/tmp/pendulum-g-phone-" + std::to_string(getpid());
   const std::string exe = PENDULUM_G_EXE;
   REQUIRE(std::system((exe + " template phone > " + file + ".json").c_str()) == 0);
-  REQUIRE(std::system((exe + " reduce " + file + ".json > " + file + ".out 2> " + file + ".err").c_str()) == 0);
+  REQUIRE(std::system((exe + " reduce --strict " + file + ".json > " + file + ".out 2> " + file + ".err").c_str()) == 0);
   const json result = json::parse(pendulum::test::read_text(file + ".out"));
   const std::string added_mass = "bob: a box's added mass in air is not modelled (Eqs. (54)-(62) are a sphere's); "
                                  "estimated as the potential flow's about its section across the swing, 0.0096 g, it "

@@ -156,6 +156,18 @@ TEST_CASE("Tables: a headerless h, sigma_h, T, sigma_T pivot scan", "[tables]") 
   CHECK_FALSE(looks_like_settings_table("Time (s),Gyroscope x (rad/s)\n0,0.1\n0.01,0.2\n"));
 }
 
+// docs/series.md lists x as a pivot position's header word, and a track's x
+// is a recording's: the times tell them apart, since a recording's increase.
+TEST_CASE("Tables: x and T are a pivot scan where the periods do not increase, a track's x where they do",
+          "[tables]") {
+  const std::string table = "x (cm),T (s),u\n5,1.60,0.01\n10,1.55,0.01\n20,1.53,0.01\n60,1.60,0.01\n";
+  CHECK(looks_like_settings_table(table));
+  CHECK(parse_settings_table(table, "scan").setting == Setting::pivot_position);
+  CHECK(looks_like_settings_table("x;T\n5;1,60\n10;1,55\n"));  // a decimal comma
+  CHECK_FALSE(looks_like_settings_table("t,x\n0,0.1\n0.033,0.098\n0.067,0.093\n"));
+  CHECK_FALSE(looks_like_settings_table("t (s),x (m),y (m)\n0,0.1,0\n0.033,0.098,0.001\n"));
+}
+
 TEST_CASE("Amplitude not recorded: a uniform distribution over its range", "[tables][amplitude]") {
   // The smallest scene (docs/scene.md): only the amplitude's own correction
   // runs, so its row is the first-order theta0 sigma/4 of g (a decay record

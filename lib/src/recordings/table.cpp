@@ -9,8 +9,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <map>
+#include <optional>
 
 #include "pendulum/files.hpp"
 #include "pendulum/input_error.hpp"
@@ -725,6 +727,30 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   return out;
 }
 
+namespace {
+
+/// Whether column `col` of the data rows `rows` increases from row to row (the
+/// rows whose cell is no number skipped).
+bool times_increase(std::string_view rows, const Dialect& d, std::size_t col) {
+  double previous = -HUGE_VAL;
+  for (std::size_t start = 0; start < rows.size();) {
+    const std::size_t end = std::min(rows.find('\n', start), rows.size());
+    const std::vector<std::string_view> cells = split_cells(rows.substr(start, end - start), d);
+    start = end + 1;
+    if (col >= cells.size()) continue;
+    std::string cell(cells[col]);
+    if (d.decimal_comma) std::replace(cell.begin(), cell.end(), ',', '.');
+    char* stop = nullptr;
+    const double t = std::strtod(cell.c_str(), &stop);
+    if (stop == cell.c_str() || *stop != '\0' || !std::isfinite(t)) continue;
+    if (!(t > previous)) return false;
+    previous = t;
+  }
+  return true;
+}
+
+}  // namespace
+
 bool looks_like_settings_table(std::string_view text) {
   text = strip_bom(text);
   if (text.substr(0, 4) == std::string_view("PK\x03\x04", 4)) return false;
@@ -734,14 +760,22 @@ bool looks_like_settings_table(std::string_view text) {
       const std::size_t at = lines.data_offset;
       const std::string_view rest = text.substr(at);
       const Dialect d = sniff(lines.header, rest.substr(0, rest.find('\n')));
-      for (std::string_view cell : split_cells(*lines.header, d)) {
-        const Column c = classify(cell);
+      const std::vector<std::string_view> header = split_cells(*lines.header, d);
+      std::optional<std::size_t> time;
+      bool x = false, y = false;
+      for (std::size_t i = 0; i < header.size(); ++i) {
+        const Column c = classify(header[i]);
         if (c.role == Role::length || c.role == Role::pivot_distance || c.role == Role::pivot_position ||
             oscillations_in(c.word) > 0) {
           return true;
         }
+        x |= c.role == Role::x, y |= c.role == Role::y;
+        if ((c.role == Role::time || c.role == Role::period) && !time) time = i;
       }
-      return false;
+      // An x without a y beside a time is a track's one coordinate, or a table's pivot
+      // positions ("x (cm)", "T (s)"): a table where the times do not increase, as no
+      // recording's do.
+      return x && !y && time && !times_increase(rest, d, *time);
     }
     (void)parse_settings_table(text, "");
     return true;

@@ -67,8 +67,10 @@ struct SettingsTable {
 
 /// Whether the text reads as a table of settings and periods rather than a
 /// recording: a header naming a setting (length, pivot) or a time of N
-/// oscillations, or, headerless, 2 to 5 columns whose numbers read as one
-/// (a setting, its uncertainty, periods in 0.1-30 s, theirs).
+/// oscillations, or an x without a y whose time column does not increase (a
+/// table's pivot positions; a track's x has increasing times), or,
+/// headerless, 2 to 5 columns whose numbers read as one (a setting, its
+/// uncertainty, periods in 0.1-30 s, theirs).
 bool looks_like_settings_table(std::string_view text);
 
 /// Reads the table. Errors are InputError at "file:line:column" (or "file"):

@@ -6,8 +6,8 @@
 
 #include <cmath>
 #include <set>
-#include <utility>
 #include <string>
+#include <utility>
 
 #include "catalogue.hpp"
 #include "pendulum/models/registry.hpp"

@@ -250,7 +250,8 @@ std::optional<std::string> warn_about_unmodelled_added_mass(const ParsedScene& s
   const Apparatus<double>& app = scene.apparatus;
   if (!app.bob || app.bob->shape == BobShape::sphere || !app.air || !app.bob->mass) return std::nullopt;
   const double rho = air_density(app.air->pressure, app.air->temperature, app.air->molar_mass);
-  const double ratio = unmodelled_added_mass(*app.bob, rho) / (2.0 * *app.bob->mass);  // DeltaT/T, a point bob's
+  const double added = unmodelled_added_mass(*app.bob, rho);
+  const double ratio = added / (2.0 * *app.bob->mass);  // DeltaT/T, a point bob's
   double worst = 0.0, worst_delta = 0.0, worst_threshold = 0.0;
   for (std::size_t k = 0; k < scene.observations.size(); ++k) {
     const double delta = ratio * scene.observations[k].period;
@@ -263,7 +264,7 @@ std::optional<std::string> warn_about_unmodelled_added_mass(const ParsedScene& s
   std::string text = std::string("bob: a ") + (bob.shape == BobShape::box ? "box" : "cylinder") +
                      "'s added mass in air is not modelled (Eqs. (54)-(62) are a sphere's); estimated as the "
                      "potential flow's about its section across the swing, " +
-                     format_number(unmodelled_added_mass(bob, rho) * 1e3, 2) + " g, it would lengthen the period by " +
+                     format_number(added * 1e3, 2) + " g, it would lengthen the period by " +
                      format_number(ratio, 2) + " of itself (" + format_number(worst_delta * 1e6, 3) + " us, over the " +
                      format_number(worst_threshold * 1e6, 3) + " us below which a correction is negligible), and g "
                      "comes out low by about " + format_number(2.0 * ratio, 2) + " of itself";
@@ -272,7 +273,7 @@ std::optional<std::string> warn_about_unmodelled_added_mass(const ParsedScene& s
     std::swap(turned.width, turned.depth);
     text += "; swung a quarter turn about the vertical (bob.width " + format_number(bob.depth * 100.0, 3) +
             " cm along the swing, its face in the swing's plane) it would carry " +
-            format_number(unmodelled_added_mass(bob, rho) / unmodelled_added_mass(turned, rho), 2) + " times less";
+            format_number(added / unmodelled_added_mass(turned, rho), 2) + " times less";
   }
   return text;
 }

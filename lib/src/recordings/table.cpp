@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <optional>
@@ -727,39 +726,14 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   return out;
 }
 
-namespace {
-
-/// Whether column `col` of the data rows `rows` increases from row to row (the
-/// rows whose cell is no number skipped).
-bool times_increase(std::string_view rows, const Dialect& d, std::size_t col) {
-  double previous = -HUGE_VAL;
-  for (std::size_t start = 0; start < rows.size();) {
-    const std::size_t end = std::min(rows.find('\n', start), rows.size());
-    const std::vector<std::string_view> cells = split_cells(rows.substr(start, end - start), d);
-    start = end + 1;
-    if (col >= cells.size()) continue;
-    std::string cell(cells[col]);
-    if (d.decimal_comma) std::replace(cell.begin(), cell.end(), ',', '.');
-    char* stop = nullptr;
-    const double t = std::strtod(cell.c_str(), &stop);
-    if (stop == cell.c_str() || *stop != '\0' || !std::isfinite(t)) continue;
-    if (!(t > previous)) return false;
-    previous = t;
-  }
-  return true;
-}
-
-}  // namespace
-
 bool looks_like_settings_table(std::string_view text) {
   text = strip_bom(text);
   if (text.substr(0, 4) == std::string_view("PK\x03\x04", 4)) return false;
   try {
     const HeaderLines lines = find_header(text, "");
     if (lines.header) {
-      const std::size_t at = lines.data_offset;
-      const std::string_view rest = text.substr(at);
-      const Dialect d = sniff(lines.header, rest.substr(0, rest.find('\n')));
+      const DataRows data = data_rows(text, lines, "", "a table or a recording");
+      const Dialect d = sniff(lines.header, data.first);
       const std::vector<std::string_view> header = split_cells(*lines.header, d);
       std::optional<std::size_t> time;
       bool x = false, y = false;
@@ -774,8 +748,17 @@ bool looks_like_settings_table(std::string_view text) {
       }
       // An x without a y beside a time is a track's one coordinate, or a table's pivot
       // positions ("x (cm)", "T (s)"): a table where the times do not increase, as no
-      // recording's do.
-      return x && !y && time && !times_increase(rest, d, *time);
+      // recording's do. The rows are read as the table would read them.
+      if (!x || y || !time) return false;
+      const std::vector<std::string> names(header.size());  // no message quotes them here
+      const Table rows = read_rows(data.begin, data.end, lines.data_line, d, names, "");
+      double previous = -HUGE_VAL;
+      for (const double t : rows.columns[*time]) {
+        if (std::isnan(t)) continue;  // an empty cell
+        if (!(t > previous)) return true;
+        previous = t;
+      }
+      return false;
     }
     (void)parse_settings_table(text, "");
     return true;

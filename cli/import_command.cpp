@@ -91,9 +91,14 @@ std::string summary_table(const RecordingSummary& r) {
   if (std::isfinite(a.small_amplitude_period)) {
     put("%-22s %.7f s\n", "small-amplitude T0", a.small_amplitude_period);
   }
-  if (!a.decay.amplitudes.empty()) {
+  if (std::isfinite(a.start_amplitude)) {
     put("%-22s %.3f deg at the first crossing (amplitude_range.start) -> %.3f deg at the last\n", "amplitude",
         a.start_amplitude * kDegreesPerRadian, a.end_amplitude * kDegreesPerRadian);
+  } else if (!a.decay.amplitudes.empty()) {
+    // Fewer than 8 swings, or half of them, have an amplitude: no smooth curve to take its ends from.
+    const auto [lo, hi] = std::minmax_element(a.decay.amplitudes.begin(), a.decay.amplitudes.end());
+    put("%-22s none at the first crossing (too few swings have one); the swings' from %.3f to %.3f deg\n",
+        "amplitude", *lo * kDegreesPerRadian, *hi * kDegreesPerRadian);
   }
   for (const RecordingNote& note : a.notes) o << "note                   " << note.text << "\n";
   // The period against amplitude in ten slices of the record.

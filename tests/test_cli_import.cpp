@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +16,7 @@
 
 #include "catalogue.hpp"
 #include "cli_run.hpp"
+#include "scene_files.hpp"
 
 using nlohmann::json;
 using Catch::Matchers::Contains;
@@ -289,4 +291,38 @@ TEST_CASE("import: catalogue of bad recordings (tests/bad_recordings/)", "[cli][
   std::remove(fifo.c_str());
   CHECK(pipe.status == 1);
   CHECK_THAT(pipe.err, Contains("not a regular file"));
+}
+
+TEST_CASE("import: a track with too few swings' peaks for a smooth curve shows their range, not NaN",
+          "[cli][import]") {
+  // A Tracker track at 7.6 frames/s: a half swing of 0.9 s holds 6 or 7
+  // samples, and a peak needs 7 (swings.cpp, sparse_peak), so fewer than half
+  // the swings have an amplitude: no smooth curve, hence no start or end of
+  // it. The table printed "nan deg" for them.
+  const std::string dir = pendulum::test::new_temporary_directory("pendulum-g-sparse-track");
+  const std::string file = dir + "/sparse.txt";
+  {
+    std::ofstream o(file);
+    const double l = 0.8, w = std::sqrt(9.81 / l), fps = 7.6;
+    o << "mass A\nt\tx\ty\n";
+    for (int k = 0; k < 60 * fps; ++k) {
+      const double t = k / fps, theta = 0.2 * std::exp(-0.003 * t) * std::cos(w * t);
+      o << t << '\t' << l * std::sin(theta) << '\t' << -l * std::cos(theta) << '\n';
+    }
+  }
+  const Run r = run("import " + file);
+  REQUIRE(r.status == 0);
+  const json range = json::parse(r.out).at("amplitude_range");
+  CHECK(range.at("start").is_null());
+  CHECK(range.at("end").is_null());
+  // The swings that have one lie within the release's 0.2 rad (11.46 deg)
+  // and its decay by e^(-0.003 t) over 60 s (9.56 deg at the end).
+  CHECK(range.at("min").get<double>() > 9.5);
+  CHECK(range.at("max").get<double>() < 11.46);
+  const Run table = run("import --format table " + file);
+  REQUIRE(table.status == 0);
+  CHECK_THAT(table.out, !Contains("nan"));
+  CHECK_THAT(table.out, Contains("amplitude              none at the first crossing (too few swings have one); the "
+                                 "swings' from "));
+  std::filesystem::remove_all(dir);
 }

@@ -2,9 +2,10 @@
 // analysis, as `pendulum-g import` runs them on a text export, with no set,
 // a PASCO run and a Tracker track named. Bad input must end in an InputError
 // whose message is one printable line; a recording that passes must give a
-// finite period, uncertainty and amplitudes. A zip archive is refused here
-// (parse_recording reads text; libzip unpacks a file's bytes), so the zip
-// reader is left to its catalogue cases (tests/bad_recordings/). The same
+// finite period, uncertainty and amplitudes, and no swing a negative
+// amplitude. A zip archive is refused here (parse_recording reads text;
+// libzip unpacks a file's bytes), so the zip reader is left to its
+// catalogue cases (tests/bad_recordings/). The same
 // bytes as a table of settings and periods (docs/series.md, "Tables"): a
 // table that reads must make a scene that reads, or refuses clearly, and
 // reduces to a finite g.
@@ -33,6 +34,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       require(std::isfinite(a.period.value) && a.period.value > 0.0, "period not finite and positive", set);
       require(std::isfinite(a.period.uncertainty), "period uncertainty not finite", set);
       for (double x : a.decay.amplitudes) require(std::isfinite(x), "non-finite amplitude", set);
+      for (const auto& w : a.swings) require(!(w.amplitude < 0.0), "negative amplitude", set);  // NaN: none
     } catch (const pendulum::InputError& e) {
       pendulum::fuzz::require_clear_message(e);
     }

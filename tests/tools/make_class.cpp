@@ -50,7 +50,7 @@ std::string utf16(const std::string& ascii) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
+  if (argc != 2 || argv[1][0] == '-') {  // an option is no folder (--help once made one)
     std::cerr << "usage: make_class FOLDER\n";
     return 2;
   }

@@ -51,7 +51,7 @@ double rounded(double x, double step) { return std::round(x / step) * step; }
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
+  if (argc != 2 || argv[1][0] == '-') {  // an option is no folder (--help once made one)
     std::cerr << "usage: make_fresh_class FOLDER\n";
     return 2;
   }

@@ -12,7 +12,6 @@
 #include "pendulum/swing_energy.hpp"
 #include "../text.hpp"
 #include "huge_pages.hpp"
-#include "../text.hpp"
 
 namespace pendulum {
 namespace {
@@ -307,20 +306,31 @@ Extent extent(const std::vector<double>& s) {
   return e;
 }
 
-/// Crossings of a sampled signal with adaptive hysteresis.
+/// Crossings of a sampled signal with adaptive hysteresis: h is a fraction
+/// of the last half swing's peak. Where no crossing follows within four mean
+/// intervals, the last half swing was a knock, not the swing (from its peak,
+/// h lay above every swing after it, and a knock of 1/fraction times the
+/// swing lost the rest of the record): the search starts again from that
+/// crossing, once, with h from the half swing before it.
 std::vector<Crossing> find_crossings(const std::vector<double>& t, const Signal& sig, double rms, double noise,
                                      double fraction, std::vector<std::size_t>& at) {
   const auto& s = sig.s;
   const double floor = 5.0 * noise;
   double h = std::max(fraction * std::sqrt(2.0) * rms, floor);
   std::vector<Crossing> out;
-  int state = 0;              // -1: beyond -h, +1: beyond +h
+  int state = 0;                // -1: beyond -h, +1: beyond +h
   std::size_t last_beyond = 0;  // last sample beyond the threshold of `state`
+  double last_peak = 0.0, previous_peak = 0.0;  // the last two half swings' peaks
+  bool retried = false;
   for (std::size_t k = 0; k < s.size(); ++k) {
     // The samples up to the first beyond the threshold opposite `state`, in
     // a loop of their own: it makes no call, so the running peak stays in a
     // register (across the push_backs below it went through memory).
     double half_peak = 0.0;
+    const double stall = out.size() >= 3 && !retried
+                             ? out.back().time + 4.0 * (out.back().time - out.front().time) / (out.size() - 1)
+                             : std::numeric_limits<double>::infinity();
+    bool stalled = false;
     for (; k < s.size(); ++k) {
       const double x = s[k];
       half_peak = std::max(half_peak, std::fabs(x));
@@ -330,11 +340,24 @@ std::vector<Crossing> find_crossings(const std::vector<double>& t, const Signal&
         state = side;
         last_beyond = k;
       }
+      if (t[k] > stall) {
+        stalled = true;
+        break;
+      }
     }
     if (k == s.size()) break;
+    if (stalled) {
+      retried = true;
+      h = std::max(fraction * previous_peak, floor);
+      k = at.back() + (out.back().samples - 1);  // the sample that made the last crossing
+      last_beyond = k, state = s[k] > 0 ? 1 : -1;
+      continue;
+    }
     out.push_back(line_zero(t, s, last_beyond, k));
     at.push_back(last_beyond);
+    previous_peak = last_peak, last_peak = half_peak;
     h = std::max(fraction * half_peak, floor);
+    retried = false;
     state = -state;
     last_beyond = k;
   }
@@ -1039,8 +1062,10 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
         const std::size_t j = i == 1 ? i - 1 : i + 1, k = i == 1 ? i + 1 : i - 1;  // outward, towards the middle
         smooth[i] = (raw[j] + 5.0 * raw[i] + 3.0 * raw[k] - raw[2 * k - i]) / 8.0;
       }
-      // Beside a swing without a peak (a sparse or glitchy track), the three.
-      if (!std::isfinite(smooth[i])) smooth[i] = (raw[i - 1] + 2.0 * raw[i] + raw[i + 1]) / 4.0;
+      // Beside a swing without a peak (a sparse or glitchy track), or where a
+      // neighbour many times larger drives the weights' sum below zero, the
+      // three, whose weights are all positive.
+      if (!(smooth[i] >= 0.0)) smooth[i] = (raw[i - 1] + 2.0 * raw[i] + raw[i + 1]) / 4.0;
     }
     raw = smooth;
   }

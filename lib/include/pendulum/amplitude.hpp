@@ -24,15 +24,15 @@ namespace pendulum {
 enum class AmplitudeMethod { small_angle, series, agm, automatic };
 
 /// The name the output uses for a method ("small_angle", "series", "agm",
-/// "auto").
-inline const char* method_name(AmplitudeMethod m) {
-  switch (m) {
-    case AmplitudeMethod::small_angle: return "small_angle";
-    case AmplitudeMethod::series: return "series";
-    case AmplitudeMethod::agm: return "agm";
-    case AmplitudeMethod::automatic: return "auto";
-  }
-  return "";
+/// "auto"); for a body on a string at its own amplitude, where the slow
+/// mode's psi0^4 term joins the factor (corrections.hpp,
+/// slow_mode_finite_amplitude), "slow_mode_agm" and so on.
+inline const char* method_name(AmplitudeMethod m, bool slow_mode = false) {
+  static constexpr const char* kNames[][2] = {{"small_angle", "slow_mode_small_angle"},
+                                              {"series", "slow_mode_series"},
+                                              {"agm", "slow_mode_agm"},
+                                              {"auto", "slow_mode_auto"}};
+  return kNames[static_cast<int>(m)][slow_mode];
 }
 
 namespace detail {
@@ -190,8 +190,8 @@ inline void require_amplitude(double x, double limit, const char* unit) {
 template <class T>
 T finite_amplitude_agm_deg(const T& theta0_deg) {
   detail::require_amplitude(value_of(theta0_deg), 180.0, "deg");
-  return detail::finite_amplitude_exact(theta0_deg * (kPi / 180.0),
-                                        (180.0 - theta0_deg) * (kPi / 180.0));
+  return detail::finite_amplitude_exact(theta0_deg * kRadiansPerDegree,
+                                        (180.0 - theta0_deg) * kRadiansPerDegree);
 }
 
 /// Exact finite-amplitude correction, amplitude in radians: as

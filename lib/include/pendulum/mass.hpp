@@ -9,6 +9,7 @@
 /// stated. Lengths in m, masses in kg, moments of inertia in kg m^2; any
 /// consistent units give the same ratio.
 
+#include <array>
 #include <cmath>
 
 namespace pendulum {
@@ -87,6 +88,52 @@ T slow_mode_line_over_body(const T& k2, const T& d, const T& l) {
   const T r = slow_mode(k2, d, l);  // sqrt(1 + u) - 1
   const T lambda_l = 1.0 / ((1.0 + r) * (1.0 + r));
   return d / (l - lambda_l * (l - d));
+}
+
+/// The slow mode's period at finite amplitude as a series in the body's
+/// amplitude psi0 (rad): T/T_slow = 1 + kappa2 psi0^2 + kappa4 psi0^4 +
+/// O(psi0^6), for the body of slow_mode on a massless, taut string. From the
+/// averaged Lagrangian of the nonlinear normal mode with its first and third
+/// harmonics, (phi, psi) = A v cos tau + A^3 [(u, 0) cos tau + w cos 3 tau],
+/// v = (a, 1), a = phi/psi = lambda d/(1 - lambda s), s = l - d, per unit
+/// mass and g with Om = omega^2/g (derivation: tests/tools/phone_nonlinear_check.py,
+/// kappas()):
+///   P = a^2 s^2 + 2 a s d + d^2 + k^2,  M = [[s^2, s d], [s d, d^2 + k^2]],  K = diag(s, d),
+///   L4 = (s a^4 + d)/64 - lambda s d a (a - 1)^2/16,
+///   f = (s a^3/48 - lambda s d (a - 1)(a - 3)/16,  d/48 - lambda s d a (a - 1)(3a - 1)/16),
+///   w = -H^-1 f,  H = (9 lambda M - K)/2,
+///   L6 = lambda s d a (a - 1)^4/384 - (s a^6 + d)/2304 + f.w/2,
+///   Om2 = -8 L4/P,  b = s a^3/16 - lambda s d (a - 1)(3a - 1)/16,  c' = lambda s^2 - s,
+///   u = -(Om2 (s^2 a + s d) + 2 b)/c',  S = Om2 (s^2 a + s d) u + (3/4) c' u^2 + 3 b u,
+///   Om4 = -(8 Om2 (-s d a (a - 1)^2/16) + 12 L6 + 4 S)/P,
+///   x2 = Om2/lambda,  x4 = (Om4 - 2 w_2 Om2)/lambda  (psi0 = A + A^3 w_2),
+///   kappa2 = -x2/2 = (s a^4 + d - 4 lambda s d a (a - 1)^2)/(16 (s a^2 + d)),
+///   kappa4 = (3/8) x2^2 - x4/2.
+/// A point bob (k = 0, a = 1) gives a simple pendulum's 1/16 and 11/3072.
+/// Both match fits to the nonlinear mode's periods to 3-4 digits (docs/phone.md).
+/// Same arguments as slow_mode. Returns {kappa2, kappa4}.
+template <class T>
+std::array<T, 2> slow_mode_amplitude_series(const T& k2, const T& d, const T& l) {
+  using std::sqrt;
+  const T s = l - d, b0 = d * l + k2;
+  const T lambda = 2.0 * d / (b0 + sqrt(b0 * b0 - 4.0 * s * d * k2));
+  const T a = lambda * d / (1.0 - lambda * s), am1 = a - 1.0;
+  const T sd = s * d, p = a * a * s * s + 2.0 * a * sd + d * d + k2;
+  const T l4 = (s * a * a * a * a + d) / 64.0 - lambda * sd * a * am1 * am1 / 16.0;
+  const T f1 = s * a * a * a / 48.0 - lambda * sd * am1 * (a - 3.0) / 16.0;
+  const T f2 = d / 48.0 - lambda * sd * a * am1 * (3.0 * a - 1.0) / 16.0;
+  const T h11 = (9.0 * lambda * s * s - s) / 2.0, h12 = 9.0 * lambda * sd / 2.0;
+  const T h22 = (9.0 * lambda * (d * d + k2) - d) / 2.0, det = h11 * h22 - h12 * h12;
+  const T w1 = -(h22 * f1 - h12 * f2) / det, w2 = -(h11 * f2 - h12 * f1) / det;
+  const T l6 = lambda * sd * a * am1 * am1 * am1 * am1 / 384.0 -
+               (s * a * a * a * a * a * a + d) / 2304.0 + (f1 * w1 + f2 * w2) / 2.0;
+  const T om2 = -8.0 * l4 / p, p1 = s * s * a + sd;
+  const T b = s * a * a * a / 16.0 - lambda * sd * am1 * (3.0 * a - 1.0) / 16.0, cp = lambda * s * s - s;
+  const T u = -(om2 * p1 + 2.0 * b) / cp;
+  const T shape = om2 * p1 * u + 0.75 * cp * u * u + 3.0 * b * u;
+  const T om4 = -(8.0 * om2 * (-sd * a * am1 * am1 / 16.0) + 12.0 * l6 + 4.0 * shape) / p;
+  const T x2 = om2 / lambda, x4 = (om4 - 2.0 * w2 * om2) / lambda;
+  return {-x2 / 2.0, 3.0 * x2 * x2 / 8.0 - x4 / 2.0};
 }
 
 /// Moment of inertia of the suspension ring about the pivot, the ring being

@@ -310,7 +310,8 @@ void refer_lengths_to_centre(ParsedScene& out) {
 
 /// Says, for each amplitude that is the bob's (a sensor in it, or "of":
 /// "body"), what the corrections take instead: the pendulum's angle, the slow
-/// mode's ratio times it at the measured length (docs/phone.md).
+/// mode's ratio times it at the measured length, and on a string the finite
+/// amplitude the mode's series in the bob's own (docs/phone.md).
 void note_body_amplitudes(ParsedScene& out) {
   for (std::size_t k = 0; k < out.observations.size(); ++k) {
     const Observation<double>& o = out.observations[k];
@@ -319,7 +320,8 @@ void note_body_amplitudes(ParsedScene& out) {
     out.assumptions.push_back(out.sources[k].path_of("amplitude") + ": the bob's own angle; the corrections take " +
                               "the pendulum's (pivot to the bob's centre), " + format_number(c, 6) + " times it" +
                               (c == 1.0 ? (out.apparatus.bob || out.apparatus.body ? " (rigid: the bob turns with the line)" : " (no bob: a point)")
-                                        : std::string(" (the slow mode on the string)")));
+                                        : std::string(" (the slow mode on the string); the finite amplitude takes the "
+                                                      "mode's own series in the bob's angle (method slow_mode_...)")));
   }
 }
 

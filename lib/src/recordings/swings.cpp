@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -308,10 +309,11 @@ Extent extent(const std::vector<double>& s) {
 
 /// Crossings of a sampled signal with adaptive hysteresis: h is a fraction
 /// of the last half swing's peak. Where no crossing follows within four mean
-/// intervals, the last half swing was a knock, not the swing (from its peak,
-/// h lay above every swing after it, and a knock of 1/fraction times the
-/// swing lost the rest of the record): the search starts again from that
-/// crossing, once, with h from the half swing before it.
+/// intervals, the last half swings held a knock, not the swing (from its
+/// peak, h lay above every swing after it, and a knock of 1/fraction times
+/// the swing lost the rest of the record): the search starts again from the
+/// last crossing, once, with h from the least of the last four half swings'
+/// peaks, which a knock of up to three half swings leaves a swing's.
 std::vector<Crossing> find_crossings(const std::vector<double>& t, const Signal& sig, double rms, double noise,
                                      double fraction, std::vector<std::size_t>& at) {
   const auto& s = sig.s;
@@ -320,7 +322,8 @@ std::vector<Crossing> find_crossings(const std::vector<double>& t, const Signal&
   std::vector<Crossing> out;
   int state = 0;                // -1: beyond -h, +1: beyond +h
   std::size_t last_beyond = 0;  // last sample beyond the threshold of `state`
-  double last_peak = 0.0, previous_peak = 0.0;  // the last two half swings' peaks
+  std::array<double, 4> peaks;  // the last half swings' peaks, the latest at peaks[crossings % 4]
+  peaks.fill(std::numeric_limits<double>::infinity());
   bool retried = false;
   for (std::size_t k = 0; k < s.size(); ++k) {
     // The samples up to the first beyond the threshold opposite `state`, in
@@ -348,14 +351,14 @@ std::vector<Crossing> find_crossings(const std::vector<double>& t, const Signal&
     if (k == s.size()) break;
     if (stalled) {
       retried = true;
-      h = std::max(fraction * previous_peak, floor);
+      h = std::max(fraction * *std::min_element(peaks.begin(), peaks.end()), floor);
       k = at.back() + (out.back().samples - 1);  // the sample that made the last crossing
       last_beyond = k, state = s[k] > 0 ? 1 : -1;
       continue;
     }
     out.push_back(line_zero(t, s, last_beyond, k));
     at.push_back(last_beyond);
-    previous_peak = last_peak, last_peak = half_peak;
+    peaks[out.size() % peaks.size()] = half_peak;
     h = std::max(fraction * half_peak, floor);
     retried = false;
     state = -state;

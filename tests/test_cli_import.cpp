@@ -295,10 +295,11 @@ TEST_CASE("import: catalogue of bad recordings (tests/bad_recordings/)", "[cli][
 
 TEST_CASE("import: a track with too few swings' peaks for a smooth curve shows their range, not NaN",
           "[cli][import]") {
-  // A Tracker track at 7.6 frames/s: a half swing of 0.9 s holds 6 or 7
-  // samples, and a peak needs 7 (swings.cpp, sparse_peak), so fewer than half
-  // the swings have an amplitude: no smooth curve, hence no start or end of
-  // it. The table printed "nan deg" for them.
+  // A Tracker track at 7.6 frames/s: a half swing of 0.9 s holds about 6.8
+  // samples, and a peak needs 7 strictly between its crossings (swings.cpp,
+  // sparse_peak). Fewer than half the swings get an amplitude (the null
+  // start below says so): no smooth curve, hence no start or end of it. The
+  // table printed "nan deg" for them.
   const std::string dir = pendulum::test::new_temporary_directory("pendulum-g-sparse-track");
   const std::string file = dir + "/sparse.txt";
   {
@@ -316,7 +317,7 @@ TEST_CASE("import: a track with too few swings' peaks for a smooth curve shows t
   CHECK(range.at("start").is_null());
   CHECK(range.at("end").is_null());
   // The swings that have one lie within the release's 0.2 rad (11.46 deg)
-  // and its decay by e^(-0.003 t) over 60 s (9.56 deg at the end).
+  // and its decay by e^(-0.003 t) over 60 s (9.57 deg at the end).
   CHECK(range.at("min").get<double>() > 9.5);
   CHECK(range.at("max").get<double>() < 11.46);
   const Run table = run("import --format table " + file);

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 #include "pendulum/analysis.hpp"
 #include "pendulum/mass.hpp"
@@ -168,7 +169,7 @@ TEST_CASE("A body on a string at finite amplitude: the slow mode's series in its
   // integrated by scipy's DOP853 at rtol 1e-12 (its period checked by a
   // return to the start to 1e-8 and by five periods of zero crossings to
   // 1e-10). The model leaves the series' O(psi0^6): at most 2.8e-9 of T at
-  // 5 deg, 1.8e-7 at 10, 1.0e-5 at 20 and 9.8e-5 at 30 deg (the script's
+  // 5 deg, 1.75e-7 at 10, 1.0e-5 at 20 and 9.7e-5 at 30 deg (the script's
   // T_nl/T_pg column), which bound each case by a quarter more; the factor
   // at c psi0 alone left 4.0e-6, 1.2e-5, 5.1e-5 and 2.4e-4.
   const Apparatus<double> app = phone_apparatus(0.075, 0.16, 0.008);
@@ -201,6 +202,55 @@ TEST_CASE("A body on a string at finite amplitude: the slow mode's series in its
       CHECK(std::fabs((1.0 + c.nonlinear[i]) / (1.0 + *row.ratio) - 1.0) < bounds[i]);
     }
   }
+}
+
+TEST_CASE("The slow mode's row by each method: the rest of its psi0^4 term is what the method's factor lacks",
+          "[phone][physics]") {
+  // The factor's own theta^4 coefficient: 11/3072 for the exact method and
+  // Eq. (8) from two terms, -1/192 for its first term alone (sin^2(x/2)/4 =
+  // x^2/16 - x^4/192 + ...), 0 for theta^2/16; each method's row then leaves
+  // only O(psi0^6) against the exact one's: at 5 deg (psi0^6 = 4e-7 rad^6,
+  // times the coefficients' 3e-4 at most) below 1e-9. A rest taken as the
+  // exact factor's for every method left (11/3072)(theta_e)^4 = 2e-7 in
+  // theta^2/16's.
+  const Apparatus<double> app = phone_apparatus(0.075, 0.16, 0.008);
+  Swing<double> swing{0.38, 5.0 * kRadiansPerDegree, 2.0, 2.0};
+  swing.amplitude_of = AngleOf::body;
+  auto row = [&](AmplitudeMethod method, int terms) {
+    const Terms<double> t = correction_terms(app, swing, {method, terms, 0.0});
+    return *t[static_cast<int>(CorrectionId::finite_amplitude)].ratio;
+  };
+  const double exact = row(AmplitudeMethod::agm, 0);
+  CHECK_THAT(row(AmplitudeMethod::small_angle, 0), WithinAbs(exact, 1e-9));
+  CHECK_THAT(row(AmplitudeMethod::series, 1), WithinAbs(exact, 1e-9));
+  CHECK_THAT(row(AmplitudeMethod::series, 2), WithinAbs(exact, 1e-9));
+}
+
+TEST_CASE("A box near its two modes' 3:1 resonance on the string gets a warning; the template's phone none",
+          "[phone][physics]") {
+  // A phone on its side, 16 cm along the swing and 7.5 cm tall: its fast
+  // mode runs at 3 times the slow one's frequency on 0.536 m of string
+  // (lambda = omega^2/g from s k^2 lambda^2 - (d l + k^2) lambda + d = 0),
+  // where kappa4 has a pole (mass.hpp, the harmonic balance's det H = 0).
+  // At 0.52 m (2.96 times) it is 0.11 beyond a simple pendulum's, 17 times
+  // the 6.4e-3 the nonlinear check reached; at 0.80 m (3.57 times) it is
+  // within it.
+  auto warnings_at = [](double string_cm) {
+    const std::string text = R"J({
+      "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.001, "trials": [15.1, 15.11, 15.09]},
+      "length": {"value": )J" + std::to_string(string_cm) + R"J(, "uncertainty": 0.1, "unit": "cm", "measured_to": "top_of_bob"},
+      "amplitude": {"value": 10, "unit": "deg", "of": "body"},
+      "bob": {"shape": "box", "width": {"value": 16, "unit": "cm"}, "height": {"value": 7.5, "unit": "cm"},
+              "depth": {"value": 0.8, "unit": "cm"}, "mass": {"value": 190, "unit": "g"}},
+      "air": "vacuum"
+    })J";
+    std::string all;
+    for (const auto& w : analyse(parse_scene(text)).warnings) all += w + "\n";
+    return all;
+  };
+  CHECK_THAT(warnings_at(52.0), Catch::Matchers::Contains("amplitude: the bob's two modes on the string are near 3:1 "
+                                                           "(the fast one at 2.963 times the slow one's frequency)"));
+  CHECK_THAT(warnings_at(80.0), !Catch::Matchers::Contains("near 3:1"));
 }
 
 TEST_CASE("A rigid suspension: the bob turns with the rod, no rotation or wire-bending row", "[phone][physics]") {

@@ -408,7 +408,7 @@ TEST_CASE("A gyroscope's amplitudes follow the exact ones by the energy relation
              Catch::Matchers::WithinAbs(2.0 * M_PI / sim.omega0, 3.0 * a.period.uncertainty + 4.4e-7 * 1.8));
 }
 
-TEST_CASE("A knock on the phone, 25 times the swing, costs no more than its own swings",
+TEST_CASE("A knock on the phone, 25 times the swing, loses no crossing and makes no amplitude negative",
           "[recordings][robustness]") {
   // Two faults it found. The crossings' hysteresis followed the last half
   // swing's peak, 0.3 of it: after a knock of more than 1/0.3 times the
@@ -446,9 +446,9 @@ TEST_CASE("A knock on the phone, 25 times the swing, costs no more than its own 
       ++swings_with_amplitude;
     }
     CHECK(swings_with_amplitude > 300);
-    // The knock scales every sample a crossing's line goes through alike, so
-    // it moves no crossing: the period is the clean record's, to the two
-    // records' uncertainties.
+    // The knock moves a crossing only where its edge cuts the crossing's line
+    // (the first's edges lie on two): the period is the clean record's, to
+    // the two records' uncertainties.
     CHECK_THAT(a.period.value, Catch::Matchers::WithinAbs(clean.period.value, 3.0 * std::hypot(a.period.uncertainty,
                                                                                                clean.period.uncertainty)));
   }

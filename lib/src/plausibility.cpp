@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "pendulum/air.hpp"
+#include "pendulum/mass.hpp"
 #include "pendulum/input_error.hpp"
 #include "pendulum/models/registry.hpp"
 #include "pendulum/reduction.hpp"
@@ -276,6 +277,35 @@ std::optional<std::string> warn_about_unmodelled_added_mass(const ParsedScene& s
             format_number(added / unmodelled_added_mass(turned, rho), 2) + " times less";
   }
   return text;
+}
+
+std::optional<std::string> warn_about_mode_resonance(const ParsedScene& scene, double negligible_fraction) {
+  // The largest |kappa4 - (11/3072)(4 sqrt kappa2)^4| the nonlinear check
+  // covered (the phone on 0.1-1 m, tests/tools/phone_nonlinear_check.py):
+  // 6.4e-3 at 0.1 m; twice that is beyond it.
+  constexpr double kCheckedCoefficient = 1.3e-2;
+  const Apparatus<double>& app = scene.apparatus;
+  if (!app.bob || app.bob->suspension != Suspension::flexible) return std::nullopt;
+  const double k2 = app.bob->gyration_squared(), d = app.bob->knot_to_center();
+  for (std::size_t k = 0; k < scene.observations.size(); ++k) {
+    const Observation<double>& o = scene.observations[k];
+    if (o.amplitude_of != AngleOf::body) continue;
+    const auto [kappa2, kappa4] = slow_mode_amplitude_series(k2, d, o.length);
+    const double ratio2 = 16.0 * kappa2, coefficient = kappa4 - 11.0 / 3072.0 * ratio2 * ratio2;
+    const double psi2 = o.amplitude * o.amplitude, term = coefficient * psi2 * psi2;
+    const double threshold = negligible_fraction * scene.observation_uncertainties[k].period / o.period;
+    if (!(std::fabs(coefficient) > kCheckedCoefficient && std::fabs(term) > threshold)) continue;
+    // The two modes' frequencies: lambda = omega^2/g solves s k^2 lambda^2 - (d l + k^2) lambda + d = 0.
+    const double s = o.length - d, b = d * o.length + k2, root = std::sqrt(b * b - 4.0 * s * d * k2);
+    const double frequency_ratio = std::sqrt((b + root) * (b + root) / (4.0 * s * d * k2));
+    return scene.sources[k].path_of("amplitude") + ": the bob's two modes on the string are near 3:1 (the fast " +
+           "one at " + format_number(frequency_ratio, 4) + " times the slow one's frequency), where the slow " +
+           "mode's psi0^4 coefficient grows without bound: here " + format_number(coefficient, 2) +
+           " beyond a simple pendulum's, where the check against the full equations of motion went to 6.4e-3 " +
+           "(docs/phone.md); its term in the finite-amplitude row, " + format_number(term, 2) +
+           " of T, is not to be trusted: change the string's length by a few cm, or swing smaller";
+  }
+  return std::nullopt;
 }
 
 /// A slip's text (status.cpp) with the keys it names as this observation's paths.

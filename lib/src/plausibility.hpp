@@ -42,4 +42,11 @@ std::vector<std::string> warn_about_skipped_ball_parts(const ParsedScene& scene,
 /// lengthen some period by more than `negligible_fraction` of its uncertainty.
 std::optional<std::string> warn_about_unmodelled_added_mass(const ParsedScene& scene, double negligible_fraction);
 
+/// A body on a string at its own amplitude near its two modes' 3:1
+/// resonance, where the slow mode's psi0^4 coefficient (mass.hpp,
+/// slow_mode_amplitude_series) grows without bound: a warning where it lies
+/// beyond twice what the nonlinear check covered and its term exceeds
+/// `negligible_fraction` of a period's relative uncertainty.
+std::optional<std::string> warn_about_mode_resonance(const ParsedScene& scene, double negligible_fraction);
+
 }  // namespace pendulum

@@ -140,23 +140,29 @@ T pendulum_over_body_angle(const Apparatus<T>& app, const T& l) {
 }
 
 /// DeltaT/T_slow of a body on a flexible string at its own amplitude psi0
-/// (rad), 0 <= psi0 < pi/2: the slow mode's series 1 + kappa2 psi0^2 +
+/// (rad), checked to 30 deg: the slow mode's series 1 + kappa2 psi0^2 +
 /// kappa4 psi0^4 (mass.hpp, slow_mode_amplitude_series) as a simple
 /// pendulum's factor F by `amplitude`'s method at theta_e = 4 sqrt(kappa2)
 /// psi0, which holds the psi0^2 term, times 1 + R with the rest of the psi0^4
-/// one, R = (kappa4 - (11/3072)(theta_e/psi0)^4) psi0^4: F + R + F R. Against
-/// the full equations of motion, for a phone on 0.1-1 m of string, it errs
-/// at most 1.7e-7 of T at 10 deg, 1.0e-5 at 20 deg and 9.7e-5 at 30 deg,
-/// where the factor at c psi0 alone erred 1.2e-5, 5.1e-5 and 2.4e-4
-/// (tests/tools/phone_nonlinear_check.py, docs/phone.md).
+/// one, R = (kappa4 - q (theta_e/psi0)^4) psi0^4, q the theta^4 coefficient F
+/// holds (11/3072 exactly, -1/192 for Eq. 8's first term alone, 0 for
+/// theta^2/16): F + R + F R. Against the full equations of motion, for a
+/// phone on 0.1-1 m of string, it errs at most 1.75e-7 of T at 10 deg,
+/// 1.0e-5 at 20 deg and 9.7e-5 at 30 deg, where the factor at c psi0 alone
+/// erred 1.2e-5, 5.1e-5 and 2.4e-4 (tests/tools/phone_nonlinear_check.py,
+/// docs/phone.md). Near the modes' 3:1 resonance kappa4 grows without bound
+/// and the series fails (warn_about_mode_resonance, plausibility.cpp).
 template <class T>
 T slow_mode_finite_amplitude(const Apparatus<T>& app, const T& l, const T& psi0, const AmplitudeChoice& amplitude) {
   using std::sqrt;
   const auto [kappa2, kappa4] = slow_mode_amplitude_series(app.bob->gyration_squared(), app.bob->knot_to_center(), l);
   const T ratio = 4.0 * sqrt(kappa2);  // theta_e/psi0
   const T factor = finite_amplitude(amplitude.method, T(ratio * psi0), amplitude.terms);
+  const double q = amplitude.method == AmplitudeMethod::small_angle                      ? 0.0
+                   : amplitude.method == AmplitudeMethod::series && amplitude.terms < 2 ? -1.0 / 192.0
+                                                                                          : 11.0 / 3072.0;
   const T psi2 = psi0 * psi0, ratio2 = ratio * ratio;
-  const T rest = (kappa4 - 11.0 / 3072.0 * ratio2 * ratio2) * psi2 * psi2;
+  const T rest = (kappa4 - q * ratio2 * ratio2) * psi2 * psi2;
   return factor + rest + factor * rest;
 }
 

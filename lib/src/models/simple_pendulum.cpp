@@ -106,6 +106,7 @@ void SimplePendulum::check_rows(const ParsedScene& scene, const Observation<doub
 std::vector<std::string> SimplePendulum::skipped_part_warnings(const ParsedScene& scene, double negligible_fraction) {
   std::vector<std::string> warnings = warn_about_skipped_ball_parts(scene, negligible_fraction);
   if (auto w = warn_about_unmodelled_added_mass(scene, negligible_fraction)) warnings.push_back(std::move(*w));
+  if (auto w = warn_about_mode_resonance(scene, negligible_fraction)) warnings.push_back(std::move(*w));
   return warnings;
 }
 

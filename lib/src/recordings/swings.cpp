@@ -1066,7 +1066,7 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
         smooth[i] = (raw[j] + 5.0 * raw[i] + 3.0 * raw[k] - raw[2 * k - i]) / 8.0;
       }
       // Beside a swing without a peak (a sparse or glitchy track), or where a
-      // neighbour many times larger drives the weights' sum below zero, the
+      // neighbour many times larger drives the weighted sum below zero, the
       // three, whose weights are all positive.
       if (!(smooth[i] >= 0.0)) smooth[i] = (raw[i - 1] + 2.0 * raw[i] + raw[i + 1]) / 4.0;
     }

@@ -226,7 +226,7 @@ TEST_CASE("The slow mode's row by each method: the rest of its psi0^4 term is wh
   CHECK_THAT(row(AmplitudeMethod::series, 2), WithinAbs(exact, 1e-9));
 }
 
-TEST_CASE("A box near its two modes' 3:1 resonance on the string gets a warning; the template's phone none",
+TEST_CASE("A box near its two modes' 3:1 resonance on the string gets a warning, at it a refusal",
           "[phone][physics]") {
   // A phone on its side, 16 cm along the swing and 7.5 cm tall: its fast
   // mode runs at 3 times the slow one's frequency on 0.536 m of string
@@ -251,6 +251,11 @@ TEST_CASE("A box near its two modes' 3:1 resonance on the string gets a warning;
   CHECK_THAT(warnings_at(52.0), Catch::Matchers::Contains("amplitude: the bob's two modes on the string are near 3:1 "
                                                            "(the fast one at 2.963 times the slow one's frequency)"));
   CHECK_THAT(warnings_at(80.0), !Catch::Matchers::Contains("near 3:1"));
+  // At 0.536 m the psi0^4 term is 1.5e-2 of T, beyond the 1e-2 where a
+  // series can stand: the scene is refused.
+  CHECK_THROWS_WITH(warnings_at(53.6), Catch::Matchers::Contains("amplitude: got a body on a string whose fast mode "
+                                                                 "runs at 3") &&
+                                           Catch::Matchers::Contains("near 3:1, where the slow mode's psi0^4 term is"));
 }
 
 TEST_CASE("A rigid suspension: the bob turns with the rod, no rotation or wire-bending row", "[phone][physics]") {

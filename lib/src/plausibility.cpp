@@ -133,7 +133,41 @@ void check_observation(ParsedScene& scene, std::size_t k, const std::optional<Ex
 
 }  // namespace
 
+namespace {
+
+/// For a body on a flexible string at its own amplitude: the slow mode's
+/// psi0^4 coefficient beyond a simple pendulum's, kappa4 - (11/3072)(4
+/// sqrt kappa2)^4 (mass.hpp, slow_mode_amplitude_series), its term in
+/// DeltaT/T, and the fast mode's frequency over the slow one's, from
+/// lambda = omega^2/g solving s k^2 lambda^2 - (d l + k^2) lambda + d = 0.
+struct SlowModeRest {
+  double coefficient, term, frequency_ratio;
+};
+
+std::optional<SlowModeRest> slow_mode_rest(const Apparatus<double>& app, const Observation<double>& o) {
+  if (!app.bob || app.bob->suspension != Suspension::flexible || o.amplitude_of != AngleOf::body) return std::nullopt;
+  const double k2 = app.bob->gyration_squared(), d = app.bob->knot_to_center(), l = o.length;
+  const auto [kappa2, kappa4] = slow_mode_amplitude_series(k2, d, l);
+  const double ratio2 = 16.0 * kappa2, coefficient = kappa4 - 11.0 / 3072.0 * ratio2 * ratio2;
+  const double psi2 = o.amplitude * o.amplitude;
+  const double s = l - d, b = d * l + k2, root = std::sqrt(b * b - 4.0 * s * d * k2);
+  return SlowModeRest{coefficient, coefficient * psi2 * psi2, std::sqrt((b + root) * (b + root) / (4.0 * s * d * k2))};
+}
+
+}  // namespace
+
 void check_first_order(const Apparatus<double>& app, const Observation<double>& o) {
+  // At the modes' 3:1 resonance kappa4 has a pole: a term of 1e-2 of T, 20
+  // times the largest the nonlinear check covered (4.8e-4: the phone on 0.1 m
+  // at 30 deg), is no series' any more.
+  constexpr double kSeriesLimit = 1e-2;
+  if (const auto rest = slow_mode_rest(app, o); rest && !(std::fabs(rest->term) < kSeriesLimit)) {
+    throw InputError("amplitude", "got a body on a string whose fast mode runs at " +
+                                      format_number(rest->frequency_ratio, 5) + " times its slow one's frequency, "
+                                      "near 3:1, where the slow mode's psi0^4 term is " + format_number(rest->term, 2) + " of T; expected it below " +
+                                      format_number(kSeriesLimit) + " (docs/phone.md): change the string's length "
+                                      "by a few cm, or swing smaller");
+  }
   const Reduction<double> r = reduce(app, o);
   for (int i = 0; i < kCorrectionCount; ++i) {
     const std::optional<double>& x = r.terms[i].ratio;
@@ -284,25 +318,16 @@ std::optional<std::string> warn_about_mode_resonance(const ParsedScene& scene, d
   // covered (the phone on 0.1-1 m, tests/tools/phone_nonlinear_check.py):
   // 6.4e-3 at 0.1 m; twice that is beyond it.
   constexpr double kCheckedCoefficient = 1.3e-2;
-  const Apparatus<double>& app = scene.apparatus;
-  if (!app.bob || app.bob->suspension != Suspension::flexible) return std::nullopt;
-  const double k2 = app.bob->gyration_squared(), d = app.bob->knot_to_center();
   for (std::size_t k = 0; k < scene.observations.size(); ++k) {
-    const Observation<double>& o = scene.observations[k];
-    if (o.amplitude_of != AngleOf::body) continue;
-    const auto [kappa2, kappa4] = slow_mode_amplitude_series(k2, d, o.length);
-    const double ratio2 = 16.0 * kappa2, coefficient = kappa4 - 11.0 / 3072.0 * ratio2 * ratio2;
-    const double psi2 = o.amplitude * o.amplitude, term = coefficient * psi2 * psi2;
-    const double threshold = negligible_fraction * scene.observation_uncertainties[k].period / o.period;
-    if (!(std::fabs(coefficient) > kCheckedCoefficient && std::fabs(term) > threshold)) continue;
-    // The two modes' frequencies: lambda = omega^2/g solves s k^2 lambda^2 - (d l + k^2) lambda + d = 0.
-    const double s = o.length - d, b = d * o.length + k2, root = std::sqrt(b * b - 4.0 * s * d * k2);
-    const double frequency_ratio = std::sqrt((b + root) * (b + root) / (4.0 * s * d * k2));
+    const auto rest = slow_mode_rest(scene.apparatus, scene.observations[k]);
+    const double threshold =
+        negligible_fraction * scene.observation_uncertainties[k].period / scene.observations[k].period;
+    if (!rest || !(std::fabs(rest->coefficient) > kCheckedCoefficient && std::fabs(rest->term) > threshold)) continue;
     return scene.sources[k].path_of("amplitude") + ": the bob's two modes on the string are near 3:1 (the fast " +
-           "one at " + format_number(frequency_ratio, 4) + " times the slow one's frequency), where the slow " +
-           "mode's psi0^4 coefficient grows without bound: here " + format_number(coefficient, 2) +
+           "one at " + format_number(rest->frequency_ratio, 4) + " times the slow one's frequency), where the " +
+           "slow mode's psi0^4 coefficient grows without bound: here " + format_number(rest->coefficient, 2) +
            " beyond a simple pendulum's, where the check against the full equations of motion went to 6.4e-3 " +
-           "(docs/phone.md); its term in the finite-amplitude row, " + format_number(term, 2) +
+           "(docs/phone.md); its term in the finite-amplitude row, " + format_number(rest->term, 2) +
            " of T, is not to be trusted: change the string's length by a few cm, or swing smaller";
   }
   return std::nullopt;

@@ -35,7 +35,7 @@ TEST_CASE("Every registered kind names its parameters, units, defaults and setti
     // One kind per setting: the reader knows the kind from an observation's key.
     for (Setting s : M::kSettings) {
       CHECK(settings.insert(static_cast<int>(s)).second);
-      CHECK(kind_of_setting(s) == M::kKind);
+      CHECK(kind_of_setting(s) == kind_of<M>());
     }
   });
   CHECK(kinds == static_cast<int>(std::tuple_size_v<PeriodModels>));
@@ -57,7 +57,7 @@ TEST_CASE("Every registered kind's rows are what its kCorrectionUse declares", "
     visit_period_model(scene.model, [&](auto model) {
       using M = decltype(model);
       INFO(scene.title);
-      kinds.insert(static_cast<int>(M::kKind));
+      kinds.insert(static_cast<int>(kind_of<M>().index));
       const Apparatus<double>& app = scene.apparatus;
       const Observation<double>& o = scene.observations.front();
       std::array<double, M::kParameters> p = M::kDefaults;
@@ -74,7 +74,7 @@ TEST_CASE("Every registered kind's rows are what its kCorrectionUse declares", "
             break;
           case CorrectionUse::replaced:  // by the model's formula, or skipped for a part the scene lacks
             if (row.ratio) {
-              replaced_computed.insert({static_cast<int>(M::kKind), i});
+              replaced_computed.insert({static_cast<int>(kind_of<M>().index), i});
               CHECK(std::string(row.method) != plain[i].method);
             } else {
               CHECK(std::string(row.skip_reason).size() > 0);
@@ -99,7 +99,7 @@ TEST_CASE("Every registered kind's rows are what its kCorrectionUse declares", "
     using M = decltype(model);
     for (int i = 0; i < kCorrectionCount; ++i) {
       INFO(M::kName << " " << kCorrections[i].id);
-      if (M::kCorrectionUse[i] == CorrectionUse::replaced) CHECK(replaced_computed.count({static_cast<int>(M::kKind), i}));
+      if (M::kCorrectionUse[i] == CorrectionUse::replaced) CHECK(replaced_computed.count({static_cast<int>(kind_of<M>().index), i}));
     }
   });
 }

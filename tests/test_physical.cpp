@@ -256,7 +256,7 @@ std::string rod_scene(const std::string& extra) {
 
 TEST_CASE("One pivot of a body in parts: the closed form is Eq. (56) solved for g", "[physical]") {
   const ParsedScene scene = parse_scene(rod_scene(""));
-  CHECK(scene.model == PeriodModelKind::physical_pendulum);
+  CHECK(scene.model == kind_of<PhysicalPendulum>());
   const Analysis a = analyse(scene, exact());
   CHECK(a.fit.method == "closed_form");
   // Independently: the body's k and centre (bodies.hpp), then

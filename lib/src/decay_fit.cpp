@@ -10,7 +10,7 @@
 #include <Eigen/Eigenvalues>
 #include <ceres/ceres.h>
 
-#include "newton_decrement.hpp"
+#include "pendulum/detail/newton_decrement.hpp"
 #include "decay_kernel.hpp"
 #include "text.hpp"
 #include "pendulum/numeric.hpp"
@@ -221,7 +221,7 @@ Solution solve(const DecayData& data, DecayModel model) {
   options.callbacks.push_back(&converged);
   ceres::Solve(options, &problem, &s.summary);
   // Ceres returns its least cost, which rounding can put at an earlier
-  // point than the one the stopping rule judged (period_fit.cpp): the fit
+  // point than the one the stopping rule judged (period_fit.hpp): the fit
   // ends where it was judged.
   if (s.summary.termination_type == ceres::USER_SUCCESS) s.p = cost->judged();
   const kernel::DecaySums& sums = cost->sums_at(s.p.data());

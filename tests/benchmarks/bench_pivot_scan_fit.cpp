@@ -59,7 +59,7 @@ Scan make_scan(int n) {
   }
   // The analysis's start, from a scene of the same observations.
   pendulum::ParsedScene scene;
-  scene.model = pendulum::PeriodModelKind::physical_pendulum;
+  scene.model = pendulum::kind_of<pendulum::PhysicalPendulum>();
   scene.observations = s.observations;
   scene.fit = {"radius_of_gyration", "center_of_mass_position"};
   s.start = pendulum::physical_start(scene, {true, true, true});

@@ -71,7 +71,7 @@ struct SceneRecording {
 };
 
 struct ParsedScene {
-  PeriodModelKind model = PeriodModelKind::simple_pendulum;
+  PeriodModelKind model;  ///< the registry's first, the ball, unless the observations say otherwise
   Apparatus<double> apparatus;              ///< SI values
   Apparatus<double> apparatus_uncertainty;  ///< same shape; 0 where the file states none
   std::vector<Observation<double>> observations;  ///< one, or a series

@@ -6,7 +6,6 @@
 /// A period model is a struct with (models/registry.hpp checks every piece
 /// at compile time; docs/core.md):
 ///   kName: its name in the output ("fit.model"),
-///   kKind: its PeriodModelKind, its place in the registry,
 ///   kSettings: the observation keys it reads (Setting), by which the reader
 ///       knows a scene's kind,
 ///   kCorrectionUse: per row of kCorrections, whether it applies, is
@@ -49,6 +48,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 
@@ -65,9 +65,14 @@ class Object;  // a JSON object as the scene reader reads it (lib/src/json/reade
 template <int P>
 struct FitState;
 
-/// The period model a scene is reduced with: one per registered kind, in
-/// the registry's order (models/registry.hpp).
-enum class PeriodModelKind { simple_pendulum, physical_pendulum };
+/// The period model a scene is reduced with: its model's place in the
+/// registry (PeriodModels, models/registry.hpp), which kind_of<Model>()
+/// gives. The default, 0, is the registry's first: the ball on a string.
+struct PeriodModelKind {
+  std::size_t index = 0;
+  friend constexpr bool operator==(PeriodModelKind a, PeriodModelKind b) { return a.index == b.index; }
+  friend constexpr bool operator!=(PeriodModelKind a, PeriodModelKind b) { return !(a == b); }
+};
 
 /// How a model treats one row of kCorrections (its kCorrectionUse, one per
 /// CorrectionId): the row as visit_corrections computes it, its own formula

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "pendulum/decay_simulation.hpp"
-#include "pendulum/models/physical_pendulum.hpp"
+#include "pendulum/models/registry.hpp"
 #include "pendulum/parsed_scene.hpp"
 #include "pendulum/series_simulation.hpp"
 
@@ -42,7 +42,7 @@ struct PivotScanSimulation {
 inline ParsedScene simulate_pivot_scan(const Apparatus<double>& app, const PivotScanSimulation& sim) {
   using M = PhysicalPendulum;
   ParsedScene scene;
-  scene.model = PeriodModelKind::physical_pendulum;
+  scene.model = kind_of<PhysicalPendulum>();
   scene.apparatus = app;
   scene.apparatus_uncertainty = convert_apparatus<double>(app, [](const Field&, double) { return 0.0; });
   scene.series = true;

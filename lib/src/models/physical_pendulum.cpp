@@ -11,7 +11,7 @@
 
 #include "../fit_state.hpp"
 #include "../text.hpp"
-#include "pendulum/period_fit.hpp"
+#include "pendulum/straight_line.hpp"
 
 namespace pendulum {
 

@@ -13,7 +13,7 @@
 #include "../fit_state.hpp"
 #include "../plausibility.hpp"
 #include "../text.hpp"
-#include "pendulum/period_fit.hpp"
+#include "pendulum/straight_line.hpp"
 
 namespace pendulum {
 

@@ -52,7 +52,6 @@ T bessel_g(const T& t1, const T& t2, const T& h1, const T& h2) {
 
 struct PhysicalPendulum {
   static constexpr const char* kName = "physical_pendulum";
-  static constexpr PeriodModelKind kKind = PeriodModelKind::physical_pendulum;
   static constexpr std::array<Setting, 2> kSettings{{Setting::pivot_distance, Setting::pivot_position}};
   /// The finite amplitude and the damping rows hold for any body; buoyancy is
   /// the body's own (own_corrections); the ball pendulum's parts and its

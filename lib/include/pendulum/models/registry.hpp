@@ -32,7 +32,7 @@ struct HasModelPieces : std::false_type {};
 // one does not compile as a registered model.
 template <class M>
 struct HasModelPieces<
-    M, std::void_t<decltype(M::kName), decltype(M::kKind), decltype(M::kSettings), decltype(M::kParameters),
+    M, std::void_t<decltype(M::kName), decltype(M::kSettings), decltype(M::kParameters),
                    decltype(M::kParameterInfo), decltype(M::kDefaults), decltype(M::kCorrectionUse),
                    decltype(M::canonicalise(std::declval<double*>())),
                    decltype(M::start(std::declval<const ParsedScene&>(),
@@ -83,20 +83,34 @@ constexpr bool is_period_model() {
   }
 }
 
-/// The registered kinds, in PeriodModelKind's order.
+/// The registered kinds; a kind is its place here (PeriodModelKind), the
+/// first the default.
 using PeriodModels = std::tuple<SimplePendulum, PhysicalPendulum>;
 
 namespace detail {
-template <std::size_t... I>
-constexpr bool registry_is_complete(std::index_sequence<I...>) {
-  return ((is_period_model<std::tuple_element_t<I, PeriodModels>>() &&
-           static_cast<std::size_t>(std::tuple_element_t<I, PeriodModels>::kKind) == I) &&
-          ...);
+template <class... M>
+constexpr bool registry_is_complete(std::tuple<M...>*) {
+  return (is_period_model<M>() && ...);
+}
+template <class M, class... Ms>
+constexpr std::size_t index_in(std::tuple<Ms...>*) {
+  std::size_t i = 0;
+  const bool found = ((std::is_same_v<M, Ms> || (++i, false)) || ...);
+  return found ? i : sizeof...(Ms);
 }
 }  // namespace detail
-static_assert(detail::registry_is_complete(std::make_index_sequence<std::tuple_size_v<PeriodModels>>{}),
-              "every registered period model has every piece of the interface (period_model.hpp), in "
-              "PeriodModelKind's order");
+static_assert(detail::registry_is_complete(static_cast<PeriodModels*>(nullptr)),
+              "every registered period model has every piece of the interface (period_model.hpp)");
+
+/// The kind of a registered model M: its place in PeriodModels.
+template <class M>
+constexpr PeriodModelKind kind_of() {
+  constexpr std::size_t index = detail::index_in<M>(static_cast<PeriodModels*>(nullptr));
+  static_assert(index < std::tuple_size_v<PeriodModels>, "M is registered in PeriodModels");
+  return {index};
+}
+// A scene's default kind (ParsedScene::model) is the ball's.
+static_assert(kind_of<SimplePendulum>() == PeriodModelKind{}, "the ball on a string is the registry's first");
 
 /// Calls f(Model{}) for each registered model.
 template <class F>
@@ -110,12 +124,12 @@ decltype(auto) visit_period_model(PeriodModelKind kind, F&& f) {
   using R = decltype(f(SimplePendulum{}));
   if constexpr (std::is_void_v<R>) {
     for_each_period_model([&](auto model) {
-      if (decltype(model)::kKind == kind) f(model);
+      if (kind_of<decltype(model)>() == kind) f(model);
     });
   } else {
     R out{};
     for_each_period_model([&](auto model) {
-      if (decltype(model)::kKind == kind) out = f(model);
+      if (kind_of<decltype(model)>() == kind) out = f(model);
     });
     return out;
   }
@@ -124,10 +138,10 @@ decltype(auto) visit_period_model(PeriodModelKind kind, F&& f) {
 /// The kind whose observations are set by `setting` (a model's kSettings):
 /// the reader infers a scene's kind from its observations' keys this way.
 inline PeriodModelKind kind_of_setting(Setting setting) {
-  PeriodModelKind kind = PeriodModelKind::simple_pendulum;
+  PeriodModelKind kind;
   for_each_period_model([&](auto model) {
     const auto& settings = decltype(model)::kSettings;
-    if (std::find(settings.begin(), settings.end(), setting) != settings.end()) kind = decltype(model)::kKind;
+    if (std::find(settings.begin(), settings.end(), setting) != settings.end()) kind = kind_of<decltype(model)>();
   });
   return kind;
 }

@@ -17,7 +17,6 @@ namespace pendulum {
 
 struct SimplePendulum {
   static constexpr const char* kName = "simple_pendulum";
-  static constexpr PeriodModelKind kKind = PeriodModelKind::simple_pendulum;
   /// A bob of any shape on a string (docs/phone.md) is set by its length.
   static constexpr std::array<Setting, 1> kSettings{{Setting::length}};
   /// Every row as visit_corrections computes it.

@@ -96,7 +96,7 @@ TEST_CASE("A bare scene computes only what it has", "[reduction]") {
 }
 
 // A fit composes T/T0 once per observation when no applied correction reads
-// the swing's length (period_fit.cpp): a correction marked as not reading it
+// the swing's length (period_fit.hpp): a correction marked as not reading it
 // must not change with it. Each row is checked in every scene that applies it,
 // Nelson & Olsson's and tests/valid_scenes.json's, and must apply in one: a new
 // correction's part comes with a valid scene that has it.

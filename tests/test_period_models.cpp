@@ -113,6 +113,22 @@ struct WithoutStart : SimplePendulum {
 struct WithoutReport : SimplePendulum {
   static void report() = delete;
 };
+// Results of another type than its writers take.
+struct ResultsOfAnotherType : PhysicalPendulum {
+  using Results = void;
+};
+struct WithoutPutFitResults : SimplePendulum {
+  static void put_fit_results() = delete;
+};
+struct WithoutPutObservationResults : PhysicalPendulum {
+  static void put_observation_results() = delete;
+};
+struct WithoutFitResultsLines : PhysicalPendulum {
+  static void fit_results_lines() = delete;
+};
+struct WithoutObservationResultsLines : SimplePendulum {
+  static void observation_results_lines() = delete;
+};
 struct WithoutPredict : SimplePendulum {
   static void predict() = delete;
 };
@@ -152,6 +168,11 @@ TEST_CASE("A kind that lacks a piece of the interface is not a period model", "[
   STATIC_REQUIRE(is_period_model<PhysicalPendulum>());
   STATIC_REQUIRE_FALSE(is_period_model<WithoutStart>());
   STATIC_REQUIRE_FALSE(is_period_model<WithoutReport>());
+  STATIC_REQUIRE_FALSE(is_period_model<ResultsOfAnotherType>());
+  STATIC_REQUIRE_FALSE(is_period_model<WithoutPutFitResults>());
+  STATIC_REQUIRE_FALSE(is_period_model<WithoutPutObservationResults>());
+  STATIC_REQUIRE_FALSE(is_period_model<WithoutFitResultsLines>());
+  STATIC_REQUIRE_FALSE(is_period_model<WithoutObservationResultsLines>());
   STATIC_REQUIRE_FALSE(is_period_model<WithoutPredict>());
   STATIC_REQUIRE_FALSE(is_period_model<WithoutOwnCorrections>());
   STATIC_REQUIRE_FALSE(is_period_model<WithoutSolveG>());

@@ -65,8 +65,8 @@ TEST_CASE("Pivot scan: a noiseless metre stick gives back g, k and the centre", 
   CHECK_THAT(parameter(a, "radius_of_gyration").value, WithinAbs(sim.radius_of_gyration, 1e-12));
   CHECK_THAT(parameter(a, "center_of_mass_position").value, WithinAbs(sim.center_of_mass_position, 1e-12));
   // The curve's minimum is 2 pi sqrt(2k/g) at h = k (d/dh (k^2 + h^2)/h = 0).
-  REQUIRE(a.fit.pivot_scan);
-  const PivotScan& scan = *a.fit.pivot_scan;
+  REQUIRE(a.fit.results_of<PhysicalPendulum>());
+  const PivotScan& scan = *a.fit.results_of<PhysicalPendulum>();
   CHECK_THAT(scan.minimum_period.value,
              WithinRel(2 * kPi * std::sqrt(2 * sim.radius_of_gyration / sim.g), 1e-12));
   REQUIRE(scan.minimum_pivot_positions.size() == 2);
@@ -101,8 +101,9 @@ TEST_CASE("Kater: the generic fit and Bessel's formula agree to 1e-12", "[physic
   const double h1 = center - scene.observations[0].length, h2 = scene.observations[1].length - center;
   const double bessel = 8 * kPi * kPi / ((t1 * t1 + t2 * t2) / (h1 + h2) + (t1 * t1 - t2 * t2) / (h1 - h2));
   CHECK_THAT(a.g.value, WithinRel(bessel, 1e-12));
-  REQUIRE(a.fit.pivot_scan->bessel_g);
-  CHECK_THAT(*a.fit.pivot_scan->bessel_g, WithinRel(bessel, 1e-12));
+  const PivotScan* scan = a.fit.results_of<PhysicalPendulum>();
+  REQUIRE((scan && scan->bessel_g));
+  CHECK_THAT(*scan->bessel_g, WithinRel(bessel, 1e-12));
   // Why the method works: the rough centre's sensitivity is Bessel's
   // derivative, dg/dx_c = 2 g^2 (T1^2 - T2^2) / (8 pi^2 (h1 - h2)^2), which
   // T1 ~ T2 makes small.
@@ -187,8 +188,9 @@ TEST_CASE("The pivot scan's textbook curve is in the fit; Kater's is Bessel's fo
           "[physical][textbook]") {
   const ParsedScene scene = simulate_pivot_scan({}, kater(0.8136, 3));
   const Analysis a = analyse(scene);
-  REQUIRE(a.fit.pivot_scan->textbook);
-  const auto& t = *a.fit.pivot_scan->textbook;
+  const PivotScan* scan = a.fit.results_of<PhysicalPendulum>();
+  REQUIRE((scan && scan->textbook));
+  const auto& t = *scan->textbook;
   // Bessel's 8 pi^2/g = (T1^2 + T2^2)/(h1 + h2) + (T1^2 - T2^2)/(h1 - h2), on the periods as measured.
   const double c = *scene.apparatus.body->center_of_mass_position;
   const double T1 = scene.observations[0].period, T2 = scene.observations[1].period;
@@ -228,8 +230,9 @@ TEST_CASE("The bundled physical scenes are what their generator writes, and give
       const ParameterResult& k = parameter(a, "radius_of_gyration");
       CHECK(std::abs(k.value - *file.body_from_parts->radius_of_gyration) < 3 * *k.uncertainty);
     } else {
-      REQUIRE(a.fit.pivot_scan->bessel_g);
-      CHECK_THAT(*a.fit.pivot_scan->bessel_g, WithinRel(a.g.value, 1e-12));
+      const PivotScan* scan = a.fit.results_of<PhysicalPendulum>();
+      REQUIRE((scan && scan->bessel_g));
+      CHECK_THAT(*scan->bessel_g, WithinRel(a.g.value, 1e-12));
     }
   }
 }

@@ -8,10 +8,14 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include "pendulum/decay_fit.hpp"
 #include "pendulum/drag.hpp"
+#include "pendulum/estimate.hpp"
+#include "pendulum/models/registry.hpp"
 #include "pendulum/parsed_scene.hpp"
 #include "pendulum/reduction.hpp"
 #include "pendulum/status.hpp"
@@ -63,17 +67,6 @@ struct BudgetCorrelation {
   double variance;  ///< 2 dg/dfirst cov dg/dsecond (m^2/s^4), may be negative
 };
 
-struct ValueWithUncertainty {
-  double value;
-  double uncertainty;
-};
-
-/// A value whose uncertainty may be unknown (a singular fit).
-struct Estimate {
-  double value;
-  std::optional<double> uncertainty;
-};
-
 /// One observation's measured and modelled period and its corrections.
 struct ObservationResult {
   std::string path;  ///< "" or "observations[3]."
@@ -116,49 +109,6 @@ struct ParameterResult {
   std::optional<double> uncertainty_unscaled;
 };
 
-/// The textbook answer beside the fit: T^2 against L as a straight line,
-/// with no corrections (through the origin unless the length offset is fitted).
-struct TextbookFit {
-  Estimate g;                            ///< 4 pi^2 / slope (m/s^2)
-  std::optional<Estimate> length_offset; ///< intercept / slope (m)
-};
-
-/// What the fit of a physical pendulum adds (docs/physical.md): the fitted
-/// curve T(h)'s minimum, each pivot's conjugate of equal period, and for
-/// Kater's reversible pendulum Bessel's closed form. Uncertainties from the
-/// fitted parameters' covariance; a k or a centre taken from the body's
-/// parts counts as exact.
-struct PivotScan {
-  Estimate minimum_period;          ///< 2 pi sqrt(2k/g) (s), the ideal period at h = k
-  Estimate minimum_pivot_distance;  ///< h = k (m)
-  /// x_c - k and x_c + k (m), in the frame of pivot_position, when the centre is known.
-  std::vector<Estimate> minimum_pivot_positions;
-  struct Conjugate {
-    Estimate equivalent_length;      ///< l = (k^2 + h^2)/h (m)
-    Estimate pivot_distance;         ///< h' = k^2/h (m), of the same period
-    std::optional<Estimate> pivot_position;  ///< h' on the other side of the centre (m): Kater's pair
-  };
-  std::vector<Conjugate> conjugates;  ///< one per observation
-  /// Kater's reversible pendulum (two pivot positions on opposite sides of
-  /// a measured centre): Bessel's formula on the ideal periods (m/s^2).
-  std::optional<double> bessel_g;
-  /// k and the centre (m) as the body's parts give them, where the fit
-  /// replaces them: its check (a warning beyond 3 standard uncertainties).
-  std::optional<double> parts_radius_of_gyration, parts_center_of_mass_position;
-  /// The textbook curve T0 = 2 pi sqrt((k^2 + h^2)/(g h)) without corrections:
-  /// the straight line of T^2 h against h^2 on the measured periods (Kelley
-  /// Eq. 55; physical_start), which for Kater's two pivots is Bessel's
-  /// formula on the measured periods. g's uncertainty from the periods' and
-  /// pivots' with k and the centre held at the line's.
-  struct Textbook {
-    Estimate g;                 ///< (m/s^2)
-    double radius_of_gyration;  ///< k (m), the body's where it gives one
-    /// x_c (m), in the frame of pivot_position; empty for pivot distances.
-    std::optional<double> center_of_mass_position;
-  };
-  std::optional<Textbook> textbook;
-};
-
 /// What the fit of a series adds.
 struct FitReport {
   const char* model = "simple_pendulum";  ///< the period model's name (models/)
@@ -179,10 +129,20 @@ struct FitReport {
   std::string method;  ///< "closed_form" or "ceres_levenberg_marquardt"
   std::string termination;
   int iterations = 0;
-  /// The simple pendulum's; none where the lengths determine no line (all
-  /// equal, with the offset fitted).
-  std::optional<TextbookFit> textbook;
-  std::optional<PivotScan> pivot_scan;  ///< the physical pendulum's
+  /// The model's own results beside the fit's (its Results, which its
+  /// report() sets): none where it gives none, as the ball's where the
+  /// lengths determine no textbook line (all equal, with the offset fitted).
+  ModelResults results;
+
+  /// `Model`'s results; null where it gave none or the fit is another model's.
+  template <class Model>
+  const typename Model::Results* results_of() const {
+    return std::get_if<kind_of<Model>().index + 1>(&results);
+  }
+  template <class Model>
+  void set_results(typename Model::Results r) {
+    results.template emplace<kind_of<Model>().index + 1>(std::move(r));
+  }
 };
 
 struct Analysis {

@@ -31,7 +31,11 @@
 ///   template <class T> T solve_g(const T* p, observation, apparatus, amplitude):
 ///       the closed form for one observation with g the only unknown,
 ///   start(scene, fitted) and report(const FitState&, Analysis&): where its
-///       fit starts, and its results beside the fit's,
+///       fit starts, and its results beside the fit's, of its type Results
+///       (FitReport::set_results, results_of),
+///   put_fit_results, put_observation_results(const Results*, JsonOut&)
+///       and fit_results_lines, observation_results_lines(const Results*,
+///       std::ostream&): those results in the JSON and in the table,
 ///   read_keys(json_reader::Object&, ParsedScene&): the scene's keys it
 ///       reads beyond the shared ones, and check_scene(const ParsedScene&):
 ///       its parts against its observations (the scene reader),
@@ -64,6 +68,9 @@ class Object;  // a JSON object as the scene reader reads it (lib/src/json/reade
 /// What a model's own results read of its fit (lib/src/fit_state.hpp).
 template <int P>
 struct FitState;
+/// Where a model writes its results into the JSON (lib/src/json/writer.hpp),
+/// so that no public header includes the JSON library.
+struct JsonOut;
 
 /// The period model a scene is reduced with: its model's place in the
 /// registry (PeriodModels, models/registry.hpp), which kind_of<Model>()

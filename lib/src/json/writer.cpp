@@ -34,9 +34,7 @@ std::string json_text(const nlohmann::ordered_json& j, int indent) {
   return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
-namespace {
-
-constexpr const char* kResultSchema = "pendulum-g/result/1";
+namespace writer {
 
 using json = nlohmann::ordered_json;
 
@@ -50,6 +48,38 @@ json measured(const Estimate& x, const char* unit) {
   return {{"value", x.value}, {"uncertainty", optional_number(x.uncertainty)}, {"unit", unit}};
 }
 
+std::string format_fixed(double x, int decimals) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, x);
+  return text;
+}
+
+std::string plus_minus(const std::optional<double>& u, const char* format) {
+  if (!u) return "+- ? (singular fit)";
+  char text[64];
+  std::snprintf(text, sizeof text, format, *u);
+  return std::string("+- ") + text;
+}
+
+std::string rounded(double value, const std::optional<double>& u) {
+  if (!u) return plus_minus(u, "%.5f").insert(0, format_fixed(value, 5) + " ");
+  const int d = decimals_for_uncertainty(*u, 12);
+  return format_fixed(value, d) + " +- " + format_fixed(*u, d);
+}
+
+}  // namespace writer
+
+namespace {
+
+constexpr const char* kResultSchema = "pendulum-g/result/1";
+
+using json = nlohmann::ordered_json;
+
+using writer::format_fixed;
+using writer::measured;
+using writer::optional_number;
+using writer::plus_minus;
+using writer::rounded;
 
 json parameter(const FittedParameter& q, const char* unit) {
   return {{"value", q.value},
@@ -193,67 +223,6 @@ json g_json(const Analysis& a) {
   return g;
 }
 
-// Each kind's own results beside the fit's (what its model's report() set:
-// FitReport::textbook, FitReport::pivot_scan), written by overloads for its
-// model type: a registered kind without them does not build.
-
-/// The ball's, after the fit's keys: the textbook line, null where the
-/// lengths determine none.
-void put_fit_results(SimplePendulum, const FitReport& f, json& fit) {
-  json textbook = nullptr;
-  if (f.textbook) {
-    textbook = {{"equation", f.textbook->length_offset ? "T^2 = (4 pi^2 / g) (L + length_offset), no corrections"
-                                                       : "T^2 = (4 pi^2 / g) L, no corrections"},
-                {"g", measured(f.textbook->g, "m/s^2")}};
-    if (f.textbook->length_offset) textbook["length_offset"] = measured(*f.textbook->length_offset, "m");
-  }
-  fit["textbook"] = textbook;
-}
-
-/// The textbook curve of a pivot scan (PivotScan::Textbook); null without one.
-json pivot_textbook_json(const PivotScan& scan) {
-  if (!scan.textbook) return nullptr;
-  const PivotScan::Textbook& t = *scan.textbook;
-  return {{"equation", scan.bessel_g ? "T^2 h = (4 pi^2 / g)(k^2 + h^2) through the two pivots: Bessel's formula "
-                                       "8 pi^2/g = (T1^2 + T2^2)/(h1 + h2) + (T1^2 - T2^2)/(h1 - h2) on the measured "
-                                       "periods, no corrections"
-                                     : "T = 2 pi sqrt((k^2 + h^2)/(g h)): the straight line T^2 h = (4 pi^2 / g)(k^2 + "
-                                       "h^2) on the measured periods, no corrections"},
-          {"g", measured(t.g, "m/s^2")},
-          {"radius_of_gyration_m", t.radius_of_gyration},
-          {"center_of_mass_position_m", optional_number(t.center_of_mass_position)}};
-}
-
-/// The rigid body's: each pivot's conjugate, last in its observation, and
-/// the pivot scan after the fit's keys.
-void put_fit_results(PhysicalPendulum, const FitReport& f, json& fit) {
-  const PivotScan& scan = f.pivot_scan.value();  // report() sets it on every fit
-  for (std::size_t k = 0; k < scan.conjugates.size(); ++k) {
-    const PivotScan::Conjugate& c = scan.conjugates[k];
-    json conjugate = {{"equivalent_length", measured(c.equivalent_length, "m")},
-                      {"pivot_distance", measured(c.pivot_distance, "m")}};
-    if (c.pivot_position) conjugate["pivot_position"] = measured(*c.pivot_position, "m");
-    fit["observations"][k]["conjugate_pivot"] = conjugate;
-  }
-  json positions = json::array();
-  for (const auto& x : scan.minimum_pivot_positions) positions.push_back(measured(x, "m"));
-  fit["pivot_scan"] = {{"equation", "T0 = 2 pi sqrt((k^2 + h^2)/(g h)), Kelley (1993) Eqs. (55)-(56)"},
-                       {"minimum", {{"period", measured(scan.minimum_period, "s")},
-                                    {"pivot_distance", measured(scan.minimum_pivot_distance, "m")},
-                                    {"pivot_positions", positions}}},
-                       {"bessel_g_m_s2", optional_number(scan.bessel_g)},
-                       {"textbook", pivot_textbook_json(scan)},
-                       {"from_parts", {{"radius_of_gyration_m", optional_number(scan.parts_radius_of_gyration)},
-                                       {"center_of_mass_position_m",
-                                        optional_number(scan.parts_center_of_mass_position)}}}};
-}
-
-/// One observation's, after g: the ball's g from T alone (Eq. 5); the rigid body's none.
-void put_observation_results(SimplePendulum, const FitReport& f, json& out) {
-  if (f.textbook) out["g_uncorrected"] = measured(f.textbook->g, "m/s^2");
-}
-void put_observation_results(PhysicalPendulum, const FitReport&, json&) {}
-
 json fit_json(const ParsedScene& scene, const Analysis& a) {
   const FitReport& f = a.fit;
   json parameters = json::array();
@@ -308,7 +277,11 @@ json fit_json(const ParsedScene& scene, const Analysis& a) {
               {"termination", f.termination},
               {"iterations", f.iterations},
               {"observations", observations}};
-  visit_period_model(scene.model, [&](auto model) { put_fit_results(model, f, out); });
+  visit_period_model(scene.model, [&](auto model) {
+    using Model = decltype(model);
+    JsonOut fit{out};
+    Model::put_fit_results(f.results_of<Model>(), fit);
+  });
   return out;
 }
 
@@ -381,7 +354,11 @@ std::string result_json(const ParsedScene& scene, const Analysis& a, const Analy
   } else {
     const ObservationResult& o = a.observations.front();
     out["g"] = g_json(a);
-    visit_period_model(scene.model, [&](auto model) { put_observation_results(model, a.fit, out); });
+    visit_period_model(scene.model, [&](auto model) {
+      using Model = decltype(model);
+      JsonOut observation{out};
+      Model::put_observation_results(a.fit.results_of<Model>(), observation);
+    });
     out["period"] = {{"measured", measured(o.period_measured, "s")},
                      {"ideal", measured(o.period_ideal, "s")},
                      {"trials", o.trials},
@@ -435,29 +412,8 @@ std::string decay_fit_json(const std::string& input, const ParsedScene& scene, c
 
 namespace {
 
-std::string format_fixed(double x, int decimals) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", decimals, x);
-  return text;
-}
-
-/// "+- 0.00148" or "(no uncertainty: singular fit)"
-std::string plus_minus(const std::optional<double>& u, const char* format) {
-  if (!u) return "+- ? (singular fit)";
-  char text[64];
-  std::snprintf(text, sizeof text, format, *u);
-  return std::string("+- ") + text;
-}
-
 /// Decimals that show `u` to two significant digits (5 for none, at most 12).
 int decimals_of(double u) { return decimals_for_uncertainty(u, 12); }
-
-/// "9.8034 +- 0.0015": the value rounded to its uncertainty.
-std::string rounded(double value, const std::optional<double>& u) {
-  if (!u) return plus_minus(u, "%.5f").insert(0, format_fixed(value, 5) + " ");
-  const int d = decimals_of(*u);
-  return format_fixed(value, d) + " +- " + format_fixed(*u, d);
-}
 
 /// A batch's table row after the file column: status, g rounded to its
 /// uncertainty, z, and the first reason (or the error) in brief.
@@ -491,53 +447,6 @@ std::string batch_text(const json& line, BatchFormat format, const std::function
   }
   return {};
 }
-
-// Each kind's own results in the table, as put_fit_results in the JSON.
-
-/// The ball's: the textbook line, or that the lengths determine none.
-void fit_results_lines(SimplePendulum, const FitReport& f, std::ostream& os) {
-  if (!f.textbook) {
-    os << "Textbook line T^2 = (4 pi^2/g)(L + offset): none, the lengths are all equal\n";
-    return;
-  }
-  char line[160];
-  const TextbookFit& t = *f.textbook;
-  std::snprintf(line, sizeof line, "Textbook line T^2 = (4 pi^2/g)%s, no corrections: g = %.5f %s m/s^2",
-                t.length_offset ? "(L + offset)" : " L", t.g.value, plus_minus(t.g.uncertainty, "%.5f").c_str());
-  os << line;
-  if (t.length_offset) {
-    std::snprintf(line, sizeof line, ", offset = %.5f %s m", t.length_offset->value,
-                  plus_minus(t.length_offset->uncertainty, "%.5f").c_str());
-    os << line;
-  }
-  os << "\n";
-}
-
-/// The rigid body's: the minimum period, Kater's Bessel g, the textbook curve.
-void fit_results_lines(PhysicalPendulum, const FitReport& f, std::ostream& os) {
-  char line[160];
-  const PivotScan& scan = f.pivot_scan.value();  // report() sets it on every fit
-  std::snprintf(line, sizeof line, "Minimum period T0   = %.6f %s s at h = k = %.5f m\n", scan.minimum_period.value,
-                plus_minus(scan.minimum_period.uncertainty, "%.6f").c_str(), scan.minimum_pivot_distance.value);
-  os << line;
-  if (scan.bessel_g) {
-    std::snprintf(line, sizeof line, "Bessel's formula    : g = %.8f m/s^2\n", *scan.bessel_g);
-    os << line;
-  }
-  if (const auto& t = scan.textbook) {
-    os << (scan.bessel_g ? "Textbook: Bessel's formula on the measured periods, no corrections: g = "
-                         : "Textbook curve T = 2 pi sqrt((k^2 + h^2)/(g h)), no corrections: g = ")
-       << rounded(t->g.value, t->g.uncertainty) << " m/s^2, k = " << format_fixed(t->radius_of_gyration, 5) << " m";
-    if (t->center_of_mass_position) os << ", centre at " << format_fixed(*t->center_of_mass_position, 5) << " m";
-    os << "\n";
-  }
-}
-
-/// One observation's: the ball's g from T alone (Eq. 5); the rigid body's none.
-void observation_results_lines(SimplePendulum, const FitReport& f, std::ostream& os) {
-  if (f.textbook) os << "g (uncorrected)     = " << rounded(f.textbook->g.value, f.textbook->g.uncertainty) << " m/s^2\n";
-}
-void observation_results_lines(PhysicalPendulum, const FitReport&, std::ostream&) {}
 
 }  // namespace
 
@@ -728,7 +637,10 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     std::snprintf(line, sizeof line, "Ideal period T0     = %.6f %s s\n", o.period_ideal.value,
                   plus_minus(o.period_ideal.uncertainty, "%.6f").c_str());
     os << line;
-    visit_period_model(scene.model, [&](auto model) { observation_results_lines(model, a.fit, os); });
+    visit_period_model(scene.model, [&](auto model) {
+      using Model = decltype(model);
+      Model::observation_results_lines(a.fit.results_of<Model>(), os);
+    });
   } else {
     // The setting's column: a length, a pivot's position along the body, or its distance from the centre.
     const std::string heading = std::string(setting_info(scene.observations.front().setting).symbol) + " (m)";
@@ -761,7 +673,10 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
                     *a.fit.birge_ratio);
       os << line;
     }
-    visit_period_model(scene.model, [&](auto model) { fit_results_lines(model, a.fit, os); });
+    visit_period_model(scene.model, [&](auto model) {
+      using Model = decltype(model);
+      Model::fit_results_lines(a.fit.results_of<Model>(), os);
+    });
   }
   os << "g                   = " << rounded(a.g.value, a.g.uncertainty) << " m/s^2";
   const int g_decimals = a.g.uncertainty ? decimals_of(*a.g.uncertainty) : 5;

@@ -5,11 +5,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <ostream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "../fit_state.hpp"
+#include "../json/writer.hpp"
 #include "../text.hpp"
 #include "pendulum/straight_line.hpp"
 
@@ -257,7 +261,7 @@ void PhysicalPendulum::report(const FitState<kParameters>& fit, Analysis& out) {
   review_kater(fit, out, scan);
   check_against_parts(fit, out, scan);
   warn_about_buoyancy(fit, out);
-  out.fit.pivot_scan = scan;
+  out.fit.set_results<PhysicalPendulum>(std::move(scan));
 }
 
 std::optional<Expectation> PhysicalPendulum::expectation(const ParsedScene& scene, const Observation<double>& o) {
@@ -275,6 +279,75 @@ std::optional<Expectation> PhysicalPendulum::expectation(const ParsedScene& scen
   const double period =
       predicted_period<PhysicalPendulum>(p, swing(o), app, cheapest_amplitude_method(o.amplitude, 0.0));
   return Expectation{period, period};
+}
+
+namespace {
+
+/// report() sets the scan on every fit: a null one is a fault of the code.
+const PivotScan& require_scan(const PivotScan* scan) {
+  if (!scan) throw std::logic_error("a physical pendulum's fit without its pivot scan");
+  return *scan;
+}
+
+/// The textbook curve of a pivot scan (PivotScan::Textbook); null without one.
+nlohmann::ordered_json pivot_textbook_json(const PivotScan& scan) {
+  if (!scan.textbook) return nullptr;
+  const PivotScan::Textbook& t = *scan.textbook;
+  return {{"equation", scan.bessel_g ? "T^2 h = (4 pi^2 / g)(k^2 + h^2) through the two pivots: Bessel's formula "
+                                       "8 pi^2/g = (T1^2 + T2^2)/(h1 + h2) + (T1^2 - T2^2)/(h1 - h2) on the measured "
+                                       "periods, no corrections"
+                                     : "T = 2 pi sqrt((k^2 + h^2)/(g h)): the straight line T^2 h = (4 pi^2 / g)(k^2 + "
+                                       "h^2) on the measured periods, no corrections"},
+          {"g", writer::measured(t.g, "m/s^2")},
+          {"radius_of_gyration_m", t.radius_of_gyration},
+          {"center_of_mass_position_m", writer::optional_number(t.center_of_mass_position)}};
+}
+
+}  // namespace
+
+void PhysicalPendulum::put_fit_results(const Results* results, JsonOut& fit) {
+  using writer::measured;
+  using writer::optional_number;
+  const PivotScan& scan = require_scan(results);
+  for (std::size_t k = 0; k < scan.conjugates.size(); ++k) {
+    const PivotScan::Conjugate& c = scan.conjugates[k];
+    nlohmann::ordered_json conjugate = {{"equivalent_length", measured(c.equivalent_length, "m")},
+                                        {"pivot_distance", measured(c.pivot_distance, "m")}};
+    if (c.pivot_position) conjugate["pivot_position"] = measured(*c.pivot_position, "m");
+    fit.json["observations"][k]["conjugate_pivot"] = conjugate;
+  }
+  auto positions = nlohmann::ordered_json::array();
+  for (const auto& x : scan.minimum_pivot_positions) positions.push_back(measured(x, "m"));
+  fit.json["pivot_scan"] = {
+      {"equation", "T0 = 2 pi sqrt((k^2 + h^2)/(g h)), Kelley (1993) Eqs. (55)-(56)"},
+      {"minimum", {{"period", measured(scan.minimum_period, "s")},
+                   {"pivot_distance", measured(scan.minimum_pivot_distance, "m")},
+                   {"pivot_positions", positions}}},
+      {"bessel_g_m_s2", optional_number(scan.bessel_g)},
+      {"textbook", pivot_textbook_json(scan)},
+      {"from_parts", {{"radius_of_gyration_m", optional_number(scan.parts_radius_of_gyration)},
+                      {"center_of_mass_position_m", optional_number(scan.parts_center_of_mass_position)}}}};
+}
+
+void PhysicalPendulum::fit_results_lines(const Results* results, std::ostream& os) {
+  const PivotScan& scan = require_scan(results);
+  char line[160];
+  std::snprintf(line, sizeof line, "Minimum period T0   = %.6f %s s at h = k = %.5f m\n", scan.minimum_period.value,
+                writer::plus_minus(scan.minimum_period.uncertainty, "%.6f").c_str(),
+                scan.minimum_pivot_distance.value);
+  os << line;
+  if (scan.bessel_g) {
+    std::snprintf(line, sizeof line, "Bessel's formula    : g = %.8f m/s^2\n", *scan.bessel_g);
+    os << line;
+  }
+  if (const auto& t = scan.textbook) {
+    os << (scan.bessel_g ? "Textbook: Bessel's formula on the measured periods, no corrections: g = "
+                         : "Textbook curve T = 2 pi sqrt((k^2 + h^2)/(g h)), no corrections: g = ")
+       << writer::rounded(t->g.value, t->g.uncertainty)
+       << " m/s^2, k = " << writer::format_fixed(t->radius_of_gyration, 5) << " m";
+    if (t->center_of_mass_position) os << ", centre at " << writer::format_fixed(*t->center_of_mass_position, 5) << " m";
+    os << "\n";
+  }
 }
 
 }  // namespace pendulum

@@ -5,12 +5,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <ostream>
 #include <string>
 #include <vector>
 
 #include <boost/math/special_functions/gamma.hpp>
 
 #include "../fit_state.hpp"
+#include "../json/writer.hpp"
 #include "../plausibility.hpp"
 #include "../text.hpp"
 #include "pendulum/straight_line.hpp"
@@ -36,6 +39,36 @@ StraightLine textbook_line(const ParsedScene& scene, const std::array<bool, Simp
   return fit_straight_line(x, y, sx, sy, fitted[SimplePendulum::length_offset]);
 }
 
+/// The textbook line on the fit's scene with its length offset, none where
+/// the lengths determine none (all equal, with the offset fitted); warns
+/// where they are too close together to separate g from the offset.
+std::optional<TextbookFit> textbook_fit(const FitState<SimplePendulum::kParameters>& fit,
+                                        std::vector<std::string>& warnings) {
+  const StraightLine line = textbook_line(fit.scene, fit.fitted);
+  const double g = 4.0 * kPi * kPi / line.slope, sigma = g * std::sqrt(line.var_slope) / line.slope;
+  if (!(g > 0.0 && std::isfinite(g) && std::isfinite(sigma))) return std::nullopt;
+  TextbookFit t{{g, sigma}, {}};
+  if (!fit.fitted[SimplePendulum::length_offset]) return t;
+  const double a = line.slope, b = line.intercept;
+  const double var = line.var_intercept / (a * a) + b * b * line.var_slope / (a * a * a * a) -
+                     2.0 * b * line.cov / (a * a * a);
+  t.length_offset = Estimate{b / a, std::sqrt(std::max(var, 0.0))};
+  if (fit.singular) return t;
+  // With the offset unknown, g's uncertainty grows by 1/sqrt(1 - rho^2).
+  const double rho = fit.inverse(0, 1) / std::sqrt(fit.inverse(0, 0) * fit.inverse(1, 1));
+  const double inflation = 1.0 / std::sqrt(std::max(1.0 - rho * rho, 0.0));
+  if (inflation > 10.0) {
+    const auto [lo, hi] = std::minmax_element(fit.scene.observations.begin(), fit.scene.observations.end(),
+                                              [](const auto& x, const auto& y) { return x.length < y.length; });
+    warnings.push_back("observations: the lengths span only " + format_number(lo->length, 5) + " m to " +
+                       format_number(hi->length, 5) + " m, too close together to separate g from "
+                       "length_offset (correlation " + format_number(rho, 6) + "), which makes g's uncertainty " +
+                       format_number(inflation, 3) + " times what a known offset would give; swing at "
+                       "lengths further apart");
+  }
+  return t;
+}
+
 }  // namespace
 
 std::array<double, SimplePendulum::kParameters> SimplePendulum::start(const ParsedScene& scene,
@@ -56,31 +89,7 @@ std::array<double, SimplePendulum::kParameters> SimplePendulum::start(const Pars
 
 void SimplePendulum::report(const FitState<kParameters>& fit, Analysis& out) {
   const std::size_t k = fit.scene.observations.size();
-  const StraightLine line = textbook_line(fit.scene, fit.fitted);
-  const double g = 4.0 * kPi * kPi / line.slope, sigma = g * std::sqrt(line.var_slope) / line.slope;
-  if (g > 0.0 && std::isfinite(g) && std::isfinite(sigma)) out.fit.textbook = TextbookFit{{g, sigma}, {}};
-  if (out.fit.textbook && fit.fitted[length_offset]) {  // else no line: the lengths are all equal
-    TextbookFit& t = *out.fit.textbook;
-    const double a = line.slope, b = line.intercept;
-    const double var = line.var_intercept / (a * a) + b * b * line.var_slope / (a * a * a * a) -
-                       2.0 * b * line.cov / (a * a * a);
-    t.length_offset = Estimate{b / a, std::sqrt(std::max(var, 0.0))};
-    if (!fit.singular) {
-      // With the offset unknown, g's uncertainty grows by 1/sqrt(1 - rho^2).
-      const double rho = fit.inverse(0, 1) / std::sqrt(fit.inverse(0, 0) * fit.inverse(1, 1));
-      const double inflation = 1.0 / std::sqrt(std::max(1.0 - rho * rho, 0.0));
-      if (inflation > 10.0) {
-        const auto [lo, hi] = std::minmax_element(
-            fit.scene.observations.begin(), fit.scene.observations.end(),
-            [](const auto& x, const auto& y) { return x.length < y.length; });
-        out.warnings.push_back("observations: the lengths span only " + format_number(lo->length, 5) + " m to " +
-                                format_number(hi->length, 5) + " m, too close together to separate g from "
-                                "length_offset (correlation " + format_number(rho, 6) + "), which makes g's uncertainty " +
-                                format_number(inflation, 3) + " times what a known offset would give; swing at "
-                                "lengths further apart");
-      }
-    }
-  }
+  if (const auto textbook = textbook_fit(fit, out.warnings)) out.fit.set_results<SimplePendulum>(*textbook);
   // Too large a chi2 makes the result suspect (status.cpp); too small a one is only said.
   if (k > 1 && out.fit.probability) {
     const double lower = boost::math::gamma_p(out.fit.dof / 2.0, out.fit.chi2 / 2.0);
@@ -108,6 +117,44 @@ std::vector<std::string> SimplePendulum::skipped_part_warnings(const ParsedScene
   if (auto w = warn_about_unmodelled_added_mass(scene, negligible_fraction)) warnings.push_back(std::move(*w));
   if (auto w = warn_about_mode_resonance(scene, negligible_fraction)) warnings.push_back(std::move(*w));
   return warnings;
+}
+
+void SimplePendulum::put_fit_results(const Results* textbook, JsonOut& fit) {
+  nlohmann::ordered_json line = nullptr;
+  if (textbook) {
+    line = {{"equation", textbook->length_offset ? "T^2 = (4 pi^2 / g) (L + length_offset), no corrections"
+                                                 : "T^2 = (4 pi^2 / g) L, no corrections"},
+            {"g", writer::measured(textbook->g, "m/s^2")}};
+    if (textbook->length_offset) line["length_offset"] = writer::measured(*textbook->length_offset, "m");
+  }
+  fit.json["textbook"] = line;
+}
+
+void SimplePendulum::put_observation_results(const Results* textbook, JsonOut& observation) {
+  if (textbook) observation.json["g_uncorrected"] = writer::measured(textbook->g, "m/s^2");
+}
+
+void SimplePendulum::fit_results_lines(const Results* textbook, std::ostream& os) {
+  if (!textbook) {
+    os << "Textbook line T^2 = (4 pi^2/g)(L + offset): none, the lengths are all equal\n";
+    return;
+  }
+  char line[160];
+  const TextbookFit& t = *textbook;
+  std::snprintf(line, sizeof line, "Textbook line T^2 = (4 pi^2/g)%s, no corrections: g = %.5f %s m/s^2",
+                t.length_offset ? "(L + offset)" : " L", t.g.value,
+                writer::plus_minus(t.g.uncertainty, "%.5f").c_str());
+  os << line;
+  if (t.length_offset) {
+    std::snprintf(line, sizeof line, ", offset = %.5f %s m", t.length_offset->value,
+                  writer::plus_minus(t.length_offset->uncertainty, "%.5f").c_str());
+    os << line;
+  }
+  os << "\n";
+}
+
+void SimplePendulum::observation_results_lines(const Results* textbook, std::ostream& os) {
+  if (textbook) os << "g (uncorrected)     = " << writer::rounded(textbook->g.value, textbook->g.uncertainty) << " m/s^2\n";
 }
 
 }  // namespace pendulum

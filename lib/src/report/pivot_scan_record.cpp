@@ -68,9 +68,8 @@ AmplitudeChoice amplitude_choice(const ObservationResult& o) {
 
 std::optional<PivotScanRecord> pivot_scan_record(const ParsedScene& given, const Analysis& a) {
   // Only the rigid body's model reports a pivot scan (PhysicalPendulum::report).
-  if (!a.fit.pivot_scan || !a.fit.pivot_scan->textbook || a.observations.empty()) {
-    return std::nullopt;
-  }
+  const PivotScan* pivot_scan = a.fit.results_of<PhysicalPendulum>();
+  if (!pivot_scan || !pivot_scan->textbook || a.observations.empty()) return std::nullopt;
   // The apparatus the analysis fitted with: alpha and beta from the decay record's fit.
   ParsedScene fitted_decay;
   if (given.decay_data && a.decay_fit) {
@@ -79,7 +78,7 @@ std::optional<PivotScanRecord> pivot_scan_record(const ParsedScene& given, const
   }
   const ParsedScene& scene = given.decay_data && a.decay_fit ? fitted_decay : given;
   const Apparatus<double>& app = scene.apparatus;
-  const PivotScan& scan = *a.fit.pivot_scan;
+  const PivotScan& scan = *pivot_scan;
   std::array<double, M::kParameters> p{};
   for (int i = 0; i < M::kParameters; ++i) p[i] = a.fit.parameters[i].value;
 

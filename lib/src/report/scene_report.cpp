@@ -82,7 +82,8 @@ SceneReport make_scene_report(const std::string& input, const ParsedScene& scene
   r.status = result_status_name(a.status);
   r.status_reasons = a.status_reasons;
   r.g = a.g;
-  if (a.fit.textbook) r.g_uncorrected = a.fit.textbook->g;
+  const TextbookFit* textbook = a.fit.results_of<SimplePendulum>();
+  if (textbook) r.g_uncorrected = textbook->g;
   if (a.fit.scaled) r.birge_ratio = a.fit.birge_ratio, r.g_uncertainty_unscaled = a.g_uncertainty_unscaled;
   r.period_measured = {first.period_measured.value, first.period_measured.uncertainty};
   r.period_ideal = first.period_ideal;
@@ -121,9 +122,7 @@ SceneReport make_scene_report(const std::string& input, const ParsedScene& scene
     s.dof = a.fit.dof;
     s.probability = a.fit.probability;
     if (r.g_uncorrected) s.textbook_g = r.g_uncorrected->value;
-    if (a.fit.textbook && a.fit.textbook->length_offset) {
-      s.textbook_length_offset = a.fit.textbook->length_offset->value;
-    }
+    if (textbook && textbook->length_offset) s.textbook_length_offset = textbook->length_offset->value;
     r.series = s;
   }
   r.pivot_scan = pivot_scan_record(scene, a);

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cmath>
+#include <iosfwd>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "pendulum/air.hpp"
 #include "pendulum/bodies.hpp"
 #include "pendulum/corrections.hpp"
+#include "pendulum/estimate.hpp"
 #include "pendulum/period_model.hpp"
 
 namespace pendulum {
@@ -49,6 +51,42 @@ template <class T>
 T bessel_g(const T& t1, const T& t2, const T& h1, const T& h2) {
   return 8.0 * kPi * kPi / ((t1 * t1 + t2 * t2) / (h1 + h2) + (t1 * t1 - t2 * t2) / (h1 - h2));
 }
+
+/// What the fit of a physical pendulum adds (docs/physical.md): the fitted
+/// curve T(h)'s minimum, each pivot's conjugate of equal period, and for
+/// Kater's reversible pendulum Bessel's closed form. Uncertainties from the
+/// fitted parameters' covariance; a k or a centre taken from the body's
+/// parts counts as exact.
+struct PivotScan {
+  Estimate minimum_period;          ///< 2 pi sqrt(2k/g) (s), the ideal period at h = k
+  Estimate minimum_pivot_distance;  ///< h = k (m)
+  /// x_c - k and x_c + k (m), in the frame of pivot_position, when the centre is known.
+  std::vector<Estimate> minimum_pivot_positions;
+  struct Conjugate {
+    Estimate equivalent_length;      ///< l = (k^2 + h^2)/h (m)
+    Estimate pivot_distance;         ///< h' = k^2/h (m), of the same period
+    std::optional<Estimate> pivot_position;  ///< h' on the other side of the centre (m): Kater's pair
+  };
+  std::vector<Conjugate> conjugates;  ///< one per observation
+  /// Kater's reversible pendulum (two pivot positions on opposite sides of
+  /// a measured centre): Bessel's formula on the ideal periods (m/s^2).
+  std::optional<double> bessel_g;
+  /// k and the centre (m) as the body's parts give them, where the fit
+  /// replaces them: its check (a warning beyond 3 standard uncertainties).
+  std::optional<double> parts_radius_of_gyration, parts_center_of_mass_position;
+  /// The textbook curve T0 = 2 pi sqrt((k^2 + h^2)/(g h)) without corrections:
+  /// the straight line of T^2 h against h^2 on the measured periods (Kelley
+  /// Eq. 55; physical_start), which for Kater's two pivots is Bessel's
+  /// formula on the measured periods. g's uncertainty from the periods' and
+  /// pivots' with k and the centre held at the line's.
+  struct Textbook {
+    Estimate g;                 ///< (m/s^2)
+    double radius_of_gyration;  ///< k (m), the body's where it gives one
+    /// x_c (m), in the frame of pivot_position; empty for pivot distances.
+    std::optional<double> center_of_mass_position;
+  };
+  std::optional<Textbook> textbook;
+};
 
 struct PhysicalPendulum {
   static constexpr const char* kName = "physical_pendulum";
@@ -90,10 +128,20 @@ struct PhysicalPendulum {
   /// Where the fit starts: the straight line T^2 h = (4 pi^2/g)(h^2 + k^2)
   /// on the measured periods, the centre searched (physical_start, analysis.hpp).
   static std::array<double, kParameters> start(const ParsedScene& scene, const std::array<bool, kParameters>& fitted);
-  /// Its results beside the fit's: the pivot scan (FitReport::pivot_scan),
-  /// Kater's Bessel g, the parts' k and centre against the fit's, the
-  /// buoyancy a body of unknown volume lacks (models/physical_pendulum.cpp).
+  /// Its results beside the fit's: the pivot scan, with Kater's Bessel g.
+  using Results = PivotScan;
+  /// Sets them on every fit (FitReport::set_results) and warns of the
+  /// parts' k and centre against the fit's, the buoyancy a body of unknown
+  /// volume lacks (models/physical_pendulum.cpp).
   static void report(const FitState<kParameters>& fit, Analysis& out);
+  /// Its results in the output (models/physical_pendulum.cpp): each
+  /// observation's "conjugate_pivot" and "fit.pivot_scan", and the table's
+  /// lines of them; an observation has none of its own. Throws
+  /// std::logic_error on a null `scan`, which report() never leaves.
+  static void put_fit_results(const Results* scan, JsonOut& fit);
+  static void put_observation_results(const Results*, JsonOut&) {}
+  static void fit_results_lines(const Results* scan, std::ostream& os);
+  static void observation_results_lines(const Results*, std::ostream&) {}
 
   /// center_of_mass_position, body, temperature, with the checks across
   /// its observations (json/physical_reader.cpp). After "fit".

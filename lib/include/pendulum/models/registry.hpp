@@ -6,10 +6,12 @@
 /// instead of switching on a kind (docs/core.md).
 
 #include <algorithm>
+#include <iosfwd>
 #include <optional>
 #include <tuple>
 #include <type_traits>
 #include <utility>
+#include <variant>
 
 #include "pendulum/models/physical_pendulum.hpp"
 #include "pendulum/models/simple_pendulum.hpp"
@@ -38,6 +40,14 @@ struct HasModelPieces<
                    decltype(M::start(std::declval<const ParsedScene&>(),
                                      std::declval<const std::array<bool, M::kParameters>&>())),
                    decltype(M::report(std::declval<const FitState<M::kParameters>&>(), std::declval<Analysis&>())),
+                   typename M::Results,
+                   decltype(M::put_fit_results(std::declval<const typename M::Results*>(), std::declval<JsonOut&>())),
+                   decltype(M::put_observation_results(std::declval<const typename M::Results*>(),
+                                                       std::declval<JsonOut&>())),
+                   decltype(M::fit_results_lines(std::declval<const typename M::Results*>(),
+                                                 std::declval<std::ostream&>())),
+                   decltype(M::observation_results_lines(std::declval<const typename M::Results*>(),
+                                                         std::declval<std::ostream&>())),
                    decltype(M::predict(std::declval<const double*>(), std::declval<const Observation<double>&>(),
                                        std::declval<const Apparatus<double>&>(),
                                        std::declval<const AmplitudeChoice&>())),
@@ -101,6 +111,14 @@ constexpr std::size_t index_in(std::tuple<Ms...>*) {
 }  // namespace detail
 static_assert(detail::registry_is_complete(static_cast<PeriodModels*>(nullptr)),
               "every registered period model has every piece of the interface (period_model.hpp)");
+
+namespace detail {
+template <class... M>
+std::variant<std::monostate, typename M::Results...> results_variant(std::tuple<M...>*);
+}
+/// One registered model's own results (its Results, at its kind's index + 1)
+/// or none: FitReport::results.
+using ModelResults = decltype(detail::results_variant(static_cast<PeriodModels*>(nullptr)));
 
 /// The kind of a registered model M: its place in PeriodModels.
 template <class M>

@@ -5,15 +5,24 @@
 /// needs, with g and a common length offset as its parameters.
 
 #include <array>
+#include <iosfwd>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "pendulum/corrections.hpp"
+#include "pendulum/estimate.hpp"
 #include "pendulum/period_model.hpp"
 #include "pendulum/reduction.hpp"
 
 namespace pendulum {
+
+/// The textbook answer beside the fit: T^2 against L as a straight line,
+/// with no corrections (through the origin unless the length offset is fitted).
+struct TextbookFit {
+  Estimate g;                            ///< 4 pi^2 / slope (m/s^2)
+  std::optional<Estimate> length_offset; ///< intercept / slope (m)
+};
 
 struct SimplePendulum {
   static constexpr const char* kName = "simple_pendulum";
@@ -41,9 +50,19 @@ struct SimplePendulum {
   /// Where the fit of several observations starts: g from the textbook line
   /// T^2 = (4 pi^2/g) L through the origin, the offset at 0 (models/simple_pendulum.cpp).
   static std::array<double, kParameters> start(const ParsedScene& scene, const std::array<bool, kParameters>& fitted);
-  /// Its results beside the fit's: the textbook line (FitReport::textbook),
-  /// lengths too close to separate the offset, a chi2 too small.
+  /// Its results beside the fit's: the textbook line, none where the
+  /// lengths determine none (all equal, with the offset fitted).
+  using Results = TextbookFit;
+  /// Sets them (FitReport::set_results) and warns of lengths too close to
+  /// separate the offset, a chi2 too small.
   static void report(const FitState<kParameters>& fit, Analysis& out);
+  /// Its results in the output (models/simple_pendulum.cpp): "fit.textbook"
+  /// (null without a line), an observation's "g_uncorrected" (Eq. 5), and
+  /// the table's lines of both. `textbook` is null where report() gave none.
+  static void put_fit_results(const Results* textbook, JsonOut& fit);
+  static void put_observation_results(const Results* textbook, JsonOut& observation);
+  static void fit_results_lines(const Results* textbook, std::ostream& os);
+  static void observation_results_lines(const Results* textbook, std::ostream& os);
 
   /// Its keys are the shared ones (length, bob, ring, cap, wire, air, ...).
   static void read_keys(json_reader::Object&, ParsedScene&) {}

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pendulum/analysis.hpp"
 #include "pendulum/scene_json.hpp"
 #include "reference.hpp"
 #include "scene_files.hpp"
@@ -237,9 +238,39 @@ TEST_CASE("A length measured to the top or bottom of the bob is referred to its 
   const ParsedScene bottom = parse_scene(patched(R"J({"length": {"value": 3.0349, "measured_to": "bottom_of_bob"}})J"));
   CHECK_THAT(top.observations[0].length, WithinAbs(3.0044, 1e-15));
   CHECK_THAT(bottom.observations[0].length, WithinAbs(3.0044, 1e-15));
-  // sqrt(0.0003^2 + 0.00005^2) m.
-  CHECK_THAT(top.observation_uncertainties[0].length, WithinRel(std::hypot(0.0003, 0.00005), 1e-12));
-  CHECK(centre.observation_uncertainties[0].length == 0.0003);
+  // The radius's 0.005 cm is the bob's, not the length's: the length keeps
+  // its own 0.03 cm and the analysis moves it with bob.diameter.
+  CHECK(top.observation_uncertainties[0].length == 0.0003);
+  CHECK(bottom.observation_uncertainties[0].length == 0.0003);
+  CHECK(top.sources[0].knot_to_center_sign == 1.0);
+  CHECK(bottom.sources[0].knot_to_center_sign == -1.0);
+  CHECK(centre.sources[0].knot_to_center_sign == 0.0);
+
+  // dg/d(bob.diameter) as the budget gives it, against central differences
+  // of the whole reduction in the diameter the file gives (step 1e-4 cm).
+  // Through the length it is +-(1/2) dg/dl, close to (1/2) g/l; the rest,
+  // the bob's own corrections, is the same for the top, the bottom and the
+  // centre (half the sum; half the difference is the length's share).
+  const auto diameter_sensitivity = [](const ParsedScene& s) {
+    for (const auto& b : analyse(s).budget)
+      if (b.input == "bob.diameter") return b.sensitivity;
+    FAIL("no bob.diameter in the budget");
+    return 0.0;
+  };
+  const auto reduced_g = [](const std::string& to, double length, double diameter_cm) {
+    const std::string patch = R"J({"length": {"value": )J" + std::to_string(length) + R"J(, "measured_to": ")J" + to +
+                              R"J("}, "bob": {"diameter": {"value": )J" + std::to_string(diameter_cm) + "}}}";
+    return analyse(parse_scene(patched(patch.c_str()))).g.value;
+  };
+  const double h = 1e-4;  // cm
+  const double at_top = diameter_sensitivity(top), at_bottom = diameter_sensitivity(bottom);
+  const double fd_top = (reduced_g("top_of_bob", 2.9739, 6.10 + h) - reduced_g("top_of_bob", 2.9739, 6.10 - h)) / (2 * h * 0.01);
+  const double fd_bottom =
+      (reduced_g("bottom_of_bob", 3.0349, 6.10 + h) - reduced_g("bottom_of_bob", 3.0349, 6.10 - h)) / (2 * h * 0.01);
+  CHECK_THAT(at_top, WithinRel(fd_top, 1e-5));
+  CHECK_THAT(at_bottom, WithinRel(fd_bottom, 1e-5));
+  CHECK_THAT((at_top + at_bottom) / 2.0, WithinRel(diameter_sensitivity(centre), 1e-3));
+  CHECK_THAT((at_top - at_bottom) / 2.0, WithinRel(analyse(centre).g.value / 3.0044 / 2.0, 1e-3));
 }
 
 TEST_CASE("A scene naming a recording: read only where the caller says the scene's folder is", "[scene][recordings]") {

@@ -278,6 +278,16 @@ class Fit {
     }
   }
 
+  /// What a length measured to the bob's top (or bottom) gains from a
+  /// change of the bob (`seeded`, the apparatus with one input seeded): the
+  /// change of its knot-to-centre distance, which the reader added (value 0,
+  /// its derivative that input's).
+  Dual knot_to_center_change(std::size_t k, const Apparatus<Dual>& seeded) const {
+    const double sign = scene_.sources[k].knot_to_center_sign;
+    if (sign == 0.0 || !seeded.bob) return Dual(0.0);
+    return sign * (seeded.bob->knot_to_center() - scene_.apparatus.bob->knot_to_center());
+  }
+
   /// d(parameters)/d(input) through the optimum: -(J^T J)^-1 J^T dr/dx.
   Vector parameter_derivative(const Vector& jt_dr) const { return -inverse_ * jt_dr; }
 
@@ -340,8 +350,8 @@ class Fit {
           of_apparatus ? convert_apparatus<Dual>(scene_.apparatus, Seeder{in.ordinal}) : app;
       Vector jt_dr = Vector::Zero();
       for (const std::size_t k : touched) {
-        const Observation<Dual> o =
-            convert_observation<Dual>(scene_.observations[k], Seeder{of_apparatus ? -1 : in.ordinal});
+        Observation<Dual> o = convert_observation<Dual>(scene_.observations[k], Seeder{of_apparatus ? -1 : in.ordinal});
+        if (of_apparatus) o.length += knot_to_center_change(k, seeded_app);
         const PeriodPrediction<Dual> pr = Model::predict(p.data(), o, seeded_app, amplitude_[k]);
         const auto q = derived(pr);
         for (int i = 0; i < kQuantities; ++i) partial[k][i] = q[i].v[0];

@@ -28,6 +28,11 @@ struct ObservationSource {
   /// What the length was measured to: "center" (the default), "top_of_bob"
   /// or "bottom_of_bob"; the reader adds or subtracts the bob's radius.
   std::string measured_to = "center";
+  /// +1 where the reader added the bob's knot-to-centre distance (a ball's
+  /// radius, a box's half height) to the length, -1 where it subtracted it,
+  /// 0 otherwise. The analysis propagates the bob's dimensions through every
+  /// such length together: one measurement of the bob, not one per length.
+  double knot_to_center_sign = 0.0;
   /// Keys a series gives once at its top level ("length", "amplitude"),
   /// shared by every observation: one measurement, one input of the budget.
   std::vector<std::string> shared{};

@@ -280,10 +280,11 @@ void read_fit(Object& top, ParsedScene& out) {
   }
 }
 
-/// Each length to the bob's centre: the radius added to a length measured
-/// to the top of the bob, subtracted from one to its bottom. The radius's
-/// uncertainty (half the diameter's) adds to the length's in quadrature;
-/// its correlation with bob.diameter's own small corrections is neglected.
+/// Each length to the bob's centre: the radius (a box's or cylinder's half
+/// height) added to a length measured to the top of the bob, subtracted from
+/// one to its bottom. The radius's uncertainty is not the length's: it is
+/// the bob's, common to every such length and to the bob's own corrections,
+/// and the analysis propagates it so (ObservationSource::knot_to_center_sign).
 void refer_lengths_to_centre(ParsedScene& out) {
   for (std::size_t k = 0; k < out.observations.size(); ++k) {
     const std::string& to = out.sources[k].measured_to;
@@ -296,10 +297,9 @@ void refer_lengths_to_centre(ParsedScene& out) {
     PENDULUM_FAIL_IF(!bob, path,
                      "got \"" + to + "\" but no bob; expected bob.diameter, whose half is " +
                          (sign > 0 ? "added to" : "subtracted from") + " the length");
-    const double radius = bob->knot_to_center(), sigma = out.apparatus_uncertainty.bob->knot_to_center();
+    const double radius = bob->knot_to_center();
     out.observations[k].length += sign * radius;
-    double& u = out.observation_uncertainties[k].length;
-    u = std::hypot(u, sigma);
+    out.sources[k].knot_to_center_sign = sign;
     if (k > 0 && out.sources[k].is_shared("length")) continue;  // said once
     out.assumptions.push_back(out.sources[k].path_of("length") + ": measured to the " +
                               (sign > 0 ? "top" : "bottom") + " of the bob; its " +

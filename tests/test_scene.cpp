@@ -257,18 +257,18 @@ TEST_CASE("A length measured to the top or bottom of the bob is referred to its 
     FAIL("no bob.diameter in the budget");
     return 0.0;
   };
-  const auto reduced_g = [](const std::string& to, double length, double diameter_cm) {
-    const std::string patch = R"J({"length": {"value": )J" + std::to_string(length) + R"J(, "measured_to": ")J" + to +
-                              R"J("}, "bob": {"diameter": {"value": )J" + std::to_string(diameter_cm) + "}}}";
-    return analyse(parse_scene(patched(patch.c_str()))).g.value;
+  const auto finite_difference = [](const std::string& to, double length) {
+    const auto g_at = [&](double diameter_cm) {
+      const std::string patch = R"J({"length": {"value": )J" + std::to_string(length) + R"J(, "measured_to": ")J" + to +
+                                R"J("}, "bob": {"diameter": {"value": )J" + std::to_string(diameter_cm) + "}}}";
+      return analyse(parse_scene(patched(patch.c_str()))).g.value;
+    };
+    const double h = 1e-4;  // cm
+    return (g_at(6.10 + h) - g_at(6.10 - h)) / (2 * h * 0.01);
   };
-  const double h = 1e-4;  // cm
   const double at_top = diameter_sensitivity(top), at_bottom = diameter_sensitivity(bottom);
-  const double fd_top = (reduced_g("top_of_bob", 2.9739, 6.10 + h) - reduced_g("top_of_bob", 2.9739, 6.10 - h)) / (2 * h * 0.01);
-  const double fd_bottom =
-      (reduced_g("bottom_of_bob", 3.0349, 6.10 + h) - reduced_g("bottom_of_bob", 3.0349, 6.10 - h)) / (2 * h * 0.01);
-  CHECK_THAT(at_top, WithinRel(fd_top, 1e-5));
-  CHECK_THAT(at_bottom, WithinRel(fd_bottom, 1e-5));
+  CHECK_THAT(at_top, WithinRel(finite_difference("top_of_bob", 2.9739), 1e-5));
+  CHECK_THAT(at_bottom, WithinRel(finite_difference("bottom_of_bob", 3.0349), 1e-5));
   CHECK_THAT((at_top + at_bottom) / 2.0, WithinRel(diameter_sensitivity(centre), 1e-3));
   CHECK_THAT((at_top - at_bottom) / 2.0, WithinRel(analyse(centre).g.value / 3.0044 / 2.0, 1e-3));
 }

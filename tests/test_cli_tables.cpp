@@ -87,13 +87,25 @@ TEST_CASE("import --help names a table's column roles, as the message for a wron
   CHECK_THAT(wrong.err, Contains("got the column \"q\"; expected " + roles + ", or - for a column not used"));
 }
 
-TEST_CASE("reduce TABLE says what to do instead of 'not valid JSON'", "[cli][tables]") {
-  const Run r = run("reduce " + kData + "/pendulum_lengths_table.csv");
-  CHECK(r.status == 1);
-  CHECK(r.out.empty());
-  CHECK_THAT(r.err, Contains("a table of settings and periods, not a scene (JSON); expected a scene: make one with "
-                             "pendulum-g import TABLE > scene.json"));
-  CHECK_THAT(r.err, !Contains("not valid JSON"));
+TEST_CASE("reduce and report TABLE say what to do instead of 'not valid JSON' or 'unrecognised header'",
+          "[cli][tables]") {
+  // A pivot scan's "x (cm)" beside a time is a track's header too: its
+  // periods, which do not increase, make it a table.
+  const std::string scan = temporary_file() + ".csv", page = temporary_file() + ".html";
+  std::ofstream(scan) << "x (cm),T (s)\n5,1.62\n10,1.55\n20,1.52\n30,1.58\n";
+  for (const std::string& command : {std::string("reduce"), "report -o " + page}) {
+    for (const std::string& table : {kData + "/pendulum_lengths_table.csv", kData + "/pivot_scan_table.csv", scan}) {
+      INFO(command << " " << table);
+      const Run r = run(command + " " + table);
+      CHECK(r.status == 1);
+      CHECK(r.out.empty());
+      CHECK_THAT(r.err, Contains("a table of settings and periods, not a scene (JSON); expected a scene: make one with "
+                                 "pendulum-g import TABLE > scene.json"));
+      CHECK_THAT(r.err, !Contains("not valid JSON") && !Contains("unrecognised header"));
+      CHECK_FALSE(std::ifstream(page).good());
+    }
+  }
+  std::remove(scan.c_str());
 }
 
 TEST_CASE("a scene's table is confined to its folder like a recording", "[cli][tables]") {

@@ -8,6 +8,7 @@
 #include "pendulum/files.hpp"
 #include "pendulum/input_error.hpp"
 #include "pendulum/recordings/read.hpp"
+#include "pendulum/recordings/table.hpp"
 #include "pendulum/report/html_report.hpp"
 #include "pendulum/report/plots.hpp"
 #include "pendulum/report/recording_report.hpp"
@@ -28,7 +29,9 @@ bool looks_like_recording(const std::string& file) {
   std::size_t at = head.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
   at = head.find_first_not_of(" \t\r\n", at);
   if (at == std::string::npos || head[at] == '{' || head[at] == '[') return false;
-  return std::count(head.begin() + static_cast<std::ptrdiff_t>(at), head.end(), '\n') >= 2;
+  // A table of settings is no recording: the scene reader says to import it.
+  return std::count(head.begin() + static_cast<std::ptrdiff_t>(at), head.end(), '\n') >= 2 &&
+         !file_holds_settings_table(file);
 }
 
 ReportPage make_report_page(const ReportRequest& o,

@@ -36,7 +36,8 @@ struct ReportPage {
 /// A recording, not a scene: a regular file (a pipe is not read ahead) whose
 /// text does not open a JSON object or array and has three lines or more (no
 /// recording has fewer; a short or empty file gets the scene reader's
-/// message, as from reduce).
+/// message, as from reduce) and is no table of settings and periods (the
+/// scene reader's message says to import it).
 bool looks_like_recording(const std::string& file);
 
 /// The report of `request`: a recording's when request.family is set or the

@@ -20,26 +20,40 @@
 
 namespace pendulum {
 
-/// The corrections, in the order of Nelson & Olsson's Table II. A new one is
-/// an entry here and its row at the same place in kCorrections (checked at
-/// compile time), its function and its call in visit_corrections.
+/// The corrections, in the order of Nelson & Olsson's Table II, one row
+/// each: X(id, title, equation, part, max_ratio, reads_length), the fields
+/// of CorrectionInfo. Both CorrectionId (its enumerators) and kCorrections
+/// (its rows, id also the stable JSON id) are made from it, so a new
+/// correction is its row here, its function and its call in
+/// visit_corrections.
+#define PENDULUM_CORRECTIONS(X) \
+  X(finite_amplitude, "Finite amplitude", "Nelson & Olsson (1986) Eq. (8)", "amplitude", kNoLimit, false) \
+  X(bob_radius, "Finite radius of bob", "Nelson & Olsson (1986) Eq. (10)", "bob", kFirstOrderLimit, true) \
+  X(ring, "Mass of ring", "Nelson & Olsson (1986) Eq. (11)", "ring", kFirstOrderLimit, true) \
+  X(cap, "Mass of cap", "Nelson & Olsson (1986) Eq. (12)", "cap", kFirstOrderLimit, true) \
+  X(cap_screw, "Mass of cap screw", "Nelson & Olsson (1986) Eq. (12), Sec. III.B.2", \
+      "cap_screw", kFirstOrderLimit, true) \
+  X(wire_mass, "Mass of wire", "Nelson & Olsson (1986) Eq. (13)", "wire", kFirstOrderLimit, false) \
+  X(wire_flexibility, "Flexibility of wire", "Nelson & Olsson (1986) Sec. III.B.3, (71-55)/1440 (m_w/m)^2", \
+      "wire", kFirstOrderLimit, false) \
+  X(bob_rotation, "Rotation of bob", "Nelson & Olsson (1986) Sec. III.B.3, Eq. (10) x (2/5)(a/l)", \
+      "bob", kFirstOrderLimit, true) \
+  X(double_pendulum, "Double pendulum", "Nelson & Olsson (1986) Eq. (15), third term", "ring", kFirstOrderLimit, true) \
+  X(buoyancy, "Buoyancy", "Nelson & Olsson (1986) Eq. (16)", "air", kFirstOrderLimit, false) \
+  X(linear_damping, "Linear damping", "Nelson & Olsson (1986) Eq. (34)", "decay", kFirstOrderLimit, false) \
+  X(quadratic_damping, "Quadratic damping", "Nelson & Olsson (1986) Eq. (48)", "decay", kFirstOrderLimit, false) \
+  X(amplitude_decay, "Decay of finite amplitude", "Nelson & Olsson (1986) Eqs. (50a), (50b)", \
+      "decay", kFirstOrderLimit, false) \
+  X(added_mass, "Added mass", "Nelson & Olsson (1986) Eqs. (54), (61), (62)", "air", kFirstOrderLimit, true) \
+  X(wire_stretch, "Stretching of wire", "Nelson & Olsson (1986) Eq. (79)", "wire", kFirstOrderLimit, true) \
+  X(support_motion, "Motion of support", "Nelson & Olsson (1986) Eqs. (83), (87), (88)", \
+      "support", kFirstOrderLimit, true)
+
+/// A correction's place in kCorrections.
 enum class CorrectionId {
-  finite_amplitude,
-  bob_radius,
-  ring,
-  cap,
-  cap_screw,
-  wire_mass,
-  wire_flexibility,
-  bob_rotation,
-  double_pendulum,
-  buoyancy,
-  linear_damping,
-  quadratic_damping,
-  amplitude_decay,
-  added_mass,
-  wire_stretch,
-  support_motion,
+#define PENDULUM_CORRECTION_ENUMERATOR(id, ...) id,
+  PENDULUM_CORRECTIONS(PENDULUM_CORRECTION_ENUMERATOR)
+#undef PENDULUM_CORRECTION_ENUMERATOR
 };
 
 /// First-order theories hold while |DeltaT/T0| stays below this: the terms
@@ -50,7 +64,7 @@ inline constexpr double kNoLimit = std::numeric_limits<double>::infinity();
 
 /// What the output says about a correction besides its size.
 struct CorrectionInfo {
-  CorrectionId correction;  ///< its place in the table (checked at compile time)
+  CorrectionId correction;  ///< its place in the table
   const char* id;           ///< stable JSON id
   const char* title;        ///< Table II's row name
   const char* equation;     ///< where the formula comes from
@@ -66,48 +80,14 @@ struct CorrectionInfo {
 
 /// The table of corrections, indexed by CorrectionId.
 inline constexpr CorrectionInfo kCorrections[] = {
-    {CorrectionId::finite_amplitude, "finite_amplitude", "Finite amplitude",
-     "Nelson & Olsson (1986) Eq. (8)", "amplitude", kNoLimit, false},
-    {CorrectionId::bob_radius, "bob_radius", "Finite radius of bob", "Nelson & Olsson (1986) Eq. (10)", "bob",
-     kFirstOrderLimit, true},
-    {CorrectionId::ring, "ring", "Mass of ring", "Nelson & Olsson (1986) Eq. (11)", "ring", kFirstOrderLimit, true},
-    {CorrectionId::cap, "cap", "Mass of cap", "Nelson & Olsson (1986) Eq. (12)", "cap", kFirstOrderLimit, true},
-    {CorrectionId::cap_screw, "cap_screw", "Mass of cap screw", "Nelson & Olsson (1986) Eq. (12), Sec. III.B.2",
-     "cap_screw", kFirstOrderLimit, true},
-    {CorrectionId::wire_mass, "wire_mass", "Mass of wire", "Nelson & Olsson (1986) Eq. (13)", "wire",
-     kFirstOrderLimit, false},
-    {CorrectionId::wire_flexibility, "wire_flexibility", "Flexibility of wire",
-     "Nelson & Olsson (1986) Sec. III.B.3, (71-55)/1440 (m_w/m)^2", "wire", kFirstOrderLimit, false},
-    {CorrectionId::bob_rotation, "bob_rotation", "Rotation of bob",
-     "Nelson & Olsson (1986) Sec. III.B.3, Eq. (10) x (2/5)(a/l)", "bob", kFirstOrderLimit, true},
-    {CorrectionId::double_pendulum, "double_pendulum", "Double pendulum",
-     "Nelson & Olsson (1986) Eq. (15), third term", "ring", kFirstOrderLimit, true},
-    {CorrectionId::buoyancy, "buoyancy", "Buoyancy", "Nelson & Olsson (1986) Eq. (16)", "air", kFirstOrderLimit, false},
-    {CorrectionId::linear_damping, "linear_damping", "Linear damping", "Nelson & Olsson (1986) Eq. (34)", "decay",
-     kFirstOrderLimit, false},
-    {CorrectionId::quadratic_damping, "quadratic_damping", "Quadratic damping", "Nelson & Olsson (1986) Eq. (48)",
-     "decay", kFirstOrderLimit, false},
-    {CorrectionId::amplitude_decay, "amplitude_decay", "Decay of finite amplitude",
-     "Nelson & Olsson (1986) Eqs. (50a), (50b)", "decay", kFirstOrderLimit, false},
-    {CorrectionId::added_mass, "added_mass", "Added mass", "Nelson & Olsson (1986) Eqs. (54), (61), (62)", "air",
-     kFirstOrderLimit, true},
-    {CorrectionId::wire_stretch, "wire_stretch", "Stretching of wire", "Nelson & Olsson (1986) Eq. (79)", "wire",
-     kFirstOrderLimit, true},
-    {CorrectionId::support_motion, "support_motion", "Motion of support",
-     "Nelson & Olsson (1986) Eqs. (83), (87), (88)", "support", kFirstOrderLimit, true},
+#define PENDULUM_CORRECTION_ROW(id, title, equation, part, max_ratio, reads_length) \
+  {CorrectionId::id, #id, title, equation, part, max_ratio, reads_length},
+    PENDULUM_CORRECTIONS(PENDULUM_CORRECTION_ROW)
+#undef PENDULUM_CORRECTION_ROW
 };
+#undef PENDULUM_CORRECTIONS
 /// The number of corrections: kCorrections's rows.
 inline constexpr int kCorrectionCount = static_cast<int>(std::size(kCorrections));
-
-namespace detail {
-constexpr bool table_follows_enum() {
-  for (int i = 0; i < kCorrectionCount; ++i) {
-    if (static_cast<int>(kCorrections[i].correction) != i) return false;
-  }
-  return true;
-}
-}  // namespace detail
-static_assert(detail::table_follows_enum(), "kCorrections must list the corrections in CorrectionId order");
 
 /// The row that composition adds: the finite-amplitude factor times the sum
 /// of the other corrections (see compose()).
@@ -137,6 +117,14 @@ template <class T>
 T pendulum_over_body_angle(const Apparatus<T>& app, const T& l) {
   if (!app.bob || app.bob->suspension == Suspension::rigid) return T(1.0);
   return slow_mode_line_over_body(app.bob->gyration_squared(), app.bob->knot_to_center(), l);
+}
+
+/// Whether the finite-amplitude row is the slow mode's series: a body on a
+/// flexible string, timed at its own amplitude (a sensor in it, or "of":
+/// "body").
+template <class T>
+bool slow_mode_amplitude(const Apparatus<T>& app, const Swing<T>& s) {
+  return s.amplitude_of == AngleOf::body && app.bob && app.bob->suspension == Suspension::flexible;
 }
 
 /// DeltaT/T_slow of a body on a flexible string at its own amplitude psi0
@@ -183,7 +171,7 @@ void visit_corrections(const Apparatus<T>& app, const Swing<T>& s, const Amplitu
   const T c = s.amplitude_of == AngleOf::body || body_decay ? pendulum_over_body_angle(app, l) : T(1.0);
   const T theta0 = s.amplitude_of == AngleOf::body ? T(c * s.amplitude) : s.amplitude;
 
-  if (s.amplitude_of == AngleOf::body && app.bob && app.bob->suspension == Suspension::flexible) {
+  if (slow_mode_amplitude(app, s)) {
     set(Id::finite_amplitude, slow_mode_finite_amplitude(app, l, s.amplitude, amplitude),
         method_name(amplitude.method, true));
   } else {

@@ -408,8 +408,8 @@ TEST_CASE("A gyroscope's amplitudes follow the exact ones by the energy relation
              Catch::Matchers::WithinAbs(2.0 * M_PI / sim.omega0, 3.0 * a.period.uncertainty + 4.4e-7 * 1.8));
 }
 
-TEST_CASE("A knock on the phone, 25 times the swing, loses no crossing and makes no amplitude negative",
-          "[recordings][robustness]") {
+TEST_CASE("A knock on the phone, 25 times the swing, loses no crossing, makes no amplitude negative and gives "
+          "none", "[recordings][robustness]") {
   // Two faults it found. The crossings' hysteresis followed the last half
   // swing's peak, 0.3 of it: after a knock of more than 1/0.3 times the
   // swing no later half swing reached it, and the rest of the record was
@@ -423,12 +423,18 @@ TEST_CASE("A knock on the phone, 25 times the swing, loses no crossing and makes
   const auto sim = simulate_recording(s);
   const SwingAnalysis clean = analyse_swings(gyroscope_recording(sim), "sim");
   REQUIRE(sim.turning_times.size() > 300);
+  for (const auto& note : clean.notes) CHECK_THAT(note.text, !Contains("peaked far from"));
+  double clean_largest = 0.0;
+  for (const auto& w : clean.swings) {
+    if (std::isfinite(w.amplitude)) clean_largest = std::max(clean_largest, w.amplitude);
+  }
   // A rate's half swing runs between turning points, its peak midway: the
   // knock fills one half swing, or the halves of two on either side of a
   // crossing (both their peaks then the knock's).
   const auto& turning = sim.turning_times;
   const std::pair<double, double> knocks[] = {{turning[20], turning[21]},
-                                              {(turning[20] + turning[21]) / 2.0, (turning[21] + turning[22]) / 2.0}};
+                                              {(turning[20] + turning[21]) / 2.0, (turning[21] + turning[22]) / 2.0},
+                                              {turning[200], turning[201]}};
   for (const auto& [knock_start, knock_end] : knocks) {
     INFO("a knock from " << knock_start << " s to " << knock_end << " s");
     Recording r = gyroscope_recording(sim);
@@ -443,15 +449,54 @@ TEST_CASE("A knock on the phone, 25 times the swing, loses no crossing and makes
     for (const auto& w : a.swings) {
       if (!std::isfinite(w.amplitude)) continue;
       CHECK(w.amplitude >= 0.0);
+      CHECK(w.amplitude <= 1.01 * clean_largest);
       ++swings_with_amplitude;
     }
     CHECK(swings_with_amplitude > 300);
+    // The knock's swings, averaged with its peak, read up to 16 times the
+    // swing and the start amplitude 15 % high (the first knock); left out,
+    // what stays is the record's mean that the knock shifts: 0.2 % of the
+    // start amplitude at most here, the 1 % these checks allow.
+    CHECK_THAT(a.start_amplitude, Catch::Matchers::WithinRel(clean.start_amplitude, 0.01));
+    bool noted = false;
+    for (const auto& note : a.notes) noted |= note.text.find("peaked far from the swings beside them") != std::string::npos;
+    CHECK(noted);
     // The knock moves a crossing only where its edge cuts the crossing's line
     // (the first's edges lie on two): the period is the clean record's, to
     // the two records' uncertainties.
     CHECK_THAT(a.period.value, Catch::Matchers::WithinAbs(clean.period.value, 3.0 * std::hypot(a.period.uncertainty,
                                                                                                clean.period.uncertainty)));
   }
+}
+
+TEST_CASE("Without a knock no half swing is taken for one: noisy, strongly damped, short and large swings",
+          "[recordings][robustness]") {
+  // Noise 0.1-3 % of the peak rate, about 1, 6, 29 and 80 deg, alpha 0.002
+  // and 0.03 /s (to 16 % of the start in 60 s, where the last swings are
+  // near the noise), 8 and 60 s, five seeds: 240 records. At 6 % one record
+  // of 80 deg that had already lost its last crossings got one flagged
+  // (docs/recordings.md); the test of the peak against 10 noise sigmas
+  // keeps the others (without it, 8 of those 320 records were flagged).
+  int records = 0;
+  for (double noise : {0.001, 0.01, 0.03}) {
+    for (double theta0 : {0.02, 0.1, 0.5, 1.4}) {
+      for (double alpha : {2e-3, 3e-2}) {
+        for (double duration : {8.0, 60.0}) {
+          for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+            RecordingSimulation s;
+            s.theta0 = theta0, s.alpha = alpha, s.duration = duration, s.seed = seed;
+            s.noise = noise * theta0 * std::sqrt(s.g / s.length);
+            const SwingAnalysis a = analyse_swings(gyroscope_recording(simulate_recording(s)), "sim");
+            ++records;
+            INFO("noise " << noise << ", theta0 " << theta0 << " rad, alpha " << alpha << " /s, " << duration
+                          << " s, seed " << seed);
+            for (const auto& note : a.notes) CHECK_THAT(note.text, !Contains("peaked far from"));
+          }
+        }
+      }
+    }
+  }
+  CHECK(records == 240);
 }
 
 TEST_CASE("A large file is read with exact numbers and line numbers", "[recordings]") {
@@ -735,3 +780,5 @@ TEST_CASE("A PASCO run after the first is read by its number", "[recordings][pas
                                     RecordingFormat::vernier, "Run #1"),
                     Contains("this vernier export holds a single set"));
 }
+
+

@@ -179,9 +179,17 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
   if (!amplitude_owner.has("amplitude") && source.recording) {
     // The recording's amplitude where the timing starts (docs/recordings.md).
     const RecordingSummary& r = out.recordings[*source.recording].summary;
+    const std::size_t with_amplitude = r.swings.decay.amplitudes.size();
     PENDULUM_FAIL_IF(!std::isfinite(r.swings.start_amplitude), prefix + "amplitude",
-                     "missing, and the recording " + r.file + " gives no amplitudes (a photogate gives them with "
-                     "timing.bob_width); expected the amplitude at the start of the timing");
+                     "missing, and the recording " + r.file +
+                         (with_amplitude == 0
+                              ? " gives no amplitudes (a photogate gives them with timing.bob_width)"
+                              : " gives amplitudes for only " + std::to_string(with_amplitude) + " of its " +
+                                    std::to_string(r.swings.swings.size()) +
+                                    " swings, too few for the curve that gives the one at the start (knocks or "
+                                    "a glitchy stretch lose theirs: pendulum-g import " + r.file +
+                                    " says where, and a \"range\" in timing cuts a stretch)") +
+                         "; expected the amplitude at the start of the timing");
     v.amplitude = r.swings.start_amplitude;
     source.amplitude_from_recording = true;
     // A gyroscope or accelerometer turns with the bob it is in (docs/phone.md).

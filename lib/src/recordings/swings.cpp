@@ -536,6 +536,41 @@ double median_of(std::vector<double> v) {
   return *mid;
 }
 
+/// Half swings whose peak is no swing's (a knock on the phone, a jump of a
+/// track): |log(peak / m)| beyond the larger of log 1.5 and 6 robust sigmas
+/// of that log over the record, and |peak - m| beyond 10 times the signal's
+/// noise (a swing decayed into the noise scatters so without a knock), m the
+/// median of the peaks of the same parity (an alternating offset, or an
+/// acceleration's bottoms and dips, keep theirs) up to 8 half swings away, at
+/// least 4 of them. A pendulum's amplitude changes far less over so few
+/// swings; a knock 25 times the swing read the start amplitude 15 % high
+/// through its swings' averages. Their indices, in order.
+std::vector<std::size_t> peak_outliers(const std::vector<double>& raw, double noise) {
+  const std::size_t n = raw.size();
+  std::vector<double> log_ratio(n, kNaN), beside(n, kNaN);
+  std::vector<double> near;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!(raw[i] > 0.0)) continue;
+    near.clear();
+    for (std::size_t step = 2; step <= 8; step += 2) {
+      if (i >= step && raw[i - step] > 0.0) near.push_back(raw[i - step]);
+      if (i + step < n && raw[i + step] > 0.0) near.push_back(raw[i + step]);
+    }
+    if (near.size() >= 4) beside[i] = median_of(near), log_ratio[i] = std::log(raw[i] / beside[i]);
+  }
+  std::vector<double> spread;
+  for (double x : log_ratio) {
+    if (std::isfinite(x)) spread.push_back(std::fabs(x));
+  }
+  if (spread.empty()) return {};
+  const double limit = std::max(std::log(1.5), 6.0 * 1.4826 * median_of(spread));
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (std::fabs(log_ratio[i]) > limit && std::fabs(raw[i] - beside[i]) > 10.0 * noise) out.push_back(i);
+  }
+  return out;
+}
+
 /// The coarsest decimal step 10^-k s (k = 0..9) of which every time is a
 /// multiple: the resolution the file printed its clock to (a timer's 1 ms, a
 /// photogate's 10 us); 0 when there is none (times to full double precision,
@@ -1030,6 +1065,17 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
       raw[i] = value;
     }
   }
+  if (const std::vector<std::size_t> knocked = peak_outliers(raw, out.noise); !knocked.empty()) {
+    std::string when;
+    for (std::size_t k = 0; k < knocked.size() && k < 3; ++k) {
+      when += (k ? ", " : "") + seconds(out.swings[knocked[k]].peak_time, 4);
+    }
+    if (knocked.size() > 3) when += ", ...";
+    out.notes.push_back({0, std::to_string(knocked.size()) + " half swing" + (knocked.size() > 1 ? "s" : "") +
+                                " (at " + when + ") peaked far from the swings beside them (a knock or a jump of "
+                                "the track): they, and the swings averaged with them, give no amplitude"});
+    for (std::size_t i : knocked) raw[i] = kNaN;
+  }
   // Amplitudes (rad), by kind.
   std::vector<double> theta(nc - 1, kNaN);
   out.small_amplitude_period = kNaN;
@@ -1098,6 +1144,7 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
         // and dips at the turning points, g cos theta0; the ratio needs no g.
         for (std::size_t i = 1; i + 1 < raw.size(); ++i) {
           if (sig.s[(at[i] + at[i + 1]) / 2] < 0.0) continue;  // a dip, not a bottom
+          if (!std::isfinite(raw[i - 1] + raw[i] + raw[i + 1])) continue;
           const double ratio = (sig.offset + raw[i]) / (sig.offset - (raw[i - 1] + raw[i + 1]) / 2.0);
           theta[i] = amplitude_from_acceleration_ratio(std::max(ratio, 1.0));
         }

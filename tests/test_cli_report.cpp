@@ -55,6 +55,15 @@ TEST_CASE("report: one self-contained HTML page, the same bytes twice", "[cli][r
   std::filesystem::remove_all(dir);
 }
 
+TEST_CASE("report: the measured period's trials and oscillations, counted in words", "[cli][report]") {
+  // Nelson & Olsson's ten trials of 100 oscillations; a recording is one
+  // trial of its full periods (timer_missed_stamp.txt: 40, docs/recordings.md).
+  CHECK_THAT(run("report " + kNelsonOlsson).out, Contains("(10 trials of 100 oscillations)"));
+  const Run recording = run("report " + std::string(PENDULUM_DATA_DIR) + "/recordings/timer_missed_stamp_scene.json");
+  REQUIRE(recording.status == 0);
+  CHECK_THAT(recording.out, Contains("(1 trial of 40 oscillations)"));
+}
+
 TEST_CASE("report: bad input fails as reduce does and leaves no file", "[cli][report][errors]") {
   const std::string dir = temporary_directory();
   json scene = json::parse(pendulum::test::read_text(kNelsonOlsson));

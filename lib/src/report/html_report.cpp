@@ -146,9 +146,10 @@ std::string g_comparison(const SceneReport& r) {
                         : "undefined: the lengths do not determine a line");
   }
   if (r.series) return s + "</table>\n";  // the periods are in the series' table
+  auto counted = [](long n, const char* one) { return std::to_string(n) + " " + one + (n == 1 ? "" : "s"); };
   row("measured period T", rounded_estimate({r.period_measured.value, r.period_measured.uncertainty}, 6, "s") + " (" +
-                               std::to_string(r.trials) +
-                               " trials of " + std::to_string(r.oscillations_per_trial) + " oscillations)");
+                               counted(r.trials, "trial") + " of " +
+                               counted(r.oscillations_per_trial, "oscillation") + ")");
   row("ideal period T\u2080", rounded_estimate(r.period_ideal, 6, "s"));
   return s + "</table>\n";
 }

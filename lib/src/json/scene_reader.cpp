@@ -184,11 +184,12 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
                      "missing, and the recording " + r.file +
                          (with_amplitude == 0
                               ? " gives no amplitudes (a photogate gives them with timing.bob_width)"
-                              : " gives amplitudes for only " + std::to_string(with_amplitude) + " of its " +
+                              : " gives amplitudes for only " + std::to_string(with_amplitude) + " of the " +
                                     std::to_string(r.swings.swings.size()) +
-                                    " swings, too few for the curve that gives the one at the start (knocks or "
-                                    "a glitchy stretch lose theirs: pendulum-g import " + r.file +
-                                    " says where, and a \"range\" in timing cuts a stretch)") +
+                                    " swings from crossing to crossing it found, too few for the smooth curve that "
+                                    "gives the one at the start, which needs 8 and half of them (a short record "
+                                    "has few; knocks or a glitchy stretch lose theirs, which pendulum-g import " +
+                                    r.file + " notes, and a \"range\" in timing cuts a stretch)") +
                          "; expected the amplitude at the start of the timing");
     v.amplitude = r.swings.start_amplitude;
     source.amplitude_from_recording = true;

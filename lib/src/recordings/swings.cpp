@@ -315,7 +315,7 @@ Extent extent(const std::vector<double>& s) {
 /// the threshold above every swing before it. The median from at most 16384
 /// samples, evenly spread.
 double swing_level(const std::vector<double>& s, double rms) {
-  const std::size_t stride = std::max<std::size_t>(1, s.size() >> 14);
+  const std::size_t stride = (s.size() + 16383) >> 14;
   std::vector<double> a;
   a.reserve(s.size() / stride + 1);
   for (std::size_t k = 0; k < s.size(); k += stride) a.push_back(std::fabs(s[k]));

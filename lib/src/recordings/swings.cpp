@@ -307,23 +307,6 @@ Extent extent(const std::vector<double>& s) {
   return e;
 }
 
-/// The signal's level that sets the first crossing's threshold: its rms or,
-/// where a knock many times the swing swells that beyond twice the median
-/// |s| (the two agree for a sine; noise's rms is 1.48 times its median |s|),
-/// the median |s|, which a knock over less than half the record leaves the
-/// swing's. A knock 20 times the swing over 0.7 s of a 20 s record had put
-/// the threshold above every swing before it. The median from at most 16384
-/// samples, evenly spread.
-double swing_level(const std::vector<double>& s, double rms) {
-  const std::size_t stride = (s.size() + 16383) >> 14;
-  std::vector<double> a;
-  a.reserve(s.size() / stride + 1);
-  for (std::size_t k = 0; k < s.size(); k += stride) a.push_back(std::fabs(s[k]));
-  const auto mid = a.begin() + a.size() / 2;
-  std::nth_element(a.begin(), mid, a.end());
-  return rms > 2.0 * *mid ? *mid : rms;
-}
-
 /// Crossings of a sampled signal with adaptive hysteresis: h is a fraction
 /// of the last half swing's peak. Where no crossing follows within four mean
 /// intervals, the last half swings held a knock, not the swing (from its
@@ -551,6 +534,22 @@ double median_of(std::vector<double> v) {
   auto mid = v.begin() + v.size() / 2;
   std::nth_element(v.begin(), mid, v.end());
   return *mid;
+}
+
+/// The signal's level that sets the first crossing's threshold: its rms or,
+/// where a knock many times the swing swells that beyond twice the median
+/// |s| (the two agree for a sine; noise's rms is 1.48 times its median |s|),
+/// the median |s|, which a knock over less than half the record leaves the
+/// swing's. A knock 20 times the swing over 0.7 s of a 20 s record had put
+/// the threshold above every swing before it. The median from at most 16384
+/// samples, evenly spread.
+double swing_level(const std::vector<double>& s, double rms) {
+  const std::size_t stride = (s.size() + 16383) >> 14;
+  std::vector<double> a;
+  a.reserve(s.size() / stride + 1);
+  for (std::size_t k = 0; k < s.size(); k += stride) a.push_back(std::fabs(s[k]));
+  const double median = median_of(std::move(a));
+  return rms > 2.0 * median ? median : rms;
 }
 
 /// Half swings whose peak is no swing's (a knock on the phone, a jump of a

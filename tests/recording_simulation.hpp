@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "pendulum/decay_simulation.hpp"
+#include "simulations/decay_simulation.hpp"
 
 namespace pendulum::test {
 

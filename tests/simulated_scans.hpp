@@ -6,7 +6,7 @@
 #include "pendulum/analysis.hpp"
 #include "pendulum/bodies.hpp"
 #include "pendulum/parsed_scene.hpp"
-#include "pendulum/pivot_scan_simulation.hpp"
+#include "simulations/pivot_scan_simulation.hpp"
 
 namespace pendulum::test {
 

@@ -12,7 +12,7 @@
 #include <Eigen/Dense>
 
 #include "pendulum/analysis.hpp"
-#include "pendulum/decay_simulation.hpp"
+#include "simulations/decay_simulation.hpp"
 #include "pendulum/scene_json.hpp"
 #include "reference.hpp"
 #include "scene_files.hpp"

@@ -14,7 +14,7 @@
 #include "pendulum/mass.hpp"
 #include "pendulum/reduction.hpp"
 #include "pendulum/scene_json.hpp"
-#include "pendulum/series_simulation.hpp"
+#include "simulations/series_simulation.hpp"
 #include "quad_reference.hpp"
 #include "recording_simulation.hpp"
 #include "reference.hpp"

@@ -8,7 +8,7 @@
 
 #include "pendulum/analysis.hpp"
 #include "pendulum/period_fit.hpp"
-#include "pendulum/pivot_scan_simulation.hpp"
+#include "simulations/pivot_scan_simulation.hpp"
 #include "pendulum/scene_json.hpp"
 #include "reference.hpp"
 #include "scene_files.hpp"

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "pendulum/analysis.hpp"
-#include "pendulum/decay_simulation.hpp"
+#include "simulations/decay_simulation.hpp"
 #include "pendulum/scene_json.hpp"
 #include "reference.hpp"
 #include "catalogue.hpp"

@@ -1,6 +1,6 @@
 // Series of observations of one apparatus (issue 9): the Ceres fit of the
 // period model, its propagation of every input, and its warnings, on
-// synthetic series drawn from the model (lib/include/pendulum/series_simulation.hpp).
+// synthetic series drawn from the model (tests/simulations/series_simulation.hpp).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -10,7 +10,7 @@
 #include "pendulum/dispersion.hpp"
 #include "pendulum/period_fit.hpp"
 #include "pendulum/scene_json.hpp"
-#include "pendulum/series_simulation.hpp"
+#include "simulations/series_simulation.hpp"
 #include "reference.hpp"
 #include "scene_files.hpp"
 #include "simulated_scans.hpp"

@@ -11,7 +11,7 @@
 #include <thread>
 
 #include "pendulum/analysis.hpp"
-#include "pendulum/decay_simulation.hpp"
+#include "simulations/decay_simulation.hpp"
 #include "pendulum/output.hpp"
 #include "pendulum/scene_json.hpp"
 

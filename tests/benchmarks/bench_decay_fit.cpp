@@ -15,7 +15,7 @@
 
 #include "../textbook_decay_fit.hpp"
 #include "bench_main.hpp"
-#include "pendulum/decay_simulation.hpp"
+#include "simulations/decay_simulation.hpp"
 
 namespace {
 

@@ -21,7 +21,7 @@
 #include "bench_main.hpp"
 #include "pendulum/analysis.hpp"
 #include "pendulum/period_fit.hpp"
-#include "pendulum/pivot_scan_simulation.hpp"
+#include "simulations/pivot_scan_simulation.hpp"
 
 namespace {
 

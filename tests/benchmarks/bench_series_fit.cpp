@@ -17,7 +17,7 @@
 
 #include "bench_main.hpp"
 #include "pendulum/period_fit.hpp"
-#include "pendulum/series_simulation.hpp"
+#include "simulations/series_simulation.hpp"
 
 namespace {
 

@@ -18,8 +18,8 @@
 
 #include "pendulum/analysis.hpp"
 #include "pendulum/dispersion.hpp"
-#include "pendulum/pivot_scan_simulation.hpp"
-#include "pendulum/series_simulation.hpp"
+#include "simulations/pivot_scan_simulation.hpp"
+#include "simulations/series_simulation.hpp"
 #include "simulated_scans.hpp"
 
 using namespace pendulum;

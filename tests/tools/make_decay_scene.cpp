@@ -13,7 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "pendulum/decay_simulation.hpp"
+#include "simulations/decay_simulation.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 2) {

@@ -28,10 +28,10 @@
 #include <nlohmann/json.hpp>
 
 #include "pendulum/damping.hpp"
-#include "pendulum/decay_simulation.hpp"
+#include "simulations/decay_simulation.hpp"
 #include "pendulum/drag.hpp"
 #include "pendulum/scene_json.hpp"
-#include "pendulum/series_simulation.hpp"
+#include "simulations/series_simulation.hpp"
 #include "pendulum/site.hpp"
 
 namespace {

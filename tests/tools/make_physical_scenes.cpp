@@ -27,7 +27,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "pendulum/pivot_scan_simulation.hpp"
+#include "simulations/pivot_scan_simulation.hpp"
 #include "pendulum/scene_json.hpp"
 #include "pendulum/site.hpp"
 

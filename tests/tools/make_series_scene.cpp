@@ -18,7 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pendulum/scene_json.hpp"
-#include "pendulum/series_simulation.hpp"
+#include "simulations/series_simulation.hpp"
 #include "pendulum/site.hpp"
 
 int main() {

@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "pendulum/decay_simulation.hpp"
+#include "simulations/decay_simulation.hpp"
 #include "pendulum/models/registry.hpp"
 #include "pendulum/parsed_scene.hpp"
-#include "pendulum/series_simulation.hpp"
+#include "simulations/series_simulation.hpp"
 
 namespace pendulum {
 

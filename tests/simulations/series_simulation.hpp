@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "pendulum/decay_simulation.hpp"
+#include "simulations/decay_simulation.hpp"
 #include "pendulum/models/simple_pendulum.hpp"
 #include "pendulum/parsed_scene.hpp"
 

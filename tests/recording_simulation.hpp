@@ -176,6 +176,8 @@ enum class PublishedLayout {
   headerless_radians,  ///< the same in radians
   microbit_ms,         ///< "ms, mg", no header: a micro:bit's millisecond clock and its tangential
                        ///< acceleration g sin(theta) in whole milli-g
+  microbit_two_axes,   ///< "ms<TAB>along<TAB>across", no header: a micro:bit's axis along the string,
+                       ///< -g(3 cos(theta) - 2) (at twice the swing's frequency), then g sin(theta), whole milli-g
   timer_ms,            ///< "n<TAB>ms", no header: a microcontroller's stamps, one a period, in whole ms
   slash_units,         ///< "Time/s,Angle/rad": the unit after a slash
   header_mismatch,     ///< "x y dx dy" over rows of two columns (time, angle in degrees): a header of other columns
@@ -207,6 +209,7 @@ inline std::string published_csv(const SimulatedRecording& r, double length, Pub
     case PublishedLayout::headerless_degrees:
     case PublishedLayout::headerless_radians:
     case PublishedLayout::microbit_ms:
+    case PublishedLayout::microbit_two_axes:
     case PublishedLayout::timer_ms: break;
   }
   if (layout == PublishedLayout::headerless_timer || layout == PublishedLayout::timer_ms) {
@@ -235,6 +238,9 @@ inline std::string published_csv(const SimulatedRecording& r, double length, Pub
       case PublishedLayout::headerless_degrees: put("%.4f %.4f\n", t, (th + e1) * kDeg); break;
       case PublishedLayout::headerless_radians: put("%.4f %.6f\n", t, th + e1); break;
       case PublishedLayout::microbit_ms: put("%.0f, %.0f\n", 1000.0 * t, 1000.0 * std::sin(th + e1)); break;
+      case PublishedLayout::microbit_two_axes:
+        put("%.0f\t%.0f\t%.0f\n", 1000.0 * t, -1000.0 * (3.0 * std::cos(th + e2) - 2.0), 1000.0 * std::sin(th + e1));
+        break;
       case PublishedLayout::slash_units: put("%.3f,%.6f\n", t, th + e1); break;
       case PublishedLayout::header_mismatch: put("%.6E %.6E\n", t, (th + e1) * kDeg); break;
       case PublishedLayout::portuguese: put("%zu,%.9f,%.0f,%.0f\n", k + 1, t, 640.0 + 1000.0 * x, 200.0 - 1000.0 * y); break;

@@ -290,6 +290,14 @@ TEST_CASE("Published layouts: the roles the reader chose and what it said", "[re
   CHECK(has_note(microbit, "whole numbers only"));
   CHECK(microbit.time[1] == Approx(1.0 / s.rate_hz).margin(1e-3));
 
+  // The axis along the string swings at twice the swing's frequency: no track's x beside its y.
+  const Recording axes = read(PublishedLayout::microbit_two_axes);
+  CHECK(axes.kind == SignalKind::unknown);
+  CHECK(role_of(axes, 1) == "time:ms/content");
+  CHECK_THAT(role_of(axes, 2), Contains("unused"));
+  CHECK(role_of(axes, 3) == "signal/content");
+  CHECK(has_note(axes, "column 2\" swings at 2 times the frequency of \"column 3\": not a track's x"));
+
   const Recording stamped = read(PublishedLayout::timer_ms);
   CHECK(stamped.kind == SignalKind::event_stamps);
   CHECK(role_of(stamped, 2) == "event stamp:ms/content");
@@ -378,7 +386,7 @@ TEST_CASE("Published layouts: the period within its uncertainty of the truth, 20
       // Issue 38: a headerless angle in degrees at a small swing and in radians at a large
       // one; a micro:bit's whole milli-g on a millisecond clock, timed only.
       {PublishedLayout::headerless_degrees, 30.0, 5.0, false}, {PublishedLayout::headerless_radians, 30.0, 40.0, false},
-      {PublishedLayout::microbit_ms, 50.0, 10.0, false},
+      {PublishedLayout::microbit_ms, 50.0, 10.0, false}, {PublishedLayout::microbit_two_axes, 30.0, 20.0, false},
   };
   for (const Family& f : families) {
     constexpr int kRuns = 200;
@@ -392,7 +400,8 @@ TEST_CASE("Published layouts: the period within its uncertainty of the truth, 20
       const Recording r =
           parse_recording(test::published_csv(sim, s.length, f.layout, noise, static_cast<std::uint64_t>(seed)), "sim");
       const SignalKind kind = f.track                                        ? SignalKind::position
-                              : f.layout == PublishedLayout::microbit_ms ? SignalKind::unknown
+                              : f.layout == PublishedLayout::microbit_ms || f.layout == PublishedLayout::microbit_two_axes
+                                  ? SignalKind::unknown
                                                                          : SignalKind::angle;
       REQUIRE(r.kind == kind);
       const SwingAnalysis a = analyse_swings(r, "sim");

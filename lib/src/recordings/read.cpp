@@ -455,8 +455,10 @@ Layout detect(RecordingFormat forced, const std::vector<Column>& cols, bool prea
 /// Roles of a headerless file's columns from their numbers: a counter steps
 /// by one, the first other increasing column is the time, a constant is
 /// unused; of two that remain, one the rate of the other is an angle and its
-/// angular velocity, else they are a track's x and y.
-void roles_from_content(std::vector<Column>& cols, const Content& content) {
+/// angular velocity; the first swinging at twice the second's frequency is
+/// no track's x (a bob's y swings at twice x's): the second is then the one
+/// signal; else they are a track's x and y. Returns a note on a column set aside.
+std::optional<std::string> roles_from_content(std::vector<Column>& cols, const Content& content) {
   std::optional<std::size_t> time;
   std::vector<std::size_t> signals;
   for (std::size_t j = 0; j < cols.size(); ++j) {
@@ -470,7 +472,8 @@ void roles_from_content(std::vector<Column>& cols, const Content& content) {
     else signals.push_back(j);
   }
   for (std::size_t j : signals) cols[j].known = false;
-  if (!time || signals.size() > 2) return;  // detect() refuses, naming them
+  if (!time || signals.size() > 2) return std::nullopt;  // detect() refuses, naming them
+  std::optional<std::string> note;
   if (signals.size() == 1) {
     // One signal beside a time: an angle if its numbers can be one (layout_for).
     cols[signals[0]].role = Role::angle;
@@ -482,11 +485,18 @@ void roles_from_content(std::vector<Column>& cols, const Content& content) {
       cols[signals[0]].role = Role::angle, cols[signals[1]].role = Role::omega;
     } else if (is_rate_of(t, b, a)) {
       cols[signals[1]].role = Role::angle, cols[signals[0]].role = Role::omega;
+    } else if (const double pa = rough_period(t, a), pb = rough_period(t, b); pa < 0.7 * pb) {
+      // An accelerometer's axis along the string beside the one across it, say.
+      cols[signals[1]].role = Role::angle;
+      note = "\"" + column_label(cols[signals[0]].name, signals[0] + 1) + "\" swings at " + format_number(pb / pa, 2) +
+             " times the frequency of \"" + column_label(cols[signals[1]].name, signals[1] + 1) +
+             "\": not a track's x beside its y (y swings at twice x's frequency), so set aside";
     } else {
       cols[signals[0]].role = Role::x, cols[signals[1]].role = Role::y;
     }
   }
   for (std::size_t j : signals) cols[j].known = true;
+  return note;
 }
 
 /// Why a column the layout does not use is left out.
@@ -707,7 +717,9 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
     }
   }
   const Content content{table};
-  if (headerless && cols.size() > 1 && format != RecordingFormat::plain) roles_from_content(cols, content);
+  if (headerless && cols.size() > 1 && format != RecordingFormat::plain) {
+    if (auto note = roles_from_content(cols, content)) header_notes.push_back({0, std::move(*note)});
+  }
   Layout layout = detect(format, cols, preamble, headerless, file, header_line, run, track, &content);
   const bool holds_sets = layout.format == RecordingFormat::pasco || (layout.format == RecordingFormat::tracker && !tracks.empty());
   if (!set.empty() && !holds_sets) {

@@ -276,4 +276,32 @@ inline std::string glitchy_phyphox_csv(const SimulatedRecording& r, int repeats,
   return out;
 }
 
+/// phyphox's experiment file saved with its data (".phyphox", issue 38): the
+/// gyroscope's buffers as <container init="v1,v2,...">, in Java's float
+/// notation, and an <export> whose sets name them: "Raw Data" (time and the
+/// three rates) after "Autocorrelation" (a buffer of the app's analysis,
+/// which reads as no recording), as the Pendulum experiment saves them.
+inline std::string phyphox_experiment_xml(const SimulatedRecording& r) {
+  std::string out = "<phyphox version=\"1.14\" locale=\"en\">\n<title>Pendulum</title>\n<data-containers>\n";
+  char value[40];
+  const auto buffer = [&](const std::string& name, const std::vector<double>& v) {
+    out += "  <container size=\"" + std::to_string(v.size()) + "\" init=\"";
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      out += (k ? "," : "") + std::string(value, std::snprintf(value, sizeof value, "%.9E", v[k]));
+    }
+    out += "\">" + name + "</container>\n";
+  };
+  buffer("gyr_time", r.t);
+  buffer("gyrX", r.rate[0]), buffer("gyrY", r.rate[1]), buffer("gyrZ", r.rate[2]);
+  buffer("autocorrelation_t", {0.0, 0.02, 0.04});
+  buffer("autocorrelation", {1.0, 0.9, 0.7});
+  out += "  <container init=\"1.3\">periodEstimate</container>\n</data-containers>\n<export>\n"
+         "  <set name=\"Autocorrelation\">\n    <data name=\"Time shift (s)\">autocorrelation_t</data>\n"
+         "    <data name=\"Autocorrelation of sum\">autocorrelation</data>\n  </set>\n"
+         "  <set name=\"Raw Data\">\n    <data name=\"Time (s)\">gyr_time</data>\n"
+         "    <data name=\"Rotation x (rad/s)\">gyrX</data>\n    <data name=\"Rotation y (rad/s)\">gyrY</data>\n"
+         "    <data name=\"Rotation z (rad/s)\">gyrZ</data>\n  </set>\n</export>\n</phyphox>\n";
+  return out;
+}
+
 }  // namespace pendulum::test

@@ -17,6 +17,7 @@
 #include "pendulum/scene_json.hpp"
 #include "recording_simulation.hpp"
 #include "../lib/src/recordings/stages.hpp"
+#include "../lib/src/recordings/zip.hpp"
 
 using namespace pendulum;
 using namespace pendulum::recording_text;
@@ -447,4 +448,31 @@ TEST_CASE("A scene's recording reference declares the columns as import --column
     CHECK(e.path() == "timing.recording");
     CHECK_THAT(e.what(), Contains("expected a role"));
   }
+}
+
+TEST_CASE("A phyphox experiment file is read as the CSV export of its best set", "[recordings][columns][phyphox]") {
+  // 30 s of the gyroscope simulation (tests/recording_simulation.hpp, defaults: 0.8 m, 100 Hz).
+  test::RecordingSimulation s;
+  s.duration = 30.0;
+  const auto sim = simulate_recording(s);
+  const std::string xml = test::phyphox_experiment_xml(sim);
+  REQUIRE(looks_like_phyphox_experiment(xml));
+  CHECK_FALSE(looks_like_phyphox_experiment(test::phyphox_gyroscope_csv(sim, false)));
+  const Recording r = read_phyphox_experiment(xml, "p.phyphox", RecordingFormat::automatic, {});
+  CHECK(r.format == RecordingFormat::phyphox);
+  CHECK(r.kind == SignalKind::angular_rate);
+  CHECK(r.set == "Raw Data");
+  CHECK(has_note(r, "the set \"Autocorrelation\" is not used"));
+  // Its numbers are the CSV export's, value for value (both print 10 significant digits).
+  const Recording csv = parse_recording(test::phyphox_gyroscope_csv(sim, false), "p.csv");
+  CHECK(r.time == csv.time);
+  CHECK(r.channels == csv.channels);
+  CHECK(analyse_swings(r, "p").period.value == analyse_swings(csv, "p").period.value);
+  // A set by its name; one that is not there names those that are.
+  CHECK(read_phyphox_experiment(xml, "p.phyphox", RecordingFormat::automatic, "raw data").set == "Raw Data");
+  CHECK_THROWS_WITH(read_phyphox_experiment(xml, "p.phyphox", RecordingFormat::automatic, "Gyroscope"),
+                    Contains("no set \"Gyroscope\"; expected one of its sets: \"Autocorrelation\", \"Raw Data\""));
+  CHECK_THROWS_WITH(read_phyphox_experiment("<phyphox version=\"1.14\"><data-containers/></phyphox>", "e.phyphox",
+                                            RecordingFormat::automatic, {}),
+                    Contains("without an <export>"));
 }

@@ -902,12 +902,13 @@ Recording read_recording(const std::string& path, RecordingFormat format, const 
                                       "complete recording: read it again once it is whole");
   };
   try {
-    if (looks_like_zip(map.text()) && !columns.empty()) {
+    if ((looks_like_zip(map.text()) || looks_like_phyphox_experiment(map.text())) && !columns.empty()) {
       throw InputError(path, "a zip archive with columns declared; expected them for a text export only (a zip's "
                              "sets are phyphox's, whose headers say)");
     }
-    Recording r = looks_like_zip(map.text()) ? read_zip_recording(map.text(), path, format, set, limits)
-                                             : parse_recording(map.text(), path, format, set, columns);
+    Recording r = looks_like_zip(map.text())                 ? read_zip_recording(map.text(), path, format, set, limits)
+                  : looks_like_phyphox_experiment(map.text()) ? read_phyphox_experiment(map.text(), path, format, set)
+                                                              : parse_recording(map.text(), path, format, set, columns);
     check_unchanged();
     return r;
   } catch (const InputError&) {

@@ -235,7 +235,7 @@ Recording read_phyphox_experiment(std::string_view xml, const std::string& file,
     const std::string name = attribute(sets[k].first, "name").value_or("set " + std::to_string(k + 1));
     if (names.size() < 300) names += (names.empty() ? "\"" : ", \"") + one_line(name, 80, true) + "\"";
     if (!set.empty() && lower_case(name) != lower_case(set)) continue;
-    const std::size_t from = exported.find(sets[k].first);
+    const std::size_t from = static_cast<std::size_t>(sets[k].first.data() - exported.data());  // its own tag's place
     const std::string_view body = exported.substr(from, exported.find("</set>", from) - from);
     std::vector<std::string> header;
     std::vector<std::vector<std::string_view>> columns;

@@ -11,6 +11,7 @@
 #include "pendulum/files.hpp"
 #include "pendulum/input_error.hpp"
 #include "pendulum/output.hpp"
+#include "pendulum/recordings/read.hpp"
 #include "pendulum/recordings/table.hpp"
 #include "pendulum/scene_json.hpp"
 
@@ -23,6 +24,16 @@ bool is_scene_text(const std::string& text) {
   const std::size_t bom = text.compare(0, 3, "\xef\xbb\xbf") == 0 ? 3 : 0;
   const std::size_t first = text.find_first_not_of(" \t\r\n", bom);
   return first != std::string::npos && text[first] == '{';
+}
+
+/// True if the file at `path` reads as a recording (read_recording).
+bool reads_as_recording(const std::string& path) {
+  try {
+    (void)read_recording(path);
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
 }
 
 /// The scene that reduces the recording `file` at `length` (m): its timing,
@@ -73,14 +84,21 @@ Command add_reduce_command(CLI::App& app) {
     }
     // A recording is read by its own reader, not as a scene's text.
     const std::string text = o->length ? recording_scene(o->file, *o->length, o->length_uncertainty) : read_input(o->file);
-    // A table says so as the scene reader reads it; anything else not JSON is taken for a recording.
-    if (!o->length && !is_scene_text(text) && !looks_like_settings_table(text)) {
-      throw InputError(o->file, "not a scene (JSON): a recording? expected a scene, or a recording with the "
-                                "pendulum's length: pendulum-g reduce " + printable_name(o->file) + " --length L (m, "
-                                "pivot to bob centre; --length-uncertainty U), or pendulum-g import " +
-                                printable_name(o->file) + " for its scene parts (docs/recordings.md)");
-    }
-    const ParsedScene scene = parse_scene(text, scene_files(o->file, o->allow_outside));
+    const ParsedScene scene = [&] {
+      try {
+        return parse_scene(text, scene_files(o->file, o->allow_outside));
+      } catch (const InputError&) {
+        // A file that is no scene but reads as a recording: say how to reduce it.
+        if (o->length || o->file == "-" || is_scene_text(text) || looks_like_settings_table(text) ||
+            !reads_as_recording(o->file)) {
+          throw;
+        }
+        throw InputError(o->file, "a recording, not a scene (JSON); expected a scene, or the recording with the "
+                                  "pendulum's length: pendulum-g reduce " + printable_name(o->file) + " --length L (m, "
+                                  "pivot to bob centre; --length-uncertainty U), or pendulum-g import " +
+                                  printable_name(o->file) + " for its scene parts (docs/recordings.md)");
+      }
+    }();
     const Analysis analysis = analyse(scene, o->analysis);
     const std::string output =
         o->format == "table"

@@ -349,7 +349,7 @@ TEST_CASE("reduce RECORDING --length reduces it as a scene naming it; without th
   const Run bare = run("reduce " + recording);
   CHECK(bare.status == 1);
   CHECK(bare.out.empty());
-  CHECK_THAT(bare.err, Contains("not a scene (JSON): a recording?") && Contains("--length L") &&
+  CHECK_THAT(bare.err, Contains("a recording, not a scene (JSON)") && Contains("--length L") &&
                            !Contains("not valid JSON"));
   // Options out of place are usage errors.
   CHECK(run("reduce " + recording + " --length -0.8").status == 2);

@@ -171,6 +171,17 @@ enum class PublishedLayout {
   headerless_timer,    ///< "n<TAB>t", no header: one stamp per period (theta up through 0)
   spaces,              ///< "   t      theta (rad)" and columns aligned by runs of spaces
   repeated_stamps,     ///< "Time (s),Angle (rad)": stamps of a 100 Hz clock printed with 3 decimals at 500 Hz
+  // Issue 38's quirks:
+  headerless_degrees,  ///< "t theta" by a space, no header: an OpenCV angle track in degrees
+  headerless_radians,  ///< the same in radians
+  microbit_ms,         ///< "ms, mg", no header: a micro:bit's millisecond clock and its tangential
+                       ///< acceleration g sin(theta) in whole milli-g
+  microbit_two_axes,   ///< "ms<TAB>along<TAB>across", no header: a micro:bit's axis along the string,
+                       ///< -g(3 cos(theta) - 2) (at twice the swing's frequency), then g sin(theta), whole milli-g
+  timer_ms,            ///< "n<TAB>ms", no header: a microcontroller's stamps, one a period, in whole ms
+  slash_units,         ///< "Time/s,Angle/rad": the unit after a slash
+  header_mismatch,     ///< "x y dx dy" over rows of two columns (time, angle in degrees): a header of other columns
+  portuguese,          ///< "frame,tempo,x,y": a frame counter, the time in Portuguese, pixels
 };
 
 inline std::string published_csv(const SimulatedRecording& r, double length, PublishedLayout layout, double noise,
@@ -190,13 +201,24 @@ inline std::string published_csv(const SimulatedRecording& r, double length, Pub
       break;
     case PublishedLayout::spaces: put("%10s %14s\n", "t", "theta (rad)"); break;
     case PublishedLayout::repeated_stamps: put("Time (s),Angle (rad)\n"); break;
+    case PublishedLayout::slash_units: put("Time/s,Angle/rad\n"); break;
+    case PublishedLayout::header_mismatch: put("x y dx dy\n"); break;
+    case PublishedLayout::portuguese: put("frame,tempo,x,y\n"); break;
     case PublishedLayout::headerless_txy:
-    case PublishedLayout::headerless_timer: break;
+    case PublishedLayout::headerless_timer:
+    case PublishedLayout::headerless_degrees:
+    case PublishedLayout::headerless_radians:
+    case PublishedLayout::microbit_ms:
+    case PublishedLayout::microbit_two_axes:
+    case PublishedLayout::timer_ms: break;
   }
-  if (layout == PublishedLayout::headerless_timer) {
+  if (layout == PublishedLayout::headerless_timer || layout == PublishedLayout::timer_ms) {
     for (std::size_t k = 0, n = 1; k < r.zero_times.size(); ++k) {
       // Up through zero: the release is at +theta0, so the odd zeros.
-      if (k % 2 == 1) put("%zu\t%.4f\n", n++, r.zero_times[k] + noise * normal.next());
+      const double t = r.zero_times[k] + noise * normal.next();
+      if (k % 2 == 1) {
+        layout == PublishedLayout::timer_ms ? put("%zu\t%.0f\n", n++, 1000.0 * t) : put("%zu\t%.4f\n", n++, t);
+      }
     }
     return out;
   }
@@ -213,7 +235,17 @@ inline std::string published_csv(const SimulatedRecording& r, double length, Pub
       case PublishedLayout::headerless_txy: put("%.4f\t%.5f\t%.5f\n", t, x, y); break;
       case PublishedLayout::spaces: put("%10.4f %14.6f\n", t, th + e1); break;
       case PublishedLayout::repeated_stamps: put("%.3f,%.6f\n", std::floor(t * 100.0) / 100.0, th + e1); break;
-      case PublishedLayout::headerless_timer: break;
+      case PublishedLayout::headerless_degrees: put("%.4f %.4f\n", t, (th + e1) * kDeg); break;
+      case PublishedLayout::headerless_radians: put("%.4f %.6f\n", t, th + e1); break;
+      case PublishedLayout::microbit_ms: put("%.0f, %.0f\n", 1000.0 * t, 1000.0 * std::sin(th + e1)); break;
+      case PublishedLayout::microbit_two_axes:
+        put("%.0f\t%.0f\t%.0f\n", 1000.0 * t, -1000.0 * (3.0 * std::cos(th + e2) - 2.0), 1000.0 * std::sin(th + e1));
+        break;
+      case PublishedLayout::slash_units: put("%.3f,%.6f\n", t, th + e1); break;
+      case PublishedLayout::header_mismatch: put("%.6E %.6E\n", t, (th + e1) * kDeg); break;
+      case PublishedLayout::portuguese: put("%zu,%.9f,%.0f,%.0f\n", k + 1, t, 640.0 + 1000.0 * x, 200.0 - 1000.0 * y); break;
+      case PublishedLayout::headerless_timer:
+      case PublishedLayout::timer_ms: break;
     }
   }
   return out;
@@ -241,6 +273,34 @@ inline std::string glitchy_phyphox_csv(const SimulatedRecording& r, int repeats,
   }
   std::string out = clean.substr(0, clean.find('\n') + 1);
   for (const auto& row : rows) out += row;
+  return out;
+}
+
+/// phyphox's experiment file saved with its data (".phyphox", issue 38): the
+/// gyroscope's buffers as <container init="v1,v2,...">, in Java's float
+/// notation, and an <export> whose sets name them: "Raw Data" (time and the
+/// three rates) after "Autocorrelation" (a buffer of the app's analysis,
+/// which reads as no recording), as the Pendulum experiment saves them.
+inline std::string phyphox_experiment_xml(const SimulatedRecording& r) {
+  std::string out = "<phyphox version=\"1.14\" locale=\"en\">\n<title>Pendulum</title>\n<data-containers>\n";
+  char value[40];
+  const auto buffer = [&](const std::string& name, const std::vector<double>& v) {
+    out += "  <container size=\"" + std::to_string(v.size()) + "\" init=\"";
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      out += (k ? "," : "") + std::string(value, std::snprintf(value, sizeof value, "%.9E", v[k]));
+    }
+    out += "\">" + name + "</container>\n";
+  };
+  buffer("gyr_time", r.t);
+  buffer("gyrX", r.rate[0]), buffer("gyrY", r.rate[1]), buffer("gyrZ", r.rate[2]);
+  buffer("autocorrelation_t", {0.0, 0.02, 0.04});
+  buffer("autocorrelation", {1.0, 0.9, 0.7});
+  out += "  <container init=\"1.3\">periodEstimate</container>\n</data-containers>\n<export>\n"
+         "  <set name=\"Autocorrelation\">\n    <data name=\"Time shift (s)\">autocorrelation_t</data>\n"
+         "    <data name=\"Autocorrelation of sum\">autocorrelation</data>\n  </set>\n"
+         "  <set name=\"Raw Data\">\n    <data name=\"Time (s)\">gyr_time</data>\n"
+         "    <data name=\"Rotation x (rad/s)\">gyrX</data>\n    <data name=\"Rotation y (rad/s)\">gyrY</data>\n"
+         "    <data name=\"Rotation z (rad/s)\">gyrZ</data>\n  </set>\n</export>\n</phyphox>\n";
   return out;
 }
 

@@ -327,3 +327,31 @@ TEST_CASE("import: a track with too few swings' peaks for a smooth curve shows t
                                  "swings' from "));
   std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("reduce RECORDING --length reduces it as a scene naming it; without the length it says what to do",
+          "[cli][import][scene]") {
+  const std::string recording = std::string(PENDULUM_DATA_DIR) + "/recordings/phyphox_pendulum_raw.tsv";
+  const std::string scene = temporary_file();
+  std::ofstream(scene) << json{{"timing", {{"recording", recording}}},
+                               {"length", {{"value", 0.8}, {"uncertainty", 0.0005}, {"unit", "m"}}}}
+                              .dump();
+  const Run named = run("reduce --allow-outside " + scene);
+  std::remove(scene.c_str());
+  REQUIRE(named.status == 0);
+  const Run direct = run("reduce " + recording + " --length 0.8 --length-uncertainty 0.0005");
+  INFO(direct.err);
+  REQUIRE(direct.status == 0);
+  const json a = json::parse(direct.out), b = json::parse(named.out);
+  CHECK(a.at("g") == b.at("g"));
+  CHECK(a.at("period") == b.at("period"));
+  CHECK(a.at("recordings").at(0).at("recording") == "phyphox_pendulum_raw.tsv");
+  // Without the length: what to do, not "not valid JSON".
+  const Run bare = run("reduce " + recording);
+  CHECK(bare.status == 1);
+  CHECK(bare.out.empty());
+  CHECK_THAT(bare.err, Contains("a recording, not a scene (JSON)") && Contains("--length L") &&
+                           !Contains("not valid JSON"));
+  // Options out of place are usage errors.
+  CHECK(run("reduce " + recording + " --length -0.8").status == 2);
+  CHECK(run("reduce " + recording + " --length-uncertainty 0.001").status == 2);
+}

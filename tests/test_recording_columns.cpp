@@ -17,6 +17,7 @@
 #include "pendulum/scene_json.hpp"
 #include "recording_simulation.hpp"
 #include "../lib/src/recordings/stages.hpp"
+#include "../lib/src/recordings/zip.hpp"
 
 using namespace pendulum;
 using namespace pendulum::recording_text;
@@ -70,6 +71,16 @@ TEST_CASE("Words: the header's spellings give roles and units", "[recordings][co
       {"n", Role::counter, ""},
       {"d\xce\xb8", Role::uncertainty, ""},
       {"Pressure (hPa)", Role::other, "hpa"},
+      // The unit after a slash (ISO 80000's table headings), words in the languages students write.
+      {"Time/s", Role::time, "s"},
+      {"Angle/rad", Role::angle, "rad"},
+      {"AngVel/rad/s", Role::other, "rad/s"},
+      {"x/y", Role::other, ""},
+      {"tempo", Role::time, ""},
+      {"Zeit (s)", Role::time, "s"},
+      {"tijd [ms]", Role::time, "ms"},
+      {"hoek", Role::angle, ""},
+      {"\xc3\xa2ngulo (graus)", Role::angle, "graus"},
   };
   for (const auto& c : cases) {
     INFO(c.cell);
@@ -78,6 +89,7 @@ TEST_CASE("Words: the header's spellings give roles and units", "[recordings][co
     CHECK(col.unit == c.unit);
   }
   CHECK(classify("Time (s) Run #2").run == 2);
+  CHECK(classify("x/y").word == "x/y");
   // Latin-1 (a Windows exporter): 0xB0 is the degree sign.
   CHECK(classify("Angle (\xb0)").unit == "deg");
   CHECK(to_utf8("\xb5s") == "\xc2\xb5s");
@@ -97,6 +109,9 @@ TEST_CASE("Split: delimiters, runs of spaces, quotes, decimal commas", "[recordi
   const auto quoted = split_cells("\"Time, s\",\"Angle (rad)\"", Dialect{',', false});
   REQUIRE(quoted.size() == 2);
   CHECK(quoted[0] == "Time, s");
+  // A trailing delimiter makes no column.
+  CHECK(filled_cells(split_cells("t,x,y,", Dialect{',', false})) == 3);
+  CHECK(filled_cells(split_cells("x y dx dy\t\t\t", Dialect{'\t', false})) == 1);
 }
 
 TEST_CASE("Content: counters, constants, clocks and angle units from the numbers", "[recordings][columns]") {
@@ -121,6 +136,33 @@ TEST_CASE("Content: counters, constants, clocks and angle units from the numbers
   CHECK(is_rate_of(t, th, om));
   CHECK_FALSE(is_rate_of(t, x, y));
   CHECK_FALSE(is_rate_of(t, y, x));
+  // A rough period: a 1.8 s swing sampled at 100 Hz, in seconds and in milliseconds.
+  std::vector<double> ts, ms, swing;
+  for (int k = 0; k < 2000; ++k) {
+    ts.push_back(0.01 * k), ms.push_back(10.0 * k);
+    swing.push_back(3.0 + 0.5 * std::cos(2.0 * M_PI * ts.back() / 1.8));
+  }
+  CHECK(rough_period(ts, swing) == Approx(1.8).epsilon(0.01));
+  CHECK(rough_period(ms, swing) == Approx(1800.0).epsilon(0.01));
+  CHECK(std::isnan(rough_period(ts, std::vector<double>(2000, 1.0))));
+  CHECK(median_step({0.0, 10.0, 30.0, 40.0, 50.0}) == 10.0);
+  // A time's unit from its period: 60 s is a pendulum 900 m long.
+  CHECK(unitless_time(1.8).first == "s");
+  CHECK(unitless_time(59.0).first == "s");
+  CHECK(unitless_time(1800.0).first == "ms");
+  CHECK_THAT(unitless_time(1800.0).second, Contains("read as milliseconds") && Contains("1.8 s"));
+  CHECK(unitless_time(1.8e6).first == "us");
+  CHECK(unitless_time(1e12).first == "s");
+  CHECK(unitless_time(std::nan("")).first == "s");
+  // One signal can be an angle unless its numbers are whole (raw counts) or beyond +-180.
+  std::vector<double> counts, wide, narrow;
+  for (int k = 0; k < 400; ++k) {
+    counts.push_back(std::round(150.0 * std::sin(0.05 * k)));
+    wide.push_back(200.5 * std::sin(0.05 * k)), narrow.push_back(19.5 * std::sin(0.05 * k));
+  }
+  CHECK_FALSE(angle_by_numbers(examine(counts)));
+  CHECK_FALSE(angle_by_numbers(examine(wide)));
+  CHECK(angle_by_numbers(examine(narrow)));
 }
 
 TEST_CASE("Clean: repeated stamps kept with their quantum, glitches dropped with their line", "[recordings][columns]") {
@@ -231,6 +273,52 @@ TEST_CASE("Published layouts: the roles the reader chose and what it said", "[re
   REQUIRE(timer.counts.size() == timer.time.size());
   CHECK(timer.counts.front() == 1.0);
 
+  // Issue 38: one signal beside a time, units and words the header gives otherwise.
+  const Recording degrees = read(PublishedLayout::headerless_degrees);
+  CHECK(degrees.kind == SignalKind::angle);
+  CHECK(role_of(degrees, 1) == "time:s/content");
+  CHECK(role_of(degrees, 2) == "angle:deg/content");
+  CHECK(*std::max_element(degrees.channels[0].begin(), degrees.channels[0].end()) == Approx(s.theta0).epsilon(0.01));
+  const Recording radians = read(PublishedLayout::headerless_radians);
+  CHECK(role_of(radians, 2) == "angle:rad/content");
+  CHECK(has_note(radians, "if it is degrees, say so"));
+
+  const Recording microbit = read(PublishedLayout::microbit_ms);
+  CHECK(microbit.kind == SignalKind::unknown);
+  CHECK(role_of(microbit, 1) == "time:ms/content");
+  CHECK(role_of(microbit, 2) == "signal/content");
+  CHECK(has_note(microbit, "read as milliseconds"));
+  CHECK(has_note(microbit, "whole numbers only"));
+  CHECK(microbit.time[1] == Approx(1.0 / s.rate_hz).margin(1e-3));
+
+  // The axis along the string swings at twice the swing's frequency: no track's x beside its y.
+  const Recording axes = read(PublishedLayout::microbit_two_axes);
+  CHECK(axes.kind == SignalKind::unknown);
+  CHECK(role_of(axes, 1) == "time:ms/content");
+  CHECK_THAT(role_of(axes, 2), Contains("unused"));
+  CHECK(role_of(axes, 3) == "signal/content");
+  CHECK(has_note(axes, "column 2\" swings at 2 times the frequency of \"column 3\": not a track's x"));
+
+  const Recording stamped = read(PublishedLayout::timer_ms);
+  CHECK(stamped.kind == SignalKind::event_stamps);
+  CHECK(role_of(stamped, 2) == "event stamp:ms/content");
+  CHECK(stamped.time.back() < s.duration);
+
+  const Recording slash = read(PublishedLayout::slash_units);
+  CHECK(slash.kind == SignalKind::angle);
+  CHECK(role_of(slash, 1) == "time:s/header");
+  CHECK(role_of(slash, 2) == "angle:rad/header");
+
+  const Recording mismatch = read(PublishedLayout::header_mismatch);
+  CHECK(mismatch.kind == SignalKind::angle);
+  CHECK(role_of(mismatch, 2) == "angle:deg/content");
+  CHECK(has_note(mismatch, "the header names 4 columns over rows of 2"));
+
+  const Recording portuguese = read(PublishedLayout::portuguese);
+  CHECK(portuguese.kind == SignalKind::position);
+  CHECK(role_of(portuguese, 1) == "unused/header");
+  CHECK(role_of(portuguese, 2) == "time:s/header");
+
   const Recording spaced = read(PublishedLayout::spaces);
   CHECK(spaced.kind == SignalKind::angle);
   CHECK(role_of(spaced, 2) == "angle:rad/header");
@@ -265,9 +353,9 @@ TEST_CASE("Refusals: what cannot be read says the fix", "[recordings][columns]")
                     Contains("--format plain reads one column") && Contains("--columns"));
   CHECK(parse_recording("1\t0.1\n2\t0.2\n3\t0.4\n", "p.txt", RecordingFormat::plain, {}, "-,t:s").time ==
         std::vector<double>{0.1, 0.2, 0.4});
-  // A headerless time and one signal: which signal, the file cannot say.
-  CHECK_THROWS_WITH(parse_recording("0.1\t1\n0.2\t-2\n0.3\t1\n", "h.txt"),
-                    Contains("headerless file of 2 columns") && Contains("--columns"));
+  // A headerless time and three signals: which one, the file cannot say.
+  CHECK_THROWS_WITH(parse_recording("0.1\t5\t0.5\t2\n0.2\t-3\t-2\t3.5\n0.3\t1\t1\t-5\n", "h.txt"),
+                    Contains("headerless file of 4 columns") && Contains("--columns"));
   // Radians by the header, degrees by the numbers.
   CHECK_THROWS_WITH(parse_recording("Time (s),Angle (rad)\n0,-20\n0.1,0\n0.2,20\n0.3,0\n", "r.csv"),
                     Contains("over 180 deg: it holds degrees?"));
@@ -296,6 +384,10 @@ TEST_CASE("Published layouts: the period within its uncertainty of the truth, 20
       {PublishedLayout::pixel_track, 240.0, 10.0, true},    {PublishedLayout::tracker_degrees, 30.0, 3.0, false},
       {PublishedLayout::logger_pro_video, 30.0, 10.0, true}, {PublishedLayout::headerless_txy, 30.0, 10.0, true},
       {PublishedLayout::spaces, 30.0, 10.0, false},
+      // Issue 38: a headerless angle in degrees at a small swing and in radians at a large
+      // one; a micro:bit's whole milli-g on a millisecond clock, timed only.
+      {PublishedLayout::headerless_degrees, 30.0, 5.0, false}, {PublishedLayout::headerless_radians, 30.0, 40.0, false},
+      {PublishedLayout::microbit_ms, 50.0, 10.0, false}, {PublishedLayout::microbit_two_axes, 30.0, 20.0, false},
   };
   for (const Family& f : families) {
     constexpr int kRuns = 200;
@@ -308,7 +400,11 @@ TEST_CASE("Published layouts: the period within its uncertainty of the truth, 20
       const double noise = f.track ? 0.0015 : 0.0015 / s.length;
       const Recording r =
           parse_recording(test::published_csv(sim, s.length, f.layout, noise, static_cast<std::uint64_t>(seed)), "sim");
-      REQUIRE(r.kind == (f.track ? SignalKind::position : SignalKind::angle));
+      const SignalKind kind = f.track                                        ? SignalKind::position
+                              : f.layout == PublishedLayout::microbit_ms || f.layout == PublishedLayout::microbit_two_axes
+                                  ? SignalKind::unknown
+                                                                         : SignalKind::angle;
+      REQUIRE(r.kind == kind);
       const SwingAnalysis a = analyse_swings(r, "sim");
       std::vector<double> exact;
       for (const auto& c : a.crossings) {
@@ -352,4 +448,31 @@ TEST_CASE("A scene's recording reference declares the columns as import --column
     CHECK(e.path() == "timing.recording");
     CHECK_THAT(e.what(), Contains("expected a role"));
   }
+}
+
+TEST_CASE("A phyphox experiment file is read as the CSV export of its best set", "[recordings][columns][phyphox]") {
+  // 30 s of the gyroscope simulation (tests/recording_simulation.hpp, defaults: 0.8 m, 100 Hz).
+  test::RecordingSimulation s;
+  s.duration = 30.0;
+  const auto sim = simulate_recording(s);
+  const std::string xml = test::phyphox_experiment_xml(sim);
+  REQUIRE(looks_like_phyphox_experiment(xml));
+  CHECK_FALSE(looks_like_phyphox_experiment(test::phyphox_gyroscope_csv(sim, false)));
+  const Recording r = read_phyphox_experiment(xml, "p.phyphox", RecordingFormat::automatic, {});
+  CHECK(r.format == RecordingFormat::phyphox);
+  CHECK(r.kind == SignalKind::angular_rate);
+  CHECK(r.set == "Raw Data");
+  CHECK(has_note(r, "the set \"Autocorrelation\" is not used"));
+  // Its numbers are the CSV export's, value for value (both print 10 significant digits).
+  const Recording csv = parse_recording(test::phyphox_gyroscope_csv(sim, false), "p.csv");
+  CHECK(r.time == csv.time);
+  CHECK(r.channels == csv.channels);
+  CHECK(analyse_swings(r, "p").period.value == analyse_swings(csv, "p").period.value);
+  // A set by its name; one that is not there names those that are.
+  CHECK(read_phyphox_experiment(xml, "p.phyphox", RecordingFormat::automatic, "raw data").set == "Raw Data");
+  CHECK_THROWS_WITH(read_phyphox_experiment(xml, "p.phyphox", RecordingFormat::automatic, "Gyroscope"),
+                    Contains("no set \"Gyroscope\"; expected one of its sets: \"Autocorrelation\", \"Raw Data\""));
+  CHECK_THROWS_WITH(read_phyphox_experiment("<phyphox version=\"1.14\"><data-containers/></phyphox>", "e.phyphox",
+                                            RecordingFormat::automatic, {}),
+                    Contains("without an <export>"));
 }

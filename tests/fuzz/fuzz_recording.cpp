@@ -5,7 +5,8 @@
 // finite period, uncertainty and amplitudes, and no swing a negative
 // amplitude. A zip archive is refused here (parse_recording reads text;
 // libzip unpacks a file's bytes), so the zip reader is left to its
-// catalogue cases (tests/bad_recordings/). The same
+// catalogue cases (tests/bad_recordings/). A phyphox experiment file (XML)
+// is read here as `import` reads it (read_phyphox_experiment). The same
 // bytes as a table of settings and periods (docs/series.md, "Tables"): a
 // table that reads must make a scene that reads, or refuses clearly, and
 // reduces to a finite g.
@@ -21,6 +22,7 @@
 #include "pendulum/recordings/table.hpp"
 #include "pendulum/analysis.hpp"
 #include "pendulum/scene_json.hpp"
+#include "../../lib/src/recordings/zip.hpp"
 
 using pendulum::fuzz::require;
 
@@ -62,6 +64,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
   } catch (const pendulum::InputError& e) {
     pendulum::fuzz::require_clear_message(e);
+  }
+  if (pendulum::looks_like_phyphox_experiment(text)) {
+    try {
+      const pendulum::Recording r = pendulum::read_phyphox_experiment(text, "fuzz", pendulum::RecordingFormat::automatic, "");
+      const pendulum::SwingAnalysis a = pendulum::analyse_swings(r, "fuzz");
+      require(std::isfinite(a.period.value) && a.period.value > 0.0, "experiment period not finite and positive", "");
+    } catch (const pendulum::InputError& e) {
+      pendulum::fuzz::require_clear_message(e);
+    }
   }
   (void)pendulum::looks_like_settings_table(text);
   try {

@@ -77,6 +77,7 @@ struct Layout {
   double channel_scale = 1.0;
   std::string channel_unit;  ///< as read ("deg", "rad/s", "px"); empty where the kind has one unit
   std::string unit_why;      ///< how an angle's unit was decided, when not from the header
+  std::string time_why;      ///< how a time's unit was decided where the file gives none
 };
 
 /// True if the column holds one number throughout, or none (stops at the first other).
@@ -239,7 +240,13 @@ std::optional<Layout> layout_for(RecordingFormat format, const std::vector<Colum
       if (!t || !time_scale(cols[*t])) return std::nullopt;
       l.time = *t;
       l.time_scale = *time_scale(cols[*t]);
-      if (const auto a = find(cols, Role::angle, -1, -1, content)) {
+      if (const auto a = find(cols, Role::angle, -1, -1, content);
+          a && cols[*a].decided == "content" && content && !angle_by_numbers(content->facts(*a))) {
+        // The numbers alone called it a signal, and they are no angle's.
+        l.kind = SignalKind::unknown;
+        l.channels = {*a};
+        l.unit_why = "no header; " + not_an_angle_why(content->facts(*a));
+      } else if (a) {
         l.kind = SignalKind::angle;
         l.channels = {*a};
         l.channel_scale = angle_scale(cols[*a], l, content, *a);
@@ -289,6 +296,7 @@ std::string signal_role(SignalKind kind, Role role) {
     case SignalKind::gate_states: return "gate state";
     case SignalKind::acceleration: return "acceleration";
     case SignalKind::linear_acceleration: return "linear acceleration";
+    case SignalKind::unknown: return "signal";
     case SignalKind::blocking_times:
     case SignalKind::event_stamps: break;
   }
@@ -313,6 +321,7 @@ std::string columns_spec(const Layout& l, const std::vector<Column>& cols, const
       case SignalKind::acceleration: entries[j] = "a"; break;
       case SignalKind::position: entries[j] = (cols[j].role == Role::x ? "x" : "y") + (length ? ":" + unit : ""); break;
       case SignalKind::gate_states: entries[j] = "state"; break;
+      case SignalKind::unknown: entries[j] = "theta"; break;
       case SignalKind::blocking_times:
       case SignalKind::event_stamps: break;
     }
@@ -446,8 +455,10 @@ Layout detect(RecordingFormat forced, const std::vector<Column>& cols, bool prea
 /// Roles of a headerless file's columns from their numbers: a counter steps
 /// by one, the first other increasing column is the time, a constant is
 /// unused; of two that remain, one the rate of the other is an angle and its
-/// angular velocity, else they are a track's x and y.
-void roles_from_content(std::vector<Column>& cols, const Content& content) {
+/// angular velocity; the first swinging at twice the second's frequency is
+/// no track's x (a bob's y swings at twice x's): the second is then the one
+/// signal; else they are a track's x and y. Returns a note on a column set aside.
+std::optional<std::string> roles_from_content(std::vector<Column>& cols, const Content& content) {
   std::optional<std::size_t> time;
   std::vector<std::size_t> signals;
   for (std::size_t j = 0; j < cols.size(); ++j) {
@@ -461,8 +472,12 @@ void roles_from_content(std::vector<Column>& cols, const Content& content) {
     else signals.push_back(j);
   }
   for (std::size_t j : signals) cols[j].known = false;
-  if (!time || signals.size() > 2 || signals.size() == 1) return;  // detect() refuses, naming them
-  if (signals.size() == 2) {
+  if (!time || signals.size() > 2) return std::nullopt;  // detect() refuses, naming them
+  std::optional<std::string> note;
+  if (signals.size() == 1) {
+    // One signal beside a time: an angle if its numbers can be one (layout_for).
+    cols[signals[0]].role = Role::angle;
+  } else if (signals.size() == 2) {
     const auto& t = content.table.columns[*time];
     const auto& a = content.table.columns[signals[0]];
     const auto& b = content.table.columns[signals[1]];
@@ -470,11 +485,18 @@ void roles_from_content(std::vector<Column>& cols, const Content& content) {
       cols[signals[0]].role = Role::angle, cols[signals[1]].role = Role::omega;
     } else if (is_rate_of(t, b, a)) {
       cols[signals[1]].role = Role::angle, cols[signals[0]].role = Role::omega;
+    } else if (const double pa = rough_period(t, a), pb = rough_period(t, b); pa < 0.7 * pb) {
+      // An accelerometer's axis along the string beside the one across it, say.
+      cols[signals[1]].role = Role::angle;
+      note = "\"" + column_label(cols[signals[0]].name, signals[0] + 1) + "\" swings at " + format_number(pb / pa, 2) +
+             " times the frequency of \"" + column_label(cols[signals[1]].name, signals[1] + 1) +
+             "\": not a track's x beside its y (y swings at twice x's frequency), so set aside";
     } else {
       cols[signals[0]].role = Role::x, cols[signals[1]].role = Role::y;
     }
   }
   for (std::size_t j : signals) cols[j].known = true;
+  return note;
 }
 
 /// Why a column the layout does not use is left out.
@@ -543,12 +565,25 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
   const std::string_view original = text;
   text = strip_bom(text);
   const HeaderLines lines = find_header(text, file);
-  const std::optional<std::string_view>& header = lines.header;
+  std::optional<std::string_view> header = lines.header;
   const std::size_t header_line = lines.header_line;
   const bool preamble = lines.preamble;
   refuse_binary(original, static_cast<std::size_t>(text.data() - original.data()) + lines.data_offset, file);
   const DataRows data = data_rows(text, lines, file, "a recording");
-  const Dialect dialect = sniff(header, data.first);
+  std::vector<RecordingNote> header_notes;
+  Dialect dialect = sniff(header, data.first);
+  if (header) {
+    // A header naming other columns than the rows hold is no guide to them.
+    const std::size_t named = filled_cells(split_cells(*header, dialect));
+    const std::vector<std::string_view> first = split_cells(data.first, dialect);
+    if (named != first.size() && named != filled_cells(first)) {
+      header_notes.push_back({header_line, "the header names " + std::to_string(named) + " column" + (named == 1 ? "" : "s") +
+                                               " over rows of " + std::to_string(first.size()) +
+                                               ": it is set aside and the columns read by their numbers"});
+      header.reset();
+      dialect = sniff(header, data.first);
+    }
+  }
   const auto cells = [&](std::string_view line) { return split_cells(line, dialect); };
   const std::optional<std::string_view> above_header = lines.above;
   const bool several_tracks = lines.several_tracks;
@@ -682,8 +717,10 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
     }
   }
   const Content content{table};
-  if (headerless && cols.size() > 1 && format != RecordingFormat::plain) roles_from_content(cols, content);
-  const Layout layout = detect(format, cols, preamble, headerless, file, header_line, run, track, &content);
+  if (headerless && cols.size() > 1 && format != RecordingFormat::plain) {
+    if (auto note = roles_from_content(cols, content)) header_notes.push_back({0, std::move(*note)});
+  }
+  Layout layout = detect(format, cols, preamble, headerless, file, header_line, run, track, &content);
   const bool holds_sets = layout.format == RecordingFormat::pasco || (layout.format == RecordingFormat::tracker && !tracks.empty());
   if (!set.empty() && !holds_sets) {
     fail(file, header_line, 1, "got the set \"" + one_line(set, 40, true) + "\", but this " + recording_format_name(layout.format) +
@@ -719,6 +756,17 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
              "\" for 30 frames a second, or \"" + columns_spec(layout, cols, "t:s") + "\" if they are seconds");
   }
 
+  const bool sampled = layout.kind != SignalKind::gate_states && layout.kind != SignalKind::blocking_times &&
+                       layout.kind != SignalKind::event_stamps;
+  if (time_column.frame_rate == 0.0 && time_column.unit.empty()) {
+    // A microcontroller's clock counts milliseconds: the swing's period says which.
+    const double period = sampled ? rough_period(times, table.columns[layout.channels[0]]) : median_step(times);
+    const auto [unit, why] = unitless_time(period);
+    cols[layout.time].unit = unit;
+    layout.time_scale = *time_scale(unit);
+    layout.time_why = why;
+  }
+
   // The columns' report, before the numbers move into the recording.
   Recording rec;
   rec.set = track > 0 ? tracks[static_cast<std::size_t>(track - 1)] : set;  // a track as Tracker names it
@@ -739,7 +787,7 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
                                                          : "time";
       c.unit = cols[j].unit.empty() ? "s" : cols[j].unit;
       if (c.decided_by == "content") why.emplace_back("increasing, not a counter");
-      if (cols[j].unit.empty()) why.emplace_back("no unit given, read as seconds");
+      if (!layout.time_why.empty()) why.push_back(layout.time_why);
     } else if (used != layout.channels.end()) {
       c.role = signal_role(layout.kind, cols[j].role);
       c.unit = layout.kind == SignalKind::gate_states ? "" : layout.channel_unit;
@@ -747,11 +795,13 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
         c.decided_by = "content";
         why.push_back("the role by the " + cols[j].decided + "; " + layout.unit_why);
       }
+      if (layout.kind == SignalKind::unknown) why.push_back(layout.unit_why);
       if (layout.kind == SignalKind::position && cols[j].decided == "content") {
         why.emplace_back("two varying columns beside the time, neither the rate of the other");
       }
       if (layout.kind == SignalKind::angle && cols[j].decided == "content") {
-        why.emplace_back("the other varying column is its rate of change");
+        const bool rate = std::any_of(cols.begin(), cols.end(), [](const Column& o) { return o.role == Role::omega; });
+        why.emplace_back(rate ? "the other varying column is its rate of change" : "the one varying column beside the time");
       }
     } else if (layout.counter && j == *layout.counter) {
       c.role = "counter";
@@ -767,7 +817,9 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
     for (const auto& w : why) c.why += (c.why.empty() ? "" : "; ") + w;
     rec.columns.push_back(std::move(c));
   }
+  rec.notes = std::move(header_notes);
   if (!layout.unit_why.empty()) rec.notes.push_back({0, "\"" + names[layout.channels[0]] + "\": " + layout.unit_why});
+  if (layout.time_scale != 1.0 && !layout.time_why.empty()) rec.notes.push_back({0, "\"" + names[layout.time] + "\": " + layout.time_why});
   if (!declared) {
     const std::vector<Layout> others = other_signals(layout, cols, content);
     if (!others.empty()) rec.candidates.push_back({signal_words(layout, cols, names), columns_spec(layout, cols)});
@@ -814,8 +866,6 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
   if (layout.counter) rec.counts = take(*layout.counter, 1.0);
 
   // Time order: repeated and out-of-order samples, gaps.
-  const bool sampled = layout.kind != SignalKind::gate_states && layout.kind != SignalKind::blocking_times &&
-                       layout.kind != SignalKind::event_stamps;
   Cleaned cleaned = clean_times(rec.time, rows, table, sampled, file);
   rec.time_quantum = cleaned.quantum;
   rec.notes.insert(rec.notes.end(), cleaned.notes.begin(), cleaned.notes.end());
@@ -852,12 +902,13 @@ Recording read_recording(const std::string& path, RecordingFormat format, const 
                                       "complete recording: read it again once it is whole");
   };
   try {
-    if (looks_like_zip(map.text()) && !columns.empty()) {
+    if ((looks_like_zip(map.text()) || looks_like_phyphox_experiment(map.text())) && !columns.empty()) {
       throw InputError(path, "a zip archive with columns declared; expected them for a text export only (a zip's "
                              "sets are phyphox's, whose headers say)");
     }
-    Recording r = looks_like_zip(map.text()) ? read_zip_recording(map.text(), path, format, set, limits)
-                                             : parse_recording(map.text(), path, format, set, columns);
+    Recording r = looks_like_zip(map.text())                 ? read_zip_recording(map.text(), path, format, set, limits)
+                  : looks_like_phyphox_experiment(map.text()) ? read_phyphox_experiment(map.text(), path, format, set)
+                                                              : parse_recording(map.text(), path, format, set, columns);
     check_unchanged();
     return r;
   } catch (const InputError&) {

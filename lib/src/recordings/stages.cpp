@@ -148,6 +148,12 @@ Dialect sniff(std::optional<std::string_view> header, std::string_view first_dat
   return d;
 }
 
+std::size_t filled_cells(const std::vector<std::string_view>& cells) {
+  std::size_t n = cells.size();
+  while (n > 1 && cells[n - 1].empty()) --n;
+  return n;
+}
+
 std::vector<std::string_view> split_cells(std::string_view line, const Dialect& dialect) {
   std::vector<std::string_view> out;
   if (dialect.delimiter == ' ') {
@@ -232,6 +238,16 @@ const Spelling kSpellings[] = {
     {"t", Role::time},     // Tracker
     {"elapsed time", Role::time},
     {"timestamp", Role::time},
+    {"tempo", Role::time},   // Portuguese, Italian
+    {"tiempo", Role::time},  // Spanish
+    {"tijd", Role::time},    // Dutch
+    {"zeit", Role::time},    // German
+    {"temps", Role::time},   // French
+    {"hoek", Role::angle},   // Dutch
+    {"winkel", Role::angle},  // German
+    {"\xc3\xa2ngulo", Role::angle},  // ângulo, Portuguese
+    {"angulo", Role::angle},  // Spanish, Portuguese without the accent
+    {"\xc3\xa1ngulo", Role::angle},  // ángulo, Spanish
     {"gyroscope", Role::rate, true},            // phyphox's Gyroscope
     {"rotation", Role::rate, true},             // phyphox's Pendulum experiment (raw data)
     {"linear acceleration", Role::linear_acceleration, true},  // phyphox
@@ -313,6 +329,12 @@ const std::pair<const char*, const char*> kUnits[] = {
     {"pixel", "px"},     {"pixels", "px"},      {"m/s^2", "m/s^2"},     {"m/s\xc2\xb2", "m/s^2"},  // m/s²
 };
 
+/// True if `unit` is a spelling in kUnits.
+bool known_unit(std::string_view unit) {
+  const std::string u = lower_case(trim_spaces(unit));
+  return std::any_of(std::begin(kUnits), std::end(kUnits), [&](const auto& k) { return u == k.first; });
+}
+
 }  // namespace
 
 std::string normal_unit(std::string_view unit) {
@@ -360,6 +382,10 @@ Column classify(std::string_view raw) {
     if (const auto comma = s.rfind(','); comma != std::string::npos) {
       c.unit = s.substr(comma + 1);
       s.erase(comma);
+    } else if (const auto slash = s.find('/'); slash != std::string::npos && slash > 0 && known_unit(s.substr(slash + 1))) {
+      // "Time/s", "AngVel/rad/s": the quantity over its unit, as ISO 80000 writes a table's heading.
+      c.unit = s.substr(slash + 1);
+      s.erase(slash);
     }
   }
   c.unit = normal_unit(c.unit);
@@ -517,6 +543,67 @@ std::pair<std::string, std::string> unitless_angle(const ColumnFacts& facts) {
   }
   return {"rad", "swings by +-" + format_number(a, 3) + ", " + format_number(a * 180.0 / kPi, 3) +
                      " deg if radians: read as radians (if it is degrees, say so with --columns or \"columns\")"};
+}
+
+double rough_period(const std::vector<double>& time, const std::vector<double>& signal) {
+  // The middle and the half range from at most 4096 samples evenly spread.
+  const std::size_t stride = std::max<std::size_t>(1, signal.size() / 4096);
+  std::vector<double> some;
+  for (std::size_t k = 0; k < signal.size(); k += stride) {
+    if (std::isfinite(signal[k])) some.push_back(signal[k]);
+  }
+  if (some.size() < 8) return std::numeric_limits<double>::quiet_NaN();
+  const std::size_t q = some.size() / 20;
+  std::nth_element(some.begin(), some.begin() + q, some.end());
+  const double lo = some[q];
+  std::nth_element(some.begin(), some.end() - 1 - q, some.end());
+  const double hi = some[some.size() - 1 - q];
+  const double middle = 0.5 * (lo + hi), h = (hi - lo) / 6.0;
+  int side = 0, crossings = 0;
+  double first = 0.0, last = 0.0;
+  for (std::size_t k = 0; k < signal.size() && k < time.size(); ++k) {
+    const int now = signal[k] > middle + h ? 1 : signal[k] < middle - h ? -1 : 0;
+    if (now == 0 || now == side || !std::isfinite(time[k])) continue;
+    if (side != 0) (crossings++ == 0 ? first : last) = time[k];
+    side = now;
+  }
+  return crossings >= 3 ? 2.0 * (last - first) / (crossings - 1) : std::numeric_limits<double>::quiet_NaN();
+}
+
+double median_step(const std::vector<double>& time) {
+  std::vector<double> steps;
+  for (std::size_t k = 1; k < time.size(); ++k) {
+    if (std::isfinite(time[k] - time[k - 1]) && time[k] > time[k - 1]) steps.push_back(time[k] - time[k - 1]);
+  }
+  if (steps.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
+  return steps[steps.size() / 2];
+}
+
+std::pair<std::string, std::string> unitless_time(double period) {
+  // A period of 60 s is a pendulum 900 m long: none a student times.
+  constexpr double kShortest = 0.02, kLongest = 60.0;
+  if (!(period > kLongest)) return {"s", "no unit given, read as seconds"};
+  for (auto [unit, scale] : {std::pair{"ms", 1e-3}, {"us", 1e-6}}) {
+    if (period * scale >= kShortest && period * scale <= kLongest) {
+      const double km = kStandardGravity * period * period / (4.0 * kPi * kPi) / 1000.0;
+      return {unit, std::string("no unit given, read as ") + (scale == 1e-3 ? "milliseconds" : "microseconds") +
+                        ": as seconds its swing would take " + format_number(std::round(period), 12) +
+                        " s (a pendulum " + format_number(std::round(km), 12) + " km long), as " + unit + " " +
+                        format_number(period * scale, 3) +
+                        " s (if it is seconds, say so with --columns or \"columns\", e.g. \"t:s,...\")"};
+    }
+  }
+  return {"s", "no unit given, read as seconds"};
+}
+
+bool angle_by_numbers(const ColumnFacts& facts) { return !facts.integers && facts.half_range() <= 180.0; }
+
+std::string not_an_angle_why(const ColumnFacts& facts) {
+  return (facts.integers ? std::string("whole numbers only (a sensor's raw counts?)")
+                         : "swings by +-" + format_number(facts.half_range(), 3) + ", over 180 deg as degrees") +
+         ": no angle, so it times the swing without measuring it (if it is an angle, say so with --columns or "
+         "\"columns\", e.g. \"t:s,theta:deg\")";
 }
 
 bool is_rate_of(const std::vector<double>& t, const std::vector<double>& a, const std::vector<double>& b) {

@@ -99,6 +99,10 @@ std::string_view trim_cell(std::string_view s);
 /// the word before it.
 std::vector<std::string_view> split_cells(std::string_view line, const Dialect& dialect);
 
+/// The number of cells up to the last non-empty one (at least 1): a
+/// trailing delimiter makes no column.
+std::size_t filled_cells(const std::vector<std::string_view>& cells);
+
 // --- words ------------------------------------------------------------------
 
 /// What a column holds.
@@ -208,6 +212,31 @@ ColumnFacts examine(const std::vector<double>& column, bool range = true);
 /// +-A = facts.half_range(): "deg" where A > pi/2 (a swing beyond 90 deg is
 /// no pendulum's in radians), else "rad"; the note says which and why.
 std::pair<std::string, std::string> unitless_angle(const ColumnFacts& facts);
+
+/// Whether one signal the numbers alone found beside a time can be an
+/// angle: not whole numbers only (a sensor's raw counts: milli-g, an ADC's
+/// or an encoder's steps) and within +-180 as degrees. Needs the range.
+bool angle_by_numbers(const ColumnFacts& facts);
+
+/// Why such a signal is read for its period only, with the option that
+/// reads it as an angle.
+std::string not_an_angle_why(const ColumnFacts& facts);
+
+/// A rough period of a sampled signal, in the time column's own numbers:
+/// twice the mean interval between its crossings of the middle of its 5th
+/// and 95th percentiles, with hysteresis of a third of that half range (a
+/// plausibility check, not a measurement); NaN with fewer than 3 crossings.
+double rough_period(const std::vector<double>& time, const std::vector<double>& signal);
+
+/// The median of the positive steps of `time` (NaN without one): event
+/// stamps' period, within a factor 2 (one stamp a passage).
+double median_step(const std::vector<double>& time);
+
+/// The unit of a time column that gives none, from the period its numbers
+/// give (rough_period, median_step): seconds, unless that is over 60 s (a
+/// pendulum 900 m long) while in ms (then us) it lies in [0.02, 60] s, as a
+/// microcontroller's millisecond clock stamps it; and the column's why.
+std::pair<std::string, std::string> unitless_time(double period);
 
 /// True if `b` is, sample for sample, the rate of change of `a` (their
 /// correlation over the interior samples beyond 0.9): an angle and its

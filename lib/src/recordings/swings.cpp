@@ -179,6 +179,11 @@ Signal make_signal(const Recording& r) {
       return sig;
     }
     case SignalKind::angle: return remove_mean(r.channels[0]);
+    case SignalKind::unknown: {
+      Signal sig = remove_mean(r.channels[0]);
+      sig.has_amplitude = false;
+      return sig;
+    }
     case SignalKind::position: return track_angle(r);
     case SignalKind::gate_states:
     case SignalKind::blocking_times:
@@ -1000,6 +1005,9 @@ std::string no_amplitude_reason(const Recording& r, const Signal& sig, const Swi
       if (!sig.has_amplitude) return "the track is too straight for the centre of its circle (the pivot)";
       break;
     case SignalKind::event_stamps: return "event stamps time the swing but do not measure it";
+    case SignalKind::unknown:
+      return "the file does not say what its signal measures (if it is an angle, say so with --columns, e.g. "
+             "\"t:s,theta:deg\")";
     default: break;
   }
   return "fewer than 8 swings, or fewer than half of them, gave a peak (a half swing needs 7 samples for one)";
@@ -1020,7 +1028,8 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
                                                                       r.kind == SignalKind::acceleration ||
                                                                       r.kind == SignalKind::linear_acceleration ||
                                                                       r.kind == SignalKind::angle ||
-                                                                      r.kind == SignalKind::position
+                                                                      r.kind == SignalKind::position ||
+                                                                      r.kind == SignalKind::unknown
                                                                   ? " samples"
                                                                   : " events")});
     return out;
@@ -1183,7 +1192,8 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
         }
         break;
       case SignalKind::blocking_times:
-      case SignalKind::event_stamps: break;
+      case SignalKind::event_stamps:
+      case SignalKind::unknown: break;
     }
   };
   amplitudes();

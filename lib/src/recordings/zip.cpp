@@ -4,10 +4,13 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
+#include <string_view>
 #include <vector>
 
 #include "pendulum/input_error.hpp"
 #include "../text.hpp"
+#include "stages.hpp"
 
 namespace pendulum {
 
@@ -26,6 +29,45 @@ int rank(SignalKind kind) {
     default: return 3;
   }
 }
+
+/// The sets of an archive or an experiment file as they are parsed one by
+/// one: those that read, in order, and a note for each that does not.
+struct Sets {
+  std::vector<Recording> read;
+  std::vector<RecordingNote> unread;
+  std::string refused;  ///< their errors, for a file of which none reads
+
+  /// Parses the set `name` (its text), unless `wanted` names another; the
+  /// set asked for throws its own error.
+  void add(std::string_view text, const std::string& name, const std::string& file, RecordingFormat format,
+           const std::string& wanted) {
+    try {
+      read.push_back(parse_recording(text, file + "/" + one_line(name, 80, true), format));
+      read.back().set = name;
+    } catch (const InputError& bad) {
+      if (!wanted.empty()) throw;
+      if (refused.size() < 400) refused += std::string(refused.empty() ? "" : "; ") + bad.what();
+      unread.push_back({0, "the set \"" + one_line(name, 80, true) + "\" is not used: " + one_line(bad.what(), 200)});
+    }
+  }
+
+  /// The set with the best signal (rank), the others its candidates, handed
+  /// on as parsed (analyse_candidates compares them without reading them
+  /// again); a set's own columns cannot be declared.
+  Recording best() {
+    std::stable_sort(read.begin(), read.end(), [](const Recording& a, const Recording& b) { return rank(a.kind) < rank(b.kind); });
+    const auto what = [](const Recording& r) { return "the set \"" + one_line(r.set, 80, true) + "\""; };
+    Recording out = std::move(read.front());
+    if (read.size() > 1) {
+      out.candidates.push_back({what(out), "", out.set});
+      for (auto r = read.begin() + 1; r != read.end(); ++r) {
+        out.candidates.push_back({what(*r), "", r->set, std::make_shared<const Recording>(std::move(*r))});
+      }
+    }
+    out.notes.insert(out.notes.end(), unread.begin(), unread.end());
+    return out;
+  }
+};
 
 struct Entry {
   zip_uint64_t index;
@@ -91,11 +133,8 @@ Recording read_zip_recording(std::string_view bytes, const std::string& file, Re
          " bytes (RecordingLimits::max_bytes; a zip bomb?); expected a recording that fits");
   }
 
-  std::vector<Recording> read;  // the sets that read, in the archive's order
-  std::vector<RecordingNote> unread;
-  std::string refused;
+  Sets read;  // in the archive's order
   for (const Entry& e : sets) {
-    const std::string name = file + "/" + one_line(e.name, 80, true);
     std::string text(e.size, '\0');
     std::unique_ptr<zip_file_t, int (*)(zip_file_t*)> in(zip_fopen_index(archive.get(), e.index, 0), zip_fclose);
     // One byte more than stated: a set longer than its header says is damaged too.
@@ -105,30 +144,126 @@ Recording read_zip_recording(std::string_view bytes, const std::string& file, Re
       const char* why = in ? zip_file_strerror(in.get()) : zip_error_strerror(zip_get_error(archive.get()));
       fail("a damaged zip archive (" + one_line(e.name, 80, true) + ": " + why + "); expected phyphox's zip export, whole");
     }
-    try {
-      read.push_back(parse_recording(text, name, format));
-      read.back().set = e.name;
-    } catch (const InputError& bad) {
-      if (!set.empty()) throw;  // the set asked for: its own error
-      if (refused.size() < 400) refused += std::string(refused.empty() ? "" : "; ") + bad.what();
-      unread.push_back({0, "the set \"" + one_line(e.name, 80, true) + "\" is not used: " + one_line(bad.what(), 200)});
-    }
+    read.add(text, e.name, file, format, set);
   }
-  if (read.empty()) fail("a zip archive with no set that reads as a recording (" + refused + ")");
+  if (read.read.empty()) fail("a zip archive with no set that reads as a recording (" + read.refused + ")");
   zip_error_fini(&error);
-  std::stable_sort(read.begin(), read.end(), [](const Recording& a, const Recording& b) { return rank(a.kind) < rank(b.kind); });
-  // The sets are the candidates, the others handed on as parsed (analyse_candidates
-  // compares them without unpacking them again); a set's own columns cannot be declared in a zip.
-  const auto what = [](const Recording& r) { return "the set \"" + one_line(r.set, 80, true) + "\""; };
-  Recording best = std::move(read.front());
-  if (read.size() > 1) {
-    best.candidates.push_back({what(best), "", best.set});
-    for (auto r = read.begin() + 1; r != read.end(); ++r) {
-      best.candidates.push_back({what(*r), "", r->set, std::make_shared<const Recording>(std::move(*r))});
+  return read.best();
+}
+
+namespace {
+
+/// The text of the XML element or attribute value [p, e) with its five
+/// predefined entities decoded.
+std::string xml_text(std::string_view s) {
+  static const std::pair<std::string_view, char> kEntities[] = {
+      {"&amp;", '&'}, {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}, {"&apos;", '\''}};
+  std::string out;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const auto entity = std::find_if(std::begin(kEntities), std::end(kEntities),
+                                     [&](const auto& en) { return s.substr(i, en.first.size()) == en.first; });
+    if (entity == std::end(kEntities)) {
+      out += s[i];
+    } else {
+      out += entity->second;
+      i += entity->first.size() - 1;
     }
   }
-  best.notes.insert(best.notes.end(), unread.begin(), unread.end());
-  return best;
+  return out;
+}
+
+/// The value of attribute `name` in the start tag `tag` ("<set name=...>"), or nullopt.
+std::optional<std::string> attribute(std::string_view tag, std::string_view name) {
+  for (std::size_t at = tag.find(name); at != std::string_view::npos; at = tag.find(name, at + 1)) {
+    const std::size_t quote = at + name.size() + 2;  // after name="
+    if (at > 0 && tag[at - 1] == ' ' && tag.substr(at + name.size(), 2) == "=\"") {
+      const std::size_t end = tag.find('"', quote);
+      if (end != std::string_view::npos) return xml_text(tag.substr(quote, end - quote));
+    }
+  }
+  return std::nullopt;
+}
+
+/// Each element `<element ...>text</element>` of `xml` in order: its start tag and its text.
+std::vector<std::pair<std::string_view, std::string>> elements(std::string_view xml, std::string_view element) {
+  std::vector<std::pair<std::string_view, std::string>> out;
+  const std::string open = "<" + std::string(element), close = "</" + std::string(element) + ">";
+  for (std::size_t at = xml.find(open); at != std::string_view::npos; at = xml.find(open, at + 1)) {
+    const std::size_t tag_end = xml.find('>', at);
+    if (tag_end == std::string_view::npos) break;
+    const char after = xml[at + open.size()];
+    if (after != ' ' && after != '>' && after != '/') continue;  // <data-containers> is no <data>
+    const std::string_view tag = xml.substr(at, tag_end + 1 - at);
+    const std::size_t end = xml[tag_end - 1] == '/' ? tag_end : xml.find(close, tag_end);  // <x/> holds no text
+    if (end == std::string_view::npos) break;
+    out.emplace_back(tag, end == tag_end ? std::string() : xml_text(recording_text::trim_cell(xml.substr(tag_end + 1, end - tag_end - 1))));
+  }
+  return out;
+}
+
+}  // namespace
+
+bool looks_like_phyphox_experiment(std::string_view bytes) {
+  const std::string_view head = bytes.substr(0, 1024);
+  return head.find("<phyphox") != std::string_view::npos;
+}
+
+Recording read_phyphox_experiment(std::string_view xml, const std::string& file, RecordingFormat format,
+                                  const std::string& set) {
+  // The buffers: <container ... init="v1,v2,...">name</container>.
+  std::vector<std::pair<std::string, std::string_view>> buffers;
+  std::vector<std::string> inits;
+  for (const auto& [tag, name] : elements(xml, "container")) {
+    if (auto init = attribute(tag, "init")) inits.push_back(std::move(*init)), buffers.emplace_back(name, std::string_view());
+  }
+  for (std::size_t k = 0; k < buffers.size(); ++k) buffers[k].second = inits[k];
+  const auto buffer = [&](const std::string& name) {
+    const auto b = std::find_if(buffers.begin(), buffers.end(), [&](const auto& x) { return x.first == name; });
+    return b == buffers.end() ? std::optional<std::string_view>() : b->second;
+  };
+  // The sets of its export, each a CSV of its buffers side by side, as phyphox's own export writes them.
+  const std::size_t export_at = xml.find("<export");
+  if (export_at == std::string_view::npos) {
+    throw InputError(file, "a phyphox experiment file without an <export> of its data; expected one saved after a "
+                           "measurement (phyphox: save the experiment state)");
+  }
+  Sets read;
+  std::string names;
+  const std::string_view exported = xml.substr(export_at);
+  const auto sets = elements(exported, "set");
+  for (std::size_t k = 0; k < sets.size(); ++k) {
+    const std::string name = attribute(sets[k].first, "name").value_or("set " + std::to_string(k + 1));
+    if (names.size() < 300) names += (names.empty() ? "\"" : ", \"") + one_line(name, 80, true) + "\"";
+    if (!set.empty() && lower_case(name) != lower_case(set)) continue;
+    const std::size_t from = static_cast<std::size_t>(sets[k].first.data() - exported.data());  // its own tag's place
+    const std::string_view body = exported.substr(from, exported.find("</set>", from) - from);
+    std::vector<std::string> header;
+    std::vector<std::vector<std::string_view>> columns;
+    for (const auto& [tag, buffer_name] : elements(body, "data")) {
+      const auto values = buffer(buffer_name);
+      if (!values) continue;
+      header.push_back("\"" + attribute(tag, "name").value_or(buffer_name) + "\"");
+      columns.push_back(recording_text::split_cells(*values, recording_text::Dialect{',', false}));
+    }
+    std::size_t rows = columns.empty() ? 0 : columns[0].size();
+    for (const auto& c : columns) rows = std::min(rows, c.size());
+    std::string text;
+    for (std::size_t j = 0; j < header.size(); ++j) text += (j ? "," : "") + header[j];
+    text += '\n';
+    for (std::size_t i = 0; i < rows; ++i) {
+      for (std::size_t j = 0; j < columns.size(); ++j) (text += j ? "," : "") += columns[j][i];
+      text += '\n';
+    }
+    read.add(text, name, file, format, set);
+  }
+  if (read.read.empty()) {
+    throw InputError(file, set.empty() || names.empty()
+                               ? "a phyphox experiment file with no exported set that reads as a recording (" +
+                                     (read.refused.empty() ? std::string("no sets") : read.refused) + ")"
+                               : "a phyphox experiment file with no set \"" + one_line(set, 80, true) +
+                                     "\"; expected one of its sets: " + names);
+  }
+  return read.best();
 }
 
 }  // namespace pendulum

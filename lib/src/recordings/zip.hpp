@@ -28,4 +28,17 @@ bool looks_like_zip(std::string_view bytes);
 Recording read_zip_recording(std::string_view bytes, const std::string& file, RecordingFormat format,
                              const std::string& set, const RecordingLimits& limits);
 
+/// Whether `bytes` are a phyphox experiment file (".phyphox": XML whose
+/// first kilobyte opens a <phyphox> element).
+bool looks_like_phyphox_experiment(std::string_view bytes);
+
+/// Reads the recording in a phyphox experiment file saved with its data:
+/// each <set> of its <export> names its columns (<data name="Time (s)">
+/// buffer</data>), whose numbers are the buffers' <container init="v1,v2,...">;
+/// each set is then read as phyphox's CSV export of it, and the best chosen
+/// as in a zip archive (read_zip_recording: `set` picks one by its name).
+/// Refused (InputError naming `file`): no <export>, no set that reads.
+Recording read_phyphox_experiment(std::string_view xml, const std::string& file, RecordingFormat format,
+                                  const std::string& set);
+
 }  // namespace pendulum

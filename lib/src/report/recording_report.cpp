@@ -47,6 +47,7 @@ SignalMeaning signal_meaning(SignalKind kind, bool has_amplitudes) {
       return {"photogate events (the middle of each blocking)", "beam: blocked (1) or open (0)", 1.0};
     case SignalKind::blocking_times: return {"photogate blocking times", "", 1.0};
     case SignalKind::event_stamps: return {"event stamps", "", 1.0};
+    case SignalKind::unknown: return {"the signal (its quantity unknown), less its mean", "signal \u2212 mean", 1.0};
   }
   return {};
 }

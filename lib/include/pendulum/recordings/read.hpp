@@ -59,6 +59,9 @@ enum class SignalKind {
   /// timer or a photogate's pendulum mode logs them; `counts` holds the
   /// logger's own event numbers where the file has a counter column.
   event_stamps,
+  /// One signal whose quantity the file does not say (a headerless column
+  /// of a sensor's raw counts): it times the swing but does not measure it.
+  unknown,
 };
 
 /// Whether the sensor turns with the bob it is in (a phone's gyroscope or

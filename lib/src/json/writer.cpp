@@ -617,7 +617,7 @@ std::string decay_fit_lines(const DecayFit& f) {
 
 std::string decay_fit_table(const ParsedScene& scene, const DecayFit& fit, const std::vector<std::string>& warnings) {
   std::ostringstream os;
-  if (!scene.title.empty()) os << scene.title << "\n\n";
+  if (!scene.title.empty()) os << one_line(scene.title, kShownTitleBytes, true) << "\n\n";
   os << decay_fit_lines(fit);
   for (const auto& w : warnings) os << "warning: " << w << "\n";
   return os.str();
@@ -626,7 +626,7 @@ std::string decay_fit_table(const ParsedScene& scene, const DecayFit& fit, const
 std::string result_table(const ParsedScene& scene, const Analysis& a) {
   std::ostringstream os;
   char line[320];
-  if (!scene.title.empty()) os << scene.title << "\n\n";
+  if (!scene.title.empty()) os << one_line(scene.title, kShownTitleBytes, true) << "\n\n";
   if (!scene.series) {
     const ObservationResult& o = a.observations.front();
     correction_table(os, o);

@@ -252,6 +252,21 @@ terminal_text)
   expect 2 "takes one scene; for several, run: pendulum-g batch x.json a\\\\x1b\\[2J.json" "$G" reduce x.json "$(printf 'a\033[2J.json')"
   grep -q "$esc" err && fail "reduce's extra scenes printed an escape: $(cat err)"
   ;;
+csv_cells)
+  # Names and titles in a CSV cell never start a formula (issue 42, item
+  # 12): a ' before a leading =, +, - or @ (a spreadsheet shows it as text).
+  mkdir class && cd class || exit 1
+  sed 's/"title": "[^"]*"/"title": "=HYPERLINK(\\"http:\/\/x\\")"/' ../x.json > =1.json
+  cp ../x.json +1.json && cp ../x.json -- -1.json && cp ../x.json @1.json
+  "$G" batch --format csv -- =1.json +1.json -1.json @1.json >../out 2>../err
+  cd .. || exit 1
+  for name in =1.json +1.json -1.json @1.json; do
+    grep -q "^'$name,true," out || fail "the name $name in CSV: $(cat out)"
+  done
+  grep -q ",\"'=HYPERLINK(\"\"http://x\"\")\"," out || fail "the title in CSV: $(cat out)"
+  grep -q '^[=+@-]' out && fail "a cell starts a formula: $(cat out)"
+  grep -q ',-\?[0-9]' out || fail "the numbers lost: $(cat out)"
+  ;;
 *)
   fail "no case $CASE"
   ;;

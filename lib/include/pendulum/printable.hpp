@@ -22,4 +22,9 @@ inline constexpr std::size_t kShownTitleBytes = 200;
 /// character's start). The one function every such text goes through.
 std::string one_line(const std::string& s, std::size_t max, bool keep_utf8 = false);
 
+/// `s` as a CSV cell a spreadsheet shows as text: a leading =, +, -, @, tab
+/// or carriage return (which start a formula) gets a ' before it (OWASP's
+/// "CSV injection"). For text cells only: a number's minus stays.
+std::string spreadsheet_text(const std::string& s);
+
 }  // namespace pendulum

@@ -132,10 +132,11 @@ json drag_to_json(const DragPrediction<double>& d, const Decay<double>& decay) {
           {"measured_over_predicted", {{"alpha", decay.alpha / d.alpha}, {"beta", decay.beta / d.beta}}}};
 }
 
-// RFC 4180: quote a field that holds a comma, quote or line break.
+// RFC 4180: quote a field that holds a comma, quote or line break. Text
+// (a file name, a title) never starts a formula; numbers are not text.
 std::string csv_field(const json& v) {
   if (v.is_null()) return "";
-  std::string text = v.is_string() ? v.get<std::string>() : v.dump();
+  std::string text = v.is_string() ? spreadsheet_text(v.get<std::string>()) : v.dump();
   if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
   std::string quoted = "\"";
   for (char c : text) {

@@ -9,13 +9,15 @@
 
 namespace pendulum {
 
-/// A number's closed range [low, high] in `unit`, and its names.
+/// A number's range [low, high] (or [low, high) where `high_open`) in
+/// `unit`, and its names.
 struct ArgumentRange {
   const char* option;    ///< the CLI's option ("--series-terms"), or the scene key it mirrors
   const char* argument;  ///< the Python module's argument ("series_terms")
   double low, high;
   const char* unit;      ///< "" for a pure number
   const char* expected;  ///< what the message says is expected
+  bool high_open = false;
 };
 
 namespace ranges {
@@ -35,6 +37,18 @@ inline constexpr ArgumentRange stamps_per_period{"--stamps-per-period", "stamps_
                                                  "1 (a timer, a photogate's pendulum mode) or 2 (one a passage)"};
 inline constexpr ArgumentRange oscillations{"--oscillations", "oscillations", 1, 1e6, "",
                                             "a number of oscillations from 1 to 1000000"};
+/// A site's (scene.json's site.latitude and site.height).
+inline constexpr ArgumentRange latitude{"site.latitude", "latitude", -90.0, 90.0, "deg",
+                                        "a latitude from -90 to 90 deg"};
+inline constexpr ArgumentRange height{"site.height", "height", -12e3, 100e3, "m",
+                                      "a height on Earth (-12 km to 100 km)"};
+/// A clock's quality factor and semi-amplitude (a clock scene's Q and
+/// semi_amplitude, on a circular path, up to pi): a pendulum swings many
+/// times before it stops (Feinstein: 100 to 1e6); 1e-9 rad is 2e-4 arc
+/// seconds, far below any clock's swing, and keeps k^2 far from underflow.
+inline constexpr ArgumentRange quality{"Q", "q", 1.0, 1e15, "", "a quality factor from 1 to 1e15"};
+inline constexpr ArgumentRange semi_amplitude{"semi_amplitude", "theta0", 1e-9, 3.141592653589793, "rad",
+                                              "an angle from 1e-9 rad to below 180 deg", true};
 }  // namespace ranges
 
 /// Empty when `value` lies in `range`, else "got VALUE UNIT; expected ..."

@@ -10,6 +10,7 @@
 #include "parts.hpp"
 #include "recording_reader.hpp"
 #include "table_reader.hpp"
+#include "pendulum/argument_ranges.hpp"
 #include "pendulum/models/registry.hpp"
 #include "pendulum/scene_json.hpp"
 
@@ -166,7 +167,8 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
     const Measured length = quantity(length_owner, "length", Dimension::length, Range::positive, &source.measured_to);
     v.length = length.value;
     u.length = length.sigma;
-    within(v.length, 1e-3, 1e3, source.path_of("length.value"), "m", "a laboratory pendulum, 1 mm to 1 km long");
+    within(v.length, ranges::length.low, ranges::length.high, source.path_of("length.value"), ranges::length.unit,
+           ranges::length.expected);
     // Left out, an uncertainty is unknown and said so; written as 0, it claims a perfect tape.
     const auto& written = length_owner.at("length");
     if (written.contains("uncertainty") && written.at("uncertainty") == 0) {

@@ -373,6 +373,26 @@ std::string unknown_names(const std::vector<std::string>& fit) {
   return out;
 }
 
+/// Unknowns besides g need observations at more than one setting: at one,
+/// every period is the same one, which tells g from them no better than one
+/// observation does (issue 42: a series of equal lengths fitting
+/// length_offset gave g 9.5225 +- null).
+void refuse_one_setting_fit(const ParsedScene& out) {
+  const auto& observations = out.observations;
+  if (out.fit.empty() || observations.size() < 2) return;
+  const Observation<double>& first = observations.front();
+  const bool one = std::all_of(observations.begin(), observations.end(), [&](const Observation<double>& o) {
+    return o.setting == first.setting && std::abs(o.length - first.length) <= 1e-6 * std::abs(first.length);
+  });
+  std::string fitted;
+  for (const auto& name : out.fit) fitted += (fitted.empty() ? "" : ", ") + name;
+  const std::string key = setting_key(first.setting);
+  PENDULUM_FAIL_IF(one, out.sources.back().path + key + ".value",
+                   "got every observation at the " + key + " " + format_number(first.length) +
+                       " m; expected observations at different ones: with " + fitted + " fitted, one " + key +
+                       " gives one period, which cannot tell g from " + fitted);
+}
+
 /// schema, title, source, notes: what every document may say about itself.
 void read_header(Object& top, ParsedScene& out) {
   if (top.has("schema")) {
@@ -481,6 +501,7 @@ ParsedScene parse_scene(const std::string& text, const SceneFiles& files) {
                        (out.observations.size() == 1 ? "" : "s") + " for " + std::to_string(unknowns) +
                        " unknowns (g" + unknown_names(out.fit) + "); expected at least as many observations "
                        "as unknowns");
+  refuse_one_setting_fit(out);
   refer_lengths_to_centre(out);
   visit_period_model(out.model, [&](auto model) { decltype(model)::check_scene(out); });
   note_body_amplitudes(out);

@@ -135,21 +135,15 @@ void add_recording_options(CLI::App& cmd, SwingOptions& options, std::string& se
          [&options](const std::string& text) {
            // A:B in seconds of the file's own clock.
            const auto colon = text.find(':');
-           double a = 0.0, b = 0.0;
-           std::size_t used_a = 0, used_b = 0;
-           bool ok = colon != std::string::npos;
-           try {
-             ok = ok && (a = std::stod(text.substr(0, colon), &used_a), used_a == colon) &&
-                  (b = std::stod(text.substr(colon + 1), &used_b), used_b == text.size() - colon - 1);
-           } catch (const std::exception&) {
-             ok = false;
-           }
-           if (!ok || !std::isfinite(a) || !std::isfinite(b) || !(a < b)) {
+           const std::optional<double> a = decimal_number(std::string_view(text).substr(0, colon));
+           const std::optional<double> b =
+               colon == std::string::npos ? std::nullopt : decimal_number(std::string_view(text).substr(colon + 1));
+           if (!a || !b || !std::isfinite(*a) || !std::isfinite(*b) || !(*a < *b)) {
              throw CLI::ValidationError("--range", "got \"" + one_line(text, kShownValueBytes, true) +
                                                        "\"; expected START:END in seconds of the recording's clock, "
                                                        "START before END (10:200)");
            }
-           options.range = std::make_pair(a, b);
+           options.range = std::make_pair(*a, *b);
          },
          "Analyse only the samples or events from START to END (s, the file's own clock): START:END, e.g. to cut "
          "a glitch import reported")

@@ -34,9 +34,11 @@ std::map<std::string, AmplitudeMethod> amplitude_methods(bool with_auto) {
 CLI::Validator in_range(const ArgumentRange& range) {
   return CLI::Validator(
       [range](std::string& text) {
-        double value = 0.0;
-        // Text that is no number is the option's conversion's to refuse.
-        return CLI::detail::lexical_cast(text, value) ? out_of_range(range, value) : std::string();
+        const std::optional<double> value = decimal_number(text);
+        if (!value) {
+          return "got \"" + one_line(text, kShownValueBytes, true) + "\"; expected a decimal number: " + range.expected;
+        }
+        return out_of_range(range, *value);
       },
       "");
 }

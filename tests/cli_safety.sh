@@ -251,6 +251,11 @@ terminal_text)
   grep -q "$esc" err && fail "--range's error printed an escape: $(cat err)"
   expect 2 "takes one scene; for several, run: pendulum-g batch x.json a\\\\x1b\\[2J.json" "$G" reduce x.json "$(printf 'a\033[2J.json')"
   grep -q "$esc" err && fail "reduce's extra scenes printed an escape: $(cat err)"
+  # A number is decimal: strtod read 0x10 as 16, and no lab writes it so.
+  expect 2 '^--range: got "0x1:20"; expected START:END' "$G" import rec.tsv --range 0x1:20
+  expect 2 '^--length-m: got "0x10"; expected a decimal number' "$G" import rec.tsv --length-m 0x10
+  expect 1 'got the column "frame:0x1fps"; expected frame numbers with their frame rate' \
+    "$G" import "$DATA/recordings/tracker_headerless_xy.txt" --columns frame:0x1fps,x:px,y:px
   ;;
 csv_cells)
   # Names and titles in a CSV cell never start a formula (issue 42, item

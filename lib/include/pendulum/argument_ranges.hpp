@@ -5,7 +5,9 @@
 /// diverge: a value the CLI refuses, Python refuses with the same message
 /// (docs/robustness.md, "Numbers in options and arguments").
 
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace pendulum {
 
@@ -54,5 +56,10 @@ inline constexpr ArgumentRange semi_amplitude{"semi_amplitude", "theta0", 1e-9, 
 /// Empty when `value` lies in `range`, else "got VALUE UNIT; expected ..."
 /// (a NaN is "NaN").
 std::string out_of_range(const ArgumentRange& range, double value);
+
+/// `text` as a decimal number, whole ("16", "+0.5", "1e300", "inf"): not
+/// hexadecimal (strtod's "0x10", 16, is no number a lab writes), no spaces;
+/// nullopt where it is not one. Options and column specs read numbers so.
+std::optional<double> decimal_number(std::string_view text);
 
 }  // namespace pendulum

@@ -25,7 +25,7 @@ Command add_amplitude_command(CLI::App& app) {
       ->transform(CLI::CheckedTransformer(amplitude_methods(false), CLI::ignore_case).description(""))
       ->type_name("agm|series|small_angle");
   cmd->add_option("--terms", o->terms, "Terms of the Eq. (8) series (default 4)")
-      ->check(CLI::Range(1, 1000));
+      ->check(in_range(ranges::amplitude_terms));
 
   return {cmd, [o] {
     const double deg = o->theta0_deg;

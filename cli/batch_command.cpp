@@ -195,7 +195,7 @@ Command add_batch_command(CLI::App& app) {
     std::vector<BatchLine> printed;
     printed.reserve(jobs.size());
     std::size_t file_width = 4;
-    for (const Job& j : jobs) file_width = std::max(file_width, j.name.size());
+    for (const Job& j : jobs) file_width = std::max(file_width, j.shown().size());
     if (o->format == "csv") std::cout << batch_csv_header();
     if (o->format == "table") std::cout << batch_table_header(file_width);
     for (std::size_t i = 0; i < jobs.size(); ++i) {
@@ -208,7 +208,8 @@ Command add_batch_command(CLI::App& app) {
       }
       failed += !line.ok;
       if (format == BatchFormat::table) {
-        std::cout << jobs[i].name << std::string(file_width + 2 - jobs[i].name.size(), ' ') << line.text << "\n";
+        const std::string name = jobs[i].shown();
+        std::cout << name << std::string(file_width + 2 - name.size(), ' ') << line.text << "\n";
       } else {
         std::cout << line.text << (format == BatchFormat::jsonl ? "\n" : "");
       }

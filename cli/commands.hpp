@@ -14,6 +14,7 @@
 #include <CLI/CLI.hpp>
 
 #include "pendulum/amplitude.hpp"
+#include "pendulum/argument_ranges.hpp"
 #include "pendulum/output_files.hpp"
 #include "pendulum/scene_json.hpp"
 
@@ -67,6 +68,10 @@ void print_warnings(const std::vector<std::string>& warnings);
 /// The finite-amplitude methods by their output names, `auto` included
 /// when the command can choose.
 std::map<std::string, AmplitudeMethod> amplitude_methods(bool with_auto);
+
+/// A check of an option's number against its range in the table the Python
+/// module checks too (pendulum/argument_ranges.hpp).
+CLI::Validator in_range(const ArgumentRange& range);
 
 /// The options of an analysis (--negligible-fraction, --amplitude-method,
 /// --series-terms), shared by the commands that reduce one scene.

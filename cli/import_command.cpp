@@ -16,6 +16,7 @@
 #include "pendulum/recordings/swings.hpp"
 #include "pendulum/recordings/table.hpp"
 #include "pendulum/files.hpp"
+#include "pendulum/printable.hpp"
 #include "pendulum/input_error.hpp"
 
 namespace pendulum::cli {
@@ -25,8 +26,9 @@ namespace {
 /// name and how that was decided.
 void put_columns(std::ostream& o, const std::vector<RecordingColumn>& columns) {
   for (const RecordingColumn& c : columns) {
-    const std::string name = c.name.empty() ? "" : " \"" + c.name + "\"";
-    const std::string unit = c.unit.empty() ? "" : " (" + c.unit + ")";
+    // The file's own header cells, as its messages quote them (column_label).
+    const std::string name = c.name.empty() ? "" : " \"" + one_line(c.name, 40, true) + "\"";
+    const std::string unit = c.unit.empty() ? "" : " (" + one_line(c.unit, 20, true) + ")";
     const std::string label = "column " + std::to_string(c.index);
     o << label << std::string(23 - std::min<std::size_t>(22, label.size()), ' ') << c.role << unit << name
       << ", by the " << c.decided_by << (c.why.empty() ? "" : ": " + c.why) << "\n";
@@ -78,7 +80,7 @@ std::string summary_table(const RecordingSummary& r) {
   };
   put("%-22s %s (%zu rows, %zu skipped)\n", "recording", r.file.c_str(), r.rows, r.dropped);
   put("%-22s %s\n", "format", recording_format_name(r.format));
-  if (!r.set.empty()) put("%-22s %s\n", "set", r.set.c_str());
+  if (!r.set.empty()) put("%-22s %s\n", "set", one_line(r.set, 40, true).c_str());
   put_columns(o, r.columns);
   for (const RecordingNote& n : r.notes) {
     put("%-22s ", n.line ? ("line " + std::to_string(n.line)).c_str() : "note");
@@ -124,30 +126,24 @@ std::string summary_table(const RecordingSummary& r) {
 void add_recording_options(CLI::App& cmd, SwingOptions& options, std::string& set, std::string& columns) {
   cmd.add_option("--bob-width-m", options.bob_width,
                  "Photogates: the bob's width across the beam (m), for the amplitudes")
-      ->check(CLI::PositiveNumber);
+      ->check(in_range(ranges::bob_width));
   cmd.add_option("--length-m", options.length,
                  "Photogates: pivot to bob centre (m); without it the amplitudes take g as standard gravity")
-      ->check(CLI::PositiveNumber);
+      ->check(in_range(ranges::length));
   cmd.add_option_function<std::string>(
          "--range",
          [&options](const std::string& text) {
            // A:B in seconds of the file's own clock.
            const auto colon = text.find(':');
-           double a = 0.0, b = 0.0;
-           std::size_t used_a = 0, used_b = 0;
-           bool ok = colon != std::string::npos;
-           try {
-             ok = ok && (a = std::stod(text.substr(0, colon), &used_a), used_a == colon) &&
-                  (b = std::stod(text.substr(colon + 1), &used_b), used_b == text.size() - colon - 1);
-           } catch (const std::exception&) {
-             ok = false;
-           }
-           if (!ok || !std::isfinite(a) || !std::isfinite(b) || !(a < b)) {
-             throw CLI::ValidationError("--range", "got \"" + text +
+           const std::optional<double> a = decimal_number(std::string_view(text).substr(0, colon));
+           const std::optional<double> b =
+               colon == std::string::npos ? std::nullopt : decimal_number(std::string_view(text).substr(colon + 1));
+           if (!a || !b || !std::isfinite(*a) || !std::isfinite(*b) || !(*a < *b)) {
+             throw CLI::ValidationError("--range", "got \"" + one_line(text, kShownValueBytes, true) +
                                                        "\"; expected START:END in seconds of the recording's clock, "
                                                        "START before END (10:200)");
            }
-           options.range = std::make_pair(a, b);
+           options.range = std::make_pair(*a, *b);
          },
          "Analyse only the samples or events from START to END (s, the file's own clock): START:END, e.g. to cut "
          "a glitch import reported")
@@ -155,7 +151,7 @@ void add_recording_options(CLI::App& cmd, SwingOptions& options, std::string& se
   cmd.add_option("--stamps-per-period", options.stamps_per_period,
                  "Event stamps: 1 (a timer, a photogate's pendulum mode) or 2 (one a passage); default: 2 where "
                  "consecutive intervals alternate, else 1")
-      ->check(CLI::IsMember({1, 2}));
+      ->check(in_range(ranges::stamps_per_period));
   cmd.add_option("--set", set,
                  "Zip exports: the CSV inside to read (Gyroscope.csv, in any case; default: the one with the best "
                  "pendulum signal, a rate, then linear acceleration, then acceleration, the others' periods "
@@ -218,7 +214,7 @@ Command add_import_command(CLI::App& app) {
                 "oscillations; docs/series.md, Tables), which a header naming a length or a pivot says by itself");
   cmd->add_option("--oscillations", o->oscillations,
                   "Tables: the time column is the time of this many oscillations (a header's \"t10\" says so)")
-      ->check(CLI::Range(1, 1000000));
+      ->check(in_range(ranges::oscillations));
 
   return {cmd, [o] {
     bool table = false;

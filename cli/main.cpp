@@ -4,6 +4,7 @@
 // output that could not be written. Nothing reaches stdout unless a whole
 // result does.
 
+#include <cstring>
 #include <iostream>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "commands.hpp"
 #include "pendulum/analysis.hpp"
 #include "pendulum/files.hpp"
+#include "pendulum/printable.hpp"
 #include "pendulum/scene_json.hpp"
 
 namespace pendulum::cli {
@@ -29,11 +31,23 @@ std::map<std::string, AmplitudeMethod> amplitude_methods(bool with_auto) {
   return names;
 }
 
+CLI::Validator in_range(const ArgumentRange& range) {
+  return CLI::Validator(
+      [range](std::string& text) {
+        const std::optional<double> value = decimal_number(text);
+        if (!value) {
+          return "got \"" + one_line(text, kShownValueBytes, true) + "\"; expected a decimal number: " + range.expected;
+        }
+        return out_of_range(range, *value);
+      },
+      "");
+}
+
 void add_analysis_options(CLI::App& cmd, AnalysisOptions& options) {
   cmd.add_option("--negligible-fraction", options.negligible_fraction,
                  "Flag a correction negligible below this fraction of the period's "
                  "uncertainty (default 0.1)")
-      ->check(CLI::Range(0.0, 1e6));
+      ->check(in_range(ranges::negligible_fraction));
   cmd.add_option("--amplitude-method", options.reduction.amplitude_method,
                  "Finite-amplitude method: auto (default: the cheapest whose error bound "
                  "is below 1% of the period's uncertainty), agm (exact), series, small_angle")
@@ -41,7 +55,7 @@ void add_analysis_options(CLI::App& cmd, AnalysisOptions& options) {
       ->type_name("auto|agm|series|small_angle");
   cmd.add_option("--series-terms", options.reduction.series_terms,
                  "Terms of the Eq. (8) series for --amplitude-method series (default 4)")
-      ->check(CLI::Range(1, 1000));
+      ->check(in_range(ranges::series_terms));
 }
 
 }  // namespace pendulum::cli
@@ -59,6 +73,12 @@ int main(int argc, char** argv) {
       "amplitude, and optionally bob, air, site, ...: docs/scene.md. An oscillation is a full\n"
       "swing, there and back; count full oscillations, not half swings."};
   app.require_subcommand(1);
+  // The user's text in an option error (its value) escaped and cut, so that
+  // neither control bytes nor a 100 KB value reach the terminal whole.
+  app.failure_message([](const CLI::App* a, const CLI::Error& e) {
+    return pendulum::one_line(e.what(), pendulum::kShownOptionErrorBytes, true) +
+           CLI::FailureMessage::simple(a, e).substr(std::strlen(e.what()));
+  });
   app.set_version_flag("--version", std::string("pendulum-g ") + PENDULUM_G_VERSION);
 
   const std::vector<pendulum::cli::Command> commands{
@@ -83,7 +103,7 @@ int main(int argc, char** argv) {
     if (dynamic_cast<const CLI::ExtrasError*>(&e) && (command == "reduce" || command == "fit-decay")) {
       std::string scenes;
       for (int i = 2; i < argc; ++i) {
-        if (argv[i][0] != '-') scenes += std::string(" ") + argv[i];
+        if (argv[i][0] != '-') scenes += " " + pendulum::printable_name(argv[i]);
       }
       std::cerr << "pendulum-g: " << command << " takes one scene; for several, run: pendulum-g batch" << scenes
                 << "\n";

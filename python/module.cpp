@@ -17,8 +17,10 @@
 
 #include "pendulum/amplitude.hpp"
 #include "pendulum/analysis.hpp"
+#include "pendulum/argument_ranges.hpp"
 #include "pendulum/batch.hpp"
 #include "pendulum/clock.hpp"
+#include "pendulum/clock_scene.hpp"
 #include "pendulum/files.hpp"
 #include "pendulum/input_error.hpp"
 #include "pendulum/output.hpp"
@@ -65,14 +67,30 @@ AmplitudeMethod amplitude_method(const std::string& name) {
   throw py::value_error("method: got '" + name + "'; expected exact (or agm), series, small_angle or auto");
 }
 
-std::string reduce_json(const std::optional<std::string>& path, const std::optional<std::string>& text,
-                        const std::string& directory, bool allow_outside, double negligible_fraction,
-                        const std::string& method, int series_terms) {
-  const SceneSource source = scene_source(path, text, directory, allow_outside);
+/// ValueError naming the argument, with the CLI's message for its option,
+/// unless `value` lies in `range` (the table both check against).
+void check(const pendulum::ArgumentRange& range, double value) {
+  const std::string why = pendulum::out_of_range(range, value);
+  if (!why.empty()) throw py::value_error(std::string(range.argument) + ": " + why);
+}
+
+/// The options of an analysis, checked as the CLI's --negligible-fraction,
+/// --amplitude-method and --series-terms are.
+pendulum::AnalysisOptions analysis_options(double negligible_fraction, const std::string& method, int series_terms) {
+  check(pendulum::ranges::negligible_fraction, negligible_fraction);
+  check(pendulum::ranges::series_terms, series_terms);
   pendulum::AnalysisOptions options;
   options.negligible_fraction = negligible_fraction;
   options.reduction.amplitude_method = amplitude_method(method);
   options.reduction.series_terms = series_terms;
+  return options;
+}
+
+std::string reduce_json(const std::optional<std::string>& path, const std::optional<std::string>& text,
+                        const std::string& directory, bool allow_outside, double negligible_fraction,
+                        const std::string& method, int series_terms) {
+  const pendulum::AnalysisOptions options = analysis_options(negligible_fraction, method, series_terms);
+  const SceneSource source = scene_source(path, text, directory, allow_outside);
   py::gil_scoped_release unlocked;
   const pendulum::ParsedScene scene = pendulum::parse_scene(source.text, source.files);
   const pendulum::Analysis analysis = pendulum::analyse(scene, options);
@@ -119,6 +137,9 @@ py::dict read_recording(const std::string& path, const std::string& format, cons
   if (range && !(std::isfinite(range->first) && std::isfinite(range->second) && range->first < range->second)) {
     throw py::value_error("range: expected (start, end) in seconds of the recording's clock, start before end");
   }
+  if (bob_width) check(pendulum::ranges::bob_width, *bob_width);
+  if (length) check(pendulum::ranges::length, *length);
+  if (stamps_per_period) check(pendulum::ranges::stamps_per_period, *stamps_per_period);
   pendulum::SwingOptions options;
   options.bob_width = bob_width;
   options.length = length;
@@ -150,12 +171,12 @@ py::dict read_recording(const std::string& path, const std::string& format, cons
 
 /// `pendulum-g import --table TABLE`'s scene (JSON text) and its warnings.
 std::pair<std::string, std::vector<std::string>> read_table(const std::string& path, const std::string& columns,
-                                                            int oscillations) {
-  if (oscillations < 0 || oscillations > 1000000) {
-    throw py::value_error("oscillations: got " + std::to_string(oscillations) + "; expected 1 to 1000000");
-  }
+                                                            std::optional<int> oscillations) {
   pendulum::TableOptions options;
-  options.oscillations = oscillations;
+  if (oscillations) {
+    check(pendulum::ranges::oscillations, *oscillations);
+    options.oscillations = *oscillations;
+  }
   if (!columns.empty()) options.columns = pendulum::parse_table_column_spec(columns, "columns");
   py::gil_scoped_release unlocked;
   const pendulum::SettingsTable t = pendulum::read_settings_table(path, options);
@@ -209,9 +230,7 @@ std::pair<std::optional<std::string>, std::vector<std::string>> report(
   }
   request.set = set;
   request.columns = columns;
-  request.analysis.negligible_fraction = negligible_fraction;
-  request.analysis.reduction.amplitude_method = amplitude_method(method);
-  request.analysis.reduction.series_terms = series_terms;
+  request.analysis = analysis_options(negligible_fraction, method, series_terms);
   py::gil_scoped_release unlocked;
   if (!output.empty() && path) pendulum::refuse_output_over_inputs(output, {*path});
   pendulum::report::ReportPage page = pendulum::report::make_report_page(
@@ -244,10 +263,22 @@ py::array_t<double> output_for(const Doubles& x, const py::object& out) {
   return a;
 }
 
+/// `x` itself, or a copy of it where `out` overlaps it in part: numpy's out=
+/// reads its input as it was, and an output one element ahead of its input
+/// would otherwise read what it wrote (x itself as out is safe: each element
+/// is read before it is written).
+Doubles apart_from(const Doubles& x, const py::array_t<double>& out) {
+  const double *a = x.data(), *b = out.data();
+  const py::ssize_t n = x.size();
+  const bool overlap = a != b && a < b + n && b < a + n;
+  return overlap ? Doubles(std::vector<py::ssize_t>(x.shape(), x.shape() + x.ndim()), a) : x;
+}
+
 template <class F>
 py::array_t<double> map_elements(const Doubles& x, const char* name, F f, const py::object& into = py::none()) {
   py::array_t<double> out = output_for(x, into);
-  const double* in = x.data();
+  const Doubles source = apart_from(x, out);
+  const double* in = source.data();
   double* result = out.mutable_data();
   const py::ssize_t n = x.size();
   std::optional<py::ssize_t> refused;
@@ -275,20 +306,21 @@ py::array_t<double> finite_amplitude(const Doubles& theta0, const std::string& m
                                      const py::object& into) {
   const AmplitudeMethod m = amplitude_method(method);
   if (m == AmplitudeMethod::automatic) throw py::value_error("method: auto needs a tolerance; use exact");
-  if (terms < 1) throw py::value_error("terms: got " + std::to_string(terms) + "; expected at least 1");
+  check(pendulum::ranges::amplitude_terms, terms);
   const double one = excess ? 0.0 : 1.0;
   if (m == AmplitudeMethod::agm) {
     py::array_t<double> out = output_for(theta0, into);
+    const Doubles source = apart_from(theta0, out);
     double* result = out.mutable_data();
     const auto n = static_cast<std::size_t>(theta0.size());
     std::size_t stop = 0;
     {
       py::gil_scoped_release unlocked;
-      stop = pendulum::finite_amplitude_agm_many(theta0.data(), result, n);
+      stop = pendulum::finite_amplitude_agm_many(source.data(), result, n);
       for (std::size_t i = 0; i < stop; ++i) result[i] += one;
     }
     if (stop < n) {
-      throw py::value_error("theta0[" + std::to_string(stop) + "]: got " + std::to_string(theta0.data()[stop]) +
+      throw py::value_error("theta0[" + std::to_string(stop) + "]: got " + std::to_string(source.data()[stop]) +
                             ": " + kAmplitudeRange);
     }
     return out;
@@ -301,11 +333,6 @@ py::array_t<double> finite_amplitude(const Doubles& theta0, const std::string& m
     }
     return one + pendulum::finite_amplitude(m, t, terms);
   }, into);
-}
-
-/// ValueError naming the argument `name` unless `value` is finite.
-void require_finite(double value, const char* name, const char* expected) {
-  if (!std::isfinite(value)) throw py::value_error(std::string(name) + ": got " + std::to_string(value) + "; expected " + expected);
 }
 
 }  // namespace
@@ -366,9 +393,8 @@ PYBIND11_MODULE(_core, m) {
       "normal_gravity",
       [](const py::array_t<double>& latitude, const py::array_t<double>& height) {
         return py::vectorize([](double lat, double h) {
-          require_finite(lat, "latitude", "a latitude in degrees");
-          if (std::abs(lat) > 90.0) throw py::value_error("latitude: got " + std::to_string(lat) + "; expected -90 to 90 deg");
-          require_finite(h, "height", "a height in metres");
+          check(pendulum::ranges::latitude, lat);
+          check(pendulum::ranges::height, h);
           return pendulum::normal_gravity(lat, h);
         })(latitude, height);
       },
@@ -387,9 +413,12 @@ PYBIND11_MODULE(_core, m) {
       "impulse_error",
       [](const py::array_t<double>& theta0, const py::array_t<double>& location, const py::array_t<double>& q) {
         return py::vectorize([](double t0, double at, double quality) {
-          if (!(t0 > 0.0 && t0 < pendulum::kPi)) throw py::value_error("theta0: got " + std::to_string(t0) + "; expected 0 < theta0 < pi rad");
-          if (!(at >= 0.0 && at <= t0)) throw py::value_error("location: got " + std::to_string(at) + "; expected 0 <= location <= theta0");
-          if (!(quality > 0.0 && std::isfinite(quality))) throw py::value_error("q: got " + std::to_string(quality) + "; expected Q > 0");
+          // As a clock scene's semi_amplitude, impulse.location and Q are.
+          check(pendulum::ranges::semi_amplitude, t0);
+          check({"", "location", 0.0, t0, "rad", "an angle from 0 to the semi-amplitude theta0"}, at);
+          check(pendulum::ranges::quality, quality);
+          const std::string over_top = pendulum::impulse_over_top(t0, quality, pendulum::ClockPath::circular);
+          if (!over_top.empty()) throw py::value_error("q: " + over_top);
           return pendulum::impulse_error_elliptic(t0, at, quality).error;
         })(theta0, location, q);
       },

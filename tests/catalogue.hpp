@@ -11,6 +11,7 @@
 // directories: a recording a case names (docs/recordings.md) by absolute path,
 // since the scene is written to a temporary file.
 // Read by the CLI tests and by the fuzzer's seed writer.
+#include <regex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -65,5 +66,13 @@ inline std::vector<std::string> valid_scene_texts() {
   return out;
 }
 #endif
+
+/// Whether a message prints a NaN ("nan", "-nan", as printf writes one): a
+/// number computed from nothing, which no message may show (issue 42). The
+/// word "NaN" (a cell that marks a missing sample) is no number printed.
+inline bool says_nan(const std::string& message) {
+  static const std::regex nan("(^|[^A-Za-z])nan([^A-Za-z]|$)");
+  return std::regex_search(message, nan);
+}
 
 }  // namespace pendulum::test

@@ -217,6 +217,61 @@ line.json"
   expect 1 'inf.csv:3:5: got "inf" in column "angle"; expected a finite number' "$G" import inf.csv
   grep -q 'nan' err && fail "the infinite cell's message says nan: $(cat err)"
   ;;
+terminal_text)
+  # Text from outside in a table and in option errors (issue 42, item 3):
+  # escaped, and an option's value cut, so that it cannot clear the screen
+  # or set the window's title.
+  esc=$(printf '\033')
+  mkdir class
+  cp x.json "$(printf 'class/a\033[2J\033]0;pwned\007.json')"
+  "$G" batch class --format table >out 2>err
+  grep -q "$esc" out err && fail "batch --format table printed an escape: $(cat out)"
+  grep -q 'class/a\\x1b\[2J\\x1b\]0;pwned\\x07.json  ok' out || fail "batch --format table's name: $(cat out)"
+  cp rec.tsv "$(printf 'r\033[2J.tsv')"
+  "$G" import "$(printf 'r\033[2J.tsv')" --format table >out 2>err
+  grep -q "$esc" out err && fail "import --format table printed an escape: $(cat out)"
+  grep -q '^recording *r\\x1b\[2J.tsv' out || fail "import --format table's name: $(cat out)"
+  # A table's header cell, with an escape in it.
+  sed "1s/\$/,$esc[2Jnote/; 2,\$s/\$/,1/" "$DATA/pendulum_lengths_table.csv" > hdr.csv
+  "$G" import hdr.csv --format table >out 2>err
+  grep -q "$esc" out err && fail "import --format table printed a header's escape: $(cat out) $(cat err)"
+  grep -q '"\\x1b\[2Jnote"' out || fail "import --format table's header cell: $(cat out) $(cat err)"
+  # Option errors: the value escaped, cut, and no bound of 309 digits.
+  expect 2 'bob-width-m' "$G" import rec.tsv --bob-width-m "$(printf '\033[2J')"
+  grep -q "$esc" err && fail "an option error printed an escape: $(cat err)"
+  expect 2 'bob-width-m' "$G" import rec.tsv --bob-width-m "$(head -c 100000 /dev/zero | tr '\0' 7)"
+  [ "$(wc -c < err)" -lt 400 ] || fail "a 100 KB option value made an error of $(wc -c < err) bytes"
+  expect 2 '^--bob-width-m: got 0 m; expected a bob.s width across the beam from 1 mm to 1 km$' \
+    "$G" import rec.tsv --bob-width-m 0
+  grep -q '[0-9]\{20\}' err && fail "an option error printed a long number: $(cat err)"
+  expect 2 '^--length-m: got 1e+300 m; expected a laboratory pendulum, 1 mm to 1 km long$' \
+    "$G" import rec.tsv --length-m 1e300
+  expect 2 '^--negligible-fraction: got NaN; expected' "$G" reduce x.json --negligible-fraction nan
+  expect 2 'got "\\x1b\[2J:5"' "$G" import rec.tsv --range "$(printf '\033[2J:5')"
+  grep -q "$esc" err && fail "--range's error printed an escape: $(cat err)"
+  expect 2 "takes one scene; for several, run: pendulum-g batch x.json a\\\\x1b\\[2J.json" "$G" reduce x.json "$(printf 'a\033[2J.json')"
+  grep -q "$esc" err && fail "reduce's extra scenes printed an escape: $(cat err)"
+  # A number is decimal: strtod read 0x10 as 16, and no lab writes it so.
+  expect 2 '^--range: got "0x1:20"; expected START:END' "$G" import rec.tsv --range 0x1:20
+  expect 2 '^--length-m: got "0x10"; expected a decimal number' "$G" import rec.tsv --length-m 0x10
+  expect 1 'got the column "frame:0x1fps"; expected frame numbers with their frame rate' \
+    "$G" import "$DATA/recordings/tracker_headerless_xy.txt" --columns frame:0x1fps,x:px,y:px
+  ;;
+csv_cells)
+  # Names and titles in a CSV cell never start a formula (issue 42, item
+  # 12): a ' before a leading =, +, - or @ (a spreadsheet shows it as text).
+  mkdir class && cd class || exit 1
+  sed 's/"title": "[^"]*"/"title": "=HYPERLINK(\\"http:\/\/x\\")"/' ../x.json > =1.json
+  cp ../x.json +1.json && cp ../x.json -- -1.json && cp ../x.json @1.json
+  "$G" batch --format csv -- =1.json +1.json -1.json @1.json >../out 2>../err
+  cd .. || exit 1
+  for name in =1.json +1.json -1.json @1.json; do
+    grep -q "^'$name,true," out || fail "the name $name in CSV: $(cat out)"
+  done
+  grep -q ",\"'=HYPERLINK(\"\"http://x\"\")\"," out || fail "the title in CSV: $(cat out)"
+  grep -q '^[=+@-]' out && fail "a cell starts a formula: $(cat out)"
+  grep -q ',-\?[0-9]' out || fail "the numbers lost: $(cat out)"
+  ;;
 *)
   fail "no case $CASE"
   ;;

@@ -201,6 +201,7 @@ TEST_CASE("Catalogue of bad scenes", "[cli][errors]") {
     // sanitizer report after it.
     CHECK(r.err.rfind("pendulum-g: error: ", 0) == 0);
     CHECK(r.err.find('\n') == r.err.size() - 1);
+    CHECK_FALSE(pendulum::test::says_nan(r.err));
     // report fails with the same message and writes nothing (docs/report.md).
     const Run report = run("report --allow-outside " + file + " -o " + file + ".html");
     CHECK(report.status == 1);

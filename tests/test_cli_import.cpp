@@ -274,6 +274,7 @@ TEST_CASE("import: catalogue of bad recordings (tests/bad_recordings/)", "[cli][
     CHECK(r.status == 1);
     CHECK(r.out.empty());
     CHECK_THAT(r.err, Contains(message.get<std::string>()));
+    CHECK_FALSE(pendulum::test::says_nan(r.err));
   }
   // A huge file (sparse: 2 GiB of nothing on disk) is refused before reading.
   const std::string huge = temporary_file();

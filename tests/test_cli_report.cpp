@@ -276,29 +276,6 @@ TEST_CASE("report RECORDING: a bad recording fails as import does and leaves no 
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("report: an unknown uncertainty (a singular fit) is written and drawn as unknown, not +- 0",
-          "[cli][report][uncertainty]") {
-  // Three identical observations with the offset fitted: J^T J has rank 1
-  // (docs/core.md), so g's uncertainty is unknown, and the textbook line
-  // with an intercept is undefined.
-  json scene = json::parse(pendulum::test::read_text(std::string(PENDULUM_DATA_DIR) + "/pendulum_lengths_series.json"));
-  const json first = scene.at("observations").at(0);
-  scene["observations"] = json::array({first, first, first});
-  const std::string file = temporary_file();
-  std::ofstream(file) << scene.dump();
-  const Run r = run("report " + file);
-  std::remove(file.c_str());
-  REQUIRE(r.status == 0);
-  CHECK_THAT(r.err, Contains("the observations cannot separate the unknowns (their covariance is singular)"));
-  CHECK_FALSE(std::regex_search(r.out, std::regex("(^|[^A-Za-z])-?(nan|inf)", std::regex::icase)));
-  CHECK_THAT(r.out, Contains("undefined: the lengths do not determine a line"));
-  CHECK_THAT(r.out, Contains("m/s\u00B2 (uncertainty unknown)</p>"));
-  CHECK_THAT(r.out, Contains("(uncertainty unknown)</td>"));  // the fitted parameters' table
-  CHECK_THAT(r.out, Contains("\u00B5s, uncertainty unknown</text>"));  // the corrections chart
-  // No "± 0", "± 0.0000" anywhere (a zero uncertainty written as a number).
-  CHECK_FALSE(std::regex_search(r.out, std::regex("\u00B1 0(\\.0+)?([^0-9.]|$)")));
-}
-
 TEST_CASE("report: a pivot scan and Kater's pendulum, plotted as pivot scans", "[cli][report][pivot]") {
   const std::string scan = std::string(PENDULUM_DATA_DIR) + "/metre_stick_pivot_scan.json";
   const Run r = run("report " + scan);

@@ -5,10 +5,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <regex>
 
 #include "pendulum/analysis.hpp"
 #include "pendulum/dispersion.hpp"
 #include "pendulum/period_fit.hpp"
+#include "pendulum/report/html_report.hpp"
+#include "pendulum/report/scene_report.hpp"
 #include "pendulum/scene_json.hpp"
 #include "simulations/series_simulation.hpp"
 #include "reference.hpp"
@@ -238,13 +241,24 @@ TEST_CASE("Lengths too close together, or all equal, are named", "[series][warni
   };
   CHECK(named(close, "too close together to separate g from length_offset"));
 
-  // Three identical observations: J^T J has rank 1.
+  // Three identical observations: J^T J has rank 1. A scene of them is
+  // refused (tests/bad_scenes.json); the library's fit, called directly,
+  // says so, and the report draws the unknown uncertainty as unknown.
   sim.lengths = {1.0, 1.0, 1.0};
   sim.noise = false;
-  const Analysis equal = analyse(simulate_series(nelson_olsson_apparatus(), sim));
+  const ParsedScene scene = simulate_series(nelson_olsson_apparatus(), sim);
+  const Analysis equal = analyse(scene);
   CHECK_FALSE(equal.g.uncertainty);
   CHECK(equal.budget.empty());
   CHECK(named(equal, "covariance is singular"));
+  const std::string page = report::scene_report_html(report::make_scene_report("equal.json", scene, equal));
+  CHECK_FALSE(std::regex_search(page, std::regex("(^|[^A-Za-z])-?(nan|inf)", std::regex::icase)));
+  CHECK(page.find("undefined: the lengths do not determine a line") != std::string::npos);
+  CHECK(page.find("m/s\u00B2 (uncertainty unknown)</p>") != std::string::npos);
+  CHECK(page.find("(uncertainty unknown)</td>") != std::string::npos);  // the fitted parameters' table
+  CHECK(page.find("\u00B5s, uncertainty unknown</text>") != std::string::npos);  // the corrections chart
+  // No "± 0", "± 0.0000" anywhere (a zero uncertainty written as a number).
+  CHECK_FALSE(std::regex_search(page, std::regex("\u00B1 0(\\.0+)?([^0-9.]|$)")));
 }
 
 TEST_CASE("Stated uncertainties 3 times too small: the scaled sigma still covers g 60% of the time",

@@ -9,6 +9,14 @@
 
 namespace pendulum {
 
+std::string impulse_over_top(double theta0, double q, ClockPath path) {
+  const bool cycloid = path == ClockPath::cycloidal;
+  const double k_i = std::sqrt(1.0 + kPi / q) * (cycloid ? std::sin(theta0) : std::sin(theta0 / 2.0));  // Eq. (F-1)
+  if (k_i < 1.0) return "";
+  return "got " + format_number(q) + "; expected a Q large enough that the impulse (pi/Q of the energy, Eq. F-1) "
+         "keeps the swing below " + (cycloid ? "90 deg" : "180 deg");
+}
+
 ClockAnalysis analyse_clock(const ClockScene& s, std::optional<ClockRoute> route) try {
   ClockAnalysis a{};
   const bool circular = s.path == ClockPath::circular;

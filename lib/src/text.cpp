@@ -52,6 +52,10 @@ std::string one_line(const std::string& s, std::size_t max, bool keep_utf8) {
   return out.substr(0, cut) + "...";
 }
 
+std::string spreadsheet_text(const std::string& s) {
+  return !s.empty() && std::string_view("=+-@\t\r").find(s.front()) != std::string_view::npos ? "'" + s : s;
+}
+
 std::string format_number(double x, int digits) {
   std::ostringstream os;
   os.precision(digits);

@@ -6,13 +6,9 @@
 #include <string>
 #include <string_view>
 
-namespace pendulum {
+#include "pendulum/printable.hpp"
 
-/// `s` fit for a one-line message: control bytes as \xNN, and the bytes of
-/// other characters than ASCII too unless `keep_utf8` (a recording's header
-/// says θ or µs; bytes that are not UTF-8 are escaped all the same), cut to
-/// at most `max` bytes with "..." (at a character's start).
-std::string one_line(const std::string& s, std::size_t max, bool keep_utf8 = false);
+namespace pendulum {
 
 /// `s` with its ASCII letters in lower case (headers, set and file names are
 /// matched in any case; other bytes are kept).

@@ -131,7 +131,7 @@ def read_table(path, *, columns=None, oscillations=None):
     --oscillations. The warnings the CLI prints (a unit taken from the
     numbers alone) are Python warnings (UserWarning) here.
     """
-    text, found = _core.read_table(os.fspath(path), columns or "", oscillations or 0)
+    text, found = _core.read_table(os.fspath(path), columns or "", oscillations)
     for w in found:
         warnings.warn(f"{os.fspath(path)}: {w}", stacklevel=2)
     return json.loads(text)

@@ -135,6 +135,97 @@ def test_bad_arguments_raise_python_errors_not_crashes():
         pendulum_g.reduce(os.path.join(DATA, "nelson_olsson_1986.json"), amplitude_method="agm2")
 
 
+
+NELSON_OLSSON = os.path.join(DATA, "nelson_olsson_1986.json")
+GATE = os.path.join(DATA, "recordings", "vernier_photogate.csv")
+LENGTHS = os.path.join(DATA, "pendulum_lengths_table.csv")
+
+
+@pytest.mark.parametrize("args, call", [
+    # Issue 42, item 4: series_terms=0 took the 596 us finite-amplitude row as negligible.
+    (["reduce", NELSON_OLSSON, "--amplitude-method", "series", "--series-terms", "0"],
+     lambda: pendulum_g.reduce(NELSON_OLSSON, amplitude_method="series", series_terms=0)),
+    (["reduce", NELSON_OLSSON, "--negligible-fraction", "nan"],
+     lambda: pendulum_g.reduce(NELSON_OLSSON, negligible_fraction=float("nan"))),
+    (["reduce", NELSON_OLSSON, "--negligible-fraction", "-0.5"],
+     lambda: pendulum_g.reduce(NELSON_OLSSON, negligible_fraction=-0.5)),
+    (["report", NELSON_OLSSON, "--series-terms", "0"], lambda: pendulum_g.report(NELSON_OLSSON, series_terms=0)),
+    # Item 11: an internal error, no amplitudes, or a wrong count taken.
+    (["import", GATE, "--length-m", "-1"], lambda: pendulum_g.read_recording(GATE, length_m=-1)),
+    (["import", GATE, "--length-m", "inf"], lambda: pendulum_g.read_recording(GATE, length_m=float("inf"))),
+    (["import", GATE, "--length-m", "1e300"], lambda: pendulum_g.read_recording(GATE, length_m=1e300)),
+    (["import", GATE, "--bob-width-m", "-0.02"], lambda: pendulum_g.read_recording(GATE, bob_width_m=-0.02)),
+    (["import", GATE, "--stamps-per-period", "3"], lambda: pendulum_g.read_recording(GATE, stamps_per_period=3)),
+    (["import", LENGTHS, "--oscillations", "0"], lambda: pendulum_g.read_table(LENGTHS, oscillations=0)),
+    (["amplitude", "--theta0-deg", "10", "--method", "series", "--terms", "0"],
+     lambda: pendulum_g.finite_amplitude(0.1, method="series", terms=0)),
+])
+def test_arguments_are_refused_with_the_cli_options_message(args, call):
+    # One table of ranges (pendulum/argument_ranges.hpp) for both: the CLI
+    # says "--series-terms: got 0; expected ...", Python "series_terms: ...".
+    run = cli(*args)
+    assert run.returncode == 2, run.stderr
+    option, message = run.stderr.splitlines()[0].split(": ", 1)
+    with pytest.raises(ValueError) as caught:
+        call()
+    assert str(caught.value) == option.lstrip("-").replace("-", "_") + ": " + message
+
+
+def test_the_physics_refuses_what_a_scene_refuses():
+    # Item 6: nan, 3.8e11 and 5229 m/s^2 were returned for heights off the Earth.
+    for height in (1e300, 1e20, -6.4e6):
+        scene = {"length": {"value": 1.0, "unit": "m"}, "amplitude": {"value": 1.0, "unit": "deg"},
+                 "timing": {"oscillations_per_trial": 10, "unit": "s", "resolution": 0.01, "trials": [20.06]},
+                 "site": {"latitude": {"value": 45.0, "unit": "deg"},
+                          "height": {"value": height, "unit": "m"}, "height_reference": "ellipsoid"}}
+        with pytest.raises(pendulum_g.InputError) as scene_error:
+            pendulum_g.reduce(scene)
+        with pytest.raises(ValueError) as caught:
+            pendulum_g.normal_gravity(45.0, height)
+        assert str(caught.value) == str(scene_error.value).replace("site.height.value", "height")
+    # A denormal Q or amplitude gave nan; a clock scene takes Q from 1.
+    with pytest.raises(ValueError, match=r"^q: got [0-9.e-]+; expected a quality factor from 1 to 1e15$"):
+        pendulum_g.impulse_error(0.1, 0.1, 1e-320)
+    with pytest.raises(ValueError, match=r"^theta0: got [0-9.e-]+ rad; expected an angle from 1e-9 rad to below 180 deg$"):
+        pendulum_g.impulse_error(1e-320, 0.0, 1e4)
+    with pytest.raises(ValueError, match=r"^q: got 1; expected a Q large enough that the impulse"):
+        pendulum_g.impulse_error(3.0, 0.1, 1.0)
+
+
+def test_no_nan_or_infinity_for_finite_arguments_in_range():
+    # Every argument over its whole range, ends included: a finite answer or
+    # a ValueError, never NaN or infinity.
+    latitudes = np.linspace(-90.0, 90.0, 37)[:, None]
+    heights = np.concatenate([np.linspace(-12e3, 100e3, 57), [-12e3 + 1e-9, 100e3 - 1e-9]])
+    assert np.isfinite(pendulum_g.normal_gravity(latitudes, heights)).all()
+    below_pi = np.nextafter(math.pi, 0.0)
+    amplitudes = np.concatenate([[0.0, 5e-324, 1e-300, 1e-9], np.linspace(1e-6, below_pi, 200), [below_pi]])
+    for method in ("exact", "series", "small_angle"):
+        assert np.isfinite(pendulum_g.finite_amplitude(amplitudes, method=method)).all()
+        assert np.isfinite(pendulum_g.finite_amplitude(amplitudes, method=method, excess=True)).all()
+    assert np.isfinite(pendulum_g.circular_error(amplitudes)).all()
+    for theta0 in np.concatenate([[1e-9, 1e-6, 0.01, 0.5, 2.0, 3.0, 3.14, below_pi]]):
+        for location in (0.0, 5e-324, theta0 / 2, np.nextafter(theta0, 0.0), theta0):
+            for q in (1.0, 1.5, 100.0, 1e4, 1e10, 1e15):
+                try:
+                    value = pendulum_g.impulse_error(theta0, location, q)
+                except ValueError as e:
+                    assert "keeps the swing below 180 deg" in str(e)
+                    continue
+                assert np.isfinite(value), (theta0, location, q)
+
+
+def test_finite_amplitude_into_an_out_that_overlaps_its_input():
+    # numpy's out= reads the input as it was (np.sin(x[:5], out=x[1:]) is
+    # np.sin of x[:5] before the call); item 5 wrote [1, 1, 1, 1, 1].
+    for method in ("exact", "series"):
+        for into, source in ((slice(1, 6), slice(0, 5)), (slice(0, 5), slice(1, 6))):
+            x = np.radians(np.linspace(10.0, 170.0, 6))
+            expected = pendulum_g.finite_amplitude(x[source].copy(), method=method)
+            pendulum_g.finite_amplitude(x[source], method=method, out=x[into])
+            np.testing.assert_array_equal(x[into], expected)
+
+
 def test_fit_decay_from_arrays_equals_the_cli_on_the_same_record():
     path = os.path.join(DATA, "nelson_olsson_1986_decay.json")
     with open(path) as f:

@@ -34,6 +34,12 @@ struct ClockScene {
   double accuracy = 0.0;  ///< s/day asked of the impulse error; 0: the exact route
 };
 
+/// Empty when an impulse of pi/Q of the energy (Feinstein Eq. F-1) keeps the
+/// swing of semi-amplitude theta0 (rad) below the top (180 deg; the cusp,
+/// 90 deg, on a cycloid), else "got Q; expected ...": a scene's Q and the
+/// Python module's q are refused alike.
+std::string impulse_over_top(double theta0, double q, ClockPath path);
+
 /// Parses and validates clock scene JSON text (schema "pendulum-g/clock-scene/1").
 /// Throws InputError naming the JSON path, the value and what was expected.
 ClockScene parse_clock_scene(const std::string& text);

@@ -141,20 +141,12 @@ std::string read_text(const std::string& path, std::size_t max_bytes, const std:
 }
 
 std::string printable_name(const std::string& name) {
-  static const char hex[] = "0123456789abcdef";
-  std::string out;
-  for (std::size_t i = 0; i < name.size();) {
-    const unsigned char c = static_cast<unsigned char>(name[i]);
-    const std::size_t length = c < 0x20 || c == 0x7f || c == '\\' ? 0 : printable_utf8_length(name, i);
-    if (c == '\\') {
-      out += "\\\\";
-    } else if (!length) {
-      out += {'\\', 'x', hex[c >> 4], hex[c & 15]};
-    }
-    out.append(name, i, length);
-    i += length ? length : 1;
-  }
-  return out;
+  // The backslash doubled first, so that a name holding "\\x1b" and one
+  // holding the escape byte stay two. Not cut: a path is at most PATH_MAX
+  // (4096) bytes, and two names cut alike would be one.
+  std::string doubled;
+  for (const char c : name) doubled += c == '\\' ? "\\\\" : std::string(1, c);
+  return one_line(doubled, std::string::npos, true);
 }
 
 }  // namespace pendulum

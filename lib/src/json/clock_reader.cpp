@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include "pendulum/argument_ranges.hpp"
 #include "pendulum/clock_scene.hpp"
 #include "pendulum/scene_json.hpp"
 #include "reader.hpp"
@@ -103,25 +104,18 @@ ClockScene parse_clock_scene(const std::string& text) {
   }
   const bool cycloid = s.path == ClockPath::cycloidal;
   const double top_angle = cycloid ? kPi / 2.0 : kPi;
-  // From 1e-9 rad (2e-4 arc seconds, far below any clock's swing; k^2 stays
-  // far from underflow) to below the top (the cycloid's cusp at 90 deg).
-  const std::string range = cycloid ? "an angle from 1e-9 rad to below 90 deg (the cycloid's cusp)"
-                                    : "an angle from 1e-9 rad to below 180 deg";
-  s.semi_amplitude = quantity(top, "semi_amplitude", Dimension::angle, 1e-9, top_angle, range);
+  // From ranges::semi_amplitude's low end to below the top (the cycloid's cusp at 90 deg).
+  const ArgumentRange& a = ranges::semi_amplitude;
+  const std::string range = cycloid ? "an angle from 1e-9 rad to below 90 deg (the cycloid's cusp)" : a.expected;
+  s.semi_amplitude = quantity(top, "semi_amplitude", Dimension::angle, a.low, top_angle, range);
   if (!(s.semi_amplitude.value < top_angle)) {
     throw InputError("semi_amplitude.value", "got " + format_number(s.semi_amplitude.value) + " rad; expected " + range);
   }
-  // Q >= 1: a clock's pendulum swings many times before it stops (Feinstein:
-  // 100 to 1e6); a damped swing then reaches equilibrium within 0.4 of a
+  // A damped swing of Q >= 1 reaches equilibrium within 0.4 of a
   // small-amplitude period.
-  s.q = quantity(top, "Q", std::nullopt, 1.0, 1e15, "a quality factor from 1 to 1e15");
-  // The impulse adds pi E/Q: the swing after it must stay below the top (Eq. F-1).
-  const double k_i = std::sqrt(1.0 + kPi / s.q.value) *
-                     (cycloid ? std::sin(s.semi_amplitude.value) : std::sin(s.semi_amplitude.value / 2.0));
-  if (!(k_i < 1.0)) {
-    throw InputError("Q", "got " + format_number(s.q.value) + "; expected a Q large enough that the impulse (pi/Q of "
-                          "the energy, Eq. F-1) keeps the swing below " + (cycloid ? "90 deg" : "180 deg"));
-  }
+  s.q = quantity(top, "Q", std::nullopt, ranges::quality.low, ranges::quality.high, ranges::quality.expected);
+  const std::string over_top = impulse_over_top(s.semi_amplitude.value, s.q.value, s.path);
+  if (!over_top.empty()) throw InputError("Q", over_top);
   Object impulse(top.at("impulse"), "impulse");
   const bool has_location = impulse.has("location"), has_relative = impulse.has("relative_location");
   if (has_location == has_relative) {

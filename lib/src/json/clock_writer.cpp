@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "pendulum/output.hpp"
+#include "pendulum/printable.hpp"
 #include "writer.hpp"
 
 namespace pendulum {
@@ -136,7 +137,7 @@ std::string clock_table(const ClockScene& s, const ClockAnalysis& a) {
     std::snprintf(line, sizeof line, "%-34s %18s  %s\n", name, value.c_str(), unit);
     out << line;
   };
-  if (!s.title.empty()) out << s.title << "\n";
+  if (!s.title.empty()) out << one_line(s.title, kShownTitleBytes, true) << "\n";
   out << "route: " << route_name(a.choice.route) << " (" << route_description(a.choice.route) << ")";
   if (a.choice.rk4_steps) out << ", " << a.choice.rk4_steps << " steps a period";
   out << "\n";

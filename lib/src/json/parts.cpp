@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "pendulum/air.hpp"
+#include "pendulum/argument_ranges.hpp"
 #include "pendulum/numeric.hpp"
 #include "recording_reader.hpp"
 
@@ -506,18 +507,14 @@ void read_site(Object& top, ParsedScene& out) {
   if (o.has("latitude")) {
     const Measured lat = quantity(o, "latitude", Dimension::angle, Range::any);
     const double deg = lat.value * 180.0 / kPi;
-    if (!(std::abs(deg) <= 90.0)) {
-      throw InputError("site.latitude.value", "got " + format_number(deg) +
-                                                  " deg; expected a latitude from -90 to 90 deg");
-    }
+    const std::string why = out_of_range(ranges::latitude, deg);
+    if (!why.empty()) throw InputError("site.latitude.value", why);
     site.latitude_deg = deg;
   }
   if (o.has("height")) {
     const double h = quantity(o, "height", Dimension::length, Range::any).value;
-    if (!(h > -12000.0 && h < 100000.0)) {
-      throw InputError("site.height.value", "got " + format_number(h) +
-                                                " m; expected a height on Earth (-12 km to 100 km)");
-    }
+    const std::string why = out_of_range(ranges::height, h);
+    if (!why.empty()) throw InputError("site.height.value", why);
     site.height = h;
     const std::string reference = o.text("height_reference");
     if (reference != "ellipsoid" && reference != "sea_level") {

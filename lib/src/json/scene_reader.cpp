@@ -10,6 +10,7 @@
 #include "parts.hpp"
 #include "recording_reader.hpp"
 #include "table_reader.hpp"
+#include "pendulum/argument_ranges.hpp"
 #include "pendulum/models/registry.hpp"
 #include "pendulum/scene_json.hpp"
 
@@ -166,7 +167,8 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
     const Measured length = quantity(length_owner, "length", Dimension::length, Range::positive, &source.measured_to);
     v.length = length.value;
     u.length = length.sigma;
-    within(v.length, 1e-3, 1e3, source.path_of("length.value"), "m", "a laboratory pendulum, 1 mm to 1 km long");
+    within(v.length, ranges::length.low, ranges::length.high, source.path_of("length.value"), ranges::length.unit,
+           ranges::length.expected);
     // Left out, an uncertainty is unknown and said so; written as 0, it claims a perfect tape.
     const auto& written = length_owner.at("length");
     if (written.contains("uncertainty") && written.at("uncertainty") == 0) {
@@ -371,6 +373,26 @@ std::string unknown_names(const std::vector<std::string>& fit) {
   return out;
 }
 
+/// Unknowns besides g need observations at more than one setting: at one,
+/// every period is the same one, which tells g from them no better than one
+/// observation does (issue 42: a series of equal lengths fitting
+/// length_offset gave g 9.5225 +- null).
+void refuse_one_setting_fit(const ParsedScene& out) {
+  const auto& observations = out.observations;
+  if (out.fit.empty() || observations.size() < 2) return;
+  const Observation<double>& first = observations.front();
+  const bool one = std::all_of(observations.begin(), observations.end(), [&](const Observation<double>& o) {
+    return o.setting == first.setting && std::abs(o.length - first.length) <= 1e-6 * std::abs(first.length);
+  });
+  std::string fitted;
+  for (const auto& name : out.fit) fitted += (fitted.empty() ? "" : ", ") + name;
+  const std::string key = setting_key(first.setting);
+  PENDULUM_FAIL_IF(one, out.sources.back().path + key + ".value",
+                   "got every observation at the " + key + " " + format_number(first.length) +
+                       " m; expected observations at different ones: with " + fitted + " fitted, one " + key +
+                       " gives one period, which cannot tell g from " + fitted);
+}
+
 /// schema, title, source, notes: what every document may say about itself.
 void read_header(Object& top, ParsedScene& out) {
   if (top.has("schema")) {
@@ -479,6 +501,7 @@ ParsedScene parse_scene(const std::string& text, const SceneFiles& files) {
                        (out.observations.size() == 1 ? "" : "s") + " for " + std::to_string(unknowns) +
                        " unknowns (g" + unknown_names(out.fit) + "); expected at least as many observations "
                        "as unknowns");
+  refuse_one_setting_fit(out);
   refer_lengths_to_centre(out);
   visit_period_model(out.model, [&](auto model) { decltype(model)::check_scene(out); });
   note_body_amplitudes(out);

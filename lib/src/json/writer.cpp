@@ -132,10 +132,11 @@ json drag_to_json(const DragPrediction<double>& d, const Decay<double>& decay) {
           {"measured_over_predicted", {{"alpha", decay.alpha / d.alpha}, {"beta", decay.beta / d.beta}}}};
 }
 
-// RFC 4180: quote a field that holds a comma, quote or line break.
+// RFC 4180: quote a field that holds a comma, quote or line break. Text
+// (a file name, a title) never starts a formula; numbers are not text.
 std::string csv_field(const json& v) {
   if (v.is_null()) return "";
-  std::string text = v.is_string() ? v.get<std::string>() : v.dump();
+  std::string text = v.is_string() ? spreadsheet_text(v.get<std::string>()) : v.dump();
   if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
   std::string quoted = "\"";
   for (char c : text) {
@@ -617,7 +618,7 @@ std::string decay_fit_lines(const DecayFit& f) {
 
 std::string decay_fit_table(const ParsedScene& scene, const DecayFit& fit, const std::vector<std::string>& warnings) {
   std::ostringstream os;
-  if (!scene.title.empty()) os << scene.title << "\n\n";
+  if (!scene.title.empty()) os << one_line(scene.title, kShownTitleBytes, true) << "\n\n";
   os << decay_fit_lines(fit);
   for (const auto& w : warnings) os << "warning: " << w << "\n";
   return os.str();
@@ -626,7 +627,7 @@ std::string decay_fit_table(const ParsedScene& scene, const DecayFit& fit, const
 std::string result_table(const ParsedScene& scene, const Analysis& a) {
   std::ostringstream os;
   char line[320];
-  if (!scene.title.empty()) os << scene.title << "\n\n";
+  if (!scene.title.empty()) os << one_line(scene.title, kShownTitleBytes, true) << "\n\n";
   if (!scene.series) {
     const ObservationResult& o = a.observations.front();
     correction_table(os, o);

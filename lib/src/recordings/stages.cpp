@@ -9,6 +9,7 @@
 #include <cstring>
 #include <limits>
 
+#include "pendulum/argument_ranges.hpp"
 #include "pendulum/input_error.hpp"
 #include "pendulum/numeric.hpp"
 #include "../text.hpp"
@@ -425,9 +426,8 @@ double frame_rate(const std::string& text) {
   const std::string rate = lower_case(trim_spaces(text));
   if (rate.size() < 4 || rate.compare(rate.size() - 3, 3, "fps") != 0) return 0.0;
   const std::string number(trim_spaces(std::string_view(rate).substr(0, rate.size() - 3)));
-  char* stop = nullptr;
-  const double f = std::strtod(number.c_str(), &stop);
-  return stop == number.c_str() + number.size() && std::isfinite(f) && f > 0.0 && f <= 1e6 ? f : 0.0;
+  const double f = decimal_number(number).value_or(0.0);
+  return std::isfinite(f) && f > 0.0 && f <= 1e6 ? f : 0.0;
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "pendulum/amplitude.hpp"
+#include "pendulum/files.hpp"
 #include "pendulum/numeric.hpp"
 #include "pendulum/input_error.hpp"
 #include "pendulum/swing_energy.hpp"
@@ -1439,7 +1440,7 @@ RecordingSummary analyse_recording(const std::string& path, RecordingFormat form
                                    const std::string& columns) {
   const Recording r = read_recording(path, format, limits, set, columns);
   RecordingSummary s;
-  s.file = path;
+  s.file = printable_name(path);
   s.format = r.format;
   s.kind = r.kind;
   s.rows = r.rows;

@@ -581,6 +581,12 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   } else if (out.setting == Setting::pivot_distance) {
     const std::vector<double> k2 = row_k2(meters, periods);
     for (std::size_t i = 0; i < k2.size(); ++i) {
+      // At h = 0 the equivalent length k^2/h + h below would be 0/0.
+      if (!(meters[i] > 0.0)) {
+        fail(file, line_of(i), 1,
+             "got a pivot h = " + format_number(settings[i], 6) + " " + su.unit + " from the centre of mass; expected "
+             "a pivot away from it (at the centre the body has no restoring torque and its period is infinite)");
+      }
       if (!(k2[i] > 0.0)) {
         fail(file, line_of(i), 1,
              "h = " + format_number(settings[i], 6) + " " + su.unit + " is beyond the equivalent length gT^2/4pi^2 = " +

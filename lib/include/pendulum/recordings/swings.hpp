@@ -217,7 +217,7 @@ std::vector<double> swing_signal(const Recording& recording);
 
 /// Everything `pendulum-g import` and a scene's recording hook need.
 struct RecordingSummary {
-  std::string file;
+  std::string file;  ///< as printed (printable_name())
   RecordingFormat format = RecordingFormat::automatic;
   SignalKind kind = SignalKind::angular_rate;
   std::size_t rows = 0;     ///< data rows read

@@ -299,35 +299,59 @@ TEST_CASE("Tables: single timings take their uncertainty from the scatter about 
   CHECK_FALSE(parse_scene(table_scene(stated, "t")).period_uncertainty_from_scatter);
 }
 
-TEST_CASE("Tables: the scatter's sigma covers the truth at Student's t rate", "[tables][coverage]") {
-  // 400 seeded tables (std::mt19937_64, seeds 1-400): six lengths 0.4-1.4 m taped to the top of a
-  // ball 12.7 mm above its centre, one period each from T = 2 pi sqrt(L/g) 2K(sin(theta0/2))/pi at
-  // g = 9.81 m/s^2 and theta0 = 2 deg (the closed form the reduction inverts), plus N(0, 2 ms),
-  // written to 0.1 ms: the table gives no sigma. The offset and g are fitted (n - p = 4 degrees
-  // of freedom), so g +- its sigma from the scatter holds the truth with probability
-  // P(|t_4| < 1) = 0.626 (Boost.Math's Student's t), 400 p (1 - p) its binomial variance.
-  const double g = 9.81, offset = 0.0127, theta = 2.0 * kPi / 180.0;
+namespace {
+
+constexpr double kTrueG = 9.81;
+
+/// A seeded table without sigma (std::mt19937_64): six lengths 0.4-1.4 m taped to the top of a
+/// ball 12.7 mm above its centre, one period each from T = 2 pi sqrt(L/g) 2K(sin(theta0/2))/pi at
+/// g = 9.81 m/s^2 and theta0 = 2 deg (the closed form the reduction inverts), plus N(0, noise s),
+/// written with `decimals` decimals.
+SettingsTable swung_table(int seed, double noise, int decimals) {
+  const double offset = 0.0127, theta = 2.0 * kPi / 180.0;
   const double factor = 2.0 / kPi * std::comp_ellint_1(std::sin(theta / 2.0));
+  std::mt19937_64 rng(static_cast<std::uint64_t>(seed));
+  std::normal_distribution<double> error(0.0, noise);
+  std::ostringstream text;
+  text << "L (m),T (s),theta (deg)\n";
+  for (int i = 0; i < 6; ++i) {
+    const double l = 0.4 + 0.2 * i;
+    const double t = 2.0 * kPi * std::sqrt((l + offset) / kTrueG) * factor + error(rng);
+    text << l << "," << std::fixed << std::setprecision(decimals) << t << std::defaultfloat << ",2\n";
+  }
+  return parse_settings_table(text.str(), "seed " + std::to_string(seed));
+}
+
+}  // namespace
+
+TEST_CASE("Tables: the scatter's sigma covers the truth at Student's t rate", "[tables][coverage]") {
+  // 400 seeded tables (seeds 1-400), 2 ms of noise written to 0.1 ms. The offset and g are fitted
+  // (n - p = 4 degrees of freedom), so g +- its sigma from the scatter holds the truth with
+  // probability P(|t_4| < 1) = 0.626 (Boost.Math's Student's t), 400 p (1 - p) its binomial variance.
   const int runs = 400;
   int covered = 0;
   for (int seed = 1; seed <= runs; ++seed) {
-    std::mt19937_64 rng(static_cast<std::uint64_t>(seed));
-    std::normal_distribution<double> noise(0.0, 0.002);
-    std::ostringstream text;
-    text << "L (m),T (s),theta (deg)\n";
-    for (int i = 0; i < 6; ++i) {
-      const double l = 0.4 + 0.2 * i;
-      const double t = 2.0 * kPi * std::sqrt((l + offset) / g) * factor + noise(rng);
-      text << l << "," << std::fixed << std::setprecision(4) << t << std::defaultfloat << ",2\n";
-    }
-    const SettingsTable table = parse_settings_table(text.str(), "seed " + std::to_string(seed));
+    const SettingsTable table = swung_table(seed, 0.002, 4);
     REQUIRE(table.sigma_from_scatter);
     const Analysis a = reduced(table);
-    covered += std::abs(a.g.value - g) < *a.g.uncertainty;
+    covered += std::abs(a.g.value - kTrueG) < *a.g.uncertainty;
   }
   const boost::math::students_t t4(4.0);
   const double p = 2.0 * boost::math::cdf(t4, 1.0) - 1.0;
   const double sd = std::sqrt(runs * p * (1.0 - p));
   INFO("covered " << covered << " of " << runs << ", expected " << runs * p << " +- " << sd);
   CHECK(std::abs(covered - runs * p) < 3.5 * sd);
+
+  // S is applied wherever it is above 1, not only where chi2 is improbable: tables written to
+  // 0.01 s (a floor of 2.9 ms) whose 3 ms of noise scatter just above it.
+  int probable = 0;
+  for (int seed = 1; seed <= 100; ++seed) {
+    const Analysis a = reduced(swung_table(seed, 0.003, 2));
+    if (!(*a.fit.birge_ratio > 1.0)) continue;
+    probable += *a.fit.probability > 0.01;
+    INFO("seed " << seed << ": S = " << *a.fit.birge_ratio);
+    // Nothing but the periods has an uncertainty: g's is the unscaled one times S.
+    CHECK(*a.g.uncertainty == Approx(*a.fit.birge_ratio * *a.g_uncertainty_unscaled).epsilon(1e-9));
+  }
+  CHECK(probable > 10);
 }

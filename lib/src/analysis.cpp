@@ -453,7 +453,7 @@ class Fit {
       const std::optional<double> stated = fitted_[i] ? deviation(covariance_(i, i)) : std::nullopt;
       // The scatter tests the observations' own uncertainties, (J^T W J)^-1: S scales that share.
       const std::optional<double> supported =
-          fit.scaled && stated ? std::optional<double>(scaled_uncertainty(*stated, *from_periods, d.applied_scale()))
+          fit.scaled && stated ? std::optional<double>(scaled_uncertainty(*stated, *from_periods, *d.birge_ratio))
                                : stated;
       fit.parameters.push_back({info.name, info.unit, p_[i], supported, from_periods, fitted_[i], stated});
       if (fitted_[i]) free.push_back(i);

@@ -10,6 +10,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <boost/math/distributions/students_t.hpp>
+#include <iomanip>
+#include <random>
+
 #include "pendulum/analysis.hpp"
 #include "pendulum/recordings/table.hpp"
 #include "pendulum/scene_json.hpp"
@@ -66,7 +70,8 @@ json series_by_hand(const std::vector<std::pair<double, double>>& rows, double& 
     timing["uncertainty"] = pooled;
     observations.push_back({{"length", {{"value", g.length}, {"unit", "cm"}}}, {"timing", timing}});
   }
-  return {{"amplitude", "not recorded"}, {"observations", observations}};
+  // import fits the offset of a table of three lengths or more (docs/series.md, "The offset").
+  return {{"amplitude", "not recorded"}, {"fit", {"length_offset"}}, {"observations", observations}};
 }
 
 }  // namespace
@@ -106,7 +111,9 @@ TEST_CASE("Tables: a T-against-L table with repeats equals the same series as JS
   CHECK(*a.g.uncertainty == Approx(*b.g.uncertainty).epsilon(1e-10));
 
   // The scene naming the table reads the same observations.
-  const json named = {{"amplitude", "not recorded"}, {"observations", {{"table", "pendulum_lengths_table.csv"}}}};
+  const json named = {{"amplitude", "not recorded"},
+                      {"fit", {"length_offset"}},
+                      {"observations", {{"table", "pendulum_lengths_table.csv"}}}};
   SceneFiles files;
   files.directory = kData;
   const ParsedScene referenced = parse_scene(named.dump(), files);
@@ -117,7 +124,8 @@ TEST_CASE("Tables: a T-against-L table with repeats equals the same series as JS
     rows.push_back({{"length", {{"value", l}, {"unit", "cm"}}},
                     {"timing", {{"oscillations_per_trial", 10}, {"unit", "s"}, {"trials", {t}}, {"uncertainty", pooled}}}});
   }
-  const Analysis ungrouped = analyse(parse_scene(json{{"amplitude", "not recorded"}, {"observations", rows}}.dump()));
+  const Analysis ungrouped =
+      analyse(parse_scene(json{{"amplitude", "not recorded"}, {"fit", {"length_offset"}}, {"observations", rows}}.dump()));
   CHECK(ungrouped.g.value != Approx(a.g.value).epsilon(1e-6));
 }
 
@@ -199,4 +207,151 @@ TEST_CASE("Amplitude not recorded: a uniform distribution over its range", "[tab
   wide["amplitude"] = {{"value", 5}, {"uncertainty", 5}, {"unit", "deg"}};
   CHECK_THROWS_WITH(parse_scene(zero.dump()), Catch::Contains("expected a positive angle: if the amplitude was not recorded, write \"amplitude\": \"not recorded\""));
   CHECK_THROWS_WITH(parse_scene(wide.dump()), Catch::Contains("is written \"amplitude\": {\"range\": [0, 10], \"unit\": \"deg\"}"));
+}
+
+// The layouts students type (tests/tools/make_tables.py): each read with the
+// roles its numbers and words give, and g within three of its standard
+// uncertainties of the generator's 9.81 m/s^2.
+namespace {
+
+Analysis reduced(const SettingsTable& t) { return analyse(parse_scene(table_scene(t, "t"))); }
+
+std::vector<std::string> roles(const SettingsTable& t) {
+  std::vector<std::string> out;
+  for (const auto& c : t.columns) out.push_back(c.role);
+  return out;
+}
+
+void check_g(const SettingsTable& t) {
+  const Analysis a = reduced(t);
+  REQUIRE(a.g.uncertainty);
+  CHECK(std::abs(a.g.value - 9.81) < 3.0 * *a.g.uncertainty);
+}
+
+}  // namespace
+
+TEST_CASE("Tables: a units row, trials side by side and a count of swings from the numbers", "[tables]") {
+  const SettingsTable t = read_settings_table(kTables + "/units_row_trials.csv");
+  CHECK(t.setting_unit == "m");  // the units row's "(m)"
+  CHECK(t.oscillations == 10);   // times of 10 swings, nowhere written
+  CHECK(t.observations.size() == 5);
+  CHECK(t.observations[0].times.size() == 3);  // a row's trials are its repeats; an empty cell is none
+  CHECK(t.columns[2].role == "time of 10 oscillations");
+  check_g(t);
+  // The same rows in one column each, headerless, in centimetres: the same observations.
+  const SettingsTable bare = read_settings_table(kTables + "/headerless_times_of_swings.txt");
+  CHECK(bare.setting_unit == "cm");
+  CHECK(bare.oscillations == 10);
+  REQUIRE(bare.observations.size() == t.observations.size());
+  for (std::size_t k = 0; k < t.observations.size(); ++k) CHECK(bare.observations[k].times == t.observations[k].times);
+}
+
+TEST_CASE("Tables: Dutch headers with error columns", "[tables]") {
+  const SettingsTable t = read_settings_table(kTables + "/dutch_errors.csv");
+  CHECK(t.setting_unit == "cm");
+  CHECK(t.oscillations == 10);
+  CHECK(roles(t) == std::vector<std::string>{"length", "time of 10 oscillations", "uncertainty of the length",
+                                             "uncertainty of the time of 10 oscillations"});
+  REQUIRE(t.observations[0].setting_sigma);
+  CHECK(*t.observations[0].setting_sigma == 0.2);
+  check_g(t);
+}
+
+TEST_CASE("Tables: sigma columns by place and by matplotlib's names; the periods first", "[tables]") {
+  const SettingsTable xy = read_settings_table(kTables + "/x_y_sx_sy.txt");
+  const std::vector<std::string> x_y_sx_sy = {"length", "period", "uncertainty of the length", "uncertainty of the period"};
+  CHECK(roles(xy) == x_y_sx_sy);
+  CHECK(*xy.observations[0].time_sigma == 0.01);
+  const SettingsTable named = read_settings_table(kTables + "/xerr_yerr.csv");
+  CHECK(roles(named) == x_y_sx_sy);
+  check_g(xy);
+  check_g(named);
+  const SettingsTable swapped = read_settings_table(kTables + "/period_first.txt");
+  CHECK(roles(swapped) == std::vector<std::string>{"period", "length"});
+  CHECK(swapped.setting_unit == "cm");
+  CHECK(swapped.sigma_from_scatter);
+}
+
+TEST_CASE("Tables: a time of N swings beside its period, and a per-row g, are not inputs", "[tables]") {
+  // make_tables.py: L (no unit; 35-110: centimetres), t = 10 T, T, and each row's 4 pi^2 L/T^2.
+  const SettingsTable t = read_settings_table(kTables + "/l_t_T_g.csv");
+  CHECK(t.setting_unit == "cm");
+  CHECK(t.oscillations == 1);
+  REQUIRE(roles(t) == std::vector<std::string>{"length", "unused", "period", "unused"});
+  CHECK(t.columns[1].why.find("the time of 10 oscillations beside the periods of column 3") != std::string::npos);
+  check_g(t);
+}
+
+TEST_CASE("Tables: single timings take their uncertainty from the scatter about the fit", "[tables]") {
+  const SettingsTable t = read_settings_table(kTables + "/single_timings.csv");
+  CHECK(t.sigma_from_scatter);
+  CHECK(t.resolution == Approx(0.001).epsilon(1e-9));  // "1.181": three decimals
+  const ParsedScene scene = parse_scene(table_scene(t, "t"));
+  CHECK(scene.period_uncertainty_from_scatter);
+  CHECK(scene.fit == std::vector<std::string>{"length_offset"});
+  const Analysis a = analyse(scene);
+  check_g(t);
+  // chi2 gives no verdict: no status reason from it, whatever its size.
+  for (const auto& r : a.status_reasons) CHECK(r.find("scatter about the fit") == std::string::npos);
+  // With a sigma column nothing changes: the same rows with one stated.
+  const SettingsTable stated = read_settings_table(kTables + "/xerr_yerr.csv");
+  CHECK_FALSE(stated.sigma_from_scatter);
+  CHECK_FALSE(parse_scene(table_scene(stated, "t")).period_uncertainty_from_scatter);
+}
+
+namespace {
+
+constexpr double kTrueG = 9.81;
+
+/// A seeded table without sigma (std::mt19937_64): six lengths 0.4-1.4 m taped to the top of a
+/// ball 12.7 mm above its centre, one period each from T = 2 pi sqrt(L/g) 2K(sin(theta0/2))/pi at
+/// g = 9.81 m/s^2 and theta0 = 2 deg (the closed form the reduction inverts), plus N(0, noise s),
+/// written with `decimals` decimals.
+SettingsTable swung_table(int seed, double noise, int decimals) {
+  const double offset = 0.0127, theta = 2.0 * kPi / 180.0;
+  const double factor = 2.0 / kPi * std::comp_ellint_1(std::sin(theta / 2.0));
+  std::mt19937_64 rng(static_cast<std::uint64_t>(seed));
+  std::normal_distribution<double> error(0.0, noise);
+  std::ostringstream text;
+  text << "L (m),T (s),theta (deg)\n";
+  for (int i = 0; i < 6; ++i) {
+    const double l = 0.4 + 0.2 * i;
+    const double t = 2.0 * kPi * std::sqrt((l + offset) / kTrueG) * factor + error(rng);
+    text << l << "," << std::fixed << std::setprecision(decimals) << t << std::defaultfloat << ",2\n";
+  }
+  return parse_settings_table(text.str(), "seed " + std::to_string(seed));
+}
+
+}  // namespace
+
+TEST_CASE("Tables: the scatter's sigma covers the truth at Student's t rate", "[tables][coverage]") {
+  // 400 seeded tables (seeds 1-400), 2 ms of noise written to 0.1 ms. The offset and g are fitted
+  // (n - p = 4 degrees of freedom), so g +- its sigma from the scatter holds the truth with
+  // probability P(|t_4| < 1) = 0.626 (Boost.Math's Student's t), 400 p (1 - p) its binomial variance.
+  const int runs = 400;
+  int covered = 0;
+  for (int seed = 1; seed <= runs; ++seed) {
+    const SettingsTable table = swung_table(seed, 0.002, 4);
+    REQUIRE(table.sigma_from_scatter);
+    const Analysis a = reduced(table);
+    covered += std::abs(a.g.value - kTrueG) < *a.g.uncertainty;
+  }
+  const boost::math::students_t t4(4.0);
+  const double p = 2.0 * boost::math::cdf(t4, 1.0) - 1.0;
+  const double sd = std::sqrt(runs * p * (1.0 - p));
+  INFO("covered " << covered << " of " << runs << ", expected " << runs * p << " +- " << sd);
+  CHECK(std::abs(covered - runs * p) < 3.5 * sd);
+
+  // S is applied wherever it is above 1, not only where chi2 is improbable: tables written to
+  // 0.01 s (a floor of 2.9 ms) whose 3 ms of noise scatter just above it.
+  int probable = 0;
+  for (int seed = 1; seed <= 100; ++seed) {
+    const Analysis a = reduced(swung_table(seed, 0.003, 2));
+    if (!(*a.fit.birge_ratio > 1.0)) continue;
+    probable += *a.fit.probability > 0.01;
+    INFO("seed " << seed << ": S = " << *a.fit.birge_ratio);
+    // Nothing but the periods has an uncertainty: g's is the unscaled one times S.
+    CHECK(*a.g.uncertainty == Approx(*a.fit.birge_ratio * *a.g_uncertainty_unscaled).epsilon(1e-9));
+  }
+  CHECK(probable > 10);
 }

@@ -418,6 +418,12 @@ class Fit {
     out_.g = {g, fitted_g.uncertainty};
     out_.g_uncertainty_unscaled = fitted_g.uncertainty_unscaled;
     out_.g_period_and_length_uncertainty = deviation(covariance_pl_(0, 0));
+    // Periods whose uncertainty is their scatter: the periods' share carries S as g's does.
+    if (scene_.period_uncertainty_from_scatter && out_.fit.scaled && out_.g_period_and_length_uncertainty &&
+        fitted_g.uncertainty_from_observations) {
+      out_.g_period_and_length_uncertainty = scaled_uncertainty(
+          *out_.g_period_and_length_uncertainty, *fitted_g.uncertainty_from_observations, *out_.fit.birge_ratio);
+    }
     report_observations(g);
     report_budget();
     out_.fit.model = Model::kName;
@@ -435,7 +441,9 @@ class Fit {
     const Dispersion d = dispersion(fit.chi2, fit.dof);
     fit.probability = d.probability;
     fit.birge_ratio = d.birge_ratio;
-    fit.scaled = d.over_dispersed && !singular_;
+    // Periods whose uncertainty is the scatter about the fit: S applied wherever it is above the floor.
+    fit.scaled = (scene_.period_uncertainty_from_scatter ? d.birge_ratio && *d.birge_ratio > 1.0 : d.over_dispersed) &&
+                 !singular_;
     std::vector<int> free;
     for (int i = 0; i < P; ++i) {
       const ParameterInfo& info = Model::kParameterInfo[i];
@@ -445,7 +453,7 @@ class Fit {
       const std::optional<double> stated = fitted_[i] ? deviation(covariance_(i, i)) : std::nullopt;
       // The scatter tests the observations' own uncertainties, (J^T W J)^-1: S scales that share.
       const std::optional<double> supported =
-          fit.scaled && stated ? std::optional<double>(scaled_uncertainty(*stated, *from_periods, d.applied_scale()))
+          fit.scaled && stated ? std::optional<double>(scaled_uncertainty(*stated, *from_periods, *d.birge_ratio))
                                : stated;
       fit.parameters.push_back({info.name, info.unit, p_[i], supported, from_periods, fitted_[i], stated});
       if (fitted_[i]) free.push_back(i);

@@ -349,7 +349,7 @@ bool offset_fitted(const Analysis& a) {
 /// Fits whose chi2 is improbably large (dispersion.hpp): what scatters, by
 /// how much, what it means, and the uncertainty the scatter supports.
 void judge_dispersion(const ParsedScene& scene, const Analysis& a, std::vector<std::string>& reasons) {
-  if (a.fit.scaled && a.g.uncertainty && a.g_uncertainty_unscaled) {
+  if (a.fit.scaled && a.g.uncertainty && a.g_uncertainty_unscaled && !scene.period_uncertainty_from_scatter) {
     const SuspectCauses& causes = suspect_causes(scene);
     reasons.push_back(
         "fit: " + dispersion_finding(dispersion(a.fit.chi2, a.fit.dof), "the observations scatter about the fit") +

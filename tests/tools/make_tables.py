@@ -77,6 +77,30 @@ def main():
     periods = [(l, round(t / 10, 3), 0.004) for l, t in lengths_table(8, [45, 65, 85, 105, 125], [1] * 5)]
     write("tests/tables/periods_with_sigma.tsv",
           "Length (cm)\tT (s)\t\u03c3T (s)\n" + "".join(f"{l:.1f}\t{t:.3f}\t{u:.3f}\n" for l, t, u in periods))
+    # The layouts students type (docs/series.md, "Tables as students type them"): the seed-7 rows as
+    # trials beside each other under a units row (times of 10 swings, the count nowhere written), in
+    # Dutch with error columns, and headerless in centimetres with the count unwritten.
+    trials = {}
+    for l, t in rows:
+        trials.setdefault(l, []).append(t)
+    write("tests/tables/units_row_trials.csv",
+          "Length,1st run (second),2nd run (second),3rd run (second),4th run (second)\n(m),,,,\n" +
+          "".join(f"{l / 100:.2f}," + ",".join(f"{t:.2f}" for t in ts) + "," * (4 - len(ts)) + "\n"
+                  for l, ts in trials.items()))
+    write("tests/tables/dutch_errors.csv",
+          "lengte (cm), tijd 10 slingeringen (s), fout in lengte (cm), fout in tijd (s)\n" +
+          "".join(f"{l:.1f},{t:.2f},0.2,0.06\n" for l, t in rows))
+    write("tests/tables/headerless_times_of_swings.txt", "".join(f"{l:.1f}, {t:.2f}\n" for l, t in rows))
+    # One timed period per length, no uncertainty: headerless, the periods first (x, y swapped), and
+    # L T sigma_L sigma_T with a tab then spaces (a course template's), and matplotlib's names.
+    single = [(l, round(t / 10, 3)) for l, t in lengths_table(10, [35, 50, 65, 80, 95, 110], [1] * 6)]
+    write("tests/tables/period_first.txt", "\r\n" + "".join(f"{t:.3f}\t{l:.1f}\r\n" for l, t in single))
+    write("tests/tables/x_y_sx_sy.txt", "".join(f"{l / 100:.2f}\t{t:.3f} 0.002 0.01\n" for l, t in single))
+    write("tests/tables/xerr_yerr.csv",
+          "length,period,xerr,yerr\n" + "".join(f"{l / 100:.2f},{t:.3f},0.002,0.01\n" for l, t in single))
+    write("tests/tables/l_t_T_g.csv", "L,t,T,g\n" + "".join(
+        f"{l:.0f},{10 * t:.2f},{t:.3f},{4 * math.pi**2 * l / 100 / t**2:.3f}\n" for l, t in single))
+    write("tests/tables/single_timings.csv", "L (cm),T (s)\n" + "".join(f"{l:.1f},{t:.3f}\n" for l, t in single))
     write("tests/tables/headerless_pivot_scan.txt",
           "".join(f"{h / 100:.3f}, {s / 100:.4f}, {t:.4f}, {u:.3f}\n" for h, s, t, u in scan_table(9, holes)))
     # Bad tables (tests/bad_recordings/expected.json).
@@ -86,10 +110,9 @@ def main():
     write("tests/bad_recordings/table_text_in_cell.csv", "L (cm),t10 (s)\n55,14.91\n75,17.3B\n95,19.55\n")
     write("tests/bad_recordings/table_setting_not_together.csv",
           "L (cm),t10 (s)\n55,14.91\n75,17.38\n55,14.88\n95,19.55\n")
+    write("tests/bad_recordings/table_cell_units_mixed.csv", "10cm,0.68s\n20cm,0.94s\n0.3m,1.17s\n")
     write("tests/bad_recordings/table_amplitude_unit_open.csv",
           "L (cm),t10 (s),theta\n55,14.91,0.5\n75,17.38,0.6\n95,19.55,0.9\n")
-    write("tests/bad_recordings/table_single_timings_no_sigma.csv",
-          "L (cm),T (s)\n40,1.270\n60,1.555\n80,1.795\n100,2.006\n120,2.198\n")
 
 
 if __name__ == "__main__":

@@ -89,6 +89,11 @@ struct ParsedScene {
   bool swing_by_swing = false;
   /// Unknowns besides g ("fit"), by the period model's parameter names.
   std::vector<std::string> fit;
+  /// "period_uncertainty": "scatter_about_fit": single timings without an
+  /// uncertainty (a table's, docs/series.md "Single timings"); their stated
+  /// ones are a floor (the printed digits'), the fit scales them by the
+  /// Birge ratio S wherever S > 1, and chi2 gives no verdict.
+  bool period_uncertainty_from_scatter = false;
   std::string title;
   std::string source;
   /// A decay record to fit alpha and beta from (decay.data); the fit

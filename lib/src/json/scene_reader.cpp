@@ -255,6 +255,12 @@ void read_series(Object& top, ParsedScene& out, RecordingReader& recordings) {
                    "got " + shown(list) + "; expected a non-empty array of observations, each with length, "
                    "amplitude and timing, or a table of them, {\"table\": \"lengths.csv\"} (docs/series.md)");
   out.series = true;
+  if (top.has("period_uncertainty")) {
+    PENDULUM_FAIL_IF(top.text("period_uncertainty") != "scatter_about_fit", "period_uncertainty",
+                     "got " + shown(top.at("period_uncertainty")) + "; expected \"scatter_about_fit\" (single timings "
+                     "without an uncertainty: each period's is their scatter about the fit), or no key");
+    out.period_uncertainty_from_scatter = true;
+  }
   for (std::size_t k = 0; k < list.size(); ++k) {
     const std::string path = "observations[" + std::to_string(k) + "]";
     Object o(list[k], path, "an object with length, amplitude and timing");

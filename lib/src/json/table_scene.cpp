@@ -87,6 +87,7 @@ J observations_as(const SettingsTable& table, const std::string& name) {
     if (o.amplitude) item["amplitude"] = quantity_json<J>(*o.amplitude, o.amplitude_sigma, table.amplitude_unit);
     J timing = {{"oscillations_per_trial", table.oscillations}, {"unit", table.time_unit}, {"trials", o.times}};
     if (o.time_sigma) timing["uncertainty"] = *o.time_sigma;
+    if (table.sigma_from_scatter) timing["resolution"] = table.resolution;
     item["timing"] = timing;
     const std::size_t n = o.times.size();
     item["source"] = name + (n == 1 ? ", line " + std::to_string(o.first_line)
@@ -119,6 +120,7 @@ json read_table_reference(Object& top, ParsedScene& out, const RecordingReader& 
   } catch (const InputError& e) {
     throw InputError(t.path("table"), e.what());  // "file: message" or "file:line:column: message"
   }
+  out.period_uncertainty_from_scatter |= table.sigma_from_scatter;
   for (const RecordingNote& n : table.notes) out.assumptions.push_back("observations.table: " + name + ": " + n.text);
   for (const RecordingNote& n : table.warnings) out.warnings.push_back("observations.table: " + name + ": " + n.text);
   return table_observations(table, name);
@@ -140,6 +142,11 @@ std::string table_scene(const SettingsTable& table, const std::string& table_nam
       if (unknowns[p]) scene["fit"].push_back(M::kParameterInfo[p].name);
     }
   });
+  // The textbook line's intercept: lengths taped to the top of the bob or a
+  // knot run to another point than its centre, by the same distance at every
+  // length; three lengths or more leave a degree of freedom beside it.
+  if (table.setting == Setting::length && table.observations.size() >= 3) scene["fit"].push_back("length_offset");
+  if (table.sigma_from_scatter) scene["period_uncertainty"] = "scatter_about_fit";
   const bool amplitudes = !table.observations.empty() && table.observations.front().amplitude;
   if (!amplitudes) scene["amplitude"] = "not recorded";
   scene["observations"] = json_reader::observations_as<nlohmann::ordered_json>(table, table_name);

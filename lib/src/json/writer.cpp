@@ -274,6 +274,7 @@ json fit_json(const ParsedScene& scene, const Analysis& a) {
               {"probability", optional_number(f.probability)},
               {"birge_ratio", optional_number(f.birge_ratio)},
               {"uncertainties_scaled", f.scaled},
+              {"period_uncertainty", scene.period_uncertainty_from_scatter ? "scatter_about_fit" : "stated"},
               {"converged", f.converged},
               {"termination", f.termination},
               {"iterations", f.iterations},
@@ -661,13 +662,25 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
       std::snprintf(line, sizeof line, "  %-14s = %.8g %s %s\n", p.name, p.value,
                     plus_minus(p.uncertainty, "%.3g").c_str(), p.unit);
       os << line;
+      if (std::string(p.name) == "length_offset") {
+        std::snprintf(line, sizeof line, "                   the lengths run to a point %.3g %s mm %s the centre of the bob\n",
+                      std::fabs(p.value) * 1e3, plus_minus(p.uncertainty ? std::optional<double>(*p.uncertainty * 1e3) : std::nullopt, "%.3g").c_str(),
+                      p.value >= 0.0 ? "above" : "below");
+        os << line;
+      }
     }
-    if (a.fit.dof > 0) {
+    if (scene.period_uncertainty_from_scatter && a.fit.birge_ratio) {
+      std::snprintf(line, sizeof line,
+                    "  periods' sigma = from the scatter about the fit, %.3g times the printed digits' floor (%d degrees "
+                    "of freedom): this fit cannot test itself; chi2 gives no verdict\n",
+                    std::max(*a.fit.birge_ratio, 1.0), a.fit.dof);
+      os << line;
+    } else if (a.fit.dof > 0) {
       std::snprintf(line, sizeof line, "  chi2/dof       = %.4g (probability of a larger chi2: %.3g)\n",
                     a.fit.chi2 / a.fit.dof, a.fit.probability.value_or(0.0));
       os << line;
     }
-    if (a.fit.scaled) {
+    if (a.fit.scaled && !scene.period_uncertainty_from_scatter) {
       std::snprintf(line, sizeof line,
                     "  uncertainties scaled by the Birge ratio S = sqrt(chi2/dof) = %.3g: the observations scatter "
                     "more than their stated uncertainties allow\n",
@@ -682,7 +695,9 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
   os << "g                   = " << rounded(a.g.value, a.g.uncertainty) << " m/s^2";
   const int g_decimals = a.g.uncertainty ? decimals_of(*a.g.uncertainty) : 5;
   std::string notes;
-  if (a.fit.scaled && a.g_uncertainty_unscaled) {
+  if (scene.period_uncertainty_from_scatter) {
+    notes = "the periods' sigma from the scatter about the fit";
+  } else if (a.fit.scaled && a.g_uncertainty_unscaled) {
     notes = "scaled by S = " + format_fixed(*a.fit.birge_ratio, 2) + "; from the stated uncertainties +- " +
             format_fixed(*a.g_uncertainty_unscaled, g_decimals);
   }

@@ -36,7 +36,21 @@ StraightLine textbook_line(const ParsedScene& scene, const std::array<bool, Simp
     sx[k] = u.length;
     sy[k] = 2.0 * o.period * u.period;
   }
-  return fit_straight_line(x, y, sx, sy, fitted[SimplePendulum::length_offset]);
+  const bool intercept = fitted[SimplePendulum::length_offset];
+  StraightLine line = fit_straight_line(x, y, sx, sy, intercept);
+  // Periods whose uncertainty is their scatter (ParsedScene): the line's own
+  // scatter, chi2/(n - p) where above the floor, scales its variances.
+  const double dof = static_cast<double>(n) - (intercept ? 2.0 : 1.0);
+  if (scene.period_uncertainty_from_scatter && dof > 0.0) {
+    double chi2 = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double r = y[k] - line.slope * x[k] - line.intercept;
+      chi2 += r * r / (sy[k] * sy[k] + line.slope * line.slope * sx[k] * sx[k]);
+    }
+    const double s2 = std::max(chi2 / dof, 1.0);
+    line.var_slope *= s2, line.var_intercept *= s2, line.cov *= s2;
+  }
+  return line;
 }
 
 /// The textbook line on the fit's scene with its length offset, none where
@@ -91,7 +105,7 @@ void SimplePendulum::report(const FitState<kParameters>& fit, Analysis& out) {
   const std::size_t k = fit.scene.observations.size();
   if (const auto textbook = textbook_fit(fit, out.warnings)) out.fit.set_results<SimplePendulum>(*textbook);
   // Too large a chi2 makes the result suspect (status.cpp); too small a one is only said.
-  if (k > 1 && out.fit.probability) {
+  if (k > 1 && out.fit.probability && !fit.scene.period_uncertainty_from_scatter) {
     const double lower = boost::math::gamma_p(out.fit.dof / 2.0, out.fit.chi2 / 2.0);
     if (lower < 1e-3) {
       out.warnings.push_back("fit: chi2 = " + format_number(out.fit.chi2, 4) + " for " +

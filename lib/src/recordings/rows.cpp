@@ -37,6 +37,7 @@ Table read_rows(const char* p, const char* end, std::size_t line_no, const Diale
   const char other_delimiters[] = {'\t', ';', delimiter == ',' ? '\0' : ','};
   Table table;
   table.columns.resize(ncols);
+  table.cell_units.resize(ncols);
   {
     // One allocation per column: rows from the first row's length, 5 % spare.
     const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
@@ -93,6 +94,22 @@ Table read_rows(const char* p, const char* end, std::size_t line_no, const Diale
         auto ends_cell = [&](const char* at) {
           return at >= e || *at == delimiter || *at == '"' || *at == ' ' || *at == '\r';
         };
+        // A unit after the number ("10cm", "0.68s", "7.38%"): the column's, the same in every cell.
+        auto cell_unit = [&](const char* at) {
+          const char* token_end = at;
+          while (!ends_cell(token_end)) ++token_end;
+          const std::string_view u(at, static_cast<std::size_t>(token_end - at));
+          if (u.empty() || !(u == "%" || known_unit(u))) return at;
+          const std::string normal = u == "%" ? std::string("%") : normal_unit(u);
+          std::string& unit = table.cell_units[j];
+          if (!unit.empty() && unit != normal) {
+            fail(file, line_no, column(at),
+                 "got the unit \"" + std::string(u) + "\" in column \"" + names[j] + "\" whose cells above are in " +
+                     unit + "; expected one unit in each column");
+          }
+          unit = normal;
+          return token_end;
+        };
         auto bad_cell = [&](const char* bad) {
           const char* token_end = s;
           while (!ends_cell(token_end)) ++token_end;
@@ -125,6 +142,7 @@ Table read_rows(const char* p, const char* end, std::size_t line_no, const Diale
           if (r.ec == std::errc::result_out_of_range) {
             fail(file, line_no, column(q), "a number out of the range of double");
           }
+          if (r.ec == std::errc() && r.ptr != stop && cell_unit(r.ptr) == stop) r.ptr = stop;
           if (r.ec != std::errc() || r.ptr != stop) bad_cell(r.ec != std::errc() ? s : r.ptr);
           // No sensor reads infinity: a logger's overflow mark, not a sample.
           if (std::isinf(v)) {
@@ -133,7 +151,9 @@ Table read_rows(const char* p, const char* end, std::size_t line_no, const Diale
                      "\"; expected a finite number (an empty cell or NaN marks a missing sample)");
           }
         } else if (!ends_cell(stop)) {
-          bad_cell(stop);
+          const char* after = cell_unit(stop);
+          if (after == stop) bad_cell(stop);
+          stop = after;
         }
         num_end = stop;
       }

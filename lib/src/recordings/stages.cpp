@@ -317,6 +317,17 @@ const Spelling kSpellings[] = {
     {"amplitude", Role::amplitude},
     {"theta0", Role::amplitude},
     {"\xce\xb8" "0", Role::amplitude},  // θ0
+    // The same in Dutch and German lab tables.
+    {"lengte", Role::length},
+    {"l\xc3\xa4nge", Role::length},  // länge
+    {"laenge", Role::length},
+    {"tijd", Role::time},
+    {"zeit", Role::time},
+    {"periode", Role::period},
+    {"trillingstijd", Role::period},
+    {"periodendauer", Role::period},
+    {"hoek", Role::angle},
+    {"winkel", Role::angle},
 };
 
 /// Unit spellings, lower case, and their normal form.
@@ -344,6 +355,11 @@ std::string normal_unit(std::string_view unit) {
     if (u == spelt) return normal;
   }
   return u;
+}
+
+bool known_unit(std::string_view unit) {
+  const std::string u = lower_case(trim_spaces(unit));
+  return std::any_of(std::begin(kUnits), std::end(kUnits), [&](const auto& k) { return u == k.first; });
 }
 
 std::optional<double> time_scale(const std::string& unit) {

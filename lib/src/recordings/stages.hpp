@@ -158,6 +158,9 @@ Column classify(std::string_view cell);
 /// text lower-cased when it is not one the reader knows.
 std::string normal_unit(std::string_view unit);
 
+/// Whether `unit` is one of the unit spellings normal_unit knows ("cm", "sec", "°").
+bool known_unit(std::string_view unit);
+
 /// The factor from a time unit to seconds, or nullopt.
 std::optional<double> time_scale(const std::string& unit);
 /// The factor from a time column's numbers to seconds: 1/frame_rate for
@@ -181,6 +184,9 @@ struct Table {
   /// (row, line) where the line numbering jumps (blank lines); the first
   /// pair is the first row's.
   std::vector<std::pair<std::size_t, std::size_t>> jumps;
+  /// A unit written in a column's cells ("10cm", "0.68s", "7.4%"), normal
+  /// form; empty where the cells hold bare numbers.
+  std::vector<std::string> cell_units;
   std::size_t line(std::size_t row) const;
 };
 

@@ -36,11 +36,14 @@ struct Use {
   Setting setting = Setting::length;
   std::string unit;  ///< normal form; empty until given or decided
   int oscillations = 0;
+  bool trial = false;  ///< one of several trials' columns: a row's trials are its repeats
   std::string decided = "header";
   std::string why;
 };
 
-bool same(const Use& a, const Use& b) { return a.kind == b.kind && a.uncertainty == b.uncertainty; }
+bool same(const Use& a, const Use& b) {
+  return a.kind == b.kind && a.uncertainty == b.uncertainty && !(a.trial && b.trial);
+}
 
 std::string quantity_name(const Use& u) {
   std::string q = u.kind == Kind::setting  ? std::string(setting_key(u.setting))
@@ -65,8 +68,12 @@ int oscillations_in(std::string_view word) {
   if (d1 - d0 > 5) return 0;
   const std::string before = w.substr(0, d0), after = w.substr(d1);
   const int n = std::stoi(w.substr(d0, d1 - d0));
-  const bool count_word = after == "oscillations" || after == "swings" || after == "periods" || after == "osc";
-  const bool time_word = before == "t" || before == "time" || before == "timeof" || before == "timefor";
+  // English, Dutch ("tijd 10 slingeringen") and German ("Zeit 5 Perioden").
+  const bool count_word = after == "oscillations" || after == "swings" || after == "periods" || after == "osc" ||
+                          after == "slingeringen" || after == "trillingen" || after == "perioden" ||
+                          after == "schwingungen";
+  const bool time_word = before == "t" || before == "time" || before == "timeof" || before == "timefor" ||
+                         before == "tijd" || before == "tijdvoor" || before == "zeit" || before == "zeitf\xc3\xbcr";
   if (!(n >= 1 && ((time_word && (after.empty() || count_word)) || (before.empty() && (after == "t" || count_word))))) {
     return 0;
   }
@@ -99,16 +106,42 @@ std::optional<Use> quantity_of(std::string_view word) {
 
 bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
 
+/// A quantity named in an uncertainty's word, a plot's axes too: "x" the
+/// setting, "y" the period (matplotlib's xerr, yerr; dx, dy).
+std::optional<Use> axis_quantity(const std::string& word) {
+  Use u;
+  if (word == "x") u.kind = Kind::setting;
+  else if (word == "y") u.kind = Kind::time;
+  else return quantity_of(word);
+  return u;
+}
+
+/// Whether a header word names one trial of several: "trial1", "Trial 2",
+/// "1st run", "run #3", "meting 2", "Versuch 1".
+bool is_trial_word(std::string_view word) {
+  std::string w;
+  for (char c : word) {
+    if (!std::isdigit(static_cast<unsigned char>(c)) && c != ' ' && c != '_' && c != '#' && c != '.') w += c;
+  }
+  for (const char* ordinal : {"st", "nd", "rd", "th"}) {
+    if (starts_with(w, ordinal) && word.find_first_of("0123456789") == 0) w.erase(0, 2);
+  }
+  static const char* const kTrials[] = {"trial", "run", "attempt", "try", "meting", "versuch", "messung", "poging"};
+  return std::any_of(std::begin(kTrials), std::end(kTrials), [&](const char* t) { return w == t; });
+}
+
 /// An uncertainty column's word ("σT", "dT", "u(T)", "sigma_l", "err h", or
 /// "σ" alone): the quantity it is the uncertainty of; a Use of Kind::unused
 /// for "the column before"; nullopt when the word is no uncertainty's.
 std::optional<Use> uncertainty_of(const Column& c) {
   static const char* const kPrefixes[] = {"sigma_", "sigma ", "sigma", "\xcf\x83_", "\xcf\x83 ", "\xcf\x83",
                                           "\xce\xb4", "\xce\x94", "u_", "u(", "err_", "err ", "error_", "error ",
-                                          "err", "uncertainty of ", "uncertainty_", "uncertainty ", "+-",
+                                          "err", "uncertainty of ", "uncertainty_", "uncertainty ", "unc_", "unc ",
+                                          "unc", "delta_", "delta ", "delta", "fout in ", "fout ", "fehler ", "+-",
                                           "\xc2\xb1", "d"};
   const std::string& w = c.word;
-  static const char* const kAlone[] = {"sigma", "\xcf\x83", "error", "err", "uncertainty", "u", "+-", "\xc2\xb1"};
+  static const char* const kAlone[] = {"sigma", "\xcf\x83", "error", "err", "uncertainty", "unc", "delta", "fout",
+                                       "fehler", "u", "+-", "\xc2\xb1"};
   for (const char* alone : kAlone) {
     if (w == alone) {
       // "u(T)" without a unit: the header's "(t)" was taken for one.
@@ -116,11 +149,17 @@ std::optional<Use> uncertainty_of(const Column& c) {
       return Use{};
     }
   }
+  // A plot's axes, matplotlib's names: "xerr" the setting's, "yerr" the period's.
+  for (const char* suffix : {"err", "_err", " err", "error", "_error", " error"}) {
+    const std::size_t n = std::strlen(suffix);
+    if (w.size() <= n || w.compare(w.size() - n, n, suffix) != 0) continue;
+    if (auto q = axis_quantity(w.substr(0, w.size() - n))) return q;
+  }
   for (const char* prefix : kPrefixes) {
     if (!starts_with(w, prefix)) continue;
     std::string rest = w.substr(std::strlen(prefix));
     while (!rest.empty() && (rest.back() == ')' || rest.back() == ' ')) rest.pop_back();
-    if (auto q = quantity_of(rest)) return q;
+    if (auto q = axis_quantity(rest)) return q;
   }
   return std::nullopt;
 }
@@ -131,6 +170,11 @@ Use from_header(const Column& c) {
   if (const int n = oscillations_in(c.word)) {
     u.kind = Kind::time, u.oscillations = n, u.unit = c.unit;
     u.why = "the time of " + std::to_string(n) + " oscillations by the header";
+    return u;
+  }
+  if (is_trial_word(c.word)) {
+    u.kind = Kind::time, u.trial = true, u.unit = c.unit;
+    u.why = "one trial's time by the header: a row's trials are its repeats";
     return u;
   }
   if (auto q = uncertainty_of(c)) {
@@ -204,12 +248,15 @@ std::vector<double> row_k2(const std::vector<double>& h, const std::vector<doubl
   return k2;
 }
 
-/// Whether the settings (m) and periods (s) read as a length series: a g
-/// from 4 to 25 m/s^2 at every row, within 25 % of their median.
+/// Whether the settings (m) and periods (s) read as a length series of a
+/// lab's pendulum: a median length of 0.1 to 5 m (never "135 m"), and a g
+/// whose median is 4 to 25 m/s^2 and every row's within a factor 2.5 of it
+/// (a short row beside lengths taped to the top of the bob runs low).
 bool fits_length(const std::vector<double>& l, const std::vector<double>& t) {
   const std::vector<double> g = row_g(l, t);
-  const double m = median(g);
-  return m >= 4.0 && m <= 25.0 && std::all_of(g.begin(), g.end(), [&](double x) { return x > 0.8 * m && x < 1.25 * m; });
+  const double m = median(g), length = median(l);
+  return length >= 0.1 && length <= 5.0 && m >= 4.0 && m <= 25.0 &&
+         std::all_of(g.begin(), g.end(), [&](double x) { return x > m / 2.5 && x < 2.5 * m; });
 }
 
 /// Whether the settings (m) and periods (s) read as pivot distances: every
@@ -252,10 +299,201 @@ static_assert(unit_checks_follow_settings(), "kUnitChecks has a row for each set
 
 const UnitCheck& unit_check(Setting s) { return kUnitChecks[static_cast<int>(s)]; }
 
+/// The step of the printed digits of `v`: 10^-k for the fewest decimals k
+/// (0 to 6) that write every value ("12.74" and "12.7" give 0.01).
+double printed_resolution(const std::vector<double>& v) {
+  double step = 1.0;
+  for (int k = 0; k < 6; ++k, step /= 10.0) {
+    const bool whole = std::all_of(v.begin(), v.end(), [&](double x) {
+      const double n = x / step;
+      return std::fabs(n - std::round(n)) <= 1e-6 * std::max(1.0, std::fabs(n));
+    });
+    if (whole) return step;
+  }
+  return step;
+}
+
 std::vector<double> scaled(const std::vector<double>& v, double f) {
   std::vector<double> out(v);
   for (double& x : out) x *= f;
   return out;
+}
+
+/// Whether a length column in `unit` may be in `s`: `unit` itself, or, for
+/// "" (a unit the numbers decide), a metric one (in and ft only if said).
+bool unit_allowed(const Scale& s, const std::string& unit) {
+  const std::string name = s.name;
+  return unit.empty() ? name == "m" || name == "cm" || name == "mm" : unit == name;
+}
+
+/// Whether `l` in `unit` ("" for any of m, cm, mm: a unit from the numbers)
+/// reads as the lengths of the periods t (s).
+bool lengths_fit(const std::vector<double>& l, const std::string& unit, const std::vector<double>& t) {
+  return std::any_of(std::begin(kLengthUnits), std::end(kLengthUnits), [&](const Scale& s) {
+    return unit_allowed(s, unit) && fits_length(scaled(l, s.factor), t);
+  });
+}
+
+/// Counts students time: the N of a time of N swings taken from the numbers.
+constexpr int kSwingCounts[] = {2, 3, 4, 5, 6, 8, 10, 12, 15, 20, 25, 30, 40, 50, 100};
+
+/// The N of times of N swings that no header or option names ("trial1",
+/// "1st run (second)"): the count whose times/N beside the lengths in
+/// `unit` ("" any metric one) give the g nearest the Earth's; 0 when no
+/// count makes them a pendulum's.
+int swings_in(const std::vector<double>& l, const std::string& unit, const std::vector<double>& times) {
+  int best = 0;
+  double nearest = HUGE_VAL;
+  for (const int n : kSwingCounts) {
+    const std::vector<double> t = scaled(times, 1.0 / n);
+    for (const Scale& s : kLengthUnits) {
+      if (!unit_allowed(s, unit) || !fits_length(scaled(l, s.factor), t)) continue;
+      const double miss = std::fabs(std::log(median(row_g(scaled(l, s.factor), t)) / kStandardGravity));
+      if (miss < nearest) nearest = miss, best = n;
+    }
+  }
+  return best;
+}
+
+/// Whether the first data row separates its cells by tabs and by single
+/// spaces both ("0.6<TAB>1.54 0.01 0.4", a course template's): read as runs of spaces.
+bool tabs_and_spaces(std::string_view text) {
+  try {
+    const HeaderLines lines = find_header(text, "");
+    if (lines.header) return false;
+    const std::string_view row = trim_cell(data_rows(text, lines, "", "").first);
+    return row.find('\t') != std::string_view::npos && row.find(' ') != std::string_view::npos &&
+           row.find_first_of(",;") == std::string_view::npos;
+  } catch (const InputError&) {
+    return false;  // the reader proper says what is wrong
+  }
+}
+
+/// Whether a header row holds units alone ("(m)", "[s]", or empty cells):
+/// the names are on the line above it.
+bool units_row(const std::vector<Column>& cols) {
+  const bool all = std::all_of(cols.begin(), cols.end(), [](const Column& c) {
+    return c.name.empty() || (c.word.empty() && !c.unit.empty());
+  });
+  return all && std::any_of(cols.begin(), cols.end(), [](const Column& c) { return !c.unit.empty(); });
+}
+
+/// The roles of a headerless table's columns from the units its cells
+/// carry ("10cm,0.68s,0.63s,7.38%,8.50"): the first length the setting, the
+/// first time the periods (a second, a theory's, unused), the first angle
+/// the amplitude; a percentage or a bare number (a per-row g) unused.
+std::vector<Use> roles_by_cell_units(const std::vector<std::string>& units) {
+  std::vector<Use> use(units.size());
+  bool setting = false, time = false, amplitude = false;
+  for (std::size_t j = 0; j < units.size(); ++j) {
+    Use& u = use[j];
+    const std::string& unit = units[j];
+    if (factor_of(kLengthUnits, unit) && !setting) {
+      u.kind = Kind::setting, setting = true, u.why = "the first column whose cells carry a length's unit";
+    } else if (factor_of(kTimeUnits, unit) && !time) {
+      u.kind = Kind::time, time = true, u.why = "the first column whose cells carry a time's unit";
+    } else if (factor_of(kAngleUnits, unit) && !amplitude) {
+      u.kind = Kind::amplitude, amplitude = true, u.why = "the first column whose cells carry an angle's unit";
+    } else {
+      u.why = unit.empty() ? "bare numbers beside cells with units (a per-row result?)"
+                           : "cells in " + unit + " beside the setting and the periods already read";
+    }
+  }
+  return use;
+}
+
+/// The roles of a headerless table's columns, from their numbers: the
+/// setting first, each next column the uncertainty of the one before it
+/// where its numbers read so, else the times, else the amplitude; but
+/// the periods first where only that order makes a pendulum (a period's
+/// 0.5-2 s beside lengths in cm), and x, y, sigma x, sigma y (every fitting
+/// program's order) where the third and fourth read as the first two's
+/// uncertainties and the second as none.
+std::vector<Use> headerless_order(const std::vector<std::vector<double>>& c) {
+  std::vector<Use> use(c.size());
+  auto role = [&](std::size_t j, Kind kind, bool uncertainty, const char* why) {
+    use[j].kind = kind, use[j].uncertainty = uncertainty, use[j].why = why;
+  };
+  if (c.size() == 4 && !reads_as_uncertainty(c[1], c[0]) && reads_as_uncertainty(c[2], c[0]) &&
+      reads_as_uncertainty(c[3], c[1])) {
+    role(0, Kind::setting, false, "the first of x, y, sigma x, sigma y (a fitting program's order)");
+    role(1, Kind::time, false, "the second of x, y, sigma x, sigma y");
+    role(2, Kind::setting, true, "the third of x, y, sigma x, sigma y: below a third of the first");
+    role(3, Kind::time, true, "the fourth of x, y, sigma x, sigma y: below a third of the second");
+    return use;
+  }
+  if (c.size() == 2 && !lengths_fit(c[0], "", c[1]) && swings_in(c[0], "", c[1]) == 0 && lengths_fit(c[1], "", c[0])) {
+    role(0, Kind::time, false, "the periods: only they beside the second as lengths make a pendulum");
+    role(1, Kind::setting, false, "the lengths: only they beside the first as periods make a pendulum");
+    return use;
+  }
+  role(0, Kind::setting, false, "the first column");
+  std::size_t last = 0;
+  bool time = false, amplitude = false;
+  for (std::size_t j = 1; j < c.size(); ++j) {
+    // An uncertainty only where a column is left for the periods.
+    if (!use[last].uncertainty && (time || j + 1 < c.size()) && reads_as_uncertainty(c[j], c[last])) {
+      role(j, use[last].kind, true, "below a third of the column before it: its uncertainty");
+    } else if (!time) {
+      role(j, Kind::time, false, "the first column after the setting that is no uncertainty"), time = true;
+    } else if (!amplitude) {
+      role(j, Kind::amplitude, false, "after the periods"), amplitude = true;
+    } else {
+      use[j].why = "a column the reader has no role for";
+      continue;
+    }
+    last = j;
+  }
+  return use;
+}
+
+/// The rows of `t` with each row's trials (the column `time` and those in
+/// `trials`, an empty cell skipped) as rows of their own, the other cells
+/// repeated; origin[i] is the row of `t` that row i comes from.
+Table trial_rows(const Table& t, std::size_t time, const std::vector<std::size_t>& trials, std::vector<std::size_t>& origin) {
+  Table out;
+  out.columns.resize(t.columns.size());
+  for (std::size_t i = 0; i < t.rows; ++i) {
+    for (std::size_t k = 0; k <= trials.size(); ++k) {
+      const double v = t.columns[k == 0 ? time : trials[k - 1]][i];
+      if (std::isnan(v)) continue;
+      for (std::size_t j = 0; j < t.columns.size(); ++j) out.columns[j].push_back(j == time ? v : t.columns[j][i]);
+      origin.push_back(i);
+      ++out.rows;
+    }
+  }
+  return out;
+}
+
+/// The header's columns, a trailing delimiter's empty one dropped; under
+/// a units row ("(m),,," below "Length,Time,..."), the names of the line
+/// above with the units of that row.
+std::vector<Column> header_columns(const HeaderLines& lines, const Dialect& dialect) {
+  auto columns_of = [&](std::string_view line) {
+    std::vector<Column> cols;
+    for (std::string_view cell : split_cells(line, dialect)) cols.push_back(classify(cell));
+    while (cols.size() > 1 && cols.back().name.empty()) cols.pop_back();
+    return cols;
+  };
+  std::vector<Column> cols = columns_of(*lines.header);
+  if (!lines.above || !units_row(cols)) return cols;
+  std::vector<Column> named = columns_of(*lines.above);
+  for (std::size_t j = 0; j < std::min(named.size(), cols.size()); ++j) {
+    if (!cols[j].unit.empty()) named[j].unit = cols[j].unit;
+  }
+  return named;
+}
+
+/// N where a[i] = N b[i] at every row within 1 % (a whole N of 2 or
+/// more: a time of N swings beside its period), else 0.
+int whole_ratio(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.empty() || !(b[0] > 0.0)) return 0;
+  const double n = std::round(a[0] / b[0]);
+  if (n < 2.0) return 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (!(std::fabs(a[i] / (n * b[i]) - 1.0) < 0.01)) return 0;
+  }
+  return static_cast<int>(n);
 }
 
 /// The setting a --columns word declares (its letter or its key), if any.
@@ -313,20 +551,28 @@ std::vector<TableColumnChoice> parse_table_column_spec(const std::string& spec, 
 
 SettingsTable parse_settings_table(std::string_view text, const std::string& file, const TableOptions& options) {
   text = strip_bom(text);
+  std::string spaced;  // a copy whose tabs are spaces, where both separate cells
+  if (tabs_and_spaces(text)) {
+    spaced.assign(text);
+    std::replace(spaced.begin(), spaced.end(), '\t', ' ');
+    text = spaced;
+  }
   const HeaderLines lines = find_header(text, file);
   const DataRows data = data_rows(text, lines, file, "a table of settings and periods");
   const Dialect dialect = sniff(lines.header, data.first);
 
   std::vector<Column> cols;
   if (lines.header) {
-    for (std::string_view cell : split_cells(*lines.header, dialect)) cols.push_back(classify(cell));
-    while (cols.size() > 1 && cols.back().name.empty()) cols.pop_back();  // a trailing delimiter
+    cols = header_columns(lines, dialect);
   } else {
     cols.resize(split_cells(data.first, dialect).size());
   }
   std::vector<std::string> names(cols.size());  // as messages quote them
   for (std::size_t j = 0; j < cols.size(); ++j) names[j] = column_label(cols[j].name, j + 1);
   Table table = read_rows(data.begin, data.end, lines.data_line, dialect, names, file);
+  for (std::size_t j = 0; j < cols.size(); ++j) {
+    if (cols[j].unit.empty()) cols[j].unit = table.cell_units[j];
+  }
   while (cols.size() > 1 && std::none_of(table.columns.back().begin(), table.columns.back().end(),
                                          [](double v) { return std::isfinite(v); })) {
     cols.pop_back(), names.pop_back(), table.columns.pop_back();
@@ -402,29 +648,30 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
              "; expected 2 to 5 (a setting, its uncertainty, the periods, theirs, the amplitude), or a header, or "
              "the columns named: --columns (a scene's \"columns\"), e.g. \"l:m,T:s\"");
     }
-    use[0].kind = Kind::setting;
-    use[0].why = "the first column";
-    std::size_t last = 0;
-    bool time = false, amplitude = false;
-    for (std::size_t j = 1; j < cols.size(); ++j) {
+    const auto order = std::any_of(table.cell_units.begin(), table.cell_units.end(), [](const auto& u) { return !u.empty(); })
+                           ? roles_by_cell_units(table.cell_units)
+                           : headerless_order(table.columns);
+    for (std::size_t j = 0; j < order.size(); ++j) {
       Use& u = use[j];
-      if (!use[last].uncertainty && reads_as_uncertainty(table.columns[j], table.columns[last])) {
-        u.kind = use[last].kind, u.uncertainty = true;
-        u.why = "below a third of the column before it: its uncertainty";
-      } else if (!time) {
-        u.kind = Kind::time, time = true, u.why = "the first column after the setting that is no uncertainty";
-      } else if (!amplitude) {
-        u.kind = Kind::amplitude, amplitude = true, u.why = "after the periods";
-      } else {
-        u.why = "a column the reader has no role for";
-        continue;
-      }
-      last = j;
+      u.kind = order[j].kind, u.uncertainty = order[j].uncertainty, u.why = order[j].why;
+      u.unit = cols[j].unit;  // the cells' own, if any
     }
   }
-  // One column of each role: the first.
+  // One column of each role: the first, but of a time of N swings beside
+  // its period ("L, t, T": t/N = T), the period.
   for (std::size_t j = 0; j < use.size(); ++j) {
     for (std::size_t i = 0; i < j && use[j].kind != Kind::unused; ++i) {
+      if (same(use[i], use[j]) && use[i].kind == Kind::time && !use[i].uncertainty && !use[i].trial) {
+        const int n_i = whole_ratio(table.columns[i], table.columns[j]), n_j = whole_ratio(table.columns[j], table.columns[i]);
+        if (n_i > 1 || n_j > 1) {
+          const std::size_t times = n_i > 1 ? i : j, periods = n_i > 1 ? j : i;
+          const int n = std::max(n_i, n_j);
+          use[times].kind = Kind::unused;
+          use[times].why = "the time of " + std::to_string(n) + " oscillations beside the periods of column " +
+                           std::to_string(periods + 1) + " (t/" + std::to_string(n) + " = T at every row within 1 %)";
+          continue;
+        }
+      }
       if (same(use[i], use[j])) {
         use[j].why = "a second " + quantity_name(use[j]) + " column: column " + std::to_string(i + 1) + " is used";
         use[j].kind = Kind::unused, use[j].uncertainty = false;
@@ -449,7 +696,8 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
            "oscillations (\"t10 (s)\", or --oscillations N), or the columns named: --columns (a scene's "
            "\"columns\"), e.g. \"l:cm,t10:s\"");
   }
-  const auto setting_u = find(Kind::setting, true), time_u = find(Kind::time, true);
+  const auto setting_u = find(Kind::setting, true);
+  auto time_u = find(Kind::time, true);
   const auto amplitude_col = find(Kind::amplitude, false), amplitude_u = find(Kind::amplitude, true);
 
   SettingsTable out;
@@ -462,13 +710,19 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     tu.why = "the time of " + std::to_string(options.oscillations) + " oscillations by --oscillations";
   }
   out.oscillations = std::max(tu.oscillations, 1);
-  const double n_osc = out.oscillations;
+  double n_osc = out.oscillations;
+  // The trials' columns after the first: each row's trials are its repeats.
+  std::vector<std::size_t> trials;
+  for (std::size_t j = *time_col + 1; j < use.size(); ++j) {
+    if (tu.trial && use[j].trial && use[j].kind == Kind::time && !use[j].uncertainty) trials.push_back(j);
+  }
 
   // Every used cell holds a number.
   for (std::size_t j = 0; j < use.size(); ++j) {
     if (use[j].kind == Kind::unused) continue;
     const auto& v = table.columns[j];
     for (std::size_t i = 0; i < table.rows; ++i) {
+      if (std::isnan(v[i]) && std::find(trials.begin(), trials.end(), j) != trials.end()) continue;  // fewer trials
       if (std::isnan(v[i])) {
         fail(file, table.line(i), 1,
              "an empty cell in column \"" + names[j] + "\" (" + quantity_name(use[j]) +
@@ -486,7 +740,13 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
       }
     }
   }
-  auto line_of = [&](std::size_t row) { return table.line(row); };
+  std::vector<std::size_t> origin;  // the row of `source` each row of `table` comes from
+  std::optional<Table> source;
+  if (!trials.empty()) {
+    source = std::move(table);
+    table = trial_rows(*source, *time_col, trials, origin);
+  }
+  auto line_of = [&](std::size_t row) { return source ? source->line(origin[row]) : table.line(row); };
 
   // The time unit: the header's, else the numbers' (periods of 0.1 to 30 s).
   if (tu.unit.empty()) {
@@ -510,6 +770,22 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   const auto time_factor = factor_of(kTimeUnits, tu.unit);
   if (!time_factor) refuse("got the unit \"" + one_line(tu.unit, 20, true) + "\" for \"" + names[*time_col] + "\"; expected " + names_of(kTimeUnits));
   out.time_unit = tu.unit;
+  if (out.setting == Setting::length && tu.oscillations == 0 && options.oscillations == 0 && tu.decided != "option") {
+    // Times that make no pendulum's periods beside these lengths: the times of N swings?
+    const std::vector<double> seconds = scaled(table.columns[*time_col], *time_factor);
+    const std::vector<double>& l = table.columns[*setting_col];
+    const int n = lengths_fit(l, su.unit, seconds) ? 0 : swings_in(l, su.unit, seconds);
+    if (n > 0) {
+      tu.oscillations = out.oscillations = n;
+      n_osc = n;
+      tu.decided = "content";
+      tu.why = "the time of " + std::to_string(n) + " oscillations by the numbers";
+      out.warnings.push_back({0, "\"" + names[*time_col] + "\": read as the time of " + std::to_string(n) +
+                                     " oscillations: as periods beside these lengths they make no pendulum, divided "
+                                     "by " + std::to_string(n) + " they give the g nearest the Earth's of any count; "
+                                     "say so in the header (\"t" + std::to_string(n) + " (s)\") or with --oscillations"});
+    }
+  }
   const std::vector<double> periods = scaled(table.columns[*time_col], *time_factor / n_osc);
 
   // The setting's unit: the header's, else the one the periods agree with.
@@ -517,7 +793,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   if (su.unit.empty()) {
     std::vector<std::string> plausible;
     for (const Scale& s : kLengthUnits) {
-      if (std::string(s.name) == "in" || std::string(s.name) == "ft") continue;  // a metric lab's, unless said
+      if (!unit_allowed(s, "")) continue;
       if (unit_check(su.setting).fits(scaled(settings, s.factor), periods)) plausible.emplace_back(s.name);
     }
     const auto [lo, hi] = std::minmax_element(settings.begin(), settings.end());
@@ -526,7 +802,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     if (plausible.size() != 1 && su.decided == "content" && su.setting == Setting::length) {
       // Headerless: not a length series in any unit; a pivot scan?
       for (const Scale& s : kLengthUnits) {
-        if (std::string(s.name) == "in" || std::string(s.name) == "ft") continue;
+        if (!unit_allowed(s, "")) continue;
         if (fits_pivot_distance(scaled(settings, s.factor), periods)) plausible.assign(1, s.name);
       }
       if (plausible.size() == 1) {
@@ -607,6 +883,21 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   };
   const double setting_u_factor = unit_of(setting_u, su, kLengthUnits) / *setting_factor;
   const double time_u_factor = unit_of(time_u, tu, kTimeUnits) / *time_factor;
+  if (time_u) {
+    // A timing's uncertainty is below a third of it (the scene's rule): a larger one is no timing's.
+    const auto& sigma = table.columns[*time_u];
+    const auto& times = table.columns[*time_col];
+    for (std::size_t i = 0; i < table.rows; ++i) {
+      if (sigma[i] * time_u_factor < times[i] / 3.0) continue;
+      use[*time_u].kind = Kind::unused, use[*time_u].uncertainty = false;
+      use[*time_u].why = "too large for the uncertainty of the " + quantity_name(tu) + ": " +
+                         format_number(sigma[i], 3) + " beside " + format_number(times[i], 4) + " at line " +
+                         std::to_string(line_of(i)) + ", a third or more of it";
+      out.warnings.push_back({0, "\"" + names[*time_u] + "\" not used: " + use[*time_u].why});
+      time_u.reset();
+      break;
+    }
+  }
   double amplitude_factor = 1.0;
   if (amplitude_col) {
     Use& au = use[*amplitude_col];
@@ -695,15 +986,16 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     for (TableObservation& o : out.observations) {
       const std::size_t n = o.times.size();
       if (out.pooled_sigma && out.pooled_dof > n - 1) o.time_sigma = out.pooled_sigma;
-      if (n == 1 && !o.time_sigma) {
-        fail(file, o.first_line, 1,
-             "one row at " + std::string(setting_key(out.setting)) + " " + format_number(o.setting, 6) + " " + su.unit +
-                 ", no uncertainty column and no repeats elsewhere in the table to take a scatter from; expected an "
-                 "uncertainty column (\"sigma_T (s)\", each timing's), or the setting timed more than once "
-                 "(docs/series.md, Repeats); the scatter about the fit is not taken instead: it would make chi2/dof "
-                 "1 by construction, and the fit could no longer say when the data disagree with their uncertainties");
-      }
     }
+    out.sigma_from_scatter = std::all_of(out.observations.begin(), out.observations.end(),
+                                         [](const TableObservation& o) { return o.times.size() == 1 && !o.time_sigma; });
+  }
+  out.resolution = printed_resolution(table.columns[*time_col]);
+  if (out.sigma_from_scatter) {
+    out.notes.push_back({0, "each " + std::string(setting_key(out.setting)) + " timed once and no uncertainty column: "
+                            "the periods' uncertainty is their scatter about the fit (n - p degrees of freedom), "
+                            "at least the printed digits' " + format_number(out.resolution, 3) + " " + tu.unit +
+                            "/sqrt(12); such a fit cannot test itself, and its chi2 gives no verdict"});
   }
   if (out.observations.size() < table.rows) {
     out.notes.push_back({0, std::to_string(table.rows) + " rows at " + std::to_string(out.observations.size()) +
@@ -723,6 +1015,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     RecordingColumn c;
     c.index = j + 1;
     c.name = cols[j].name;
+    if (use[j].kind == Kind::time) use[j].oscillations = out.oscillations;  // the trials' and the uncertainty's too
     c.role = quantity_name(use[j]);
     c.unit = use[j].kind == Kind::unused ? std::string() : use[j].unit;
     c.decided_by = use[j].decided;
@@ -740,11 +1033,11 @@ bool looks_like_settings_table(std::string_view text) {
     if (lines.header) {
       const DataRows data = data_rows(text, lines, "", "a table or a recording");
       const Dialect d = sniff(lines.header, data.first);
-      const std::vector<std::string_view> header = split_cells(*lines.header, d);
+      const std::vector<Column> header = header_columns(lines, d);
       std::optional<std::size_t> time;
       bool x = false, y = false;
       for (std::size_t i = 0; i < header.size(); ++i) {
-        const Column c = classify(header[i]);
+        const Column& c = header[i];
         if (c.role == Role::length || c.role == Role::pivot_distance || c.role == Role::pivot_position ||
             oscillations_in(c.word) > 0) {
           return true;

@@ -60,6 +60,12 @@ struct SettingsTable {
   /// than once (time_unit), and its degrees of freedom (sum of n - 1).
   std::optional<double> pooled_sigma;
   std::size_t pooled_dof = 0;
+  /// Every setting timed once and no uncertainty column: the periods'
+  /// uncertainty is the scatter about the fit (docs/series.md, "Single
+  /// timings"), floored by `resolution`.
+  bool sigma_from_scatter = false;
+  /// The step of the time column's printed digits (time_unit): 0.01 for "12.74".
+  double resolution = 0.0;
   std::vector<RecordingColumn> columns;  ///< every column, used or not, and why
   std::vector<RecordingNote> notes;      ///< what was decided (units from the numbers, grouping)
   std::vector<RecordingNote> warnings;   ///< a unit taken from the numbers alone

@@ -341,12 +341,6 @@ const std::pair<const char*, const char*> kUnits[] = {
     {"pixel", "px"},     {"pixels", "px"},      {"m/s^2", "m/s^2"},     {"m/s\xc2\xb2", "m/s^2"},  // m/s²
 };
 
-/// True if `unit` is a spelling in kUnits.
-bool known_unit(std::string_view unit) {
-  const std::string u = lower_case(trim_spaces(unit));
-  return std::any_of(std::begin(kUnits), std::end(kUnits), [&](const auto& k) { return u == k.first; });
-}
-
 }  // namespace
 
 std::string normal_unit(std::string_view unit) {

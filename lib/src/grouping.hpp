@@ -34,7 +34,7 @@ std::string group_name(const BudgetGroup& group, const std::vector<std::string>&
 
 /// A group's rows as GUM describes them: "A", or "A/B" where they differ;
 /// the distributions likewise; their share of u(g)^2 together; their
-/// degrees of freedom ("9", "2 to 9", `infinite` for infinite ones).
+/// degrees of freedom ("9", "2 to 9", `infinite` for infinite ones: "∞").
 struct GroupEvaluation {
   std::string type, distribution, dof;
   double variance_share = 0.0;

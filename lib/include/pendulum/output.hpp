@@ -29,7 +29,7 @@ std::string result_table(const ParsedScene& scene, const Analysis& analysis);
 /// g with its expanded uncertainty as a lab report quotes it after "g = ",
 /// both rounded to two significant digits of U (GUM 7.2.6): "9.8034 ± 0.0031
 /// m/s² (k = 2.07, 95 %, ν_eff = 31)", with "+-", "m/s^2" and "nu_eff" where
-/// not `unicode`; ν_eff as GUM G.4.1 truncates it, "∞" ("inf") where infinite.
+/// not `unicode`; ν_eff as GUM G.4.1 truncates it, "∞" where infinite.
 std::string expanded_result(double g, const ExpandedUncertainty& expanded, bool unicode);
 
 /// The document of `pendulum-g fit-decay`: the fit of the scene's decay

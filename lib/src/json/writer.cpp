@@ -454,9 +454,10 @@ namespace {
 int decimals_of(double u) { return decimals_for_uncertainty(u, 12); }
 
 /// Degrees of freedom as the table and the result line print them: whole
-/// (GUM G.4.1 truncates nu_eff), "inf" where infinite or beyond 1e6.
-std::string dof_text(double dof, bool unicode) {
-  if (!(dof <= 1e6)) return unicode ? "∞" : "inf";
+/// (GUM G.4.1 truncates nu_eff), "∞" where infinite or beyond 1e6 (the
+/// table prints no "inf": it reads as a number gone wrong).
+std::string dof_text(double dof) {
+  if (!(dof <= 1e6)) return "\u221E";
   return format_fixed(std::floor(dof), 0);
 }
 
@@ -467,7 +468,7 @@ std::string expanded_result(double g, const ExpandedUncertainty& e, bool unicode
   return format_fixed(g, d) + (unicode ? " ± " : " +- ") + format_fixed(e.expanded, d) +
          (unicode ? " m/s² (k = " : " m/s^2 (k = ") + format_fixed(e.coverage_factor, 2) + ", " +
          format_fixed(100.0 * e.probability, 0) + (unicode ? " %, ν_eff = " : " %, nu_eff = ") +
-         dof_text(e.effective_dof, unicode) + ")";
+         dof_text(e.effective_dof) + ")";
 }
 
 namespace {
@@ -714,7 +715,7 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     os << "\nFit (" << a.fit.method << ", " << a.fit.dof << " degrees of freedom):\n";
     for (const auto& p : a.fit.parameters) {
       if (!p.fitted) continue;
-      const std::string nu = p.uncertainty ? " (nu = " + dof_text(p.degrees_of_freedom, false) + ")" : "";
+      const std::string nu = p.uncertainty ? " (nu = " + dof_text(p.degrees_of_freedom) + ")" : "";
       std::snprintf(line, sizeof line, "  %-14s = %.8g %s %s%s\n", p.name, p.value,
                     plus_minus(p.uncertainty, "%.3g").c_str(), p.unit, nu.c_str());
       os << line;
@@ -796,7 +797,7 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     const std::vector<BudgetGroup> groups = group_budget(paths, contributions);
     os << "\nUncertainty budget of g (largest first; share of u(g)^2, GUM type, distribution, degrees of freedom):\n";
     for (std::size_t i = 0; i < groups.size() && i < kShown; ++i) {
-      const GroupEvaluation e = group_evaluation(groups[i], a.budget, "inf");
+      const GroupEvaluation e = group_evaluation(groups[i], a.budget, "\u221E");
       std::snprintf(line, sizeof line, "  %-32s %.6f m/s^2 %5.1f %%  %-3s %-11s  nu = %s\n",
                     group_name(groups[i], paths).c_str(), groups[i].together, 100.0 * e.variance_share,
                     e.type.c_str(), e.distribution.c_str(), e.dof.c_str());

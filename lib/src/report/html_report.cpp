@@ -189,19 +189,22 @@ std::string budget_table(const SceneReport& r) {
       "<table class=\"budget\">\n<thead><tr><th scope=\"col\">input</th><th scope=\"col\" class=\"num\">value</th>"
       "<th scope=\"col\" class=\"num\">uncertainty</th><th scope=\"col\">unit</th>"
       "<th scope=\"col\" class=\"num\">contribution to u(g) (mm/s\u00B2)</th><th scope=\"col\" class=\"num\">share "
-      "of u(g)\u00B2</th><th scope=\"col\">type</th><th scope=\"col\">distribution</th>"
-      "<th scope=\"col\" class=\"num\">\u03BD</th></tr></thead>\n<tbody>\n";
+      "of u(g)\u00B2</th><th scope=\"col\">GUM</th></tr></thead>\n<tbody>\n";
+  bool grouped = false;
   for (const auto& b : r.budget) {
-    // A group of rows gives its largest's value and uncertainty, marked so.
-    const std::string largest = b.rows > 1 ? "largest " : "";
-    s += "<tr><td><code>" + breakable(b.input, ".[") + "</code></td><td class=\"num\">" + largest +
-         format_significant(b.value, 6) + "</td><td class=\"num\">" + largest + format_significant(b.uncertainty, 3) +
-         "</td><td>" + esc(b.unit) +
+    grouped = grouped || b.rows > 1;
+    // Type and distribution, and the degrees of freedom where finite.
+    const std::string gum = b.type + ", " + b.distribution + (b.dof == "\u221E" ? "" : ", \u03BD = " + b.dof);
+    s += "<tr><td><code>" + breakable(b.input, ".[") + "</code></td><td class=\"num\">" + format_significant(b.value, 6) +
+         "</td><td class=\"num\">" + format_significant(b.uncertainty, 3) + "</td><td>" + esc(b.unit) +
          "</td><td class=\"num\">" + format_fixed(b.contribution * 1e3, 6) + "</td><td class=\"num\">" +
-         format_fixed(100.0 * b.variance_share, 1) + " %</td><td>" + esc(b.type) + "</td><td>" + esc(b.distribution) +
-         "</td><td class=\"num\">" + esc(b.dof) + "</td></tr>\n";
+         format_fixed(100.0 * b.variance_share, 1) + " %</td><td>" + esc(gum) + "</td></tr>\n";
   }
   s += "</tbody>\n</table>\n";
+  if (grouped) {
+    s += "<p class=\"meta\">A row of several observations adds their contributions in quadrature and shows the "
+         "largest one's value and uncertainty (JSON: every row in g.budget).</p>\n";
+  }
   if (r.budget_correlation_variance) {
     s += "<p>The fitted \u03B1 and \u03B2 are correlated; their cross term adds " +
          format_significant(*r.budget_correlation_variance * 1e6, 3) + " (mm/s\u00B2)\u00B2 to u(g)\u00B2.</p>\n";

@@ -56,6 +56,27 @@ void add_analysis_options(CLI::App& cmd, AnalysisOptions& options) {
   cmd.add_option("--series-terms", options.reduction.series_terms,
                  "Terms of the Eq. (8) series for --amplitude-method series (default 4)")
       ->check(in_range(ranges::series_terms));
+  // GUM Supplement 1 beside the budget (docs/uncertainty.md); --draws and --seed imply it.
+  const auto monte_carlo = [&options]() -> MonteCarloOptions& {
+    if (!options.monte_carlo) options.monte_carlo.emplace();
+    return *options.monte_carlo;
+  };
+  cmd.add_option_function<std::string>(
+         "--uncertainty",
+         [&options, monte_carlo](const std::string& method) {
+           if (method == "gum") options.monte_carlo.reset();
+           else monte_carlo();
+         },
+         "gum (default: the linear budget, its expanded uncertainty from Student's t) or monte-carlo (GUM "
+         "Supplement 1 beside it: every input drawn from its distribution, the shortest 95 % interval, and "
+         "a warning where the two disagree): docs/uncertainty.md")
+      ->check(CLI::IsMember({"gum", "monte-carlo"}))
+      ->type_name("gum|monte-carlo");
+  cmd.add_option_function<long>("--draws", [monte_carlo](long n) { monte_carlo().draws = n; },
+                                "Monte Carlo draws (default: adaptive, GUM S1 7.9, at most 10^6)")
+      ->check(CLI::Range(100L, kMostDraws));
+  cmd.add_option_function<std::uint64_t>("--seed", [monte_carlo](std::uint64_t s) { monte_carlo().seed = s; },
+                                         "Monte Carlo seed (default 1): the same seed, the same draws");
 }
 
 }  // namespace pendulum::cli

@@ -42,6 +42,12 @@ void check_numbers(const json& result) {
       if (key == "error_bound_delta_T_s" || pointer == "/comparison/z" || parent.rfind("/drag_theory", 0) == 0) {
         continue;
       }
+      // Degrees of freedom: null is infinite (a Type B row; GUM G.4.2), and
+      // there is no expanded uncertainty without an uncertainty (docs/output.md).
+      if (key == "degrees_of_freedom" || key == "effective_degrees_of_freedom" ||
+          (pointer == "/g/expanded" && result.at("g").at("uncertainty").is_null())) {
+        continue;
+      }
       // A physical pendulum's pivot scan: Bessel's g without Kater's pair, the
       // parts' k and centre without parts (docs/output.md).
       if (pointer == "/fit/pivot_scan/bessel_g_m_s2" || parent == "/fit/pivot_scan/from_parts") continue;
@@ -377,4 +383,68 @@ TEST_CASE("table: a correlated pair of budget inputs is shown together", "[cli][
     if (row["input"] != "decay.alpha" && row["input"] != "decay.beta") variance += std::pow(row["contribution_m_s2"].get<double>(), 2);
   }
   CHECK_THAT(std::sqrt(variance), WithinAbs(result["g"]["uncertainty"].get<double>(), 2e-6));
+}
+
+TEST_CASE("The expanded uncertainty, in JSON and the table, as GUM 6 writes it", "[cli][budget][uncertainty]") {
+  const json g = json::parse(run("reduce " + kNelsonOlsson).out).at("g");
+  const json& e = g.at("expanded");
+  // U = k u(g); Nelson & Olsson's ten trials give the period 9 degrees of
+  // freedom, the length and amplitude's stated uncertainties infinite ones.
+  CHECK_THAT(e.at("uncertainty").get<double>(),
+             WithinAbs(e.at("coverage_factor").get<double>() * g.at("uncertainty").get<double>(), 1e-15));
+  CHECK(e.at("coverage_probability") == 0.95);
+  CHECK(e.at("effective_degrees_of_freedom").get<double>() > 9.0);
+  CHECK(g.at("effective_degrees_of_freedom") == e.at("effective_degrees_of_freedom"));
+  for (const auto& row : g.at("budget")) {
+    if (row.at("input") == "timing.period") {
+      CHECK(row.at("type") == "A");
+      CHECK(row.at("distribution") == "student_t");
+      CHECK(row.at("degrees_of_freedom") == 9);
+    } else {
+      CHECK(row.at("type") == "B");
+      CHECK(row.at("degrees_of_freedom").is_null());  // infinite
+    }
+  }
+  const std::regex line("g = 9\\.8034 \u00B1 0\\.0030 m/s\u00B2 \\(k = 2\\.0[0-9], 95 %, \u03BD_eff = [0-9]+\\)");
+  CHECK(std::regex_match(e.at("result").get<std::string>(), line));
+  const Run table = run("reduce --format table " + kNelsonOlsson);
+  CHECK(std::regex_search(table.out, std::regex("g, expanded         = 9\\.8034 \\+- 0\\.0030 m/s\\^2 \\(k = 2\\.0[0-9], "
+                                                "95 %, nu_eff = [0-9]+\\)")));
+  CHECK_THAT(table.out, Contains("  timing.period                    0.000951 m/s^2  41.1 %  A   student_t    nu = 9"));
+  CHECK_THAT(table.out, Contains("  length                           0.000979 m/s^2  43.6 %  B   normal       nu = \u221E"));
+}
+
+TEST_CASE("table: a series' rows of one field are one line, repeated messages once", "[cli][table][budget]") {
+  // 20 lengths, each timed three times and its amplitude not recorded: the
+  // JSON lists 60 rows and 20 assumptions; the table one line per field and
+  // one assumption, with the count and the first paths.
+  json scene = {{"schema", "pendulum-g/scene/1"}, {"observations", json::array()}};
+  for (int k = 0; k < 20; ++k) {
+    const double length = 0.3 + 0.05 * k, t = 20.0 * M_PI * std::sqrt(length / 9.81);
+    scene["observations"].push_back({{"length", {{"value", length}, {"uncertainty", 0.001}, {"unit", "m"}}},
+                                     {"amplitude", "not recorded"},
+                                     {"timing", {{"oscillations_per_trial", 10}, {"unit", "s"},
+                                                 {"trials", {t - 0.1, t + 0.05 * (k % 3), t + 0.1}}}}});
+  }
+  const std::string file = temporary_file();
+  std::ofstream(file) << scene.dump();
+  const json result = json::parse(run("reduce " + file).out);
+  const Run table = run("reduce --format table " + file);
+  std::remove(file.c_str());
+  CHECK(result["g"]["budget"].size() == 60);
+  CHECK(result["assumptions"].size() == 20);
+  double periods = 0.0;
+  for (const auto& row : result["g"]["budget"]) {
+    if (std::regex_match(row["input"].get<std::string>(), std::regex("observations\\[[0-9]+\\]\\.timing\\.period"))) {
+      periods += std::pow(row["contribution_m_s2"].get<double>(), 2);
+    }
+  }
+  std::smatch m;
+  REQUIRE(std::regex_search(table.out, m, std::regex("\n  20 observations' timing\\.period +([0-9.]+) m/s\\^2 .* A   student_t +nu = 2\n")));
+  CHECK_THAT(std::stod(m[1]), WithinAbs(std::sqrt(periods), 1e-6));
+  CHECK(table.out.find("observations[1].timing.period") == std::string::npos);
+  const std::string once = "(and 19 more alike: observations[1], observations[2], observations[3], ...)\n";
+  CHECK_THAT(table.out, Contains("assumption: observations[0].amplitude: not recorded; a hand release" ));
+  CHECK_THAT(table.out, Contains(once));
+  CHECK(table.out.find("assumption: observations[1]") == std::string::npos);
 }

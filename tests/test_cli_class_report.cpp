@@ -153,7 +153,7 @@ TEST_CASE("The fresh class: every slip flagged and named with its fix and no cle
   CHECK(last.at("counts") == json{{"ok", 12}, {"suspect", 9}, {"failed", 4}});
 }
 
-TEST_CASE("batch --format table: a line a scene then the class; CSV: the warnings counted and the first given",
+TEST_CASE("batch --format table: a line a scene then the class, CSV: the warnings counted and the first given",
           "[cli][batch][table]") {
   const FreshClass dir;
   const Run jsonl = run("batch " + dir.path);

@@ -329,7 +329,7 @@ TEST_CASE("import: a track with too few swings' peaks for a smooth curve shows t
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("reduce RECORDING --length reduces it as a scene naming it; without the length it says what to do",
+TEST_CASE("reduce RECORDING --length reduces it as a scene naming it, without the length it says what to do",
           "[cli][import][scene]") {
   const std::string recording = std::string(PENDULUM_DATA_DIR) + "/recordings/phyphox_pendulum_raw.tsv";
   const std::string scene = temporary_file();

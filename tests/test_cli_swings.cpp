@@ -69,7 +69,7 @@ TEST_CASE("import: a track's glitchy end is found, and --range cuts it", "[cli][
   CHECK_THAT(outside.err, Contains("no sample in the range 400:500 s"));
 }
 
-TEST_CASE("A scene's range cuts a recording's glitch; without it the recording is named", "[cli][recordings][glitches]") {
+TEST_CASE("A scene's range cuts a recording's glitch, without it the recording is named", "[cli][recordings][glitches]") {
   const std::string scene = std::string(PENDULUM_DATA_DIR) + "/recordings/tracker_glitchy_end_scene.json";
   const Run r = run("reduce " + scene);
   REQUIRE(r.status == 0);

@@ -76,7 +76,7 @@ TEST_CASE("template pivot-scan prints a metre stick that reduces to g, k and its
   }
 }
 
-TEST_CASE("template recording names a file beside the scene; with a recording there it reduces", "[cli][template]") {
+TEST_CASE("template recording names a file beside the scene, with a recording there it reduces", "[cli][template]") {
   char folder[] = "/tmp/pendulum-g-template-XXXXXX";
   REQUIRE(mkdtemp(folder));
   const std::string dir = folder;

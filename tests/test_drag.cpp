@@ -48,7 +48,7 @@ TEST_CASE("Measured drag from alpha and beta: b = 4.27e-4 kg/s, c = 1.18e-3 kg/m
              WithinRel(test::kBeta, 0.005 / 1.18));
 }
 
-TEST_CASE("No air, no drag prediction; a wire without diameter has no quadratic drag", "[drag]") {
+TEST_CASE("No air, no drag prediction, a wire without diameter has no quadratic drag", "[drag]") {
   ParsedScene scene = parse_scene(test::nelson_olsson_text());
   scene.apparatus.wire->diameter.reset();
   const auto p = predict_drag(scene.apparatus, scene.observations[0]);

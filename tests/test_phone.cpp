@@ -119,7 +119,7 @@ TEST_CASE("A box or cylinder on a string: T/T0 of the slow mode to 1e-12 of the 
   }
 }
 
-TEST_CASE("The issue's phone: the point mass 1.8% and a rigid body 0.14% off at 0.2 m; 0.11% and 0.003% at 1 m",
+TEST_CASE("The issue's phone: the point mass 1.8% and a rigid body 0.14% off at 0.2 m, 0.11% and 0.003% at 1 m",
           "[phone][physics]") {
   // The 0.075 x 0.16 m face swinging in its plane, its centre 8 cm below the
   // knot. Relative errors of T, from mpmath at 40 digits (the eigenproblem

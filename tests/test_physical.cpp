@@ -184,7 +184,7 @@ TEST_CASE("A pivot scan at chi2/dof near 60 is suspect, with the scatter's sigma
              WithinRel(*a.fit.birge_ratio * *parameter(a, "radius_of_gyration").uncertainty_unscaled, 0.01));
 }
 
-TEST_CASE("The pivot scan's textbook curve is in the fit; Kater's is Bessel's formula on the measured periods",
+TEST_CASE("The pivot scan's textbook curve is in the fit, Kater's is Bessel's formula on the measured periods",
           "[physical][textbook]") {
   const ParsedScene scene = simulate_pivot_scan({}, kater(0.8136, 3));
   const Analysis a = analyse(scene);

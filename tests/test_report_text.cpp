@@ -35,7 +35,7 @@ TEST_CASE("A log axis labels 10^5 as 10⁵ and not 100⁵", "[report][format]") 
   CHECK_FALSE(std::regex_search(svg, std::regex("[0-9]10(\u207B)?(\u2070|\u00B9|\u00B2|\u00B3|\u2074|\u2075|\u2076|\u2077|\u2078|\u2079)")));
 }
 
-TEST_CASE("Values with an uncertainty: no x10⁰; durations with an SI prefix", "[report][format]") {
+TEST_CASE("Values with an uncertainty: no x10⁰, durations with an SI prefix", "[report][format]") {
   // u = 2.5e-15 s on T = 2 s: both over 10^0 is no power at all.
   const std::string t = value_with_uncertainty(1.999999999999998, 2.5e-15, false);
   CHECK(t.find("\u00D710") == std::string::npos);

@@ -67,7 +67,7 @@ TEST_CASE("Each slip is named from the ratio it makes in g", "[status]") {
   CHECK_FALSE(name_slip(4.0 / 1.151));
 }
 
-TEST_CASE("Hand timing draws no outlier warning; a miscounted oscillation does", "[status][timing]") {
+TEST_CASE("Hand timing draws no outlier warning, a miscounted oscillation does", "[status][timing]") {
   // 300 seeded scenes of a 1 m pendulum at 5 deg and standard gravity, five
   // trials of 10 oscillations each timed by hand: 10 T + N(0, 0.05 s),
   // rounded to the phone's 0.01 s. T = 2 pi sqrt(L/g) (1 + the exact

@@ -288,7 +288,7 @@ TEST_CASE("CategoryChart on a log axis: bars, cut error bars, links", "[report][
   CHECK(count(linear, "<line") == count(linear, "stroke=\"#DDDDDD\"") * 2 + 6);
 }
 
-TEST_CASE("class_chart: sorted by g; one expected line, a marker per row, or none", "[report][class]") {
+TEST_CASE("class_chart: sorted by g, one expected line, a marker per row, or none", "[report][class]") {
   const Measured site{9.8026, 0.0};
   std::vector<ClassPoint> points{{"b", "#scene-1", 9.8324, 0.0058, site, 5.18},
                                  {"a", "#scene-2", 9.8034, 0.0015, site, 0.54},

@@ -183,7 +183,7 @@ TEST_CASE("No period's uncertainty is below the clock's resolution", "[recording
   CHECK(notes_containing(g, "the least the clock's resolution of 0.5 s allows") == 1);
 }
 
-TEST_CASE("Stamps: the count from a counter column is checked and mended; bad logs refused",
+TEST_CASE("Stamps: the count from a counter column is checked and mended, bad logs refused",
           "[recordings][stamps]") {
   // 30 stamps of a 2 s period with 2 ms of Gaussian scatter (seed 41), the
   // timer's own count beside them; the 11th stamp missed, which the timer

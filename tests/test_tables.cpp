@@ -257,7 +257,7 @@ TEST_CASE("Tables: Dutch headers with error columns", "[tables]") {
   check_g(t);
 }
 
-TEST_CASE("Tables: sigma columns by place and by matplotlib's names; the periods first", "[tables]") {
+TEST_CASE("Tables: sigma columns by place and by matplotlib's names, the periods first", "[tables]") {
   const SettingsTable xy = read_settings_table(kTables + "/x_y_sx_sy.txt");
   const std::vector<std::string> x_y_sx_sy = {"length", "period", "uncertainty of the length", "uncertainty of the period"};
   CHECK(roles(xy) == x_y_sx_sy);

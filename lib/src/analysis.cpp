@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <stdexcept>
 #include <type_traits>
@@ -74,6 +75,16 @@ void use_fitted_decay(ParsedScene& scene, const DecayFit& fit) {
   if (fit.alpha.uncertainty && fit.beta.uncertainty) {
     scene.input_covariances.push_back({"decay.alpha", "decay.beta", fit.covariance[1]});
   }
+  // Type A from the record's points: with stated sigmas the covariance is
+  // known (normal); scaled by the residuals' variance it is a t with n - p.
+  const InputEvaluation from_record =
+      fit.uncertainty_scaling == "sigma" && !fit.scaled
+          ? InputEvaluation{"", 'A', Distribution::normal}
+          : InputEvaluation{"", 'A', Distribution::student_t, static_cast<double>(fit.dof)};
+  for (const char* path : {"decay.alpha", "decay.beta"}) {
+    scene.evaluations.push_back(from_record);
+    scene.evaluations.back().path = path;
+  }
 }
 
 namespace {
@@ -87,6 +98,7 @@ struct Input {
   std::vector<std::size_t> observations;  ///< the observations it is a field of; none: the apparatus's
   int ordinal;                            ///< place in its owner's zip order
   FieldRole role;
+  InputEvaluation evaluation;
 };
 
 /// The quantities derived per observation, whose uncertainties are
@@ -316,7 +328,9 @@ class Fit {
   void add_input(std::string path, const Field& f, double value, double sigma, std::vector<std::size_t> observations,
                  int ordinal) {
     if (sigma > 0.0) {
-      inputs_.push_back({std::move(path), f.unit, value, sigma, std::move(observations), ordinal, f.role});
+      InputEvaluation evaluation = evaluation_of(scene_.evaluations, path);
+      inputs_.push_back({std::move(path), f.unit, value, sigma, std::move(observations), ordinal, f.role,
+                         std::move(evaluation)});
     } else {
       out_.inputs_without_uncertainty.push_back(std::move(path));
     }
@@ -541,11 +555,45 @@ class Fit {
     }
   }
 
+  /// Parameter i's effective degrees of freedom (GUM G.4): each input's
+  /// variance with its own dof, a correlated pair's together with theirs
+  /// (one fit gave both), and the share a Birge ratio added with the fit's
+  /// (S^2 is chi2/dof).
+  double effective_dof(int i) const {
+    std::vector<VarianceComponent> components;
+    const auto variance = [&](auto j) { return std::pow(sensitivities_[j](i) * inputs_[j].sigma, 2); };
+    for (std::size_t j = 0; j < inputs_.size(); ++j) {
+      const auto paired = [&](const Pair& pr) { return pr.a == static_cast<int>(j) || pr.b == static_cast<int>(j); };
+      if (std::none_of(pairs_.begin(), pairs_.end(), paired)) components.push_back({variance(j), inputs_[j].evaluation.dof});
+    }
+    for (const Pair& pr : pairs_) {
+      const double together = variance(pr.a) + variance(pr.b) +
+                              2.0 * sensitivities_[pr.a](i) * sensitivities_[pr.b](i) * pr.covariance;
+      components.push_back({std::max(together, 0.0), std::min(inputs_[pr.a].evaluation.dof, inputs_[pr.b].evaluation.dof)});
+    }
+    const ParameterResult& p = out_.fit.parameters[i];
+    if (out_.fit.scaled && p.uncertainty && p.uncertainty_unscaled) {
+      components.push_back({*p.uncertainty * *p.uncertainty - *p.uncertainty_unscaled * *p.uncertainty_unscaled,
+                            static_cast<double>(out_.fit.dof)});
+    }
+    return welch_satterthwaite(components);
+  }
+
   void report_budget() {
+    const double combined = covariance_(0, 0);  // the stated uncertainties' u_c^2
     for (std::size_t j = 0; j < inputs_.size(); ++j) {
       const Input& in = inputs_[j];
-      const double s = sensitivities_[j](0);
-      out_.budget.push_back({in.path, in.unit, in.value, in.sigma, s, std::abs(s) * in.sigma});
+      const double s = sensitivities_[j](0), contribution = std::abs(s) * in.sigma;
+      out_.budget.push_back({in.path, in.unit, in.value, in.sigma, s, contribution, in.evaluation,
+                             combined > 0.0 ? contribution * contribution / combined : 0.0});
+    }
+    for (int i = 0; i < P; ++i) {
+      ParameterResult& p = out_.fit.parameters[i];
+      if (p.uncertainty) p.degrees_of_freedom = effective_dof(i);
+    }
+    if (const std::optional<double>& u = out_.g.uncertainty) {
+      const double nu = out_.fit.parameters[0].degrees_of_freedom, k = coverage_factor(nu);
+      out_.g_expanded = ExpandedUncertainty{nu, k, kCoverageProbability, k * *u};
     }
     std::stable_sort(out_.budget.begin(), out_.budget.end(),
                      [](const BudgetEntry& x, const BudgetEntry& y) { return x.contribution > y.contribution; });
@@ -590,6 +638,30 @@ class Fit {
   Matrix covariance_, covariance_pl_;
   std::vector<std::array<double, kQuantities>> variance_;
 };
+
+/// S1 8: GUM's interval is not validated by the draws': which input bends
+/// g, and the interval to quote instead.
+std::string monte_carlo_finding(const MonteCarloResult& mc, const Analysis& a) {
+  const double U = a.g_expanded->expanded;
+  // To the tolerance's last decimal.
+  const int decimals = std::max(0, 1 - static_cast<int>(std::floor(std::log10(mc.tolerance))));
+  const auto fixed = [&](double x) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", decimals, x);
+    return std::string(text);
+  };
+  std::string why = "no single input's removal restores the agreement";
+  for (const BudgetEntry& b : a.budget) {
+    if (b.input == mc.bending_input) {
+      why = "it comes from " + b.input + " (" + distribution_name(b.evaluation.distribution) +
+            "): held at its value, the two agree";
+    }
+  }
+  return "uncertainty: GUM's 95 % interval [" + fixed(a.g.value - U) + ", " + fixed(a.g.value + U) +
+         "] m/s^2 and the Monte Carlo's shortest one [" + fixed(mc.low) + ", " + fixed(mc.high) +
+         "] differ by more than the numerical tolerance " + format_number(mc.tolerance, 2) +
+         " m/s^2 (GUM Supplement 1, 8): " + why + "; quote the Monte Carlo interval";
+}
 
 }  // namespace
 
@@ -656,6 +728,16 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
     check(o.period_model, "model period");
     for (const auto& row : o.corrections) {
       if (row.delta_T) check(*row.delta_T, row.info.id);
+    }
+  }
+  if (const auto& asked = options.monte_carlo ? options.monte_carlo : scene.monte_carlo) {
+    out.monte_carlo = monte_carlo(scene, out, *asked);
+    if (!out.monte_carlo) {
+      out.warnings.push_back("uncertainty: Monte Carlo propagation takes a scene of one observation with g its only "
+                             "unknown (a series would be refitted per draw, not implemented yet); the budget is GUM's "
+                             "linear one");
+    } else if (!out.monte_carlo->validated) {
+      out.warnings.push_back(monte_carlo_finding(*out.monte_carlo, out));
     }
   }
   Verdict verdict = judge(scene, out);

@@ -27,8 +27,8 @@ out=$(realpath "$out") exe=$(realpath "$exe")
 (cd "$data" && "$exe" batch class --report "$out/report-class.html" >/dev/null) || [ $? -eq 1 ]
 # A recording: the signal with its crossings, the amplitudes, the periods.
 "$exe" report "$data/recordings/phyphox_gyroscope.csv" -o "$out/report-recording.html"
-pages=(report-nelson-olsson:2940 report-decay:3900 report-series:5090 report-pivot-scan:7720 report-kater:4360
-       report-class:6700 report-recording:3000)
+pages=(report-nelson-olsson:3040 report-decay:4010 report-series:4180 report-pivot-scan:4900 report-kater:4360
+       report-class:6900 report-recording:3000)
 # Long file paths (a scene and a class in a deep folder) must wrap, not run off.
 deep="$out/long/a-folder-named-by-a-student-who-likes-long-names/lab_report_pendulum_group_7_final_version_2"
 mkdir -p "$deep"

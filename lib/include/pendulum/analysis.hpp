@@ -15,10 +15,12 @@
 #include "pendulum/decay_fit.hpp"
 #include "pendulum/drag.hpp"
 #include "pendulum/estimate.hpp"
+#include "pendulum/monte_carlo.hpp"
 #include "pendulum/models/registry.hpp"
 #include "pendulum/parsed_scene.hpp"
 #include "pendulum/reduction.hpp"
 #include "pendulum/status.hpp"
+#include "pendulum/uncertainty.hpp"
 
 namespace pendulum {
 
@@ -30,6 +32,9 @@ struct AnalysisOptions {
   /// With the automatic amplitude method, the chosen method's error bound
   /// stays below this fraction of the period's uncertainty.
   double amplitude_fraction = 0.01;
+  /// `--uncertainty monte-carlo`: GUM Supplement 1 beside the budget (a
+  /// scene's "uncertainty" asks the same; these options win).
+  std::optional<MonteCarloOptions> monte_carlo;
 };
 
 enum class Status { applied, negligible, skipped };
@@ -58,6 +63,21 @@ struct BudgetEntry {
   double uncertainty;
   double sensitivity;   ///< dg/d(input) (m/s^2 per unit)
   double contribution;  ///< |sensitivity| x uncertainty (m/s^2)
+  /// How `uncertainty` was evaluated: Type A or B, its distribution and
+  /// degrees of freedom (infinite for Type B), GUM 4.2-4.3.
+  InputEvaluation evaluation;
+  /// contribution^2 / the combined variance from the stated uncertainties
+  /// (g.uncertainty_unscaled^2); a correlated pair's may exceed 1.
+  double variance_share;
+};
+
+/// GUM 6: the expanded uncertainty U = k u_c, k from Student's t at the
+/// effective degrees of freedom (Welch-Satterthwaite, GUM G.4).
+struct ExpandedUncertainty {
+  double effective_dof;    ///< infinite where every input's is
+  double coverage_factor;  ///< k
+  double probability;      ///< the coverage probability, kCoverageProbability
+  double expanded;         ///< U = k u_c (m/s^2)
 };
 
 /// A correlated pair of inputs (alpha and beta of a decay fit).
@@ -107,6 +127,10 @@ struct ParameterResult {
   /// `uncertainty` before the Birge ratio was applied (FitReport::scaled);
   /// equal to it otherwise.
   std::optional<double> uncertainty_unscaled;
+  /// Effective degrees of freedom of `uncertainty` (Welch-Satterthwaite over
+  /// the inputs; the share a Birge ratio adds has the fit's dof); infinite
+  /// where every input's is, or the parameter has no uncertainty.
+  double degrees_of_freedom = kInfiniteDof;
 };
 
 /// What the fit of a series adds.
@@ -159,6 +183,10 @@ struct Analysis {
   /// Their squares and budget_correlation's variance add to g.uncertainty^2.
   std::vector<BudgetEntry> budget;
   std::optional<BudgetCorrelation> budget_correlation;
+  /// g's expanded uncertainty for 95 % coverage; empty without an uncertainty.
+  std::optional<ExpandedUncertainty> g_expanded;
+  /// GUM Supplement 1's g where asked for (monte_carlo.hpp).
+  std::optional<MonteCarloResult> monte_carlo;
   /// JSON paths of the inputs stated without an uncertainty.
   std::vector<std::string> inputs_without_uncertainty;
   /// The fit of alpha and beta when the scene gives a decay record.

@@ -26,6 +26,12 @@ std::string result_json(const ParsedScene& scene, const Analysis& analysis, cons
 /// microseconds and mGal, g rounded to its uncertainty, the status.
 std::string result_table(const ParsedScene& scene, const Analysis& analysis);
 
+/// g with its expanded uncertainty as a lab report quotes it after "g = ",
+/// both rounded to two significant digits of U (GUM 7.2.6): "9.8034 ± 0.0031
+/// m/s² (k = 2.07, 95 %, ν_eff = 31)", with "+-", "m/s^2" and "nu_eff" where
+/// not `unicode`; ν_eff as GUM G.4.1 truncates it, "∞" where infinite.
+std::string expanded_result(double g, const ExpandedUncertainty& expanded, bool unicode);
+
 /// The document of `pendulum-g fit-decay`: the fit of the scene's decay
 /// record, the air's predicted damping beside it, and the warnings.
 std::string decay_fit_json(const std::string& input, const ParsedScene& scene, const DecayFit& fit,

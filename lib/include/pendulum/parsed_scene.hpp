@@ -9,10 +9,12 @@
 
 #include "pendulum/apparatus.hpp"
 #include "pendulum/decay_fit.hpp"
+#include "pendulum/monte_carlo.hpp"
 #include "pendulum/observation.hpp"
 #include "pendulum/period_model.hpp"
 #include "pendulum/recordings/swing_series.hpp"
 #include "pendulum/site.hpp"
+#include "pendulum/uncertainty.hpp"
 
 namespace pendulum {
 
@@ -111,6 +113,12 @@ struct ParsedScene {
     double covariance;
   };
   std::vector<Covariance> input_covariances;
+  /// How inputs' uncertainties were evaluated (Type A or B, distribution,
+  /// degrees of freedom), by JSON path; an input not listed is Type B,
+  /// normal, with infinite degrees of freedom (a stated uncertainty).
+  std::vector<InputEvaluation> evaluations;
+  /// "uncertainty": {"method": "monte-carlo", ...}: GUM Supplement 1 beside the budget.
+  std::optional<MonteCarloOptions> monte_carlo;
   /// A physical pendulum's body as its parts give it (docs/physical.md),
   /// also where the fit replaces k or the centre: the fit is checked against it.
   std::optional<RigidBody<double>> body_from_parts;

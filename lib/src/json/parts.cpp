@@ -258,6 +258,8 @@ void read_timing(Object& parent, const std::string& prefix, Observation<double>&
               in_unit(mean) + ")");
   refuse_lap_totals(t.path("trials"), times, unit_name);
   double sigma_trial = 0.0;
+  const std::string period_path = prefix + "timing.period";
+  InputEvaluation evaluation{period_path};
   if (times.size() >= 2) {
     double ss = 0.0;
     for (double x : times) ss += (x / mean - 1.0) * (x / mean - 1.0);
@@ -271,6 +273,11 @@ void read_timing(Object& parent, const std::string& prefix, Observation<double>&
     // them is luck.
     sigma_trial = std::max({spread, resolution.value_or(0.0) / std::sqrt(12.0),
                             trial_sigma.value_or(0.0)});
+    // GUM 4.2: the scatter is a Type A evaluation (the mean of n readings, a
+    // t with n - 1 degrees of freedom, S1 6.4.9); a floor that wins is Type B.
+    evaluation = sigma_trial == spread ? InputEvaluation{period_path, 'A', Distribution::student_t, n - 1.0}
+                 : sigma_trial == trial_sigma.value_or(0.0) ? InputEvaluation{period_path}
+                                                            : InputEvaluation{period_path, 'B', Distribution::rectangular};
     if (sigma_trial == 0.0) {
       out.warnings.push_back(
           t.path("trials") + ": all trials are equal and no resolution is given, so "
@@ -285,6 +292,7 @@ void read_timing(Object& parent, const std::string& prefix, Observation<double>&
         t.path() + ": a single trial; its uncertainty is timing.uncertainty");
   } else if (resolution) {
     sigma_trial = *resolution / std::sqrt(12.0);
+    evaluation.distribution = Distribution::rectangular;
     out.assumptions.push_back(
         t.path() + ": a single trial; its uncertainty is timing.resolution/sqrt(12)");
   } else {
@@ -293,6 +301,7 @@ void read_timing(Object& parent, const std::string& prefix, Observation<double>&
                      "with timing.uncertainty or timing.resolution");
   }
   source.trial_count = static_cast<int>(times.size());
+  out.evaluations.push_back(evaluation);
   value.oscillations_per_trial = n_osc;
   sigma.oscillations_per_trial = n_osc;
   value.period = mean * unit->factor / n_osc;

@@ -73,6 +73,7 @@ Measured unrecorded_amplitude(Object& owner, ParsedScene& out, bool say) {
     how = "released between " + format_number(lo * 180.0 / kPi, 4) + " and " + format_number(hi * 180.0 / kPi, 4) + " deg";
   }
   const double value = 0.5 * (lo + hi), sigma = (hi - lo) / std::sqrt(12.0);
+  out.evaluations.push_back({path, 'B', Distribution::rectangular});
   if (say) {
     const double effect = value * sigma / 4.0;
     out.assumptions.push_back(path + ": " + how + ", taken as uniform over " + format_number(lo * 180.0 / kPi, 4) +
@@ -276,6 +277,29 @@ void read_series(Object& top, ParsedScene& out, RecordingReader& recordings) {
                      "got a period with no uncertainty (equal trials and no resolution); expected one: a series "
                      "weighs each period by its uncertainty, so state timing.resolution or timing.uncertainty");
   }
+}
+
+/// "uncertainty": {"method": "gum" | "monte-carlo", "draws": N, "seed": S}
+/// (docs/uncertainty.md): Monte Carlo beside GUM's budget, N draws (or
+/// adaptive without), seeded.
+void read_uncertainty_method(Object& top, ParsedScene& out) {
+  Object u(top.at("uncertainty"), "uncertainty");
+  const std::string method = u.has("method") ? u.text("method") : "gum";
+  PENDULUM_FAIL_IF(method != "gum" && method != "monte-carlo", u.path("method"),
+                   "got " + shown(u.at("method")) + "; expected \"gum\" or \"monte-carlo\"");
+  const auto whole = [&](const char* key, double least, double most) {
+    const double x = finite_number(u.at(key), [&] { return u.path(key); }, "a whole number");
+    PENDULUM_FAIL_IF(!(x >= least && x <= most && x == std::floor(x)), u.path(key),
+                     "got " + format_number(x) + "; expected a whole number from " + format_number(least) + " to " +
+                         format_number(most));
+    return x;
+  };
+  MonteCarloOptions mc;
+  if (u.has("draws")) mc.draws = static_cast<long>(whole("draws", 100, kMostDraws));
+  if (u.has("seed")) mc.seed = static_cast<std::uint64_t>(whole("seed", 0, 9007199254740991.0));  // 2^53 - 1
+  if (u.has("source")) u.text("source");
+  u.finish();
+  if (method == "monte-carlo") out.monte_carlo = mc;
 }
 
 /// "fit": the unknowns besides g, by the period model's parameter names.
@@ -495,6 +519,7 @@ ParsedScene parse_scene(const std::string& text, const SceneFiles& files) {
   if (top.has("decay")) read_decay(top, out, recordings);
   reduce_swing_by_swing(out);
   if (top.has("site")) read_site(top, out);
+  if (top.has("uncertainty")) read_uncertainty_method(top, out);
   visit_period_model(out.model, [&](auto model) {
     if (top.has("fit")) read_fit<decltype(model)>(top, out);
     decltype(model)::read_keys(top, out);

@@ -10,6 +10,7 @@
 #include "pendulum/models/registry.hpp"
 #include "pendulum/output.hpp"
 #include "writer.hpp"
+#include "../grouping.hpp"
 #include "../text.hpp"
 
 namespace pendulum {
@@ -200,6 +201,20 @@ json corrections_json(const ObservationResult& o) {
   return corrections;
 }
 
+/// Degrees of freedom, null where infinite (docs/output.md).
+json dof_json(double dof) { return std::isfinite(dof) ? json(dof) : json(nullptr); }
+
+json expanded_json(const Analysis& a) {
+  if (!a.g_expanded) return nullptr;
+  const ExpandedUncertainty& e = *a.g_expanded;
+  return {{"uncertainty", e.expanded},
+          {"unit", "m/s^2"},
+          {"coverage_factor", e.coverage_factor},
+          {"coverage_probability", e.probability},
+          {"effective_degrees_of_freedom", dof_json(e.effective_dof)},
+          {"result", "g = " + expanded_result(a.g.value, e, true)}};
+}
+
 json g_json(const Analysis& a) {
   json budget = json::array();
   for (const auto& b : a.budget) {
@@ -208,7 +223,11 @@ json g_json(const Analysis& a) {
                       {"uncertainty", b.uncertainty},
                       {"unit", b.unit},
                       {"sensitivity", b.sensitivity},
-                      {"contribution_m_s2", b.contribution}});
+                      {"contribution_m_s2", b.contribution},
+                      {"type", std::string(1, b.evaluation.type)},
+                      {"distribution", distribution_name(b.evaluation.distribution)},
+                      {"degrees_of_freedom", dof_json(b.evaluation.dof)},
+                      {"variance_share_percent", 100.0 * b.variance_share}});
   }
   json g = measured(a.g, "m/s^2");
   g["uncertainty_unscaled"] = optional_number(a.g_uncertainty_unscaled);
@@ -221,6 +240,24 @@ json g_json(const Analysis& a) {
                                {"variance_m2_s4", a.budget_correlation->variance}};
   }
   g["inputs_without_uncertainty"] = a.inputs_without_uncertainty;
+  g["effective_degrees_of_freedom"] = dof_json(a.fit.parameters.front().degrees_of_freedom);
+  g["expanded"] = expanded_json(a);
+  if (const auto& mc = a.monte_carlo) {
+    g["monte_carlo"] = {{"method", "monte-carlo"},
+                        {"draws", mc->draws},
+                        {"seed", mc->options.seed},
+                        {"adaptive", mc->options.draws == 0},
+                        {"mean", mc->mean},
+                        {"uncertainty", mc->standard_uncertainty},
+                        {"unit", "m/s^2"},
+                        {"coverage_interval", {mc->low, mc->high}},
+                        {"coverage_probability", kCoverageProbability},
+                        {"tolerance", mc->tolerance},
+                        {"d_low", mc->d_low},
+                        {"d_high", mc->d_high},
+                        {"validated", mc->validated},
+                        {"bending_input", mc->bending_input.empty() ? json(nullptr) : json(mc->bending_input)}};
+  }
   return g;
 }
 
@@ -235,7 +272,8 @@ json fit_json(const ParsedScene& scene, const Analysis& a) {
                           {"uncertainty_from_observations", optional_number(p.uncertainty_from_observations)},
                           {"unit", p.unit},
                           {"fitted", p.fitted},
-                          {"uncertainty_unscaled", optional_number(p.uncertainty_unscaled)}});
+                          {"uncertainty_unscaled", optional_number(p.uncertainty_unscaled)},
+                          {"degrees_of_freedom", p.uncertainty ? dof_json(p.degrees_of_freedom) : json(nullptr)}});
     if (p.fitted) names.push_back(p.name);
   }
   json matrix = json::array();
@@ -416,6 +454,26 @@ namespace {
 
 /// Decimals that show `u` to two significant digits (5 for none, at most 12).
 int decimals_of(double u) { return decimals_for_uncertainty(u, 12); }
+
+/// Degrees of freedom as the table and the result line print them: whole
+/// (GUM G.4.1 truncates nu_eff), "∞" where infinite or beyond 1e6 (the
+/// table prints no "inf": it reads as a number gone wrong).
+std::string dof_text(double dof) {
+  if (!(dof <= 1e6)) return "\u221E";
+  return format_fixed(std::floor(dof), 0);
+}
+
+}  // namespace
+
+std::string expanded_result(double g, const ExpandedUncertainty& e, bool unicode) {
+  const int d = decimals_of(e.expanded);
+  return format_fixed(g, d) + (unicode ? " ± " : " +- ") + format_fixed(e.expanded, d) +
+         (unicode ? " m/s² (k = " : " m/s^2 (k = ") + format_fixed(e.coverage_factor, 2) + ", " +
+         format_fixed(100.0 * e.probability, 0) + (unicode ? " %, ν_eff = " : " %, nu_eff = ") +
+         dof_text(e.effective_dof) + ")";
+}
+
+namespace {
 
 /// A batch's table row after the file column: status, g rounded to its
 /// uncertainty, z, and the first reason (or the error) in brief.
@@ -659,8 +717,9 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     os << "\nFit (" << a.fit.method << ", " << a.fit.dof << " degrees of freedom):\n";
     for (const auto& p : a.fit.parameters) {
       if (!p.fitted) continue;
-      std::snprintf(line, sizeof line, "  %-14s = %.8g %s %s\n", p.name, p.value,
-                    plus_minus(p.uncertainty, "%.3g").c_str(), p.unit);
+      const std::string nu = p.uncertainty ? " (nu = " + dof_text(p.degrees_of_freedom) + ")" : "";
+      std::snprintf(line, sizeof line, "  %-14s = %.8g %s %s%s\n", p.name, p.value,
+                    plus_minus(p.uncertainty, "%.3g").c_str(), p.unit, nu.c_str());
       os << line;
       if (std::string(p.name) == "length_offset") {
         std::snprintf(line, sizeof line, "                   the lengths run to a point %.3g %s mm %s the centre of the bob\n",
@@ -707,6 +766,14 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
   }
   if (!notes.empty()) os << " (" << notes << ")";
   os << "\n";
+  if (a.g_expanded) os << "g, expanded         = " << expanded_result(a.g.value, *a.g_expanded, false) << "\n";
+  if (const auto& mc = a.monte_carlo) {
+    const int d = decimals_of(mc->standard_uncertainty);
+    os << "g, Monte Carlo      = " << format_fixed(mc->mean, d) << " +- " << format_fixed(mc->standard_uncertainty, d)
+       << " m/s^2, 95 % in [" << format_fixed(mc->low, d) << ", " << format_fixed(mc->high, d) << "] ("
+       << mc->draws << " draws; GUM's interval " << (mc->validated ? "validated" : "not validated") << " to "
+       << format_fixed(mc->tolerance, d + 1) << ")\n";
+  }
   if (a.expected_g) {
     std::snprintf(line, sizeof line, "expected g          = %.5f +- %.5f m/s^2 (%s)\n", a.expected_g->value,
                   a.expected_g->uncertainty, a.expected_g->source.c_str());
@@ -737,14 +804,22 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
   for (const auto& r : a.status_reasons) os << "  " << r << "\n";
   if (a.decay_fit) os << "\n" << decay_fit_lines(*a.decay_fit);
   if (!a.budget.empty()) {
-    // A series lists every observation's inputs: the table shows the largest.
+    // A series gives every observation its inputs: one line per field, its
+    // rows in quadrature (the JSON lists each); the table shows the largest.
     constexpr std::size_t kShown = 12;
-    os << "\nUncertainty budget of g (largest first):\n";
-    for (std::size_t i = 0; i < a.budget.size() && i < kShown; ++i) {
-      std::snprintf(line, sizeof line, "  %-32s %.6f m/s^2\n", a.budget[i].input.c_str(), a.budget[i].contribution);
+    std::vector<std::string> paths;
+    std::vector<double> contributions;
+    for (const auto& b : a.budget) paths.push_back(b.input), contributions.push_back(b.contribution);
+    const std::vector<BudgetGroup> groups = group_budget(paths, contributions);
+    os << "\nUncertainty budget of g (largest first; share of u(g)^2, GUM type, distribution, degrees of freedom):\n";
+    for (std::size_t i = 0; i < groups.size() && i < kShown; ++i) {
+      const GroupEvaluation e = group_evaluation(groups[i], a.budget, "\u221E");
+      std::snprintf(line, sizeof line, "  %-32s %.6f m/s^2 %5.1f %%  %-3s %-11s  nu = %s\n",
+                    group_name(groups[i], paths).c_str(), groups[i].together, 100.0 * e.variance_share,
+                    e.type.c_str(), e.distribution.c_str(), e.dof.c_str());
       os << line;
     }
-    if (a.budget.size() > kShown) os << "  ... and " << a.budget.size() - kShown << " more (JSON: g.budget)\n";
+    if (groups.size() > kShown) os << "  ... and " << groups.size() - kShown << " more (JSON: g.budget)\n";
     // Correlated inputs do not add in quadrature: say what the pair gives together.
     if (const auto& c = a.budget_correlation) {
       double together = c->variance;
@@ -758,12 +833,15 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
   }
   if (!a.inputs_without_uncertainty.empty()) {
     os << "Inputs without an uncertainty (they add nothing to the budget):";
-    for (const auto& in : a.inputs_without_uncertainty) os << " " << in;
+    const std::vector<std::string>& paths = a.inputs_without_uncertainty;
+    const std::vector<BudgetGroup> groups = group_budget(paths, std::vector<double>(paths.size(), 0.0));
+    for (std::size_t i = 0; i < groups.size(); ++i) os << (i ? ", " : " ") << group_name(groups[i], paths);
     os << "\n";
   }
-  for (const auto& assumption : scene.assumptions) os << "assumption: " << assumption << "\n";
-  for (const auto& w : scene.warnings) os << "warning: " << w << "\n";
-  for (const auto& w : a.warnings) os << "warning: " << w << "\n";
+  std::vector<std::string> warnings = scene.warnings;
+  warnings.insert(warnings.end(), a.warnings.begin(), a.warnings.end());
+  for (const auto& assumption : collapse_repeats(scene.assumptions)) os << "assumption: " << assumption << "\n";
+  for (const auto& w : collapse_repeats(warnings)) os << "warning: " << w << "\n";
   return os.str();
 }
 

@@ -9,6 +9,7 @@
 #include "pendulum/status.hpp"
 #include "pendulum/report/plots.hpp"
 #include "pendulum/report/svg_plot.hpp"
+#include "../grouping.hpp"
 #include "../text.hpp"
 
 namespace pendulum::report {
@@ -187,13 +188,23 @@ std::string budget_table(const SceneReport& r) {
   std::string s =
       "<table class=\"budget\">\n<thead><tr><th scope=\"col\">input</th><th scope=\"col\" class=\"num\">value</th>"
       "<th scope=\"col\" class=\"num\">uncertainty</th><th scope=\"col\">unit</th>"
-      "<th scope=\"col\" class=\"num\">contribution to u(g) (mm/s\u00B2)</th></tr></thead>\n<tbody>\n";
+      "<th scope=\"col\" class=\"num\">contribution to u(g) (mm/s\u00B2)</th><th scope=\"col\" class=\"num\">share "
+      "of u(g)\u00B2</th><th scope=\"col\">GUM</th></tr></thead>\n<tbody>\n";
+  bool grouped = false;
   for (const auto& b : r.budget) {
+    grouped = grouped || b.rows > 1;
+    // Type and distribution, and the degrees of freedom where finite.
+    const std::string gum = b.type + ", " + b.distribution + (b.dof == "\u221E" ? "" : ", \u03BD = " + b.dof);
     s += "<tr><td><code>" + breakable(b.input, ".[") + "</code></td><td class=\"num\">" + format_significant(b.value, 6) +
          "</td><td class=\"num\">" + format_significant(b.uncertainty, 3) + "</td><td>" + esc(b.unit) +
-         "</td><td class=\"num\">" + format_fixed(b.contribution * 1e3, 6) + "</td></tr>\n";
+         "</td><td class=\"num\">" + format_fixed(b.contribution * 1e3, 6) + "</td><td class=\"num\">" +
+         format_fixed(100.0 * b.variance_share, 1) + " %</td><td>" + esc(gum) + "</td></tr>\n";
   }
   s += "</tbody>\n</table>\n";
+  if (grouped) {
+    s += "<p class=\"meta\">A row of several observations adds their contributions in quadrature and shows the "
+         "largest one's value and uncertainty (JSON: every row in g.budget).</p>\n";
+  }
   if (r.budget_correlation_variance) {
     s += "<p>The fitted \u03B1 and \u03B2 are correlated; their cross term adds " +
          format_significant(*r.budget_correlation_variance * 1e6, 3) + " (mm/s\u00B2)\u00B2 to u(g)\u00B2.</p>\n";
@@ -317,10 +328,11 @@ std::string scene_section(const SceneReport& r, const std::string& anchor) {
                   esc(r.input) + "</code>";
   if (!r.source.empty()) s += "<br/>Source: " + esc(r.source);
   s += "</p>\n" + verdict_html(r) + "<p class=\"g\">g = " + esc(rounded_estimate(r.g, 5, "m/s\u00B2")) + "</p>\n";
+  if (!r.g_expanded.empty()) s += "<p class=\"meta\">Expanded: g = " + esc(r.g_expanded) + "</p>\n";
   s += g_comparison(r);
   if (!r.warnings.empty()) {
     s += "<h3>Warnings</h3>\n<ul class=\"warnings\">\n";
-    for (const auto& w : r.warnings) s += "<li>" + esc(w) + "</li>\n";
+    for (const auto& w : collapse_repeats(r.warnings)) s += "<li>" + esc(w) + "</li>\n";
     s += "</ul>\n";
   }
   s += r.series ? "<h3>Corrections of the first observation</h3>\n" : "<h3>Corrections</h3>\n";

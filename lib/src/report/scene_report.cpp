@@ -7,8 +7,11 @@
 #include <ceres/jet.h>
 
 #include "pendulum/damping.hpp"
+#include "pendulum/output.hpp"
 #include "pendulum/report/recording_report.hpp"
 #include "pendulum/report/svg_plot.hpp"
+#include "../grouping.hpp"
+#include "../text.hpp"
 
 namespace pendulum::report {
 
@@ -72,6 +75,26 @@ DecayRecord make_decay_record(const DecayData& data, const DecayFit& fit) {
   return r;
 }
 
+namespace {
+
+/// The budget as the page shows it: a series' rows of one field grouped
+/// (issue 39, item 8), largest first.
+std::vector<BudgetShare> budget_shares(const std::vector<BudgetEntry>& budget) {
+  std::vector<std::string> paths;
+  std::vector<double> contributions;
+  for (const auto& b : budget) paths.push_back(b.input), contributions.push_back(b.contribution);
+  std::vector<BudgetShare> shares;
+  for (const BudgetGroup& group : group_budget(paths, contributions)) {
+    const BudgetEntry& first = budget[group.rows.front()];
+    const GroupEvaluation e = group_evaluation(group, budget, "\u221E");
+    shares.push_back({group_name(group, paths), first.unit, first.value, first.uncertainty, group.together, e.type,
+                      e.distribution, e.dof, e.variance_share, static_cast<int>(group.rows.size())});
+  }
+  return shares;
+}
+
+}  // namespace
+
 SceneReport make_scene_report(const std::string& input, const ParsedScene& scene, const Analysis& a,
                               const std::vector<Recording>& samples) {
   const ObservationResult& first = a.observations.front();
@@ -101,7 +124,8 @@ SceneReport make_scene_report(const std::string& input, const ParsedScene& scene
     r.corrections.push_back({row.info.id, row.info.title, status_name(row.status), row.method, row.reason,
                              row.info.equation, row.delta_T, row.delta_T_uncertainty, row.delta_g});
   }
-  for (const auto& b : a.budget) r.budget.push_back({b.input, b.unit, b.value, b.uncertainty, b.contribution});
+  r.budget = budget_shares(a.budget);
+  if (a.g_expanded) r.g_expanded = expanded_result(a.g.value, *a.g_expanded, true);
   if (a.budget_correlation) r.budget_correlation_variance = a.budget_correlation->variance;
   r.inputs_without_uncertainty = a.inputs_without_uncertainty;
   if (scene.decay_data && a.decay_fit) r.decay = make_decay_record(*scene.decay_data, *a.decay_fit);

@@ -31,6 +31,15 @@ struct BudgetShare {
   std::string unit;   ///< SI unit of value and uncertainty
   double value, uncertainty;
   double contribution;  ///< to u(g) (m/s^2)
+  /// GUM's description of the uncertainty (uncertainty.hpp): "A" or "B", the
+  /// distribution's name, the degrees of freedom ("9", "∞" for Type B).
+  std::string type, distribution, dof;
+  double variance_share;  ///< of u(g)^2 from the stated uncertainties
+  /// The budget's rows this one stands for: a series' rows of one field are
+  /// one ("57 observations' timing.period", their contributions in
+  /// quadrature; value and uncertainty then those of its largest row), with
+  /// "A/B" and "4 to 9" where they differ.
+  int rows = 1;
 };
 
 /// A series of observations (lengths or pivot positions) and the fit of
@@ -116,6 +125,9 @@ struct SceneReport {
   /// An uncertainty is empty when unknown (a singular fit): the report draws
   /// no error bar and says "uncertainty unknown".
   Estimate g;                 ///< (m/s^2)
+  /// "9.8034 ± 0.0031 m/s² (k = 2.07, 95 %, ν_eff = 31)" (expanded_result);
+  /// empty without an uncertainty.
+  std::string g_expanded;
   /// g of Eq. 5, or of the textbook line of a series (m/s^2); empty when
   /// the lengths determine no line.
   std::optional<Estimate> g_uncorrected;

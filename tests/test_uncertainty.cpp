@@ -1,0 +1,258 @@
+// The budget as the GUM writes it (docs/uncertainty.md): each input's Type,
+// distribution and degrees of freedom, Welch-Satterthwaite's effective
+// degrees of freedom, the coverage factor from Student's t, and the coverage
+// the expanded interval reaches, by simulation.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <string>
+
+#include "pendulum/analysis.hpp"
+#include "pendulum/decay_simulation.hpp"
+#include "pendulum/monte_carlo.hpp"
+#include "pendulum/scene_json.hpp"
+#include "pendulum/uncertainty.hpp"
+#include "catalogue.hpp"
+#include "scene_files.hpp"
+
+using namespace pendulum;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+namespace {
+
+const BudgetEntry& entry(const Analysis& a, const std::string& input) {
+  for (const auto& b : a.budget) {
+    if (b.input == input) return b;
+  }
+  throw std::logic_error("no budget entry " + input);
+}
+
+/// A stopwatch experiment: `trials` of 10 oscillations, a length and an amplitude.
+nlohmann::json stopwatch_scene(const std::vector<double>& trials, double length, double amplitude_deg) {
+  return {{"schema", "pendulum-g/scene/1"},
+          {"timing", {{"oscillations_per_trial", 10}, {"unit", "s"}, {"trials", trials}}},
+          {"length", {{"value", length}, {"uncertainty", 0.0005}, {"unit", "m"}}},
+          {"amplitude", {{"value", amplitude_deg}, {"uncertainty", 0.5}, {"unit", "deg"}}}};
+}
+
+}  // namespace
+
+TEST_CASE("Welch-Satterthwaite: GUM Eq. G.2b on GUM H.1.6's components", "[uncertainty]") {
+  // GUM H.1.6 (the gauge block): contributions 25, 9.7, 2.9 and 16.6 nm with
+  // 18, 25.6, 50 and 2 degrees of freedom. By hand: u_c^2 = 625 + 94.09 +
+  // 8.41 + 275.56 = 1003.06 nm^2; sum (c u)^4/nu = 390625/18 + 8852.93/25.6 +
+  // 70.7281/50 + 75933.1/2 = 60015.28; nu_eff = 1003.06^2/60015.28 = 16.7646.
+  // (GUM rounds u_c to 32 nm before dividing; the formula with u_c^2 as the
+  // sum is what the budget computes.)
+  const double nu = welch_satterthwaite({{25.0 * 25.0, 18.0}, {9.7 * 9.7, 25.6}, {2.9 * 2.9, 50.0}, {16.6 * 16.6, 2.0}});
+  CHECK_THAT(nu, WithinRel(16.76455, 1e-6));
+  // One component: its own dof; Type B components (infinite) add variance, not dof.
+  CHECK_THAT(welch_satterthwaite({{4.0, 4.0}}), WithinRel(4.0, 1e-15));
+  CHECK_THAT(welch_satterthwaite({{4.0, 4.0}, {4.0, kInfiniteDof}}), WithinRel(16.0, 1e-15));
+  CHECK(std::isinf(welch_satterthwaite({{1.0, kInfiniteDof}, {2.0, kInfiniteDof}})));
+  CHECK(std::isinf(welch_satterthwaite({})));
+}
+
+TEST_CASE("The coverage factor is Student's t quantile (GUM Table G.2)", "[uncertainty]") {
+  // Two-sided 95 % quantiles of Student's t, as every t table prints them
+  // (GUM Table G.2 to two decimals: 12.71, 2.78, 2.23, 2.09, 1.96).
+  CHECK_THAT(coverage_factor(1.0), WithinAbs(12.706, 0.0005));
+  CHECK_THAT(coverage_factor(4.0), WithinAbs(2.776, 0.0005));
+  CHECK_THAT(coverage_factor(10.0), WithinAbs(2.228, 0.0005));
+  CHECK_THAT(coverage_factor(20.0), WithinAbs(2.086, 0.0005));
+  CHECK_THAT(coverage_factor(kInfiniteDof), WithinAbs(1.960, 0.0005));
+  // nu_eff truncated to the integer below (GUM G.4.1): H.1.6's 16.76 takes t(16).
+  CHECK(coverage_factor(16.76) == coverage_factor(16.0));
+  CHECK_THAT(coverage_factor(16.0, 0.99), WithinAbs(2.921, 0.0005));
+}
+
+TEST_CASE("Each input says how its uncertainty was evaluated", "[uncertainty]") {
+  const Analysis a = analyse(parse_scene(test::nelson_olsson_text()));
+  // Ten trials scattering by more than the 0.01 s resolution: Type A, the
+  // mean's t with 9 degrees of freedom; the rest are stated, Type B.
+  const BudgetEntry& period = entry(a, "timing.period");
+  CHECK(period.evaluation.type == 'A');
+  CHECK(period.evaluation.distribution == Distribution::student_t);
+  CHECK(period.evaluation.dof == 9.0);
+  const BudgetEntry& length = entry(a, "length");
+  CHECK(length.evaluation.type == 'B');
+  CHECK(length.evaluation.distribution == Distribution::normal);
+  CHECK(std::isinf(length.evaluation.dof));
+  double shares = 0.0;
+  for (const auto& b : a.budget) shares += b.variance_share;
+  CHECK_THAT(shares, WithinRel(1.0, 1e-12));
+  // g's nu_eff by the formula from the budget's own rows; k and U from it.
+  std::vector<VarianceComponent> components;
+  for (const auto& b : a.budget) components.push_back({b.contribution * b.contribution, b.evaluation.dof});
+  REQUIRE(a.g_expanded);
+  CHECK_THAT(a.g_expanded->effective_dof, WithinRel(welch_satterthwaite(components), 1e-12));
+  CHECK(a.g_expanded->effective_dof > 9.0);  // the Type B inputs add variance without dof
+  CHECK_THAT(a.g_expanded->expanded, WithinRel(a.g_expanded->coverage_factor * *a.g.uncertainty, 1e-15));
+
+  nlohmann::json doc = nlohmann::json::parse(test::nelson_olsson_text());
+  SECTION("an amplitude not recorded is rectangular") {
+    doc["amplitude"] = "not recorded";
+    const Analysis b = analyse(parse_scene(doc.dump()));
+    CHECK(entry(b, "amplitude").evaluation.distribution == Distribution::rectangular);
+    CHECK(entry(b, "amplitude").evaluation.type == 'B');
+  }
+  SECTION("a single trial read to a resolution is rectangular") {
+    doc["timing"]["trials"] = {347.84};
+    const Analysis b = analyse(parse_scene(doc.dump()));
+    CHECK(entry(b, "timing.period").evaluation.distribution == Distribution::rectangular);
+    CHECK(std::isinf(b.g_expanded->effective_dof));
+    CHECK_THAT(b.g_expanded->coverage_factor, WithinAbs(1.960, 0.0005));
+  }
+  SECTION("equal trials whose resolution is the floor are rectangular, Type B") {
+    doc["timing"]["trials"] = {347.84, 347.84, 347.84};
+    const Analysis b = analyse(parse_scene(doc.dump()));
+    CHECK(entry(b, "timing.period").evaluation.type == 'B');
+    CHECK(entry(b, "timing.period").evaluation.distribution == Distribution::rectangular);
+  }
+}
+
+TEST_CASE("A decay fit's alpha and beta are Type A with the fit's degrees of freedom", "[uncertainty]") {
+  const ParsedScene s = parse_scene(test::read_text(std::string(PENDULUM_DATA_DIR) + "/nelson_olsson_1986_decay.json"));
+  const Analysis a = analyse(s);
+  REQUIRE(a.decay_fit);
+  const BudgetEntry& alpha = entry(a, "decay.alpha");
+  CHECK(alpha.evaluation.type == 'A');
+  if (alpha.evaluation.distribution == Distribution::student_t) CHECK(alpha.evaluation.dof == a.decay_fit->dof);
+}
+
+TEST_CASE("Five stopwatch trials: the expanded interval covers g 95 % of the time, k = 2 about 88 %",
+          "[uncertainty][coverage]") {
+  // The truth: g = 9.81 m/s^2, a 1 m pendulum swung to 5 deg; the model's
+  // own period for them (found by reducing the noiseless scene and scaling
+  // T by sqrt(g'/g), g going as 1/T^2). Each experiment times 10 oscillations
+  // five times with a hand's 0.1 s scatter, and reads the length (+- 0.5 mm)
+  // and the amplitude (+- 0.5 deg) once: timing gives about 99 % of u(g)^2.
+  constexpr double kTrueG = 9.81, kLength = 1.0, kAmplitude = 5.0, kHand = 0.1;
+  double period = 2.0 * kPi * std::sqrt(kLength / kTrueG);
+  for (int i = 0; i < 3; ++i) {
+    const double g = analyse(parse_scene(stopwatch_scene({10 * period, 10 * period}, kLength, kAmplitude).dump())).g.value;
+    period *= std::sqrt(g / kTrueG);
+  }
+  NormalDeviates noise(20261206);
+  constexpr int kExperiments = 2000;
+  int covered = 0, covered_by_two = 0;
+  double least_dof = kInfiniteDof, most_dof = 0.0;
+  for (int e = 0; e < kExperiments; ++e) {
+    std::vector<double> trials;
+    for (int t = 0; t < 5; ++t) trials.push_back(10 * period + kHand * noise.next());
+    const double length = kLength + 0.0005 * noise.next(), amplitude = kAmplitude + 0.5 * noise.next();
+    const Analysis a = analyse(parse_scene(stopwatch_scene(trials, length, amplitude).dump()));
+    const double error = std::abs(a.g.value - kTrueG);
+    covered += error <= a.g_expanded->expanded;
+    covered_by_two += error <= 2.0 * *a.g.uncertainty;
+    least_dof = std::min(least_dof, a.g_expanded->effective_dof);
+    most_dof = std::max(most_dof, a.g_expanded->effective_dof);
+  }
+  // Binomial standard error of a 95 % rate over 2000: sqrt(0.95 x 0.05/2000) = 0.0049.
+  const double rate = double(covered) / kExperiments, rate_two = double(covered_by_two) / kExperiments;
+  INFO("expanded: " << rate << ", k = 2: " << rate_two << ", nu_eff " << least_dof << " to " << most_dof);
+  // Welch-Satterthwaite never gives fewer than its fewest (the period's 4);
+  // a small scatter leaves the Type B rows a larger share, and more.
+  CHECK(least_dof >= 4.0);
+  CHECK(most_dof > least_dof);
+  CHECK_THAT(rate, WithinAbs(0.95, 3 * 0.0049));
+  // P(|t_4| < 2) = 0.8839 (t_4's CDF in closed form), binomial error 0.0072.
+  CHECK_THAT(rate_two, WithinAbs(0.8839, 3 * 0.0072));
+}
+
+namespace {
+
+/// A bare scene whose only uncertain input is its amplitude, released
+/// anywhere in [3, 15] deg (the hand release of docs/scene.md): g(theta0) =
+/// 4 pi^2 l/T^2 (2K(sin(theta0/2))/pi)^2, every other correction skipped.
+constexpr double kLength = 1.0, kPeriod = 2.01, kLow = 3.0 * kPi / 180.0, kHigh = 15.0 * kPi / 180.0;
+double g_at(double theta0) {
+  const double factor = 2.0 * std::comp_ellint_1(std::sin(theta0 / 2.0)) / kPi;  // std takes the modulus k
+  return 4.0 * kPi * kPi * kLength / (kPeriod * kPeriod) * factor * factor;
+}
+std::string amplitude_only_scene() {
+  return nlohmann::json{{"schema", "pendulum-g/scene/1"},
+                        {"timing", {{"oscillations_per_trial", 1}, {"unit", "s"}, {"trials", {kPeriod}}, {"uncertainty", 1e-12}}},
+                        {"length", {{"value", kLength}, {"unit", "m"}}},
+                        {"amplitude", {{"range", {3, 15}}, {"unit", "deg"}}}}
+      .dump();
+}
+
+}  // namespace
+
+TEST_CASE("Monte Carlo: g through theta0^2 with theta0 rectangular, against its exact distribution",
+          "[uncertainty][monte_carlo]") {
+  // theta0 ~ U(a, b) and g increasing and convex in it: g's quantiles are
+  // g(a + p (b - a)), its density falls, so the shortest 95 % interval is
+  // [g(a), g(a + 0.95 (b - a))]. Mean and standard deviation by Simpson's rule
+  // over 2000 intervals of theta0 (error ~1e-16 of g for this smooth g).
+  constexpr int kIntervals = 2000;
+  double mean = 0.0, square = 0.0;
+  for (int i = 0; i <= kIntervals; ++i) {
+    const double w = (i == 0 || i == kIntervals) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+    const double g = g_at(kLow + (kHigh - kLow) * i / kIntervals);
+    mean += w * g / (3.0 * kIntervals);
+    square += w * g * g / (3.0 * kIntervals);
+  }
+  const double deviation = std::sqrt(square - mean * mean);
+  const ParsedScene s = parse_scene(amplitude_only_scene());
+  Analysis a = analyse(s);
+  const std::optional<MonteCarloResult> mc = monte_carlo(s, a, MonteCarloOptions{20261206, 0});
+  REQUIRE(mc);
+  INFO("draws " << mc->draws << ", tolerance " << mc->tolerance << "; mean " << mc->mean << " (exact " << mean
+                << "), u " << mc->standard_uncertainty << " (exact " << deviation << "), [" << mc->low << ", "
+                << mc->high << "] (exact [" << g_at(kLow) << ", " << g_at(kLow + 0.95 * (kHigh - kLow)) << "])");
+  // The adaptive run holds twice each statistic's standard error within the
+  // tolerance delta (S1 7.9.4): 2 delta is four of them.
+  CHECK_THAT(mc->mean, WithinAbs(mean, 2 * mc->tolerance));
+  CHECK_THAT(mc->standard_uncertainty, WithinAbs(deviation, 2 * mc->tolerance));
+  CHECK_THAT(mc->low, WithinAbs(g_at(kLow), 2 * mc->tolerance));
+  CHECK_THAT(mc->high, WithinAbs(g_at(kLow + 0.95 * (kHigh - kLow)), 2 * mc->tolerance));
+  // GUM's symmetric y +- 1.96 u misplaces both ends: S1 8 fails it, and
+  // names the amplitude; the same seed gives the same draws.
+  CHECK_FALSE(mc->validated);
+  CHECK(mc->bending_input == "amplitude");
+  const std::optional<MonteCarloResult> again = monte_carlo(s, a, MonteCarloOptions{20261206, 0});
+  CHECK(again->low == mc->low);
+  CHECK(again->draws == mc->draws);
+}
+
+TEST_CASE("Monte Carlo: GUM's interval where g is linear enough, and the t input that bends Nelson & Olsson's",
+          "[uncertainty][monte_carlo]") {
+  const ParsedScene s = parse_scene(test::nelson_olsson_text());
+  const Analysis a = analyse(s);
+  // Every input normal (the ten trials' mean drawn as a normal too): g is
+  // linear enough in them at these uncertainties (the amplitude known to
+  // +-0.3 deg), and S1 8 validates GUM's interval to the tolerance.
+  ParsedScene normal = s;
+  normal.evaluations.clear();
+  const Analysis an = analyse(normal);
+  const std::optional<MonteCarloResult> linear = monte_carlo(normal, an, MonteCarloOptions{7, 0});
+  REQUIRE(linear);
+  INFO("GUM " << an.g.value << " +- " << an.g_expanded->expanded << "; MC [" << linear->low << ", " << linear->high
+              << "], " << linear->draws << " draws, tolerance " << linear->tolerance);
+  CHECK(an.g_expanded->coverage_factor == coverage_factor(kInfiniteDof));
+  CHECK(linear->validated);
+  CHECK_THAT(linear->mean, WithinAbs(an.g.value, linear->tolerance));
+  // As read, the period is the mean of ten trials, t with 9 degrees of
+  // freedom (S1 6.4.9), whose share Welch-Satterthwaite's nu_eff = 53 gives
+  // too little width: the check names it, not the amplitude.
+  const std::optional<MonteCarloResult> mc = monte_carlo(s, a, MonteCarloOptions{7, 0});
+  REQUIRE(mc);
+  INFO("as read: MC [" << mc->low << ", " << mc->high << "], " << mc->draws << " draws");
+  CHECK_FALSE(mc->validated);
+  CHECK(mc->bending_input == "timing.period");
+  // Five trials where the timing dominates: the mean of 5 readings drawn as
+  // value + u t_4 (S1 6.4.9) gives GUM's +- t_4 u as its 95 % interval (a
+  // normal draw would give +- 1.96 u, 29 % narrower).
+  const ParsedScene five = parse_scene(
+      stopwatch_scene({20.03, 20.11, 19.95, 20.07, 19.99}, 1.0, 5.0).dump());
+  const Analysis b = analyse(five);
+  const std::optional<MonteCarloResult> t = monte_carlo(five, b, MonteCarloOptions{11, 0});
+  REQUIRE(t);
+  INFO("GUM u " << *b.g.uncertainty << ", k " << b.g_expanded->coverage_factor << "; MC [" << t->low << ", "
+                << t->high << "], " << t->draws << " draws");
+  CHECK_THAT(t->high - t->low, WithinRel(2.0 * b.g_expanded->expanded, 0.02));
+}

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "pendulum/analysis.hpp"
-#include "pendulum/decay_simulation.hpp"
+#include "simulations/decay_simulation.hpp"
 #include "pendulum/monte_carlo.hpp"
 #include "pendulum/scene_json.hpp"
 #include "pendulum/uncertainty.hpp"

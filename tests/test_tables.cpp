@@ -293,6 +293,9 @@ TEST_CASE("Tables: single timings take their uncertainty from the scatter about 
   check_g(t);
   // chi2 gives no verdict: no status reason from it, whatever its size.
   for (const auto& r : a.status_reasons) CHECK(r.find("scatter about the fit") == std::string::npos);
+  // Each period's uncertainty is the scatter (S = 27 times the floor of 0.001 s/sqrt(12)):
+  // no period is called a miscount against the floor alone (six such warnings before).
+  for (const auto& w : a.warnings) CHECK(w.find("a miscounted oscillation") == std::string::npos);
   // With a sigma column nothing changes: the same rows with one stated.
   const SettingsTable stated = read_settings_table(kTables + "/xerr_yerr.csv");
   CHECK_FALSE(stated.sigma_from_scatter);

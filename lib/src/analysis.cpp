@@ -537,7 +537,10 @@ class Fit {
       }
       r.total_delta_T = b.value[kModelPeriod] - b.value[kIdealPeriod];
       r.total_delta_g = 2.0 * g * b.total_ratio;
-      if (r.residual && std::abs(*r.residual) > 3.0) {
+      // Periods whose uncertainty is the scatter about the fit cannot single one
+      // out: in that scatter a residual is at most sqrt(n - p) of it (under 3 to
+      // n - p = 9), while against the printed digits' floor every one is far off.
+      if (r.residual && std::abs(*r.residual) > 3.0 && !scene_.period_uncertainty_from_scatter) {
         out_.warnings.push_back(r.path + "timing: the period " + format_number(o.period, 7) + " s is " +
                                 format_number(std::abs(*r.residual), 2) + " of its standard uncertainties from the model's " +
                                 format_number(r.period_model, 7) + " s; a miscounted oscillation, a length misread, or an "

@@ -98,4 +98,8 @@ TEST_CASE("brief_reason: a status reason in a few words", "[status]") {
   CHECK(brief.size() <= pendulum::kBriefReasonLength);
   CHECK(brief.substr(brief.size() - 3) == "...");
   CHECK(long_reason.compare(0, brief.size() - 3, brief, 0, brief.size() - 3) == 0);  // cut, not rewritten
+  // A cut inside a parenthesis goes before it: no "(" is left open.
+  CHECK(brief_reason("bob.wire: 2.1 m long: is the wire's length (pivot to the top of the bob, along the wire as it "
+                     "hangs, with the tape held straight) in cm typed as m? fix bob.wire.length.unit") ==
+        "bob.wire: is the wire's length...");
 }

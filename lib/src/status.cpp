@@ -422,14 +422,20 @@ std::size_t code_points(const std::string& s) {
   return n;
 }
 
-/// `s` cut at a space to at most kBriefReasonLength code points, "..." added.
+/// `s` cut at a space to at most kBriefReasonLength code points, "..." added;
+/// before a parenthesis the cut would leave open (a reader would look for its close).
 std::string shortened(std::string s) {
   if (code_points(s) <= kBriefReasonLength) return s;
-  std::size_t cut = 0;
+  std::size_t cut = 0, open_at = 0;
+  int depth = 0;
   for (std::size_t i = 0, n = 0; i < s.size(); ++i) {
     if ((static_cast<unsigned char>(s[i]) & 0xC0) != 0x80 && ++n > kBriefReasonLength - 3) break;
-    if (s[i] == ' ') cut = i;
+    if (s[i] == ' ' && depth == 0) cut = i;
+    if (s[i] == '(' && depth++ == 0) open_at = i;
+    if (s[i] == ')' && depth > 0) --depth;
   }
+  if (depth > 0 && open_at < cut) cut = open_at;
+  while (cut > 0 && s[cut - 1] == ' ') --cut;
   return s.substr(0, cut) + "...";
 }
 

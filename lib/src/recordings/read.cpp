@@ -530,6 +530,7 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
 
 /// Throws, naming its line and column, if [text, text + size) holds a NUL byte.
 void refuse_binary(std::string_view text, std::size_t size, const std::string& file) {
+  if (size == 0) return;  // an empty file's data() may be null, which memchr may not take even for 0 bytes
   if (const void* nul = std::memchr(text.data(), '\0', size)) {
     const std::size_t at = static_cast<std::size_t>(static_cast<const char*>(nul) - text.data());
     const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.data(), text.data() + at, '\n'));

@@ -133,7 +133,11 @@ void add_recording_options(CLI::App& cmd, SwingOptions& options, std::string& se
   cmd.add_option_function<std::string>(
          "--range",
          [&options](const std::string& text) {
-           // A:B in seconds of the file's own clock.
+           // A:B in seconds of the file's own clock, or all: the whole record.
+           if (text == "all") {
+             options.whole_record = true;
+             return;
+           }
            const auto colon = text.find(':');
            const std::optional<double> a = decimal_number(std::string_view(text).substr(0, colon));
            const std::optional<double> b =
@@ -141,13 +145,13 @@ void add_recording_options(CLI::App& cmd, SwingOptions& options, std::string& se
            if (!a || !b || !std::isfinite(*a) || !std::isfinite(*b) || !(*a < *b)) {
              throw CLI::ValidationError("--range", "got \"" + one_line(text, kShownValueBytes, true) +
                                                        "\"; expected START:END in seconds of the recording's clock, "
-                                                       "START before END (10:200)");
+                                                       "START before END (10:200), or all");
            }
            options.range = std::make_pair(*a, *b);
          },
-         "Analyse only the samples or events from START to END (s, the file's own clock): START:END, e.g. to cut "
-         "a glitch import reported")
-      ->type_name("START:END");
+         "Analyse only the samples or events from START to END (s, the file's own clock): START:END; or all, the "
+         "whole record (default: the clean stretch, the release, the catch and the shorter side of a glitch cut)")
+      ->type_name("START:END|all");
   cmd.add_option("--stamps-per-period", options.stamps_per_period,
                  "Event stamps: 1 (a timer, a photogate's pendulum mode) or 2 (one a passage); default: 2 where "
                  "consecutive intervals alternate, else 1")

@@ -131,7 +131,8 @@ py::array_t<double> column(const Items& items, F f) {
 /// it summarises: the crossing times, each swing, each full period.
 py::dict read_recording(const std::string& path, const std::string& format, const std::string& set,
                         const std::string& columns, std::optional<double> bob_width, std::optional<double> length,
-                        std::optional<std::pair<double, double>> range, std::optional<int> stamps_per_period) {
+                        std::optional<std::pair<double, double>> range, bool whole_record,
+                        std::optional<int> stamps_per_period) {
   const std::optional<pendulum::RecordingFormat> family = pendulum::recording_family({format});
   if (!family) throw py::value_error("format: got '" + format + "'; expected " + pendulum::recording_family_words());
   if (range && !(std::isfinite(range->first) && std::isfinite(range->second) && range->first < range->second)) {
@@ -144,6 +145,7 @@ py::dict read_recording(const std::string& path, const std::string& format, cons
   options.bob_width = bob_width;
   options.length = length;
   options.range = range;
+  options.whole_record = whole_record;
   options.stamps_per_period = stamps_per_period;
   pendulum::RecordingSummary r;
   std::string json;
@@ -372,7 +374,7 @@ PYBIND11_MODULE(_core, m) {
         py::arg("allow_outside"), py::arg("model"), "The JSON of `pendulum-g fit-decay`.");
 
   m.def("read_recording", &read_recording, py::arg("path"), py::arg("format"), py::arg("set"), py::arg("columns"),
-        py::arg("bob_width"), py::arg("length"), py::arg("range"), py::arg("stamps_per_period"),
+        py::arg("bob_width"), py::arg("length"), py::arg("range"), py::arg("whole_record"), py::arg("stamps_per_period"),
         "`pendulum-g import RECORDING`'s JSON and the crossings, swings and periods as arrays.");
   m.def("read_table", &read_table, py::arg("path"), py::arg("columns"), py::arg("oscillations"),
         "`pendulum-g import --table TABLE`'s scene and its warnings.");

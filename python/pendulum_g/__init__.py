@@ -113,12 +113,17 @@ def read_recording(path, *, columns=None, set=None, format="auto", bob_width_m=N
     half swing: start_s, end_s, peak_time_s, amplitude_deg; NaN where the
     recording gives no amplitude) and "period_curve" (per full period: time_s
     from the first crossing, amplitude_deg, period_s). columns, set,
-    format, bob_width_m, length_m, range=(start, end) (s) and
-    stamps_per_period are import's --columns, --set, --format,
-    --bob-width-m, --length-m, --range and --stamps-per-period.
+    format, bob_width_m, length_m, range=(start, end) (s) or "all" (the
+    whole record; default: the clean stretch) and stamps_per_period are
+    import's --columns, --set, --format, --bob-width-m, --length-m, --range
+    and --stamps-per-period.
     """
+    whole = isinstance(range, str)
+    if whole and range != "all":
+        raise ValueError(f"range: got {range!r}; expected (start, end) in seconds or \"all\"")
     core = _core.read_recording(os.fspath(path), format, set or "", columns or "", bob_width_m, length_m,
-                                None if range is None else (float(range[0]), float(range[1])), stamps_per_period)
+                                None if range is None or whole else (float(range[0]), float(range[1])), whole,
+                                stamps_per_period)
     result = json.loads(core.pop("json"))
     result.update(core)
     return result

@@ -74,9 +74,15 @@ std::size_t RecordingReader::read(Object& o, ParsedScene& out) {
                    "got \"\"; expected each column's role and unit in file order (\"t:s,theta:deg\")");
   SwingOptions options;
   if (o.has("bob_width")) options.bob_width = quantity(o, "bob_width", Dimension::length, Range::positive).value;
-  if (o.has("range")) {
+  if (o.has("range") && o.at("range").is_string()) {
+    // "all": the whole record, release, catch and glitches included.
+    PENDULUM_FAIL_IF(o.text("range") != "all", o.path("range"),
+                     "got " + shown(o.at("range")) + "; expected \"all\" (the whole record) or an object (the time "
+                     "range to analyse: from, to, unit)");
+    options.whole_record = true;
+  } else if (o.has("range")) {
     // {"from": A, "to": B, "unit": "s"}: the file's own clock, as import --range A:B.
-    Object range(o.at("range"), o.path("range"), "an object (the time range to analyse: from, to, unit)");
+    Object range(o.at("range"), o.path("range"), "an object (the time range to analyse: from, to, unit), or \"all\"");
     const double factor = unit_at(range, "unit", Dimension::time).factor;
     const double from = finite_number(range.at("from"), [&] { return range.path("from"); }, "a time") * factor;
     const double to = finite_number(range.at("to"), [&] { return range.path("to"); }, "a time") * factor;
@@ -92,14 +98,15 @@ std::size_t RecordingReader::read(Object& o, ParsedScene& out) {
   const std::string file = resolve(o, "recording", "recordings");
   const auto same = [&](const Done& d) {
     return d.file == file && d.format == recording_format_name(format) && d.set == set &&
-           d.bob_width == options.bob_width && d.summary.column_spec == columns && d.range == options.range;
+           d.bob_width == options.bob_width && d.summary.column_spec == columns && d.range == options.range &&
+           d.whole_record == options.whole_record;
   };
   auto it = std::find_if(done_.begin(), done_.end(), same);
   if (it == done_.end()) {
     RecordingLimits limits;
     limits.within = within();
     try {
-      done_.push_back({file, recording_format_name(format), set, options.bob_width, options.range,
+      done_.push_back({file, recording_format_name(format), set, options.bob_width, options.range, options.whole_record,
                        analyse_recording(file, format, options, limits, set, columns)});
     } catch (const InputError& e) {
       throw InputError(at, e.what());  // "file: message" or "file:line:column: message"
@@ -143,6 +150,15 @@ void read_recorded_timing(Object& parent, const std::string& prefix, Observation
   out.assumptions.push_back(t.path() + ": from the recording " + r.file + " (" + recording_format_name(r.format) +
                             ", " + std::to_string(p.periods) + " full periods): one trial of all of them, the "
                             "period's uncertainty from the crossing times (docs/recordings.md)");
+  if (const auto& range = r.swings.analysed; range && !r.swings.cuts.empty()) {
+    std::string cut;
+    for (const Cut& c : r.swings.cuts) {
+      cut += (cut.empty() ? "" : "; ") + format_number(c.start, 6) + " to " + format_number(c.end, 6) + " s, " + c.why;
+    }
+    out.assumptions.push_back(t.path("recording") + ": " + r.file + ": the clean stretch " +
+                              format_number(range->first, 6) + " to " + format_number(range->second, 6) +
+                              " s is analysed (cut: " + cut + "); \"range\": \"all\" keeps the whole record");
+  }
   for (const Glitch& g : r.swings.glitches) {
     out.warnings.push_back(t.path("recording") + ": " + r.file + ": from " + format_number(g.start, 6) + " s to " +
                            format_number(g.end, 6) + " s the recording does not fit the swing (" +

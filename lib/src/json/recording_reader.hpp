@@ -49,6 +49,7 @@ class RecordingReader {
     std::string file, format, set;
     std::optional<double> bob_width;
     std::optional<std::pair<double, double>> range;
+    bool whole_record = false;
     RecordingSummary summary;
   };
   std::vector<Done> done_;

@@ -74,6 +74,22 @@ nlohmann::ordered_json summary_json(const RecordingSummary& r) {
   for (const Glitch& g : a.glitches) {
     out["glitches"].push_back({{"from", g.start}, {"to", g.end}, {"unit", "s"}, {"worst_robust_sigmas", g.worst}});
   }
+  // The stretch analysed (a typed range, or the clean stretch by default;
+  // null: the whole record), what the clean stretch cut, and the whole
+  // record's period beside it (swings.hpp, step 8).
+  out["analysed_range"] = a.analysed ? nlohmann::ordered_json{{"from", a.analysed->first},
+                                                              {"to", a.analysed->second},
+                                                              {"unit", "s"},
+                                                              {"by", a.cuts.empty() ? "range" : "clean stretch"}}
+                                     : nlohmann::ordered_json(nullptr);
+  out["cut"] = nlohmann::ordered_json::array();
+  for (const Cut& c : a.cuts) {
+    out["cut"].push_back({{"from", c.start}, {"to", c.end}, {"unit", "s"}, {"why", c.why}, {"worst_robust_sigmas", c.worst}});
+  }
+  out["whole_record_period"] = a.whole_record_period ? nlohmann::ordered_json{{"value", a.whole_record_period->value},
+                                                                              {"uncertainty", a.whole_record_period->uncertainty},
+                                                                              {"unit", "s"}}
+                                                     : nlohmann::ordered_json(nullptr);
   // What the reader decided and dropped, then what the analysis decided or
   // mended; each note with the line it names (null: none).
   out["notes"] = nlohmann::ordered_json::array();

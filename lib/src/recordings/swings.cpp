@@ -1014,27 +1014,8 @@ std::string no_amplitude_reason(const Recording& r, const Signal& sig, const Swi
   return "fewer than 8 swings, or fewer than half of them, gave a peak (a half swing needs 7 samples for one)";
 }
 
-}  // namespace
-
-SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const SwingOptions& options) {
-  if (options.range) {
-    SwingOptions whole = options;
-    whole.range.reset();
-    const Recording cut = restricted(r, *options.range, file);
-    SwingAnalysis out = analyse_swings(cut, file, whole);
-    out.notes.insert(out.notes.begin(),
-                     {0, "analysed from " + seconds(options.range->first) + " to " + seconds(options.range->second) +
-                             " (--range, a scene's \"range\"): " + std::to_string(cut.time.size()) + " of " +
-                             std::to_string(r.time.size()) + (r.kind == SignalKind::angular_rate ||
-                                                                      r.kind == SignalKind::acceleration ||
-                                                                      r.kind == SignalKind::linear_acceleration ||
-                                                                      r.kind == SignalKind::angle ||
-                                                                      r.kind == SignalKind::position ||
-                                                                      r.kind == SignalKind::unknown
-                                                                  ? " samples"
-                                                                  : " events")});
-    return out;
-  }
+/// Steps 1 to 7 on all of `r`.
+SwingAnalysis analyse_record(const Recording& r, const std::string& file, const SwingOptions& options) {
   // The clock's resolution (step 6): the reader's quantum where stamps
   // repeat; for events (stamps, gate changes), also the decimals the file
   // printed its times with. Not for samples: a regular clock printed to its
@@ -1388,6 +1369,92 @@ SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const 
     out.period_curve.push_back(p);
   }
   return out;
+}
+
+/// What a cut of the record from `from` to `to` (s) holds, for its note:
+/// the release (a glitch from the first crossing), the catch (one to the
+/// last), the shorter side of a glitch inside.
+Cut describe_cut(double from, double to, const SwingAnalysis& whole) {
+  Cut k{from, to, "", 0.0};
+  bool release = false, end = false, inside = false;
+  for (const Glitch& g : whole.glitches) {
+    if (!(g.start < to && g.end > from)) continue;
+    k.worst = std::max(k.worst, g.worst);
+    (g.start == whole.crossings.front().time ? release : g.end == whole.crossings.back().time ? end : inside) = true;
+  }
+  for (const auto& [holds, what] : {std::pair{release, "the release"}, std::pair{inside, "the shorter side of a glitch"},
+                                    std::pair{end, "the catch or a glitchy end"}}) {
+    if (holds) k.why += (k.why.empty() ? "" : " and ") + std::string(what);
+  }
+  return k;
+}
+
+/// Step 8: the longest run of crossings free of `whole`'s glitches,
+/// analysed alone, with what it cut; `whole` itself where no run holds three
+/// periods or the run gives no analysis of its own (its notes say why).
+SwingAnalysis clean_stretch_of(const Recording& r, const std::string& file, const SwingOptions& options,
+                               SwingAnalysis whole) {
+  const std::vector<Crossing>& c = whole.crossings;
+  const auto [first, last] = clean_stretch(c, whole.glitches);
+  if (last < first + 7 || last - first < 3 * static_cast<std::size_t>(whole.crossings_per_period)) return whole;
+  const double a = c[first].time, b = c[last].time;
+  // A quarter of an interval beyond each end crossing: the samples its line needs, not the next crossing's.
+  const double margin = 0.25 * (b - a) / static_cast<double>(last - first);
+  const std::pair range{a - margin, b + margin};
+  SwingOptions inner = options;
+  inner.whole_record = true;
+  SwingAnalysis out;
+  try {
+    out = analyse_record(restricted(r, range, file), file, inner);
+  } catch (const InputError& e) {
+    whole.notes.push_back({0, "the stretch without glitches, " + format_number(a, 6) + ":" + format_number(b, 6) +
+                                  " s, gives no analysis of its own (" + one_line(e.what(), 160) +
+                                  "): the whole record's is kept"});
+    return whole;
+  }
+  if (first > 0) out.cuts.push_back(describe_cut(c.front().time, a, whole));
+  if (last + 1 < c.size()) out.cuts.push_back(describe_cut(b, c.back().time, whole));
+  std::string text = "the clean stretch " + format_number(range.first, 6) + ":" + format_number(range.second, 6) +
+                     " s is analysed, by default: cut ";
+  for (std::size_t k = 0; k < out.cuts.size(); ++k) {
+    const Cut& x = out.cuts[k];
+    text += (k ? "; " : "") + format_number(x.start, 6) + ":" + format_number(x.end, 6) + " s, " + x.why + " (" +
+            format_number(x.worst, 3) + " robust sigmas)";
+  }
+  const PeriodEstimate& p = whole.period;
+  text += ". The whole record (--range all, a scene's \"range\": \"all\") gives " + seconds(p.value, 8) + " +- " +
+          seconds(p.uncertainty, 2) + ", " +
+          format_number(std::fabs(p.value - out.period.value) / std::hypot(p.uncertainty, out.period.uncertainty), 2) +
+          " sigmas from the clean stretch's";
+  out.notes.insert(out.notes.begin(), {0, text});
+  out.analysed = range;
+  out.whole_record_period = p;
+  return out;
+}
+
+}  // namespace
+
+SwingAnalysis analyse_swings(const Recording& r, const std::string& file, const SwingOptions& options) {
+  if (options.range) {
+    const Recording cut = restricted(r, *options.range, file);
+    SwingAnalysis out = analyse_record(cut, file, options);
+    out.notes.insert(out.notes.begin(),
+                     {0, "analysed from " + seconds(options.range->first) + " to " + seconds(options.range->second) +
+                             " (--range, a scene's \"range\"): " + std::to_string(cut.time.size()) + " of " +
+                             std::to_string(r.time.size()) + (r.kind == SignalKind::angular_rate ||
+                                                                      r.kind == SignalKind::acceleration ||
+                                                                      r.kind == SignalKind::linear_acceleration ||
+                                                                      r.kind == SignalKind::angle ||
+                                                                      r.kind == SignalKind::position ||
+                                                                      r.kind == SignalKind::unknown
+                                                                  ? " samples"
+                                                                  : " events")});
+    out.analysed = options.range;
+    return out;
+  }
+  SwingAnalysis whole = analyse_record(r, file, options);
+  if (options.whole_record || whole.glitches.empty()) return whole;
+  return clean_stretch_of(r, file, options, std::move(whole));
 }
 
 std::vector<double> swing_signal(const Recording& r) {

@@ -62,6 +62,14 @@
 ///     a gap, tracking lost, a glitchy end) is reported as a time range with
 ///     the period without it; where that differs from the whole record's by
 ///     more than its uncertainty, the difference joins the uncertainty.
+///  8. The clean stretch, by default: where step 7 finds glitches, the
+///     longest run of crossings free of them is analysed alone (steps 1 to
+///     7 on the samples from a quarter interval before its first crossing
+///     to a quarter after its last): the release (a glitch at the start),
+///     the catch or a glitchy end, and the shorter side of a glitch inside
+///     are cut, each named with its time range. `--range all` (a scene's
+///     `"range": "all"`) keeps the whole record, with step 7's allowance; a
+///     typed range wins over both.
 
 #include <array>
 #include <optional>
@@ -114,6 +122,14 @@ struct Glitch {
   double worst = 0.0;  ///< the largest |interval residual| in it, in robust sigmas
 };
 
+/// A stretch cut from the record by default (step 8).
+struct Cut {
+  double start = 0.0;  ///< (s, the file's clock)
+  double end = 0.0;    ///< (s)
+  std::string why;     ///< "the release", "the catch or a glitchy end", "the shorter side of a glitch"
+  double worst = 0.0;  ///< the largest |interval residual| of the glitches in it, in robust sigmas
+};
+
 /// One point of the period-against-amplitude curve: one full period.
 struct PeriodPoint {
   double time = 0.0;       ///< (s) of its middle, from the first crossing
@@ -130,6 +146,9 @@ struct SwingOptions {
   /// Only the samples or events with time in [first, second] (s, the file's
   /// own clock) are analysed: `import --range`, a scene's `"range"`.
   std::optional<std::pair<double, double>> range;
+  /// The whole record, glitches, release and catch included (`--range
+  /// all`, a scene's `"range": "all"`); by default the clean stretch (step 8).
+  bool whole_record = false;
   /// Event stamps: 1 (one per period: a hand timer, a photogate's pendulum
   /// mode) or 2 (one per passage); by default 2 where the intervals alternate
   /// (a gate off the lowest point), else 1.
@@ -182,8 +201,17 @@ struct SwingAnalysis {
   /// when the recording gives no amplitudes); no sigmas, so the decay fit
   /// scales its covariance by the residual variance.
   DecayData decay;
-  /// Stretches that do not fit the swing, in time order (step 7).
+  /// Stretches that do not fit the swing, in time order (step 7), within
+  /// the stretch analysed.
   std::vector<Glitch> glitches;
+  /// The stretch analysed (s, the file's clock): a typed range or the clean
+  /// stretch (step 8); unset for the whole record.
+  std::optional<std::pair<double, double>> analysed;
+  /// What the clean stretch left out, in time order (step 8); empty for a
+  /// typed range or the whole record.
+  std::vector<Cut> cuts;
+  /// The whole record's period, where the clean stretch replaced it (step 8).
+  std::optional<PeriodEstimate> whole_record_period;
   /// What the analysis decided or mended, and why it found no amplitudes:
   /// a dropped stamp or a mended count (the text names its data row, from
   /// 1, and its time: a Recording holds no line numbers, so `line` is 0), a

@@ -35,9 +35,11 @@ TEST_CASE("import: a phone recording becomes timing and decay that a scene takes
   for (const auto& item : in_order.items()) keys.push_back(item.key());
   // The format and the set read (null here: no zip, PASCO run or Tracker
   // track), the five keys of before issue 19; then what the reader used,
-  // the glitches and the notes.
+  // the glitches, the stretch analysed, what it cut, the whole record's
+  // period beside it (issue 38), and the notes.
   CHECK(keys == std::vector<std::string>{"format", "set", "periods", "period", "amplitude_range", "timing", "decay",
-                                         "columns", "glitches", "notes"});
+                                         "columns", "glitches", "analysed_range", "cut", "whole_record_period",
+                                         "notes"});
   CHECK(out.at("format") == "phyphox");
   CHECK(out.at("periods") == 10);
   const double period = out.at("period").at("value").get<double>();

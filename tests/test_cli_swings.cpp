@@ -22,7 +22,7 @@ const std::string kGlitchy = std::string(PENDULUM_DATA_DIR) + "/recordings/track
 }  // namespace
 
 TEST_CASE("import: a track's glitchy end is found, and --range cuts it", "[cli][recordings][glitches]") {
-  const Run whole = run("import " + kGlitchy);
+  const Run whole = run("import --range all " + kGlitchy);
   REQUIRE(whole.status == 0);
   const json a = json::parse(whole.out);
   // Clicked carelessly from 130 s on (make_recordings, seed 20): one glitch,
@@ -49,6 +49,29 @@ TEST_CASE("import: a track's glitchy end is found, and --range cuts it", "[cli][
   };
   const double period = a.at("period").at("value"), sigma = a.at("period").at("uncertainty");
   CHECK(std::fabs(period - truth_within(0.0, 300.0)) < sigma);
+  CHECK(a.at("analysed_range").is_null());
+  CHECK(a.at("cut").empty());
+
+  // By default the glitchy end is cut (issue 38 item 1): the clean stretch
+  // is analysed, and says what it cut and what the whole record gives.
+  const Run clean = run("import " + kGlitchy);
+  REQUIRE(clean.status == 0);
+  const json c = json::parse(clean.out);
+  CHECK(c.at("glitches").empty());
+  REQUIRE(c.at("cut").size() == 1);
+  // The first pass's clean stretch showed the careless clicks' start: cut too.
+  CHECK(c.at("cut")[0].at("from").get<double>() <= g.at("from").get<double>());
+  CHECK(c.at("cut")[0].at("from").get<double>() > 125.0);
+  CHECK(c.at("cut")[0].at("to").get<double>() == g.at("to").get<double>());
+  CHECK(c.at("cut")[0].at("why") == "the catch or a glitchy end");
+  const json& range = c.at("analysed_range");
+  CHECK(range.at("by") == "clean stretch");
+  CHECK(range.at("to").get<double>() < g.at("from").get<double>() + 1.0);
+  CHECK(c.at("whole_record_period").at("value").get<double>() == period);
+  const double pc = c.at("period").at("value"), uc = c.at("period").at("uncertainty");
+  CHECK(uc < sigma / 5.0);
+  CHECK(std::fabs(pc - truth_within(range.at("from").get<double>(), range.at("to").get<double>())) < 4.0 * uc + 2e-5);
+  CHECK(c.at("notes")[0].at("text").get<std::string>().find("the clean stretch ") == 0);
 
   const Run cut = run("import --range 0:129 " + kGlitchy);
   REQUIRE(cut.status == 0);
@@ -81,21 +104,32 @@ TEST_CASE("A scene's range cuts a recording's glitch, without it the recording i
   without["timing"].erase("range");
   without["decay"]["data"].erase("range");
   const std::string copy = std::string(PENDULUM_DATA_DIR) + "/recordings/.glitchy_without_range.json";
-  {
-    FILE* f = std::fopen(copy.c_str(), "w");
+  const auto write_text = [](const std::string& path, const std::string& text) {
+    FILE* f = std::fopen(path.c_str(), "w");
     REQUIRE(f);
-    const std::string text = without.dump();
     std::fwrite(text.data(), 1, text.size(), f);
     std::fclose(f);
-  }
-  const Run w = run("reduce --format table " + copy);
+  };
+  write_text(copy, without.dump());
+  const Run w = run("reduce " + copy);
+  // Without the range the clean stretch is analysed by default (issue 38
+  // item 1), and the reduction says what was cut.
+  CHECK(w.status == 0);
+  const json wo = json::parse(w.out);
+  CHECK(std::fabs(wo.at("g").at("value").get<double>() - 9.80665) < 3.0 * wo.at("g").at("uncertainty").get<double>());
+  CHECK_THAT(wo.dump(), Contains("the clean stretch ") && Contains("the catch or a glitchy end") &&
+                            Contains("keeps the whole record"));
+  // "range": "all" keeps the whole record, whose glitch costs it its
+  // amplitudes (peak_outliers, c1a76f9): refused, naming the range that cuts it.
+  without["timing"]["range"] = "all";
+  without["decay"]["data"]["range"] = "all";
+  write_text(copy, without.dump());
+  const Run all = run("reduce --format table " + copy);
   std::remove(copy.c_str());
-  // Without the range the glitch costs the record its amplitudes (peak_outliers,
-  // c1a76f9): refused, naming the recording and the range that cuts the glitch.
-  CHECK(w.status == 1);
-  CHECK(w.out.empty());
-  CHECK_THAT(w.err, Contains("amplitude: missing, and the recording ") && Contains("tracker_glitchy_end.txt") &&
-                        Contains("too few for the smooth curve") && Contains("a \"range\" in timing cuts a stretch"));
+  CHECK(all.status == 1);
+  CHECK(all.out.empty());
+  CHECK_THAT(all.err, Contains("amplitude: missing, and the recording ") && Contains("tracker_glitchy_end.txt") &&
+                          Contains("too few for the smooth curve") && Contains("a \"range\" in timing cuts a stretch"));
 }
 
 namespace {

@@ -443,7 +443,10 @@ TEST_CASE("A knock on the phone, 25 times the swing, loses no crossing, makes no
         for (auto& c : r.channels) c[k] *= 25.0;
       }
     }
-    const SwingAnalysis a = analyse_swings(r, "sim");
+    // The whole record: by default step 8 cuts the knock's shorter side.
+    SwingOptions all;
+    all.whole_record = true;
+    const SwingAnalysis a = analyse_swings(r, "sim", all);
     CHECK(a.crossings.size() == clean.crossings.size());
     int swings_with_amplitude = 0;
     for (const auto& w : a.swings) {

@@ -444,6 +444,19 @@ def test_bad_recordings_raise_the_import_messages(tmp_path):
         pendulum_g.read_recording(scene, range=(5, 1))
 
 
+def test_range_all_reads_as_import_does():
+    # The clean stretch by default, the whole record with range="all" (issue 38).
+    glitchy = "data/recordings/tracker_glitchy_end.txt"
+    for args, kwargs in ((["import", glitchy], {}), (["import", "--range", "all", glitchy], {"range": "all"})):
+        run = cli(*args)
+        assert run.returncode == 0, run.stderr
+        got = in_source(lambda: pendulum_g.read_recording(glitchy, **kwargs))
+        assert {k: v for k, v in got.items() if k not in ARRAY_KEYS} == json.loads(run.stdout)
+        assert bool(got["cut"]) == (not kwargs)
+    with pytest.raises(ValueError, match="expected .start, end. in seconds or \"all\""):
+        pendulum_g.read_recording(glitchy, range="everything")
+
+
 def same_answer_recording(args, call):
     """The CLI fails with status 1 and call() raises its message."""
     run = cli(*args)

@@ -1390,34 +1390,61 @@ Cut describe_cut(double from, double to, const SwingAnalysis& whole) {
 }
 
 /// Step 8: the longest run of crossings free of `whole`'s glitches,
-/// analysed alone, with what it cut; `whole` itself where no run holds three
-/// periods or the run gives no analysis of its own (its notes say why).
+/// analysed alone, with what it cut; again while that run shows glitches of
+/// its own (the start of a careless stretch, which the glitch it led into
+/// had hidden), at most four times. `whole` itself where no run holds three
+/// periods or the first gives no analysis of its own (its notes say why).
 SwingAnalysis clean_stretch_of(const Recording& r, const std::string& file, const SwingOptions& options,
                                SwingAnalysis whole) {
-  const std::vector<Crossing>& c = whole.crossings;
-  const auto [first, last] = clean_stretch(c, whole.glitches);
-  if (last < first + 7 || last - first < 3 * static_cast<std::size_t>(whole.crossings_per_period)) return whole;
-  const double a = c[first].time, b = c[last].time;
-  // A quarter of an interval beyond each end crossing: the samples its line needs, not the next crossing's.
-  const double margin = 0.25 * (b - a) / static_cast<double>(last - first);
-  const std::pair range{a - margin, b + margin};
+  constexpr int kPasses = 4;
   SwingOptions inner = options;
   inner.whole_record = true;
-  SwingAnalysis out;
-  try {
-    out = analyse_record(restricted(r, range, file), file, inner);
-  } catch (const InputError& e) {
-    whole.notes.push_back({0, "the stretch without glitches, " + format_number(a, 6) + ":" + format_number(b, 6) +
-                                  " s, gives no analysis of its own (" + one_line(e.what(), 160) +
-                                  "): the whole record's is kept"});
-    return whole;
+  std::optional<SwingAnalysis> clean;
+  std::vector<Cut> cuts;
+  std::pair<double, double> range;
+  for (int pass = 0; pass < kPasses; ++pass) {
+    const SwingAnalysis& from = clean ? *clean : whole;
+    if (from.glitches.empty()) break;
+    const std::vector<Crossing>& c = from.crossings;
+    const auto [first, last] = clean_stretch(c, from.glitches);
+    if (last < first + 7 || last - first < 3 * static_cast<std::size_t>(from.crossings_per_period)) break;
+    const double a = c[first].time, b = c[last].time;
+    // A quarter of an interval beyond each end crossing: the samples its line needs, not the next crossing's.
+    const double margin = 0.25 * (b - a) / static_cast<double>(last - first);
+    SwingAnalysis next;
+    try {
+      next = analyse_record(restricted(r, {a - margin, b + margin}, file), file, inner);
+    } catch (const InputError& e) {
+      if (!clean) {
+        whole.notes.push_back({0, "the stretch without glitches, " + format_number(a, 6) + ":" + format_number(b, 6) +
+                                      " s, gives no analysis of its own (" + one_line(e.what(), 160) +
+                                      "): the whole record's is kept"});
+      }
+      break;
+    }
+    if (first > 0) cuts.push_back(describe_cut(c.front().time, a, from));
+    if (last + 1 < c.size()) cuts.push_back(describe_cut(b, c.back().time, from));
+    range = {a - margin, b + margin};
+    clean = std::move(next);
   }
-  if (first > 0) out.cuts.push_back(describe_cut(c.front().time, a, whole));
-  if (last + 1 < c.size()) out.cuts.push_back(describe_cut(b, c.back().time, whole));
+  if (!clean) return whole;
+  SwingAnalysis out = std::move(*clean);
+  // Cuts of successive passes that touch are one.
+  std::sort(cuts.begin(), cuts.end(), [](const Cut& x, const Cut& y) { return x.start < y.start; });
+  for (const Cut& x : cuts) {
+    if (out.cuts.empty() || x.start > out.cuts.back().end) {
+      out.cuts.push_back(x);
+      continue;
+    }
+    Cut& joined = out.cuts.back();
+    joined.end = std::max(joined.end, x.end), joined.worst = std::max(joined.worst, x.worst);
+    if (joined.why.find(x.why) == std::string::npos) joined.why += " and " + x.why;
+  }
+  cuts = out.cuts;
   std::string text = "the clean stretch " + format_number(range.first, 6) + ":" + format_number(range.second, 6) +
                      " s is analysed, by default: cut ";
-  for (std::size_t k = 0; k < out.cuts.size(); ++k) {
-    const Cut& x = out.cuts[k];
+  for (std::size_t k = 0; k < cuts.size(); ++k) {
+    const Cut& x = cuts[k];
     text += (k ? "; " : "") + format_number(x.start, 6) + ":" + format_number(x.end, 6) + " s, " + x.why + " (" +
             format_number(x.worst, 3) + " robust sigmas)";
   }

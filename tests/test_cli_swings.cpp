@@ -26,11 +26,13 @@ TEST_CASE("import: a track's glitchy end is found, and --range cuts it", "[cli][
   REQUIRE(whole.status == 0);
   const json a = json::parse(whole.out);
   // Clicked carelessly from 130 s on (make_recordings, seed 20): one glitch,
-  // from within a few periods of 130 s to the last crossing.
+  // to the last crossing. It is 57 % of the record, and its start (3 cm of
+  // scatter, 16 s) hides in the sigma that so large a glitch lifts; the
+  // clean stretch, without it, shows where it starts (below).
   REQUIRE(a.at("glitches").size() == 1);
   const json& g = a.at("glitches")[0];
   CHECK(g.at("from").get<double>() > 125.0);
-  CHECK(g.at("from").get<double>() < 140.0);
+  CHECK(g.at("from").get<double>() < 150.0);
   CHECK(g.at("to").get<double>() > 299.0);
   CHECK(g.at("unit") == "s");
   // Its period is honest about it: the truth within its (widened) uncertainty.
@@ -62,7 +64,9 @@ TEST_CASE("import: a track's glitchy end is found, and --range cuts it", "[cli][
   // The first pass's clean stretch showed the careless clicks' start: cut too.
   CHECK(c.at("cut")[0].at("from").get<double>() <= g.at("from").get<double>());
   CHECK(c.at("cut")[0].at("from").get<double>() > 125.0);
+  CHECK(c.at("cut")[0].at("from").get<double>() < 135.0);
   CHECK(c.at("cut")[0].at("to").get<double>() == g.at("to").get<double>());
+  CHECK(c.at("cut")[0].at("periods_carried").is_null());
   CHECK(c.at("cut")[0].at("why") == "the catch or a glitchy end");
   const json& range = c.at("analysed_range");
   CHECK(range.at("by") == "clean stretch");

@@ -84,7 +84,12 @@ nlohmann::ordered_json summary_json(const RecordingSummary& r) {
                                      : nlohmann::ordered_json(nullptr);
   out["cut"] = nlohmann::ordered_json::array();
   for (const Cut& c : a.cuts) {
-    out["cut"].push_back({{"from", c.start}, {"to", c.end}, {"unit", "s"}, {"why", c.why}, {"worst_robust_sigmas", c.worst}});
+    out["cut"].push_back({{"from", c.start},
+                          {"to", c.end},
+                          {"unit", "s"},
+                          {"why", c.why},
+                          {"worst_robust_sigmas", c.worst},
+                          {"periods_carried", c.periods_carried > 0.0 ? nlohmann::ordered_json(c.periods_carried) : nlohmann::ordered_json(nullptr)}});
   }
   out["whole_record_period"] = a.whole_record_period ? nlohmann::ordered_json{{"value", a.whole_record_period->value},
                                                                               {"uncertainty", a.whole_record_period->uncertainty},

@@ -208,7 +208,14 @@ double noise_sigma(const std::vector<double>& s) {
 }
 
 /// Least-squares line s = a + b (t - tm) through samples [i, j]; its zero.
+/// Where all their times are one (a clock printed to fewer digits than its
+/// frame rate needs), the window widens by a sample each side until two
+/// times differ: a line needs two.
 Crossing line_zero(const std::vector<double>& t, const std::vector<double>& s, std::size_t i, std::size_t j) {
+  while (t[i] == t[j] && (i > 0 || j + 1 < t.size())) {
+    if (i > 0) --i;
+    if (j + 1 < t.size()) ++j;
+  }
   const double n = static_cast<double>(j - i + 1);
   double tm = 0.0, sm = 0.0;
   for (std::size_t k = i; k <= j; ++k) tm += t[k], sm += s[k];
@@ -319,7 +326,9 @@ Extent extent(const std::vector<double>& s) {
 /// peak, h lay above every swing after it, and a knock of 1/fraction times
 /// the swing lost the rest of the record): the search starts again from the
 /// last crossing, once, with h from the least of the last four half swings'
-/// peaks, which a knock of up to three half swings leaves a swing's.
+/// peaks, which a knock of up to three half swings leaves a swing's, and
+/// of the record's swing level (sqrt 2 rms, `rms` robust: swing_level),
+/// which a longer knock (lost tracking: seconds of noise) does not reach.
 std::vector<Crossing> find_crossings(const std::vector<double>& t, const Signal& sig, double rms, double noise,
                                      double fraction, std::vector<std::size_t>& at) {
   const auto& s = sig.s;
@@ -357,7 +366,7 @@ std::vector<Crossing> find_crossings(const std::vector<double>& t, const Signal&
     if (k == s.size()) break;
     if (stalled) {
       retried = true;
-      h = std::max(fraction * *std::min_element(peaks.begin(), peaks.end()), floor);
+      h = std::max(fraction * std::min(*std::min_element(peaks.begin(), peaks.end()), std::sqrt(2.0) * rms), floor);
       k = at.back() + (out.back().samples - 1);  // the sample that made the last crossing
       last_beyond = k, state = s[k] > 0 ? 1 : -1;
       continue;
@@ -453,10 +462,15 @@ PeriodEstimate fit_crossing_times(const std::vector<Crossing>& c, int per_period
   const std::size_t n = c.size();
   // The index: i, or the amplitude-weighted u_{i+1} = u_i + 1 + DeltaT/T0(theta_i)
   // (Eq. 8, exact), in which the crossing times of a decaying swing lie on a line.
+  // Across a bridged glitch (steps > 1) the count runs on by its steps,
+  // each at the swing's smooth amplitude there.
   std::vector<double> u(n);
+  std::vector<long> count(n);
   const bool weighted_index = amplitudes.size() + 1 == n;
   for (std::size_t i = 1; i < n; ++i) {
-    u[i] = u[i - 1] + 1.0 + (weighted_index ? finite_amplitude_agm(amplitudes[i - 1]) : 0.0);
+    count[i] = count[i - 1] + c[i].steps;
+    const double steps = static_cast<double>(c[i].steps);  // added in this order, one step is as before to the bit
+    u[i] = u[i - 1] + steps + steps * (weighted_index ? finite_amplitude_agm(amplitudes[i - 1]) : 0.0);
   }
   const double centre = (u[0] + u[n - 1]) / 2.0;  // mid-range: the quadratic term then drops out of the mean
   // Without the amplitude-weighted index, a cubic term too: the finite-amplitude
@@ -482,7 +496,7 @@ PeriodEstimate fit_crossing_times(const std::vector<Crossing>& c, int per_period
   auto row = [&](std::size_t i) {
     const double x = u[i] - centre;
     Eigen::VectorXd r(q);
-    r[0] = 1.0, r[1] = x, r[2] = x * x, r[3] = i % 2 ? -1.0 : 1.0;
+    r[0] = 1.0, r[1] = x, r[2] = x * x, r[3] = count[i] % 2 ? -1.0 : 1.0;
     if (cubic) r[4] = x * x * x;
     return r;
   };
@@ -509,7 +523,7 @@ PeriodEstimate fit_crossing_times(const std::vector<Crossing>& c, int per_period
   Eigen::VectorXd g = Eigen::VectorXd::Zero(q);
   g[1] = 1.0;
   if (cubic) g[4] = half_range * half_range;
-  const double scale = per_period * (u[n - 1] - u[0]) / (n - 1.0);
+  const double scale = per_period * (u[n - 1] - u[0]) / static_cast<double>(count[n - 1]);
   p.value = scale * g.dot(beta);
   p.uncertainty = scale * std::sqrt(s2 * g.dot(inv * g) * p.inflation);
   // Each crossing's time is taken to carry the clock's whole q^2/12 (a line
@@ -517,7 +531,7 @@ PeriodEstimate fit_crossing_times(const std::vector<Crossing>& c, int per_period
   p.resolution_floor = scale * resolution_floor(u, quantum);
   p.uncertainty = std::max(p.uncertainty, p.resolution_floor);
   p.residual_rms = std::sqrt(s2);
-  p.periods = static_cast<int>((n - 1) / per_period);
+  p.periods = static_cast<int>(count[n - 1] / per_period);
   return p;
 }
 
@@ -638,51 +652,95 @@ Recording restricted(const Recording& r, std::pair<double, double> range, const 
   return out;
 }
 
-/// Step 7: stretches where the intervals between consecutive crossings (or
-/// stamps, per count: `index`) leave the swing. Each interval, per unit of
-/// index, is compared with the median of its own direction (index modulo
-/// `groups`) over its 10 neighbours of that direction on either side, in
-/// units of its own noise (sqrt(1/w_a + 1/w_b), w the crossings' weights)
-/// relative to the median's) and of the robust sigma of all (1.4826 median
-/// |e|, at least the q/sqrt(6) of two times on a clock of resolution q, and
-/// 1e-9 of the interval). With `lengths` (one per interval, in index
-/// steps: 1 + DeltaT/T0 of its swing's smooth amplitude) each interval is
-/// taken per its own length: a strong decay shortens the intervals by more
-/// than their noise from one to the next, and the median of such a
-/// monotonic window is the interval itself (e = 0 for nearly all, a robust
-/// sigma of nothing, and each interval the noise reorders an outlier).
-/// Beyond 6 robust sigmas is an outlier (1 in 5e8
-/// for normal noise); outliers 4 intervals apart or less are one stretch,
-/// stretches less than 10 periods apart are one, and one within 10 periods
-/// of the record's start or end reaches it (a glitchy end).
-std::vector<Glitch> find_glitches(const std::vector<Crossing>& c, const std::vector<long>& index, int groups,
+/// Step 7: stretches where the crossings (or stamps, per count: `index`)
+/// leave the swing. Each full period, the time from an entry to the one
+/// `per_period` entries on, per unit of index (none across more than two
+/// periods: a bridged glitch, a run of missed stamps), is compared with the
+/// median of its 10 neighbours on either side, in units of its own noise
+/// (sqrt(1/w_a + 1/w_b), w the entries' weights, relative to the median's)
+/// and of the robust sigma (the rules below; at least the q/sqrt(6) of two
+/// times on a clock of resolution q, and 1e-9 of the period). A full
+/// period, not a half: an offset between the two directions (a gyroscope's
+/// bias, a track's pivot off its vertical, a gate off the lowest point) moves
+/// the half swings' lengths apart, and where it drifts (a camera nudged, a
+/// bias warming up) it moved them by 20 robust sigmas on a clean track, but
+/// it cancels from every full period. With `lengths` (one per interval, in
+/// index steps: 1 + DeltaT/T0 of its swing's smooth amplitude) each period
+/// is taken per its own length, and without them less a quadratic drift:
+/// a strong decay shortens the periods by more than their noise from one
+/// to the next. Beyond 6 robust sigmas is an outlier (1 in 5e8 for normal
+/// noise); outliers 4 entries apart or less are one stretch, and one within
+/// 4 entries of an end reaches it. join_glitches makes glitches of them.
+std::vector<Glitch> outlier_stretches(const std::vector<Crossing>& c, const std::vector<long>& index, int per_period,
                                   const std::vector<double>& weight, double quantum,
                                   const std::vector<double>& lengths = {}) {
   constexpr double kOutlier = 6.0;
   constexpr std::size_t kJoin = 4, kNeighbours = 10;
-  const std::size_t n = c.size();
+  const std::size_t n = c.size(), span = static_cast<std::size_t>(per_period);
   std::vector<Glitch> out;
-  if (n < 8) return out;
-  std::vector<double> d(n - 1), sd(n - 1);
-  std::vector<int> group(n - 1);
-  for (std::size_t i = 0; i + 1 < n; ++i) {
-    const double steps = static_cast<double>(index[i + 1] - index[i]) * (lengths.empty() ? 1.0 : lengths[i]);
-    d[i] = (c[i + 1].time - c[i].time) / steps;
-    sd[i] = std::sqrt(1.0 / weight[i] + 1.0 / weight[i + 1]) / steps;
-    group[i] = static_cast<int>(index[i] % groups);
+  if (n < 8 || n <= span) return out;
+  // The full periods, from crossing at[v] to at[v] + span; none across a
+  // bridged glitch or a long run of missed stamps, whose mean over many
+  // periods is no period of its own.
+  std::vector<std::size_t> at;
+  std::vector<double> d, sd;
+  for (std::size_t i = 0; i + span < n; ++i) {
+    if (index[i + span] - index[i] > 2 * per_period) continue;
+    double steps = 0.0;
+    for (std::size_t k = i; k < i + span; ++k) {
+      steps += static_cast<double>(index[k + 1] - index[k]) * (lengths.empty() ? 1.0 : lengths[k]);
+    }
+    at.push_back(i);
+    d.push_back((c[i + span].time - c[i].time) / steps);
+    sd.push_back(std::sqrt(1.0 / weight[i] + 1.0 / weight[i + span]) / steps);
   }
-  std::vector<double> e(n - 1);
+  const std::size_t m = d.size();
+  if (m < 4) return out;
+  // Less a quadratic drift in time (least squares over the periods within
+  // 10 % of the median, again without what lies beyond 5 robust sigmas of
+  // it): a swing decaying without amplitudes to
+  // weight the index shortens its periods by more than their noise from one
+  // to the next, and the median of such a monotonic window is the period
+  // itself inside the record and is biased by the drift at its ends.
+  std::vector<double> r = d;
+  if (lengths.empty() && m >= 8) {
+    const double mid = (c[at.front()].time + c[at.back()].time) / 2.0;
+    const double half = std::max((c[at.back()].time - c[at.front()].time) / 2.0, 1e-300);
+    // A period 10 % off the median is a glitch (a lost count), whatever drifts.
+    const double typical = median_of(d);
+    std::vector<bool> use(m);
+    for (std::size_t i = 0; i < m; ++i) use[i] = std::fabs(d[i] - typical) < 0.1 * typical;
+    for (int round = 0; round < 2; ++round) {
+      Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+      Eigen::Vector3d atd = Eigen::Vector3d::Zero();
+      for (std::size_t i = 0; i < m; ++i) {
+        if (!use[i]) continue;
+        const double x = (c[at[i]].time - mid) / half;
+        const Eigen::Vector3d row(1.0, x, x * x);
+        ata += row * row.transpose(), atd += row * d[i];
+      }
+      const Eigen::Vector3d q = ata.ldlt().solve(atd);
+      if (!q.allFinite()) break;
+      for (std::size_t i = 0; i < m; ++i) {
+        const double x = (c[at[i]].time - mid) / half;
+        r[i] = d[i] - (q[0] + x * (q[1] + x * q[2]));
+      }
+      std::vector<double> spread(m);
+      std::transform(r.begin(), r.end(), spread.begin(), [](double x) { return std::fabs(x); });
+      const double robust = 1.4826 * median_of(spread);
+      for (std::size_t i = 0; i < m; ++i) use[i] = std::fabs(r[i]) <= 5.0 * robust;
+    }
+  }
+  // Against the median of its neighbours, itself left out: with itself in,
+  // a monotonic window's median is the period itself (e = 0 exactly for
+  // nearly all of a smooth record, and a robust sigma of nothing).
+  std::vector<double> e(m);
   std::vector<double> window;
-  for (std::size_t i = 0; i + 1 < n; ++i) {
-    window.clear();
-    std::size_t below = 0, above = 0;
-    for (std::size_t k = i; k-- > 0 && below < kNeighbours;) {
-      if (group[k] == group[i]) window.push_back(d[k]), ++below;
-    }
-    for (std::size_t k = i; k + 1 < n && above <= kNeighbours; ++k) {
-      if (group[k] == group[i]) window.push_back(d[k]), ++above;
-    }
-    e[i] = d[i] - median_of(window);
+  for (std::size_t i = 0; i < m; ++i) {
+    window.assign(r.begin() + static_cast<long>(i > kNeighbours ? i - kNeighbours : 0), r.begin() + static_cast<long>(i));
+    window.insert(window.end(), r.begin() + static_cast<long>(i) + 1,
+                  r.begin() + static_cast<long>(std::min(m, i + kNeighbours + 1)));
+    e[i] = r[i] - median_of(window);
   }
   const double typical_sd = median_of(sd);
   if (typical_sd > 0.0 && std::isfinite(typical_sd)) {
@@ -690,31 +748,68 @@ std::vector<Glitch> find_glitches(const std::vector<Crossing>& c, const std::vec
   }
   std::vector<double> abs_e(e.size());
   std::transform(e.begin(), e.end(), abs_e.begin(), [](double x) { return std::fabs(x); });
-  const double sigma = std::max({1.4826 * median_of(abs_e), quantum / std::sqrt(6.0), 1e-9 * std::fabs(median_of(d))});
+  // Where outliers by that sigma are everywhere, in more than half
+  // of the blocks of 10 periods in each third of the record (an event
+  // logger's hitches, a video's dropped frames), they are the noise, no
+  // glitch, and the sigma is the one that puts a fifth of the periods beyond
+  // 1.28 of it, as normal noise does. A glitch is local: a release, a catch,
+  // a jump, a stretch clicked carelessly (the last 57 % of a track, tested).
+  // The robust sigma from the 40th percentile of |e| (0.5244 sigma for
+  // normal noise), not the median: a glitchy stretch may be more than half
+  // the record (the last 57 % of a track clicked carelessly), and then the
+  // median |e| is the glitch's.
+  std::vector<double> sorted_e = abs_e;
+  std::nth_element(sorted_e.begin(), sorted_e.begin() + static_cast<long>(2 * m / 5), sorted_e.end());
+  const double robust = sorted_e[2 * m / 5] / 0.5244;
+  double sigma = std::max({robust, quantum / std::sqrt(6.0), 1e-9 * std::fabs(median_of(d))});
+  constexpr std::size_t kBlock = 10;
+  const std::size_t blocks = m / kBlock;
+  if (blocks >= 6) {
+    std::array<std::size_t, 3> struck{}, total{};
+    for (std::size_t k = 0; k < blocks; ++k) {
+      const auto from = abs_e.begin() + static_cast<long>(k * kBlock);
+      const std::size_t third = 3 * k / blocks;
+      ++total[third];
+      struck[third] += std::any_of(from, from + kBlock, [&](double x) { return x > kOutlier * sigma; });
+    }
+    if (2 * struck[0] > total[0] && 2 * struck[1] > total[1] && 2 * struck[2] > total[2]) {
+      std::vector<double> sorted = abs_e;
+      std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(4 * m / 5), sorted.end());
+      sigma = std::max(sigma, sorted[4 * m / 5] / 1.2816);
+    }
+  }
   if (!(sigma > 0.0)) return out;
-  std::optional<std::size_t> first, last;
+  std::optional<std::size_t> first, last;  // in full periods
   auto close = [&] {
     Glitch g;
-    g.start = *first <= kJoin ? c.front().time : c[*first].time;
-    g.end = *last + 1 + kJoin >= n - 1 ? c.back().time : c[*last + 1].time;
+    g.start = at[*first] <= kJoin ? c.front().time : c[at[*first]].time;
+    g.end = at[*last] + span + kJoin >= n - 1 ? c.back().time : c[at[*last] + span].time;
     for (std::size_t k = *first; k <= *last; ++k) g.worst = std::max(g.worst, std::fabs(e[k]) / sigma);
     out.push_back(g);
   };
-  for (std::size_t i = 0; i + 1 < n; ++i) {
+  for (std::size_t i = 0; i < m; ++i) {
     if (!(std::fabs(e[i]) > kOutlier * sigma)) continue;
-    if (first && i - *last > kJoin) close(), first.reset();
+    if (first && at[i] - at[*last] > kJoin) close(), first.reset();
     if (!first) first = i;
     last = i;
   }
   if (first) close();
-  // Stretches less than 10 periods apart are one (a glitchy end is many
-  // outliers among good-looking intervals), and one that comes within 10
-  // periods of an end reaches it.
-  const double reach = 10.0 * groups * median_of(d);
+  return out;
+}
+
+/// Step 7's stretches of outliers, joined: stretches less than 10 periods
+/// (s: `period`) apart are one (a glitchy end is many outliers among
+/// good-looking intervals), and one that comes within 5 periods of an end
+/// reaches it (a release's hand, a catch); neither more than a fifth of the
+/// record (a short one is no glitch end to end).
+std::vector<Glitch> join_glitches(const std::vector<Glitch>& stretches, const std::vector<Crossing>& c, double period) {
+  if (c.empty()) return {};
+  const double record = c.back().time - c.front().time;
+  const double reach = std::min(10.0 * period, record / 5.0), end_reach = std::min(5.0 * period, record / 5.0);
   std::vector<Glitch> merged;
-  for (Glitch g : out) {
-    if (g.start - c.front().time < reach) g.start = c.front().time;
-    if (c.back().time - g.end < reach) g.end = c.back().time;
+  for (Glitch g : stretches) {
+    if (g.start - c.front().time < end_reach) g.start = c.front().time;
+    if (c.back().time - g.end < end_reach) g.end = c.back().time;
     if (!merged.empty() && g.start - merged.back().end < reach) {
       merged.back().end = g.end, merged.back().worst = std::max(merged.back().worst, g.worst);
     } else {
@@ -971,7 +1066,8 @@ SwingAnalysis analyse_stamps(const Recording& r, const std::string& file, const 
   if (!(out.period.value > 0.0) || !std::isfinite(out.period.uncertainty)) {
     throw InputError(file, "no regular oscillation: the stamps give no period");
   }
-  out.glitches = find_glitches(m.stamps, m.count, per_period, std::vector<double>(m.stamps.size(), 1.0), quantum);
+  out.outliers = outlier_stretches(m.stamps, m.count, per_period, std::vector<double>(m.stamps.size(), 1.0), quantum);
+  out.glitches = join_glitches(out.outliers, m.stamps, out.period.value);
   report_glitches(out, [&](std::size_t a, std::size_t b) {
     MendedStamps part;
     part.stamps.assign(m.stamps.begin() + a, m.stamps.begin() + b + 1);
@@ -1015,7 +1111,48 @@ std::string no_amplitude_reason(const Recording& r, const Signal& sig, const Swi
 }
 
 /// Steps 1 to 7 on all of `r`.
-SwingAnalysis analyse_record(const Recording& r, const std::string& file, const SwingOptions& options) {
+/// A glitch inside the record whose count was carried across (step 8): the
+/// crossings between the good ones at `start` and `end` (s) are dropped and
+/// the one at `end` comes `steps` intervals after the one at `start`.
+struct Bridge {
+  double start = 0.0, end = 0.0;
+  long steps = 1;
+  double worst = 0.0;  ///< the glitch's largest |period residual|, in robust sigmas
+};
+
+/// The index of the crossing of `c` at time `t` (s), within a tenth of the
+/// interval after it (another analysis of the same samples moves crossings
+/// by far less: its mean and thresholds differ slightly); c.size() if none.
+std::size_t crossing_at(const std::vector<Crossing>& c, double t) {
+  const auto k = static_cast<std::size_t>(std::min_element(c.begin(), c.end(), [t](const Crossing& x, const Crossing& y) {
+                                             return std::fabs(x.time - t) < std::fabs(y.time - t);
+                                           }) - c.begin());
+  return k + 1 < c.size() && std::fabs(c[k].time - t) <= 0.1 * (c[k + 1].time - c[k].time) ? k : c.size();
+}
+
+/// Drops the crossings inside each bridge, with their sample windows `at`
+/// and gate `durations` where there are any, and sets the steps across it.
+/// A bridge whose ends are not crossings here is not applied, and a note
+/// says so.
+void apply_bridges(const std::vector<Bridge>& bridges, std::vector<Crossing>& c, std::vector<std::size_t>& at,
+                   std::vector<double>& durations, std::vector<RecordingNote>& notes) {
+  for (const Bridge& b : bridges) {
+    const std::size_t i = crossing_at(c, b.start), j = crossing_at(c, b.end);
+    if (i >= c.size() || j >= c.size() || j <= i) {
+      notes.push_back({0, "the glitch from " + seconds(b.start) + " to " + seconds(b.end) +
+                              " is not bridged here: its ends are no crossings of this stretch"});
+      continue;
+    }
+    c[j].steps = b.steps;
+    auto drop = [&](auto& v) {
+      if (!v.empty()) v.erase(v.begin() + static_cast<long>(i) + 1, v.begin() + static_cast<long>(j));
+    };
+    drop(c), drop(at), drop(durations);
+  }
+}
+
+SwingAnalysis analyse_record(const Recording& r, const std::string& file, const SwingOptions& options,
+                             const std::vector<Bridge>& bridges = {}) {
   // The clock's resolution (step 6): the reader's quantum where stamps
   // repeat; for events (stamps, gate changes), also the decimals the file
   // printed its times with. Not for samples: a regular clock printed to its
@@ -1046,8 +1183,11 @@ SwingAnalysis analyse_record(const Recording& r, const std::string& file, const 
     }
     out.crossings = find_crossings(r.time, sig, swing_level(sig.s, e.rms), out.noise, options.hysteresis_fraction, at);
   }
+  apply_bridges(bridges, out.crossings, at, durations, out.notes);
   const int cpp = out.crossings_per_period;
-  const int periods = out.crossings.empty() ? 0 : static_cast<int>((out.crossings.size() - 1) / cpp);
+  long count = 0;
+  for (std::size_t i = 1; i < out.crossings.size(); ++i) count += out.crossings[i].steps;
+  const int periods = static_cast<int>(count / cpp);
   if (periods < 3 || out.crossings.size() < 7) {
     throw InputError(file, "found " + std::to_string(out.crossings.size()) + " crossings (" +
                                std::to_string(periods) + " full periods); expected at least three swings");
@@ -1066,7 +1206,7 @@ SwingAnalysis analyse_record(const Recording& r, const std::string& file, const 
     w.start = out.crossings[i].time;
     w.end = out.crossings[i + 1].time;
     w.peak_time = (w.start + w.end) / 2.0;
-    if (!events) {
+    if (!events && out.crossings[i + 1].steps == 1) {  // a bridged glitch is no swing
       const auto [tp, value] = peak(r.time, sig.s, at[i], at[i + 1], w.start, w.end);
       w.peak_time = tp;
       raw[i] = value;
@@ -1161,6 +1301,7 @@ SwingAnalysis analyse_record(const Recording& r, const std::string& file, const 
           // RecordedSwing i runs from passage i to passage i + 1 round a turning point:
           // its amplitude is the mean of theirs.
           solve_with_t0([&](std::size_t i, double t0) {
+            if (out.crossings[i + 1].steps > 1) return kNaN;  // a bridged glitch
             const double sqrt_gl = options.length ? 2.0 * kPi * *options.length / t0
                                                   : kStandardGravity * t0 / (2.0 * kPi);
             double sum = 0.0;
@@ -1320,12 +1461,13 @@ SwingAnalysis analyse_record(const Recording& r, const std::string& file, const 
   std::vector<long> index(nc);
   std::vector<double> weight(nc, 1.0);
   for (std::size_t i = 0; i < nc; ++i) {
-    index[i] = static_cast<long>(i);
+    index[i] = i ? index[i - 1] + out.crossings[i].steps : 0;
     if (!events) weight[i] = out.crossings[i].slope * out.crossings[i].slope * out.crossings[i].samples;
   }
   std::vector<double> lengths;
   for (double theta_i : index_amplitudes) lengths.push_back(1.0 + finite_amplitude_agm(theta_i));
-  out.glitches = find_glitches(out.crossings, index, cpp, weight, quantum, lengths);
+  out.outliers = outlier_stretches(out.crossings, index, cpp, weight, quantum, lengths);
+  out.glitches = join_glitches(out.outliers, out.crossings, out.period.value);
   report_glitches(out, [&](std::size_t a, std::size_t b) {
     const std::vector<Crossing> part(out.crossings.begin() + a, out.crossings.begin() + b + 1);
     const std::vector<double> amplitudes =
@@ -1359,7 +1501,9 @@ SwingAnalysis analyse_record(const Recording& r, const std::string& file, const 
   for (std::size_t i = 0; i + cpp < nc; i += cpp) {
     PeriodPoint p;
     p.time = (out.crossings[i].time + out.crossings[i + cpp].time) / 2.0 - origin;
-    p.period = out.crossings[i + cpp].time - out.crossings[i].time;
+    long steps = 0;
+    for (int k = 1; k <= cpp; ++k) steps += out.crossings[i + k].steps;
+    p.period = (out.crossings[i + cpp].time - out.crossings[i].time) * cpp / static_cast<double>(steps);
     double sum = 0.0;
     int count = 0;
     for (int k = 0; k < cpp; ++k) {
@@ -1389,6 +1533,70 @@ Cut describe_cut(double from, double to, const SwingAnalysis& whole) {
   return k;
 }
 
+/// Step 8's count across `g`, a glitch inside `from`'s record: the bridge
+/// from the good crossing before it to the one after, where the count of
+/// half swings across is certain and the clock ran on. Each side must hold
+/// 3 periods and together more time than the glitch. The time across over
+/// the half swing on either side (the median full period of the 10 beside
+/// it, per interval) gives two counts; a decaying swing's half swings
+/// shorten monotonically, so the true count lies between them. Both must
+/// be within half an interval of the same whole number m of the parity the
+/// two crossings' directions say (the next candidate is then 1.5 intervals
+/// off), or within a quarter where the directions are not known (gate
+/// events, quarter swings). And the time across must be m mean half swings
+/// to within m times half their difference (the decay), half the
+/// alternation of the two directions' half swings for odd m, and 4 times
+/// the two sides' crossing scatter (1.4826 median |full period - median|
+/// / sqrt 2 a crossing): a clock that jumped, or a track whose zero moved,
+/// is no count to carry.
+std::optional<Bridge> bridge_of(const SwingAnalysis& from, const Glitch& g) {
+  constexpr std::size_t kPeriods = 10, kSidePeriods = 3;
+  const std::vector<Crossing>& c = from.crossings;
+  const std::size_t cpp = static_cast<std::size_t>(from.crossings_per_period);
+  const std::size_t i = crossing_at(c, g.start), j = crossing_at(c, g.end);
+  if (j >= c.size() || j <= i || i < kSidePeriods * cpp || c.size() - 1 - j < kSidePeriods * cpp) return std::nullopt;
+  const double across = c[j].time - c[i].time;
+  if (!(across < c[i].time - c.front().time + c.back().time - c[j].time)) return std::nullopt;
+  std::vector<long> count(c.size());
+  for (std::size_t k = 1; k < c.size(); ++k) count[k] = count[k - 1] + c[k].steps;
+  struct Side {
+    double half = kNaN, scatter = kNaN, alternation = 0.0;
+  };
+  auto side = [&](std::size_t lo, std::size_t hi) {  // the full periods within crossings [lo, hi]
+    std::vector<double> d, kind[2];
+    for (std::size_t k = lo; k + cpp <= hi; ++k) {
+      if (count[k + cpp] - count[k] != static_cast<long>(cpp)) continue;
+      d.push_back((c[k + cpp].time - c[k].time) / static_cast<double>(cpp));
+      kind[count[k] % 2].push_back(c[k + 1].time - c[k].time);
+    }
+    Side s;
+    if (d.size() < 3) return s;
+    s.half = median_of(d);
+    for (double& x : d) x = std::fabs(x - s.half);
+    s.scatter = 1.4826 * median_of(d) * static_cast<double>(cpp) / std::sqrt(2.0);
+    if (!kind[0].empty() && !kind[1].empty()) s.alternation = std::fabs(median_of(kind[0]) - median_of(kind[1])) / 2.0;
+    return s;
+  };
+  const Side before = side(i > kPeriods * cpp ? i - kPeriods * cpp : 0, i);
+  const Side after = side(j, std::min(c.size() - 1, j + kPeriods * cpp));
+  const double x_before = across / before.half, x_after = across / after.half;
+  if (!std::isfinite(x_before + x_after + before.scatter + after.scatter)) return std::nullopt;
+  const bool directions = cpp == 2 && c[i].slope != 0.0 && c[j].slope != 0.0;
+  const double mean = (x_before + x_after) / 2.0;
+  long steps = std::lround(mean);
+  if (directions) {
+    const long parity = (c[i].slope > 0.0) == (c[j].slope > 0.0) ? 0 : 1;
+    steps = 2 * std::lround((mean - parity) / 2.0) + parity;
+  }
+  const double m = static_cast<double>(steps), tolerance = directions ? 0.5 : 0.25;
+  if (steps < 1 || std::fabs(x_before - m) >= tolerance || std::fabs(x_after - m) >= tolerance) return std::nullopt;
+  const double allowed = m * std::fabs(before.half - after.half) / 2.0 +
+                         (steps % 2 ? std::max(before.alternation, after.alternation) : 0.0) +
+                         4.0 * std::hypot(before.scatter, after.scatter);
+  if (std::fabs(across - m * (before.half + after.half) / 2.0) > allowed) return std::nullopt;
+  return Bridge{c[i].time, c[j].time, steps};
+}
+
 /// Step 8: the longest run of crossings free of `whole`'s glitches,
 /// analysed alone, with what it cut; again while that run shows glitches of
 /// its own (the start of a careless stretch, which the glitch it led into
@@ -1396,24 +1604,59 @@ Cut describe_cut(double from, double to, const SwingAnalysis& whole) {
 /// periods or the first gives no analysis of its own (its notes say why).
 SwingAnalysis clean_stretch_of(const Recording& r, const std::string& file, const SwingOptions& options,
                                SwingAnalysis whole) {
-  constexpr int kPasses = 4;
+  constexpr int kPasses = 8;
   SwingOptions inner = options;
   inner.whole_record = true;
   std::optional<SwingAnalysis> clean;
   std::vector<Cut> cuts;
+  std::vector<Bridge> bridges;
   std::pair<double, double> range;
   for (int pass = 0; pass < kPasses; ++pass) {
     const SwingAnalysis& from = clean ? *clean : whole;
     if (from.glitches.empty()) break;
     const std::vector<Crossing>& c = from.crossings;
-    const auto [first, last] = clean_stretch(c, from.glitches);
+    // Step 7's stretches inside the record, bridged where the count across
+    // is certain; one that joins a glitch at an end (a release, a catch, a
+    // swing dying into the noise) is cut with it.
+    std::vector<Bridge> spans = bridges;
+    std::vector<Glitch> unbridged;
+    auto at_an_end = [&](const Glitch& g) {
+      return std::any_of(from.glitches.begin(), from.glitches.end(), [&](const Glitch& j) {
+        return (j.start == c.front().time || j.end == c.back().time) && g.start < j.end && g.end > j.start;
+      });
+    };
+    for (Glitch g : from.outliers) {
+      if (at_an_end(g)) {
+        unbridged.push_back(g);
+        continue;
+      }
+      // A stretch that touches a bridge (its ends showed a glitch) is one with it.
+      for (const Bridge& x : spans) {
+        if (g.start <= x.end && x.start <= g.end) {
+          g.start = std::min(g.start, x.start), g.end = std::max(g.end, x.end), g.worst = std::max(g.worst, x.worst);
+        }
+      }
+      std::optional<Bridge> b = bridge_of(from, g);
+      if (!b) {
+        unbridged.push_back(g);
+        continue;
+      }
+      b->worst = g.worst;
+      spans.erase(std::remove_if(spans.begin(), spans.end(),
+                                 [&](const Bridge& x) { return x.start < b->end && x.end > b->start; }),
+                  spans.end());
+      spans.push_back(*b);
+    }
+    const auto [first, last] = clean_stretch(c, join_glitches(unbridged, c, from.period.value));
     if (last < first + 7 || last - first < 3 * static_cast<std::size_t>(from.crossings_per_period)) break;
     const double a = c[first].time, b = c[last].time;
+    auto inside = [&](const auto& x) { return x.start > a && x.end < b; };
+    spans.erase(std::remove_if(spans.begin(), spans.end(), [&](const Bridge& x) { return !inside(x); }), spans.end());
     // A quarter of an interval beyond each end crossing: the samples its line needs, not the next crossing's.
     const double margin = 0.25 * (b - a) / static_cast<double>(last - first);
     SwingAnalysis next;
     try {
-      next = analyse_record(restricted(r, {a - margin, b + margin}, file), file, inner);
+      next = analyse_record(restricted(r, {a - margin, b + margin}, file), file, inner, spans);
     } catch (const InputError& e) {
       if (!clean) {
         whole.notes.push_back({0, "the stretch without glitches, " + format_number(a, 6) + ":" + format_number(b, 6) +
@@ -1424,15 +1667,26 @@ SwingAnalysis clean_stretch_of(const Recording& r, const std::string& file, cons
     }
     if (first > 0) cuts.push_back(describe_cut(c.front().time, a, from));
     if (last + 1 < c.size()) cuts.push_back(describe_cut(b, c.back().time, from));
+    // Bridges of earlier passes are this pass's `spans` again, or grown into one, or left out of the stretch.
+    cuts.erase(std::remove_if(cuts.begin(), cuts.end(), [](const Cut& x) { return x.periods_carried > 0.0; }),
+               cuts.end());
+    for (const Bridge& x : spans) {
+      cuts.push_back({x.start, x.end, "a glitch inside, its count carried across", x.worst,
+                      static_cast<double>(x.steps) / from.crossings_per_period});
+    }
+    bridges = spans;
     range = {a - margin, b + margin};
     clean = std::move(next);
   }
   if (!clean) return whole;
   SwingAnalysis out = std::move(*clean);
-  // Cuts of successive passes that touch are one.
+  // Cuts of successive passes that touch are one; a bridge stays its own.
   std::sort(cuts.begin(), cuts.end(), [](const Cut& x, const Cut& y) { return x.start < y.start; });
   for (const Cut& x : cuts) {
-    if (out.cuts.empty() || x.start > out.cuts.back().end) {
+    // Touching: at the same crossing, as two analyses of the stretch find it (within a tenth of a half swing).
+    const double touch = 0.05 * out.period.value;
+    if (out.cuts.empty() || x.start > out.cuts.back().end + touch || x.periods_carried > 0.0 ||
+        out.cuts.back().periods_carried > 0.0) {
       out.cuts.push_back(x);
       continue;
     }
@@ -1446,6 +1700,7 @@ SwingAnalysis clean_stretch_of(const Recording& r, const std::string& file, cons
   for (std::size_t k = 0; k < cuts.size(); ++k) {
     const Cut& x = cuts[k];
     text += (k ? "; " : "") + format_number(x.start, 6) + ":" + format_number(x.end, 6) + " s, " + x.why + " (" +
+            (x.periods_carried > 0.0 ? format_number(x.periods_carried, 4) + " periods; " : "") +
             format_number(x.worst, 3) + " robust sigmas)";
   }
   const PeriodEstimate& p = whole.period;

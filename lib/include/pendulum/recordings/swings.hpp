@@ -57,19 +57,33 @@
 ///     resolution q allows. A uniform quantum gives each time an error of
 ///     variance q^2/12, so the fit's slope has at least
 ///     (q/sqrt 12) / sqrt(sum (n_i - mean n)^2) (n_i in periods).
-///  7. Glitches: the intervals between crossings against the local median of
-///     their own direction, in robust sigmas; a stretch of outliers (a jump,
-///     a gap, tracking lost, a glitchy end) is reported as a time range with
-///     the period without it; where that differs from the whole record's by
-///     more than its uncertainty, the difference joins the uncertainty.
-///  8. The clean stretch, by default: where step 7 finds glitches, the
-///     longest run of crossings free of them is analysed alone (steps 1 to
-///     7 on the samples from a quarter interval before its first crossing
-///     to a quarter after its last): the release (a glitch at the start),
-///     the catch or a glitchy end, and the shorter side of a glitch inside
-///     are cut, each named with its time range. `--range all` (a scene's
-///     `"range": "all"`) keeps the whole record, with step 7's allowance; a
-///     typed range wins over both.
+///  7. Glitches: each full period (the time between crossings a period
+///     apart: an offset between the directions, which may drift, cancels
+///     from it), per its length in the amplitude-weighted index where there
+///     are amplitudes and less a quadratic drift in time where there are
+///     none, against the median of its 10 neighbours either side, in robust
+///     sigmas (from the 40th percentile of the residuals, so that a glitch
+///     of more than half the record does not set it; from the 80th where
+///     outliers strike most blocks of 10 periods in every third of the
+///     record: a logger's hitches are its noise). A stretch of outliers (a
+///     jump, a gap, tracking lost, a glitchy end) is reported as a time
+///     range with the period without it; where that differs from the whole
+///     record's by more than its uncertainty, the difference joins the
+///     uncertainty.
+///  8. The clean stretch, by default: where step 7 finds glitches, a glitch
+///     inside the record, shorter than the stretches on either side of it,
+///     whose count of half swings is certain (the time across it over the
+///     half swing on each side rounds to the same whole number, of the
+///     parity the crossings' directions say, within half a swing) is
+///     bridged: its crossings are dropped and the count carried across.
+///     Then the longest run of crossings free of the other glitches is
+///     analysed alone (steps 1 to 7 on the samples from a quarter interval
+///     before its first crossing to a quarter after its last): the release
+///     (a glitch at the start), the catch or a glitchy end, and the shorter
+///     side of a glitch inside that could not be bridged are cut, each
+///     named with its time range. `--range all` (a scene's `"range":
+///     "all"`) keeps the whole record, with step 7's allowance; a typed
+///     range wins over both.
 
 #include <array>
 #include <optional>
@@ -87,6 +101,10 @@ struct Crossing {
   double time = 0.0;   ///< (s)
   double slope = 0.0;  ///< signal's rate of change at the crossing (signal unit/s); 0 for gate events
   int samples = 0;     ///< samples in the line fit; 0 for gate events
+  /// Crossings' intervals (half swings; quarter swings for acceleration
+  /// with gravity) since the previous crossing kept: 1, or more after a
+  /// glitch whose count was carried across (step 8).
+  long steps = 1;
 };
 
 /// The half (or, for acceleration with gravity, quarter) swing between two
@@ -126,8 +144,13 @@ struct Glitch {
 struct Cut {
   double start = 0.0;  ///< (s, the file's clock)
   double end = 0.0;    ///< (s)
-  std::string why;     ///< "the release", "the catch or a glitchy end", "the shorter side of a glitch"
-  double worst = 0.0;  ///< the largest |interval residual| of the glitches in it, in robust sigmas
+  /// "the release", "the catch or a glitchy end", "the shorter side of a
+  /// glitch", "a glitch inside, its count carried across"
+  std::string why;
+  double worst = 0.0;  ///< the largest |period residual| of the glitches in it, in robust sigmas
+  /// Periods counted across it, where its crossings were dropped and those
+  /// on either side kept (a glitch inside, bridged); 0 where the record was cut.
+  double periods_carried = 0.0;
 };
 
 /// One point of the period-against-amplitude curve: one full period.
@@ -204,6 +227,10 @@ struct SwingAnalysis {
   /// Stretches that do not fit the swing, in time order (step 7), within
   /// the stretch analysed.
   std::vector<Glitch> glitches;
+  /// Step 7's stretches of outliers before they are joined into `glitches`
+  /// (one at an end reaching it, ones near each other one): step 8 bridges
+  /// each it can on its own.
+  std::vector<Glitch> outliers;
   /// The stretch analysed (s, the file's clock): a typed range or the clean
   /// stretch (step 8); unset for the whole record.
   std::optional<std::pair<double, double>> analysed;
@@ -220,9 +247,10 @@ struct SwingAnalysis {
 };
 
 /// Step 3 of the method on given crossings (at least 5): the weighted fit
-/// of their times, weights from slope and samples when `samples` > 0.
-/// With `amplitudes` (rad, one per swing: crossings.size() - 1) the index is
-/// u_{i+1} = u_i + 1 + DeltaT/T0(theta_i) instead of i, and the period is the
+/// of their times, weights from slope and samples when `samples` > 0. The
+/// index runs on by each crossing's `steps` (more than 1 across a bridged
+/// glitch). With `amplitudes` (rad, one per swing: crossings.size() - 1) it
+/// is u_{i+1} = u_i + steps (1 + DeltaT/T0(theta_i)) instead, and the period is the
 /// line's rise from the first crossing to the last per period. `quantum`
 /// (s): the clock's resolution, whose floor (step 6) the uncertainty keeps.
 /// No weight exceeds 25 times the median (a spurious crossing on a jump

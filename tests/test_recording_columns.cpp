@@ -6,6 +6,7 @@
 // recordings per layout.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -101,6 +102,12 @@ TEST_CASE("Split: delimiters, runs of spaces, quotes, decimal commas", "[recordi
   CHECK(sniff(std::string_view("Time (s);Angle (rad)"), "0,5;1,25").decimal_comma);
   CHECK(sniff(std::nullopt, "  0.1   2.0   3").delimiter == ' ');
   CHECK(sniff(std::string_view("t (ms)"), "100").delimiter == '\0');
+  // A header of spaced words (a comment line) over rows split by ';' or a tab: the rows say.
+  CHECK(sniff(std::string_view("# Perioden       t in s"), "1;3.05").delimiter == ';');
+  CHECK(sniff(std::string_view("# n  t"), "1\t3.05").delimiter == '\t');
+  // Not a comma: "Zeit" over "0,5" is one column with a decimal comma.
+  CHECK(sniff(std::string_view("Zeit"), "0,5").delimiter == '\0');
+  CHECK(sniff(std::string_view("Zeit"), "0,5").decimal_comma);
   const Dialect spaces{' ', false};
   const auto header = split_cells("   t     Time (s)   theta [deg]  ", spaces);
   REQUIRE(header.size() == 3);
@@ -117,6 +124,12 @@ TEST_CASE("Split: delimiters, runs of spaces, quotes, decimal commas", "[recordi
 TEST_CASE("Content: counters, constants, clocks and angle units from the numbers", "[recordings][columns]") {
   CHECK(examine({1, 2, 3, 4, 5}).counter);
   CHECK_FALSE(examine({0.0, 0.01, 0.02, 0.03}).counter);
+  // A stride: whole numbers all stepping by one whole step, as N = 1, 3, 5 periods or a clock in ms.
+  CHECK(examine({1, 3, 5, 7, 9}).stride == 2.0);
+  CHECK(examine({0, 20, 40, 60}).stride == 20.0);
+  CHECK(examine({1, 2, 3}).stride == 1.0);
+  CHECK(examine({0.0, 0.5, 1.0}).stride == 0.0);
+  CHECK(examine({1, 3, 4, 7}).stride == 0.0);
   CHECK(examine({0.0, 0.01, 0.02, 0.03}).increasing);
   CHECK(examine({0, 0, 0, 0}).constant);
   // The half range decides a unitless angle: beyond pi/2 is degrees.
@@ -345,6 +358,33 @@ TEST_CASE("Published layouts: the roles the reader chose and what it said", "[re
   CHECK(std::count_if(phone.notes.begin(), phone.notes.end(),
                       [](const RecordingNote& n) { return n.line > 0 && n.text.find("dropped") != std::string::npos; }) == 12);
   CHECK(std::is_sorted(phone.time.begin(), phone.time.end()));
+}
+
+TEST_CASE("A count of periods against the time they took, under comment lines: a counter and its stamps",
+          "[recordings][columns][stamps]") {
+  // Cumulative timing as a student types it: comment lines (the bob, then
+  // spaced column words with the length), then "N;t" for N = 1, 3, ..., 19
+  // periods of a 3.0770 s swing (a 2.355 m pendulum), times to 1 ms. The
+  // header's words are no columns of the rows, so the numbers decide: whole
+  // numbers stepping by 2 beside an increasing time are a count.
+  std::string text = "#Kugeldurchmesser 5.9cm\n# Perioden       t in s     L\xc3\xa4nge 2.355m\n";
+  for (int n = 1; n <= 19; n += 2) {
+    char row[32];
+    std::snprintf(row, sizeof row, "%d;%.3f\n", n, 3.077 * n);
+    text += row;
+  }
+  const Recording r = parse_recording(text, "cumulative.txt");
+  CHECK(r.kind == SignalKind::event_stamps);
+  CHECK(role_of(r, 1) == "counter/content");
+  CHECK(role_of(r, 2) == "event stamp:s/content");
+  CHECK(has_note(r, "the header names 1 column over rows of 2"));
+  const SwingAnalysis a = analyse_swings(r, "cumulative.txt");
+  CHECK(a.period.periods == 18);
+  // The times are exact to their 1 ms print: the slope is 3.077 s within the clock's floor.
+  CHECK(a.period.value == Approx(3.077).margin(3.0 * a.period.uncertainty + 1e-9));
+  // One column, then a row of two: the message names no NUL delimiter.
+  CHECK_THROWS_WITH(parse_recording("t\n0.5\n1.0\n1;2\n", "one.txt"),
+                    Contains("mixed delimiters: found ';' in a file whose header names one column"));
 }
 
 TEST_CASE("Refusals: what cannot be read says the fix", "[recordings][columns]") {

@@ -216,6 +216,20 @@ TEST_CASE("Stamps: the count from a counter column is checked and mended, bad lo
   CHECK(analyse_swings(r, "log", two).period.value == Approx(4.0).epsilon(1e-3));
   two.stamps_per_period = 3;
   CHECK_THROWS_WITH(analyse_swings(r, "log", two), Contains("got 3 stamps a period; expected 1"));
+  // A count of periods at each time (cumulative timing, "N;t" with N = 1,
+  // 3, 5, ...): the counter's stride of 2 is 2 periods a stamp interval.
+  // 15 stamps of the same clock, every second period (seed 42).
+  Recording every_other = stamps_recording({});
+  NormalDeviates scatter2(42);
+  for (int j = 0; j < 15; ++j) {
+    every_other.time.push_back(0.5 + 4.0 * j + 0.002 * scatter2.next());
+    every_other.counts.push_back(1.0 + 2.0 * j);
+  }
+  const SwingAnalysis strided = analyse_swings(every_other, "cumulative");
+  CHECK(strided.period.value == Approx(2.0).margin(3.0 * strided.period.uncertainty));
+  CHECK(strided.period.periods == 28);
+  CHECK(notes_containing(strided, "the counter steps by 2: each stamp comes 2 periods after the one before") == 1);
+  CHECK(notes_containing(strided, "is mended") == 0);
   CHECK_THROWS_WITH(analyse_swings(stamps_recording({1, 2, 3}), "short"), Contains("3 event stamps; expected at least 6"));
   CHECK_THROWS_WITH(analyse_swings(stamps_recording({1, 2, 3, 4, 5, 6, 1e9}), "gap"),
                     Contains("intervals after the one before; expected the log of one swinging pendulum"));

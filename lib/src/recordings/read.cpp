@@ -453,20 +453,27 @@ Layout detect(RecordingFormat forced, const std::vector<Column>& cols, bool prea
 }
 
 /// Roles of a headerless file's columns from their numbers: a counter steps
-/// by one, the first other increasing column is the time, a constant is
-/// unused; of two that remain, one the rate of the other is an angle and its
+/// by one, or by one whole stride beside an increasing column of other
+/// numbers (the time: "1;3.05", "3;9.202", a count of periods against the
+/// time they took), the first other increasing column is the time, a
+/// constant is unused; of two that remain, one the rate of the other is an angle and its
 /// angular velocity; the first swinging at twice the second's frequency is
 /// no track's x (a bob's y swings at twice x's): the second is then the one
 /// signal; else they are a track's x and y. Returns a note on a column set aside.
 std::optional<std::string> roles_from_content(std::vector<Column>& cols, const Content& content) {
   std::optional<std::size_t> time;
   std::vector<std::size_t> signals;
+  bool other_increasing = false;  // an increasing column not of whole numbers: a time beside a strided count
+  for (std::size_t j = 0; j < cols.size(); ++j) {
+    const ColumnFacts& f = content.facts(j, false);
+    other_increasing |= f.increasing && !f.integers;
+  }
   for (std::size_t j = 0; j < cols.size(); ++j) {
     const ColumnFacts& f = content.facts(j, false);
     Column& c = cols[j];
     c.decided = "content";
     c.known = true;
-    if (f.counter) c.role = Role::counter;
+    if (f.counter || (f.stride > 0.0 && other_increasing)) c.role = Role::counter;
     else if (f.constant) c.role = Role::other;
     else if (f.increasing && !time) c.role = Role::time, time = j;
     else signals.push_back(j);
@@ -806,7 +813,12 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
       }
     } else if (layout.counter && j == *layout.counter) {
       c.role = "counter";
-      if (c.decided_by == "content") why.emplace_back("whole numbers stepping by one");
+      if (c.decided_by == "content") {
+        const double stride = examine(table.columns[j], false).stride;
+        why.emplace_back(stride > 1.0 ? "whole numbers stepping by " + format_number(stride) +
+                                            " beside an increasing time: a count (of periods, say) at each time"
+                                      : "whole numbers stepping by one");
+      }
     } else if (layout.period && j == *layout.period) {
       c.role = "period";
       c.unit = "s";

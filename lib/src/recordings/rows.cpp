@@ -118,9 +118,12 @@ Table read_rows(const char* p, const char* end, std::size_t line_no, const Diale
                              std::end(other_delimiters)) {
             fail(file, line_no, column(bad),
                  std::string("mixed delimiters: found '") + (*bad == '\t' ? "\\t" : std::string(1, *bad)) +
-                     "' in a file whose header separates columns by " +
-                     (spaces ? std::string("runs of spaces")
-                             : "'" + (delimiter == '\t' ? std::string("\\t") : std::string(1, delimiter)) + "'"));
+                     "' in a file whose header " +
+                     (spaces ? std::string("separates columns by runs of spaces")
+                     : delimiter == '\0'
+                         ? std::string("names one column")
+                         : "separates columns by '" + (delimiter == '\t' ? std::string("\\t") : std::string(1, delimiter)) +
+                               "'"));
           }
           fail(file, line_no, column(q),
                "got \"" + std::string(q, std::min<const char*>(token_end, q + 40)) + "\" in column \"" + names[j] +

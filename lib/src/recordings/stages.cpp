@@ -140,6 +140,11 @@ Dialect sniff(std::optional<std::string_view> header, std::string_view first_dat
       break;
     }
   }
+  // A header of words without one ("# Perioden   t in s", a comment line
+  // above "1;3.05"): the rows' tab or semicolon, which no number holds.
+  for (char c : {'\t', ';'}) {
+    if (!d.delimiter && first_data.find(c) != std::string_view::npos) d.delimiter = c;
+  }
   if (!d.delimiter && first_data.find_first_of("\t;") == std::string_view::npos) {
     // Runs of spaces: two or more numbers on the first row so separated.
     const std::string_view row = trim_spaces(first_data);
@@ -512,8 +517,8 @@ ColumnFacts examine(const std::vector<double>& column, bool range) {
   ColumnFacts f;
   std::vector<double> values;
   if (range) values.reserve(column.size());
-  std::size_t steps = 0, unit_steps = 0, decreases = 0, bad_steps = 0;
-  double last = std::numeric_limits<double>::quiet_NaN();
+  std::size_t steps = 0, unit_steps = 0, decreases = 0, bad_steps = 0, first_steps = 0;
+  double last = std::numeric_limits<double>::quiet_NaN(), first_step = 0.0;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (double v : column) {
     if (!std::isfinite(v)) continue;
@@ -525,6 +530,8 @@ ColumnFacts examine(const std::vector<double>& column, bool range) {
       ++steps;
       const double d = v - last;
       unit_steps += d == 1.0;
+      if (steps == 1) first_step = d;
+      first_steps += d == first_step;
       decreases += d < 0.0;
       bad_steps += !(d >= 1.0 && d == std::floor(d));
     }
@@ -536,6 +543,7 @@ ColumnFacts examine(const std::vector<double>& column, bool range) {
   const std::size_t few = steps / 100;
   f.counter = f.integers && steps > 0 && bad_steps <= few && unit_steps * 10 >= steps * 9;
   f.increasing = !f.constant && decreases <= few;
+  if (f.integers && first_step >= 1.0 && bad_steps <= few && first_steps * 10 >= steps * 9) f.stride = first_step;
   if (!range) return f;
   f.ranged = true;
   const std::size_t k = values.size() / 200;

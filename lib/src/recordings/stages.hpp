@@ -84,8 +84,9 @@ struct Dialect {
 };
 
 /// Tab, then semicolon, then comma as found in the header (or the first row
-/// without one); otherwise runs of spaces when the first row has two or more
-/// numbers so separated. A comma in the first row is then a decimal comma.
+/// without one); else the first row's tab or semicolon (a header of spaced
+/// words over them); otherwise runs of spaces when the first row has two or
+/// more numbers so separated. A comma in the first row is then a decimal comma.
 Dialect sniff(std::optional<std::string_view> header, std::string_view first_data);
 
 /// Whether `s` starts with `p`.
@@ -204,6 +205,10 @@ struct ColumnFacts {
   bool constant = true;     ///< one value throughout (or none)
   bool integers = true;     ///< whole numbers only
   bool counter = false;     ///< whole numbers stepping by one, at most a few larger steps
+  /// The whole step of whole numbers that (but for a few) all step by it, as
+  /// a count of periods by 2 ("1, 3, 5, ... periods at t") or a clock in ms
+  /// by 20; 0 otherwise.
+  double stride = 0.0;
   bool increasing = false;  ///< never decreasing, at most a few glitches (clean decides)
   bool ranged = false;      ///< lo and hi were found (examine's `range`)
   double lo = 0.0, hi = 0.0;  ///< 0.5th and 99.5th percentiles

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 #include "pendulum/amplitude.hpp"
 #include "pendulum/files.hpp"
@@ -885,11 +886,26 @@ void note_floor(SwingAnalysis& out, double quantum) {
 /// stamp whose time after the last one kept is within a quarter of a mean
 /// interval of a whole number s >= 1 of intervals advances the count by s
 /// (s - 1 stamps missed); any other is dropped (a doubled, a repeated or a
-/// stray stamp), both with a note naming its data row.
+/// stray stamp), both with a note naming its data row. A counter column
+/// whose steps share a whole factor k > 1 (N = 1, 3, 5, ... periods against
+/// the time they took) counts k periods a stamp interval (fit_stamps).
 struct MendedStamps {
   std::vector<Crossing> stamps;
-  std::vector<long> count;
+  std::vector<long> count;  ///< in stamp intervals
+  long stride = 1;          ///< the counter's counts a stamp interval
 };
+
+/// The greatest common factor of a counter column's steps, where they are
+/// all positive whole numbers; 1 otherwise.
+long counter_stride(const std::vector<double>& counts) {
+  long g = 0;
+  for (std::size_t k = 1; k < counts.size(); ++k) {
+    const double d = counts[k] - counts[k - 1];
+    if (!(d >= 1.0 && d == std::floor(d) && d < 1e9)) return 1;
+    g = std::gcd(g, static_cast<long>(d));
+  }
+  return std::max(g, 1L);
+}
 
 /// More stamps missed in a row than this is no timer log of one pendulum.
 constexpr double kMaxMissed = 1000.0;
@@ -899,6 +915,7 @@ MendedStamps mend_stamps(const Recording& r, const std::array<double, 2>& e, con
   MendedStamps m;
   const double unit = (e[0] + e[1]) / 2.0;
   const bool numbered = r.counts.size() == r.time.size();
+  if (numbered) m.stride = counter_stride(r.counts);
   auto row = [&](std::size_t k) {
     return "the stamp at " + seconds(r.time[k]) + " (data row " + std::to_string(k + 1) +
            (numbered ? ", numbered " + format_number(r.counts[k]) + " in the file" : std::string()) + ")";
@@ -930,9 +947,9 @@ MendedStamps mend_stamps(const Recording& r, const std::array<double, 2>& e, con
     }
     const long count = m.count.back() + best;
     std::string mended;
-    if (numbered && r.counts[k] - r.counts[kept] != best) {
+    if (numbered && r.counts[k] - r.counts[kept] != static_cast<double>(best * m.stride)) {
       mended = "; its count, " + format_number(r.counts[k]) + " in the file, is mended to " +
-               format_number(r.counts[kept] + best);
+               format_number(r.counts[kept] + static_cast<double>(best * m.stride));
     }
     if (best > 1) {
       notes.push_back({0, row(k) + " comes " + format_number(x / unit, 3) + " intervals after the one before: " +
@@ -994,13 +1011,15 @@ PeriodEstimate fit_stamps(const MendedStamps& m, int per_period, double quantum)
   Eigen::VectorXd g = Eigen::VectorXd::Zero(q);
   g[1] = per_period;
   if (cubic) g[q - 1] = per_period * half_range * half_range;
-  p.value = g.dot(beta);
-  p.uncertainty = std::sqrt(s2 * g.dot(inv * g) * p.inflation);
+  // A counter's stride of k periods a stamp interval: the period is 1/k of the interval's.
+  const double k = static_cast<double>(m.stride);
+  p.value = g.dot(beta) / k;
+  p.uncertainty = std::sqrt(s2 * g.dot(inv * g) * p.inflation) / k;
   std::vector<double> counts(m.count.begin(), m.count.end());
-  p.resolution_floor = per_period * resolution_floor(counts, quantum);
+  p.resolution_floor = per_period * resolution_floor(counts, quantum) / k;
   p.uncertainty = std::max(p.uncertainty, p.resolution_floor);
   p.residual_rms = std::sqrt(s2);
-  p.periods = static_cast<int>((m.count.back() - m.count.front()) / per_period);
+  p.periods = static_cast<int>((m.count.back() - m.count.front()) * m.stride / per_period);
   return p;
 }
 
@@ -1057,7 +1076,12 @@ SwingAnalysis analyse_stamps(const Recording& r, const std::string& file, const 
   const MendedStamps m = mend_stamps(r, e, file, out.notes);
   out.crossings = m.stamps;
   out.crossings_per_period = per_period;
-  const long span = m.count.back() - m.count.front();
+  const long span = (m.count.back() - m.count.front()) * m.stride;
+  if (m.stride > 1) {
+    out.notes.push_back({0, "the counter steps by " + std::to_string(m.stride) + ": each stamp comes " +
+                                std::to_string(m.stride) + " periods after the one before (a count of periods at "
+                                "each time), so the period is 1/" + std::to_string(m.stride) + " of the interval"});
+  }
   if (m.stamps.size() < 6 || span < 3 * per_period) {
     throw InputError(file, "found " + std::to_string(m.stamps.size()) + " usable stamps (" +
                                std::to_string(span / per_period) + " full periods); expected at least three periods");
@@ -1072,6 +1096,7 @@ SwingAnalysis analyse_stamps(const Recording& r, const std::string& file, const 
     MendedStamps part;
     part.stamps.assign(m.stamps.begin() + a, m.stamps.begin() + b + 1);
     part.count.assign(m.count.begin() + a, m.count.begin() + b + 1);
+    part.stride = m.stride;
     return fit_stamps(part, per_period, quantum);
   }, "stamps");
   note_floor(out, quantum);
@@ -1081,7 +1106,7 @@ SwingAnalysis analyse_stamps(const Recording& r, const std::string& file, const 
     const std::size_t j = i + per_period;
     if (j < m.stamps.size() && m.count[j] - m.count[i] == per_period) {
       out.period_curve.push_back({(m.stamps[i].time + m.stamps[j].time) / 2.0 - origin, kNaN,
-                                  m.stamps[j].time - m.stamps[i].time});
+                                  (m.stamps[j].time - m.stamps[i].time) / static_cast<double>(m.stride)});
     }
   }
   out.small_amplitude_period = kNaN;

@@ -14,6 +14,7 @@
 
 #include "pendulum/amplitude.hpp"
 #include "pendulum/recordings/swings.hpp"
+#include "pendulum/report/html_report.hpp"
 #include "pendulum/report/plots.hpp"
 #include "pendulum/report/recording_report.hpp"
 #include "recording_simulation.hpp"
@@ -283,4 +284,33 @@ TEST_CASE("A pixel track's signal is drawn in the track's own unit and values", 
   // The mean removed is the track's over 20 s of a damped swing: within 1%.
   CHECK(drawn == Approx(swing).epsilon(0.01));
   CHECK_THAT(to_svg(*signal_figure(r, "s"), false), Contains("(px)"));
+}
+
+TEST_CASE("A report says what the clean stretch cut and bridged, and shades it on the signal", "[report][recording]") {
+  // A 60 s gyroscope recording (the simulation's defaults, seed 31) with 2 s
+  // of rows missing at 24-26 s, bridged by default, and a +1 s clock jump at
+  // 45 s, whose shorter side is cut (tests/test_swing_stamps.cpp, the same cases).
+  test::SimulatedRecording sim;
+  test::RecordingSimulation s;
+  s.seed = 31;
+  const Recording whole = gyroscope(s, sim);
+  Recording r = whole;
+  r.time.clear();
+  for (auto& c : r.channels) c.clear();
+  for (std::size_t k = 0; k < whole.time.size(); ++k) {
+    if (whole.time[k] > 24.0 && whole.time[k] < 26.0) continue;
+    r.time.push_back(whole.time[k] + (whole.time[k] > 45.0 ? 1.0 : 0.0));
+    for (int j = 0; j < 3; ++j) r.channels[j].push_back(whole.channels[j][k]);
+  }
+  const SwingAnalysis a = analyse_swings(r, "cut.csv");
+  REQUIRE(a.cuts.size() == 2);
+  const RecordingSummary summary{"cut.csv", r.format, r.kind, r.time.size(), 0, a, "", {}};
+  const RecordingRecord record = make_recording_record(summary, &r);
+  CHECK(record.cuts.size() == 2);
+  const std::string html = recording_report_html(record);
+  CHECK_THAT(html, Contains(">stretch analysed<") && Contains(">bridged<") && Contains(">cut<") &&
+                       Contains("a glitch inside, its count carried across") &&
+                       Contains("the shorter side of a glitch") && Contains(">whole record&#39;s period<"));
+  const std::string svg = to_svg(*signal_figure(record, "s"), false);
+  CHECK_THAT(svg, Contains("cut by default (the clean stretch), or bridged with its count carried"));
 }

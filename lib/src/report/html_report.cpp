@@ -298,6 +298,19 @@ std::string recording_part(const RecordingRecord& r, const std::string& anchor, 
                           std::to_string(r.crossings_per_period) + " per period)");
   row("crossing residuals", format_significant(r.period.residual_rms, 3) + " s rms, lag-1 correlation " +
                                 format_fixed(r.period.lag1_correlation, 2));
+  if (r.analysed) {
+    row("stretch analysed", format_number(r.analysed->first, 6) + " to " + format_number(r.analysed->second, 6) + " s" +
+                                (r.cuts.empty() ? " (a typed range)" : " (the clean stretch, by default: --range all keeps the whole record)"));
+  }
+  for (const Cut& k : r.cuts) {
+    row(k.periods_carried > 0.0 ? "bridged" : "cut",
+        format_number(k.start, 6) + " to " + format_number(k.end, 6) + " s: " + k.why +
+            (k.periods_carried > 0.0 ? " (" + format_number(k.periods_carried, 4) + " periods)" : "") + ", " +
+            format_number(k.worst, 3) + " robust sigmas");
+  }
+  if (r.whole_record_period) {
+    row("whole record's period", rounded_estimate({r.whole_record_period->value, r.whole_record_period->uncertainty}, 6, "s"));
+  }
   if (std::isfinite(r.small_amplitude_period)) {
     row("small-amplitude period T\u2080", format_fixed(r.small_amplitude_period, 7) + " s");
   }

@@ -138,6 +138,9 @@ RecordingRecord make_recording_record(const RecordingSummary& summary, const Rec
   r.dropped = summary.dropped;
   r.period = a.period;
   r.crossings_per_period = a.crossings_per_period;
+  r.analysed = a.analysed;
+  r.cuts = a.cuts;
+  r.whole_record_period = a.whole_record_period;
   constexpr double kFinestStamp = 1e-6;  // (s)
   const double dt = samples && samples->time_quantum > 0.0 ? samples->time_quantum : kFinestStamp;
   r.period_resolution = std::sqrt(2.0) * dt / std::max(1, a.period.periods);
@@ -218,6 +221,17 @@ std::optional<Figure> signal_figure(const RecordingRecord& r, const std::string&
   crossings.colour = Colour::vermillion;
   crossings.marker = Marker::tick;
   crossings.size = 6.0;
+  // What the clean stretch cut or bridged, shaded over the signal's range.
+  const auto [lo, hi] = std::minmax_element(r.trace->value.begin(), r.trace->value.end());
+  for (const Cut& k : r.cuts) {
+    Band b;
+    b.name = p.bands.empty() ? "cut by default (the clean stretch), or bridged with its count carried" : "";
+    b.x = {k.start, k.end};
+    b.lower = {*lo, *lo};
+    b.upper = {*hi, *hi};
+    b.colour = Colour::grey;
+    p.bands.push_back(b);
+  }
   p.curves.push_back(signal);
   p.points.push_back(crossings);
   f.panels = {p};
@@ -229,7 +243,8 @@ std::optional<Figure> signal_figure(const RecordingRecord& r, const std::string&
                              : "") +
                   ", with the " + std::to_string(r.crossings.size()) +
                   " crossings the analysis found marked by vertical ticks on the zero line" +
-                  (every > 1 ? ", one tick per " + std::to_string(every) + " crossings" : std::string()) + ".";
+                  (every > 1 ? ", one tick per " + std::to_string(every) + " crossings" : std::string()) +
+                  (r.cuts.empty() ? std::string() : "; the stretches the analysis cut or bridged shaded grey") + ".";
   return f;
 }
 

@@ -68,6 +68,13 @@ struct RecordingRecord {
   std::string decay_note;
   /// One point per full period (time as recorded).
   std::vector<PeriodPoint> periods;
+  /// The stretch analysed (s, as recorded) where it is not the whole record
+  /// (a typed range, or the clean stretch), what the clean stretch left out
+  /// or bridged, and the whole record's period it replaced
+  /// (SwingAnalysis::analysed, cuts, whole_record_period).
+  std::optional<std::pair<double, double>> analysed;
+  std::vector<Cut> cuts;
+  std::optional<PeriodEstimate> whole_record_period;
 };
 
 /// The report data of `summary`; `samples`, when given, is the recording it

@@ -414,6 +414,41 @@ TEST_CASE("A glitch inside the record: its crossings dropped, the count carried 
   CHECK(std::fabs(coverage - kOneSigma) < coverage_tolerance(kRuns));
 }
 
+TEST_CASE("A cut never hides a second pendulum: the cut stretch's T0 is checked against the kept one's",
+          "[recordings][glitches]") {
+  // A gyroscope recording of 40 s of a 0.80 m pendulum (T = 1.80 s), then,
+  // 1.3 s later, 15 s of a 0.60 m one (T = 1.56 s), as if the student
+  // swapped the bob without stopping (seeds 5 and 6, the simulation's
+  // defaults otherwise). The shorter side, the second pendulum's, is cut:
+  // its T0 is 13 % off the kept one's, and a note says so.
+  RecordingSimulation first, second;
+  first.duration = 40.0, first.seed = 5;
+  second.duration = 15.0, second.seed = 6, second.length = 0.60;
+  Recording r = gyroscope_recording(simulate_recording(first));
+  const Recording other = gyroscope_recording(simulate_recording(second));
+  const double shift = r.time.back() + 1.3;
+  for (std::size_t k = 0; k < other.time.size(); ++k) {
+    r.time.push_back(shift + other.time[k]);
+    for (int j = 0; j < 3; ++j) r.channels[j].push_back(other.channels[j][k]);
+  }
+  const SwingAnalysis a = analyse_swings(r, "two");
+  REQUIRE(a.analysed);
+  CHECK(a.analysed->second < 41.0);
+  REQUIRE(a.cuts.size() == 1);
+  const Cut& k = a.cuts[0];
+  REQUIRE(k.period_alone);
+  CHECK(k.small_amplitude);
+  CHECK_FALSE(k.agrees);
+  // Its T0 is the second pendulum's, 2 pi sqrt(0.60 / 9.80665) s, to its uncertainty and 0.1 % (the
+  // cut's first swings are the switch's).
+  CHECK(k.period_alone->value == Approx(2.0 * M_PI * std::sqrt(0.60 / 9.80665)).epsilon(1e-3));
+  CHECK(notes_containing(a, "what was cut does not agree with what was kept") == 1);
+  // The clean record of the first pendulum alone: nothing cut, nothing to disagree with.
+  const SwingAnalysis clean = analyse_swings(gyroscope_recording(simulate_recording(first)), "one");
+  CHECK(clean.cuts.empty());
+  CHECK(notes_containing(clean, "does not agree") == 0);
+}
+
 TEST_CASE("A range analyses the samples within it, or is refused", "[recordings][glitches]") {
   RecordingSimulation s;
   s.duration = 40.0, s.seed = 34;

@@ -89,7 +89,14 @@ nlohmann::ordered_json summary_json(const RecordingSummary& r) {
                           {"unit", "s"},
                           {"why", c.why},
                           {"worst_robust_sigmas", c.worst},
-                          {"periods_carried", c.periods_carried > 0.0 ? nlohmann::ordered_json(c.periods_carried) : nlohmann::ordered_json(nullptr)}});
+                          {"periods_carried", c.periods_carried > 0.0 ? nlohmann::ordered_json(c.periods_carried)
+                                                                      : nlohmann::ordered_json(nullptr)},
+                          {"alone", c.period_alone ? nlohmann::ordered_json{{"value", c.period_alone->value},
+                                                                            {"uncertainty", c.period_alone->uncertainty},
+                                                                            {"unit", "s"},
+                                                                            {"of", c.small_amplitude ? "T0" : "T"},
+                                                                            {"agrees_with_kept", c.agrees}}
+                                                   : nlohmann::ordered_json(nullptr)}});
   }
   out["whole_record_period"] = a.whole_record_period ? nlohmann::ordered_json{{"value", a.whole_record_period->value},
                                                                               {"uncertainty", a.whole_record_period->uncertainty},

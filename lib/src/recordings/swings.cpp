@@ -1544,7 +1544,8 @@ SwingAnalysis analyse_record(const Recording& r, const std::string& file, const 
 /// the release (a glitch from the first crossing), the catch (one to the
 /// last), the shorter side of a glitch inside.
 Cut describe_cut(double from, double to, const SwingAnalysis& whole) {
-  Cut k{from, to, "", 0.0};
+  Cut k;
+  k.start = from, k.end = to;
   bool release = false, end = false, inside = false;
   for (const Glitch& g : whole.glitches) {
     if (!(g.start < to && g.end > from)) continue;
@@ -1622,13 +1623,78 @@ std::optional<Bridge> bridge_of(const SwingAnalysis& from, const Glitch& g) {
   return Bridge{c[i].time, c[j].time, steps};
 }
 
-/// Step 8: the longest run of crossings free of `whole`'s glitches,
-/// analysed alone, with what it cut; again while that run shows glitches of
-/// its own (the start of a careless stretch, which the glitch it led into
-/// had hidden), at most four times. `whole` itself where no run holds three
-/// periods or the first gives no analysis of its own (its notes say why).
+/// An analysis's small-amplitude period T0 (s): the one its amplitudes were
+/// solved with, or, where too few swings had one for that, the period over
+/// 1 + the mean DeltaT/T0 of the swings that have one (Eq. 8, exact); NaN
+/// without amplitudes.
+double small_amplitude_period_of(const SwingAnalysis& a) {
+  if (std::isfinite(a.small_amplitude_period)) return a.small_amplitude_period;
+  double sum = 0.0;
+  int count = 0;
+  for (const RecordedSwing& w : a.swings) {
+    if (std::isfinite(w.amplitude) && w.amplitude > 0.0) sum += finite_amplitude_agm(w.amplitude), ++count;
+  }
+  return count ? a.period.value / (1.0 + sum / count) : kNaN;
+}
+
+/// The period to compare stretches by, and its standard uncertainty (s):
+/// T0 where `small_amplitude` (the period's uncertainty scaled to it), else
+/// the period.
+std::pair<double, double> comparable_period(const SwingAnalysis& a, bool small_amplitude) {
+  if (!small_amplitude) return {a.period.value, a.period.uncertainty};
+  const double t0 = small_amplitude_period_of(a);
+  return {t0, a.period.uncertainty * t0 / a.period.value};
+}
+
+/// Step 8's check of what was cut: each cut (not a bridge) of 3 periods or
+/// more analysed alone (`alone`, on its time range: its own clean stretch),
+/// its T0 (its period where either stretch has no amplitudes) against the
+/// kept stretch's; beyond 5 combined sigmas and 1 % (3 % without
+/// amplitudes) a note says they disagree.
+template <class Alone>
+void compare_cuts(SwingAnalysis& out, const Alone& analyse_alone) {
+  std::vector<std::string> disagree;
+  for (Cut& k : out.cuts) {
+    if (k.periods_carried > 0.0 || k.end - k.start < 3.0 * out.period.value) continue;
+    SwingAnalysis alone;
+    try {
+      alone = analyse_alone(std::make_pair(k.start, k.end));
+    } catch (const InputError&) {
+      continue;  // too glitchy, or too short, to give a period: nothing to compare
+    }
+    k.small_amplitude = std::isfinite(small_amplitude_period_of(alone)) && std::isfinite(small_amplitude_period_of(out));
+    const auto [cut, cut_sigma] = comparable_period(alone, k.small_amplitude);
+    const auto [kept, kept_sigma] = comparable_period(out, k.small_amplitude);
+    if (!(std::isfinite(cut) && std::isfinite(cut_sigma))) continue;
+    PeriodEstimate p = alone.period;
+    p.value = cut, p.uncertainty = cut_sigma;
+    k.period_alone = p;
+    const double sigmas = std::fabs(cut - kept) / std::hypot(cut_sigma, kept_sigma);
+    k.agrees = !(sigmas > 5.0 && std::fabs(cut - kept) > (k.small_amplitude ? 0.01 : 0.03) * kept);
+    if (!k.agrees) {
+      disagree.push_back(format_number(k.start, 6) + ":" + format_number(k.end, 6) + " s gives " +
+                         (k.small_amplitude ? "T0 = " : "T = ") + seconds(cut, 6) + " +- " + seconds(cut_sigma, 2) +
+                         " (" + format_number(sigmas, 3) + " sigmas from the kept stretch's " + seconds(kept, 6) + ")");
+    }
+  }
+  if (!disagree.empty()) {
+    std::string text = "what was cut does not agree with what was kept: ";
+    for (std::size_t i = 0; i < disagree.size(); ++i) text += (i ? "; " : "") + disagree[i];
+    out.notes.insert(out.notes.begin() + 1, {0, text + ". A second pendulum, or a wrong column? --range picks a stretch, "
+                                                       "--columns a column"});
+  }
+}
+
+/// Step 8: the glitches inside bridged where their count is certain, and
+/// the longest run of crossings free of the others analysed alone, with
+/// what it cut; again while that run shows glitches of its own (the start
+/// of a careless stretch, which the glitch it led into had hidden), at most
+/// eight times. `whole` itself where no run holds three periods or the
+/// first gives no analysis of its own (its notes say why). With
+/// `check_cuts`, each cut is analysed alone (its own clean stretch, not
+/// checked again) and compared with what was kept (compare_cuts).
 SwingAnalysis clean_stretch_of(const Recording& r, const std::string& file, const SwingOptions& options,
-                               SwingAnalysis whole) {
+                               SwingAnalysis whole, bool check_cuts = true) {
   constexpr int kPasses = 8;
   SwingOptions inner = options;
   inner.whole_record = true;
@@ -1696,8 +1762,10 @@ SwingAnalysis clean_stretch_of(const Recording& r, const std::string& file, cons
     cuts.erase(std::remove_if(cuts.begin(), cuts.end(), [](const Cut& x) { return x.periods_carried > 0.0; }),
                cuts.end());
     for (const Bridge& x : spans) {
-      cuts.push_back({x.start, x.end, "a glitch inside, its count carried across", x.worst,
-                      static_cast<double>(x.steps) / from.crossings_per_period});
+      Cut k;
+      k.start = x.start, k.end = x.end, k.why = "a glitch inside, its count carried across", k.worst = x.worst;
+      k.periods_carried = static_cast<double>(x.steps) / from.crossings_per_period;
+      cuts.push_back(k);
     }
     bridges = spans;
     range = {a - margin, b + margin};
@@ -1734,6 +1802,13 @@ SwingAnalysis clean_stretch_of(const Recording& r, const std::string& file, cons
           format_number(std::fabs(p.value - out.period.value) / std::hypot(p.uncertainty, out.period.uncertainty), 2) +
           " sigmas from the clean stretch's";
   out.notes.insert(out.notes.begin(), {0, text});
+  if (check_cuts) {
+    compare_cuts(out, [&](std::pair<double, double> range) {
+      const Recording part = restricted(r, range, file);
+      SwingAnalysis alone = analyse_record(part, file, inner);
+      return alone.glitches.empty() ? alone : clean_stretch_of(part, file, options, std::move(alone), false);
+    });
+  }
   out.analysed = range;
   out.whole_record_period = p;
   return out;

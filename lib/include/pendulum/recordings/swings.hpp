@@ -81,7 +81,12 @@
 ///     before its first crossing to a quarter after its last): the release
 ///     (a glitch at the start), the catch or a glitchy end, and the shorter
 ///     side of a glitch inside that could not be bridged are cut, each
-///     named with its time range. `--range all` (a scene's `"range":
+///     named with its time range. Each cut of 3 periods or more is analysed
+///     alone too, and where its T0 (its period, without amplitudes) and the
+///     kept stretch's differ by over 5 combined sigmas and 1 % (3 % without
+///     amplitudes: a swing's finite amplitude moves a period by 2 % at
+///     35 deg), a note says so: a second pendulum, or a wrong column?
+///     `--range all` (a scene's `"range":
 ///     "all"`) keeps the whole record, with step 7's allowance; a typed
 ///     range wins over both.
 
@@ -151,6 +156,14 @@ struct Cut {
   /// Periods counted across it, where its crossings were dropped and those
   /// on either side kept (a glitch inside, bridged); 0 where the record was cut.
   double periods_carried = 0.0;
+  /// The cut stretch analysed alone, where it holds 3 periods and gives a
+  /// period (unset otherwise, and for a bridge): its small-amplitude period
+  /// T0 where it and the kept stretch have amplitudes (`small_amplitude`),
+  /// else its period, and whether that agrees with the kept stretch's (step
+  /// 8): a cut never hides a second pendulum or a wrong column.
+  std::optional<PeriodEstimate> period_alone;
+  bool small_amplitude = false;
+  bool agrees = true;
 };
 
 /// One point of the period-against-amplitude curve: one full period.

@@ -1793,7 +1793,7 @@ SwingAnalysis clean_stretch_of(const Recording& r, const std::string& file, cons
   for (std::size_t k = 0; k < cuts.size(); ++k) {
     const Cut& x = cuts[k];
     text += (k ? "; " : "") + format_number(x.start, 6) + ":" + format_number(x.end, 6) + " s, " + x.why + " (" +
-            (x.periods_carried > 0.0 ? format_number(x.periods_carried, 4) + " periods; " : "") +
+            (x.periods_carried > 0.0 ? format_number(x.periods_carried, 4) + (x.periods_carried == 1.0 ? " period; " : " periods; ") : "") +
             format_number(x.worst, 3) + " robust sigmas)";
   }
   const PeriodEstimate& p = whole.period;

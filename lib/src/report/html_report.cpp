@@ -305,7 +305,7 @@ std::string recording_part(const RecordingRecord& r, const std::string& anchor, 
   for (const Cut& k : r.cuts) {
     row(k.periods_carried > 0.0 ? "bridged" : "cut",
         format_number(k.start, 6) + " to " + format_number(k.end, 6) + " s: " + k.why +
-            (k.periods_carried > 0.0 ? " (" + format_number(k.periods_carried, 4) + " periods)" : "") + ", " +
+            (k.periods_carried > 0.0 ? " (" + format_number(k.periods_carried, 4) + (k.periods_carried == 1.0 ? " period)" : " periods)") : "") + ", " +
             format_number(k.worst, 3) + " robust sigmas");
   }
   if (r.whole_record_period) {

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "pendulum/input_error.hpp"
+#include "pendulum/recordings/swing_series.hpp"
 #include "pendulum/recordings/swings.hpp"
 #include "recording_simulation.hpp"
 #include "scene_files.hpp"
@@ -230,6 +231,13 @@ TEST_CASE("Stamps: the count from a counter column is checked and mended, bad lo
   CHECK(strided.period.periods == 28);
   CHECK(notes_containing(strided, "the counter steps by 2: each stamp comes 2 periods after the one before") == 1);
   CHECK(notes_containing(strided, "is mended") == 0);
+  // One count typed wrong (13 as 14) leaves the stride, and the times their count.
+  Recording typo = every_other;
+  typo.counts[6] += 1.0;
+  const SwingAnalysis typed = analyse_swings(typo, "typo");
+  CHECK(typed.period.value == Approx(2.0).margin(3.0 * typed.period.uncertainty));
+  CHECK(typed.period.periods == 28);
+  CHECK(notes_containing(typed, "its count, 14 in the file, is mended to 13") == 1);
   CHECK_THROWS_WITH(analyse_swings(stamps_recording({1, 2, 3}), "short"), Contains("3 event stamps; expected at least 6"));
   CHECK_THROWS_WITH(analyse_swings(stamps_recording({1, 2, 3, 4, 5, 6, 1e9}), "gap"),
                     Contains("intervals after the one before; expected the log of one swinging pendulum"));
@@ -319,6 +327,10 @@ TEST_CASE("Glitches are found from the crossings and reported as a time range", 
     CHECK(std::fabs(d.period.value - true_period(sim, d.analysed->first, d.analysed->second)) <
           4.0 * d.period.uncertainty);
     CHECK(d.period.uncertainty < 2.0 * clean.period.uncertainty);
+    // No group of swings (a swing-by-swing reduction's periods) spans the bridge.
+    const std::vector<SwingGroup> groups = swing_groups(d);
+    CHECK(groups.size() >= 4);  // 60 s of 1.8 s swings in groups of a few periods, one lost to the bridge
+    for (const SwingGroup& g : groups) CHECK((g.end <= k.start || g.start >= k.end));
   }
   SECTION("a video track whose last third is clicked carelessly") {
     // 15 frames/s, 90 s, clicks 1.5 mm; after 60 s, 3 cm of scatter and one

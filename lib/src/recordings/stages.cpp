@@ -517,8 +517,8 @@ ColumnFacts examine(const std::vector<double>& column, bool range) {
   ColumnFacts f;
   std::vector<double> values;
   if (range) values.reserve(column.size());
-  std::size_t steps = 0, unit_steps = 0, decreases = 0, bad_steps = 0, first_steps = 0;
-  double last = std::numeric_limits<double>::quiet_NaN(), first_step = 0.0;
+  std::size_t steps = 0, unit_steps = 0, decreases = 0, bad_steps = 0, votes = 0;
+  double last = std::numeric_limits<double>::quiet_NaN(), candidate = 0.0;  // the majority step (Boyer-Moore)
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (double v : column) {
     if (!std::isfinite(v)) continue;
@@ -530,8 +530,12 @@ ColumnFacts examine(const std::vector<double>& column, bool range) {
       ++steps;
       const double d = v - last;
       unit_steps += d == 1.0;
-      if (steps == 1) first_step = d;
-      first_steps += d == first_step;
+      if (votes == 0) candidate = d;
+      if (d == candidate) {
+        ++votes;
+      } else {
+        --votes;
+      }
       decreases += d < 0.0;
       bad_steps += !(d >= 1.0 && d == std::floor(d));
     }
@@ -543,7 +547,18 @@ ColumnFacts examine(const std::vector<double>& column, bool range) {
   const std::size_t few = steps / 100;
   f.counter = f.integers && steps > 0 && bad_steps <= few && unit_steps * 10 >= steps * 9;
   f.increasing = !f.constant && decreases <= few;
-  if (f.integers && first_step >= 1.0 && bad_steps <= few && first_steps * 10 >= steps * 9) f.stride = first_step;
+  const std::size_t typos = std::max<std::size_t>(2, steps / 10);  // one typed count moves two steps
+  if (f.integers && candidate >= 1.0 && bad_steps <= typos) {
+    // The majority step, where all steps but one typo's two (or 10 %) are it.
+    std::size_t agree = 0;
+    last = std::numeric_limits<double>::quiet_NaN();
+    for (double v : column) {
+      if (!std::isfinite(v)) continue;
+      if (!std::isnan(last)) agree += v - last == candidate;
+      last = v;
+    }
+    if (2 * agree > steps && agree + typos >= steps) f.stride = candidate;
+  }
   if (!range) return f;
   f.ranged = true;
   const std::size_t k = values.size() / 200;

@@ -205,9 +205,9 @@ struct ColumnFacts {
   bool constant = true;     ///< one value throughout (or none)
   bool integers = true;     ///< whole numbers only
   bool counter = false;     ///< whole numbers stepping by one, at most a few larger steps
-  /// The whole step of whole numbers that (but for a few) all step by it, as
-  /// a count of periods by 2 ("1, 3, 5, ... periods at t") or a clock in ms
-  /// by 20; 0 otherwise.
+  /// The whole step of whole numbers that all but one typo's two steps (or
+  /// 10 %) take, and more than half, as a count of periods by 2 ("1, 3, 5,
+  /// ... periods at t") or a clock in ms by 20; 0 otherwise.
   double stride = 0.0;
   bool increasing = false;  ///< never decreasing, at most a few glitches (clean decides)
   bool ranged = false;      ///< lo and hi were found (examine's `range`)

@@ -24,12 +24,13 @@ double amplitude_of_factor(double factor) {
 namespace {
 
 /// SwingGroup::amplitude_uncertainty, for groups of m half swings from the
-/// record's first: d ln(1 + F_j) = sum_i f'(theta_i) theta_i x_i^T dc / (m (1 + F_j))
+/// crossings `starts` (one a group): d ln(1 + F_j) = sum_i f'(theta_i) theta_i x_i^T dc / (m (1 + F_j))
 /// over a group's swings (f the exact factor, F_j its mean, x_i the powers of
 /// the curve's time at swing i), weighted over the groups into E^T dc; a
 /// common shift dtheta moves the same mean by S dtheta, S the weighted mean
 /// of f'(theta_j) / (1 + F_j). The uncertainty is sqrt(E^T C E) / S.
-void set_amplitude_uncertainty(const SwingAnalysis& a, std::size_t m, std::vector<SwingGroup>& groups) {
+void set_amplitude_uncertainty(const SwingAnalysis& a, std::size_t m, const std::vector<std::size_t>& starts,
+                               std::vector<SwingGroup>& groups) {
   const SwingAnalysis::SmoothCurve& curve = a.smooth_curve;
   const std::size_t q = curve.coefficients.size();
   if (q == 0 || curve.covariance.size() != q * q) return;
@@ -44,7 +45,7 @@ void set_amplitude_uncertainty(const SwingAnalysis& a, std::size_t m, std::vecto
     const SwingGroup& g = groups[j];
     const double w = g.period * g.period / (g.uncertainty * g.uncertainty);
     const double one_plus = 1.0 + finite_amplitude_agm(g.amplitude);
-    for (std::size_t i = j * (m + 1); i < j * (m + 1) + m; ++i) {
+    for (std::size_t i = starts[j]; i < starts[j] + m; ++i) {
       const double theta = a.smooth_amplitudes[i];
       const double x = (a.swings[i].peak_time - curve.mid) / curve.half;
       double power = 1.0;
@@ -84,9 +85,12 @@ std::vector<SwingGroup> swing_groups(const SwingAnalysis& a) {
   // fit_crossing_times's parameters: 1, x, x^2, (-1)^i, and x^3 on the plain index from 12 crossings.
   const double dof_each = m + 1.0 - (weighted_index || m + 1 < 12 ? 4.0 : 5.0);
   std::vector<PeriodEstimate> fits;
+  std::vector<std::size_t> starts;  // each group's first crossing
   std::vector<double> means;
   double pooled_ssr = 0.0, pooled_lag = 0.0, pooled_plain = 0.0, dof = 0.0;
   for (std::size_t s = 0; s + m < c.size(); s += m + 1) {
+    // No group across a bridged glitch (step 8): its swings are not k periods.
+    if (std::any_of(c.begin() + s + 1, c.begin() + s + m + 1, [](const Crossing& x) { return x.steps > 1; })) continue;
     const std::vector<Crossing> part(c.begin() + s, c.begin() + s + m + 1);
     const std::vector<double> theta(a.smooth_amplitudes.begin() + s, a.smooth_amplitudes.begin() + s + m);
     const PeriodEstimate p = fit_crossing_times(part, cpp, weighted_index ? theta : std::vector<double>{});
@@ -103,6 +107,7 @@ std::vector<SwingGroup> swing_groups(const SwingAnalysis& a) {
     g.period = p.value;
     g.amplitude = amplitude_of_factor(factor);
     out.push_back(g);
+    starts.push_back(s);
     fits.push_back(p);
     means.push_back(mean);
   }
@@ -115,7 +120,7 @@ std::vector<SwingGroup> swing_groups(const SwingAnalysis& a) {
     const double own_s2 = p.residual_rms * p.residual_rms * p.inflation;
     out[j].uncertainty = own_s2 > 0.0 && means[j] > 0.0 ? p.uncertainty * std::sqrt(s2 / means[j] / own_s2) : p.uncertainty;
   }
-  set_amplitude_uncertainty(a, m, out);
+  set_amplitude_uncertainty(a, m, starts, out);
   return out;
 }
 

@@ -6,7 +6,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <numeric>
 
 #include "pendulum/amplitude.hpp"
 #include "pendulum/files.hpp"
@@ -15,6 +14,7 @@
 #include "pendulum/swing_energy.hpp"
 #include "../text.hpp"
 #include "huge_pages.hpp"
+#include "stages.hpp"
 
 namespace pendulum {
 namespace {
@@ -213,6 +213,8 @@ double noise_sigma(const std::vector<double>& s) {
 /// frame rate needs), the window widens by a sample each side until two
 /// times differ: a line needs two.
 Crossing line_zero(const std::vector<double>& t, const std::vector<double>& s, std::size_t i, std::size_t j) {
+  // The window's own samples: its weight, and where find_crossings resumes.
+  const int window = static_cast<int>(j - i + 1);
   while (t[i] == t[j] && (i > 0 || j + 1 < t.size())) {
     if (i > 0) --i;
     if (j + 1 < t.size()) ++j;
@@ -227,7 +229,7 @@ Crossing line_zero(const std::vector<double>& t, const std::vector<double>& s, s
     sts += (t[k] - tm) * (s[k] - sm);
   }
   const double slope = sts / stt;
-  return {tm - sm / slope, slope, static_cast<int>(j - i + 1)};
+  return {tm - sm / slope, slope, window};
 }
 
 /// The extremum of a sparse half swing (fewer than 7 samples in its middle
@@ -895,16 +897,12 @@ struct MendedStamps {
   long stride = 1;          ///< the counter's counts a stamp interval
 };
 
-/// The greatest common factor of a counter column's steps, where they are
-/// all positive whole numbers; 1 otherwise.
+/// A counter column's stride (recording_text::examine, the rule the reader
+/// took the column for a count by: all but a few steps one whole step); 1
+/// where there is none, or beyond a million.
 long counter_stride(const std::vector<double>& counts) {
-  long g = 0;
-  for (std::size_t k = 1; k < counts.size(); ++k) {
-    const double d = counts[k] - counts[k - 1];
-    if (!(d >= 1.0 && d == std::floor(d) && d < 1e9)) return 1;
-    g = std::gcd(g, static_cast<long>(d));
-  }
-  return std::max(g, 1L);
+  const double stride = recording_text::examine(counts, false).stride;
+  return stride > 1.0 && stride <= 1e6 ? static_cast<long>(stride) : 1L;
 }
 
 /// More stamps missed in a row than this is no timer log of one pendulum.
@@ -1717,7 +1715,8 @@ SwingAnalysis clean_stretch_of(const Recording& r, const std::string& file, cons
       });
     };
     for (Glitch g : from.outliers) {
-      if (at_an_end(g)) {
+      // Event stamps' counts are step 5's (a missed stamp mended), not bridged.
+      if (at_an_end(g) || r.kind == SignalKind::event_stamps) {
         unbridged.push_back(g);
         continue;
       }
@@ -1756,6 +1755,13 @@ SwingAnalysis clean_stretch_of(const Recording& r, const std::string& file, cons
       }
       break;
     }
+    // Only the bridges this stretch's crossings took (apply_bridges notes any other).
+    spans.erase(std::remove_if(spans.begin(), spans.end(),
+                               [&](const Bridge& x) {
+                                 const std::size_t j = crossing_at(next.crossings, x.end);
+                                 return j >= next.crossings.size() || next.crossings[j].steps != x.steps;
+                               }),
+                spans.end());
     if (first > 0) cuts.push_back(describe_cut(c.front().time, a, from));
     if (last + 1 < c.size()) cuts.push_back(describe_cut(b, c.back().time, from));
     // Bridges of earlier passes are this pass's `spans` again, or grown into one, or left out of the stretch.

@@ -804,7 +804,9 @@ std::vector<Glitch> outlier_stretches(const std::vector<Crossing>& c, const std:
 /// (s: `period`) apart are one (a glitchy end is many outliers among
 /// good-looking intervals), and one that comes within 5 periods of an end
 /// reaches it (a release's hand, a catch); neither more than a fifth of the
-/// record (a short one is no glitch end to end).
+/// record (a short one is no glitch end to end). A release takes in no
+/// stretch that would make it over 10 periods long (an 80 deg swing's
+/// outliers every 5-9 periods had made 38 periods of one).
 std::vector<Glitch> join_glitches(const std::vector<Glitch>& stretches, const std::vector<Crossing>& c, double period) {
   if (c.empty()) return {};
   const double record = c.back().time - c.front().time;
@@ -813,7 +815,11 @@ std::vector<Glitch> join_glitches(const std::vector<Glitch>& stretches, const st
   for (Glitch g : stretches) {
     if (g.start - c.front().time < end_reach) g.start = c.front().time;
     if (c.back().time - g.end < end_reach) g.end = c.back().time;
-    if (!merged.empty() && g.start - merged.back().end < reach) {
+    // A release is the first few swings (the hand letting go, the fast modes
+    // dying out): it takes in no stretch that would make it over 10 periods.
+    const bool release = !merged.empty() && merged.back().start == c.front().time;
+    if (!merged.empty() && g.start - merged.back().end < reach &&
+        !(release && g.end - c.front().time > 10.0 * period && g.end != c.back().time)) {
       merged.back().end = g.end, merged.back().worst = std::max(merged.back().worst, g.worst);
     } else {
       merged.push_back(g);

@@ -99,6 +99,14 @@ Command add_reduce_command(CLI::App& app) {
                                   printable_name(o->file) + " for its scene parts (docs/recordings.md)");
       }
     }();
+    if (!scene.length_measured) {
+      // An amplitude sweep without its length: T0 and the law, no g.
+      const AmplitudeSweep sweep = *amplitude_sweep_of(scene);
+      std::cout << (o->format == "table" ? sweep_result_table(scene, sweep)
+                                         : sweep_result_json(scene, sweep, printable_name(o->file)));
+      if (o->format != "table") print_warnings(scene.warnings);
+      return o->strict && !sweep_reasons(scene, sweep).empty() ? kExitSuspect : 0;
+    }
     const Analysis analysis = analyse(scene, o->analysis);
     const std::string output =
         o->format == "table"

@@ -93,6 +93,8 @@ std::string reduce_json(const std::optional<std::string>& path, const std::optio
   const SceneSource source = scene_source(path, text, directory, allow_outside);
   py::gil_scoped_release unlocked;
   const pendulum::ParsedScene scene = pendulum::parse_scene(source.text, source.files);
+  // An amplitude sweep without its length: T0 and the law, as the CLI's reduce prints them.
+  if (!scene.length_measured) return pendulum::sweep_result_json(scene, *pendulum::amplitude_sweep_of(scene), source.input);
   const pendulum::Analysis analysis = pendulum::analyse(scene, options);
   return pendulum::result_json(scene, analysis, options, source.input);
 }

@@ -151,14 +151,14 @@ TEST_CASE("import --format table shows a table's columns and each observation th
   CHECK(text.out.find('{') == std::string::npos);  // no JSON
 }
 
-TEST_CASE("The two tables in data/ are tests/tools/make_tables.py's output", "[cli][tables]") {
+TEST_CASE("The tables in data/ are tests/tools/make_tables.py's output", "[cli][tables]") {
   // The script writes every table of tests/tables/ and data/ from its seeds,
   // here under a folder of its own.
   const std::string dir = temporary_file() + ".d";
   std::filesystem::create_directories(dir);
   const std::string command = "/usr/bin/python3 " + kTests + "/tools/make_tables.py " + dir + " > /dev/null";
   REQUIRE(std::system(command.c_str()) == 0);
-  for (const std::string name : {"pendulum_lengths_table.csv", "pivot_scan_table.csv"}) {
+  for (const std::string name : {"pendulum_lengths_table.csv", "pivot_scan_table.csv", "amplitude_sweep.csv"}) {
     REQUIRE(std::filesystem::exists(dir + "/data/" + name));
   }
   // And every other file it writes (tests/tables/, the bad tables).
@@ -170,7 +170,7 @@ TEST_CASE("The two tables in data/ are tests/tools/make_tables.py's output", "[c
     CHECK(pendulum::test::read_text(entry.path().string()) == pendulum::test::read_text(kData + "/../" + name));
     ++files;
   }
-  CHECK(files == 22);
+  CHECK(files == 26);
   std::filesystem::remove_all(dir);
 }
 
@@ -190,4 +190,63 @@ TEST_CASE("The pivot scan's HTML report gives the textbook g with its uncertaint
   // Rounded to the uncertainty's first digits (value_with_uncertainty).
   CHECK(std::abs(value - g.at("value").get<double>()) <= sigma);
   CHECK(sigma == Approx(g.at("uncertainty").get<double>()).epsilon(0.5));
+}
+
+TEST_CASE("an amplitude sweep's table reduces to its small-amplitude period, and to g once its length is given",
+          "[cli][tables][sweep]") {
+  // tests/tools/make_tables.py draws each on the exact law (mpmath's K) at g = 9.81 m/s^2 and this length (m).
+  struct Case {
+    std::string file;
+    double length;
+    const char* unit;
+  };
+  const Case cases[] = {{kData + "/amplitude_sweep.csv", 0.80, "deg"},
+                        {kTests + "/tables/sweep_signed_radians.txt", 0.47, "rad"},
+                        {kTests + "/tables/sweep_winkel.txt", 1.20, "deg"},
+                        {kTests + "/tables/sweep_degrees_headerless.txt", 0.35, "deg"}};
+  for (const Case& c : cases) {
+    INFO(c.file);
+    json scene = json::parse(succeeded("import " + c.file).out);
+    CHECK(scene.at("length") == "not measured");
+    CHECK(scene.at("title").get<std::string>().find("an amplitude sweep") != std::string::npos);
+    CHECK(scene.at("import").at("columns")[0].at("role") == "amplitude");
+    CHECK(scene.at("import").at("columns")[0].at("unit") == c.unit);
+    CHECK_FALSE(scene.at("observations")[0].contains("length"));
+    const std::string file = temporary_file();
+    std::ofstream(file) << scene.dump();
+    const json sweep = json::parse(succeeded("reduce " + file).out);
+    CHECK(sweep.at("kind") == "amplitude_sweep");
+    CHECK(sweep.at("g").is_null());
+    const json& t0 = sweep.at("amplitude_sweep").at("small_amplitude_period");
+    const double truth = 2.0 * M_PI * std::sqrt(c.length / 9.81);
+    CHECK(std::abs(t0.at("value").get<double>() - truth) < 3.0 * t0.at("uncertainty").get<double>());
+    CHECK(sweep.at("amplitude_sweep").at("quadratic").at("agrees_with_law") == true);
+    CHECK(sweep.at("status") == "ok");
+    CHECK_THAT(succeeded("reduce --format table " + file).out,
+               Contains("small-amplitude period T0 = ") && Contains("g                   = none: the length was not measured"));
+    // Nothing else computes g without a length: each command says so (batch in its line for the file).
+    for (const std::string& command : {std::string("batch ") + file, "report -o " + file + ".html " + file}) {
+      const Run refused = run(command);
+      CHECK(refused.status == 1);
+      CHECK_THAT(refused.err + refused.out, Contains("an amplitude sweep without its length gives its small-amplitude period"));
+    }
+    // With its length, a series: g from the corrected fit, and T0 beside it.
+    scene["length"] = {{"value", c.length}, {"uncertainty", 0.001}, {"unit", "m"}};
+    std::ofstream(file) << scene.dump();
+    const json series = json::parse(succeeded("reduce " + file).out);
+    std::remove(file.c_str());
+    CHECK(series.at("kind") == "series");
+    const json& g = series.at("g");
+    CHECK(std::abs(g.at("value").get<double>() - 9.81) < 3.0 * g.at("uncertainty").get<double>());
+    CHECK(series.at("fit").at("textbook").is_null());  // no line through one length
+    CHECK(series.at("amplitude_sweep").at("small_amplitude_period").at("value").get<double>() ==
+          Approx(t0.at("value").get<double>()).epsilon(1e-12));
+  }
+  // The page plots T against the amplitude with the law and the quadratic, and says the test's verdict.
+  const std::string page = temporary_file() + ".html";
+  succeeded("report -o " + page + " " + kData + "/amplitude_sweep_scene.json");
+  const std::string html = pendulum::test::read_text(page);
+  std::remove(page.c_str());
+  CHECK_THAT(html, Contains("<h3>Amplitude sweep</h3>") && Contains("exact law T = T\u2080 2K/\u03C0") &&
+                       Contains("at these amplitudes (1/16 at small ones): agrees"));
 }

@@ -81,7 +81,8 @@ TEST_CASE("Words: the header's spellings give roles and units", "[recordings][co
       {"Zeit (s)", Role::time, "s"},
       {"tijd [ms]", Role::time, "ms"},
       {"hoek", Role::angle, ""},
-      {"\xc3\xa2ngulo (graus)", Role::angle, "graus"},
+      {"\xc3\xa2ngulo (graus)", Role::angle, "deg"},  // Portuguese degrees
+      {"# winkel in grad", Role::angle, "deg"},         // a comment line as the header, the unit after "in"
   };
   for (const auto& c : cases) {
     INFO(c.cell);

@@ -668,7 +668,32 @@ std::string monte_carlo_finding(const MonteCarloResult& mc, const Analysis& a) {
 
 }  // namespace
 
+std::optional<AmplitudeSweep> amplitude_sweep_of(const ParsedScene& scene) {
+  const auto& obs = scene.observations;
+  if (!scene.series || scene.swing_by_swing || obs.empty()) return std::nullopt;
+  const double length = obs.front().length;
+  std::vector<double> amplitudes;
+  for (const auto& o : obs) {
+    if (o.setting != Setting::length || std::abs(o.length - length) > 1e-9 * length) return std::nullopt;
+    amplitudes.push_back(o.amplitude);
+  }
+  std::sort(amplitudes.begin(), amplitudes.end());
+  const auto distinct = std::unique(amplitudes.begin(), amplitudes.end()) - amplitudes.begin();
+  if (distinct < (scene.length_measured ? 3 : 2)) return std::nullopt;
+  std::vector<SweepPoint> points;
+  for (std::size_t k = 0; k < obs.size(); ++k) {
+    const auto& u = scene.observation_uncertainties[k];
+    points.push_back({obs[k].amplitude, u.amplitude, obs[k].period, u.period});
+  }
+  return fit_amplitude_sweep(points, scene.period_uncertainty_from_scatter);
+}
+
 Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
+  if (!given.length_measured) {
+    throw InputError("length", "\"" + std::string(kLengthNotMeasured) + "\": an amplitude sweep without its length "
+                               "gives its small-amplitude period (pendulum-g reduce), not g; expected the length "
+                               "for g and everything that needs it");
+  }
   Analysis out;
   std::optional<ParsedScene> fitted;
   if (given.decay_data) {
@@ -684,6 +709,7 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
     out.drag = predict_drag(scene.apparatus, scene.observations[0]);
   }
   visit_period_model(scene.model, [&](auto model) { Fit<decltype(model)>(scene, options, out).run(); });
+  out.amplitude_sweep = amplitude_sweep_of(scene);
   for (auto& w : visit_period_model(scene.model, [&](auto model) {
          return decltype(model)::skipped_part_warnings(scene, options.negligible_fraction);
        })) {

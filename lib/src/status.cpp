@@ -355,7 +355,7 @@ void judge_dispersion(const ParsedScene& scene, const Analysis& a, std::vector<s
         "fit: " + dispersion_finding(dispersion(a.fit.chi2, a.fit.dof), "the observations scatter about the fit") +
         ": uncertainties understated, or something the model misses (" +
         causes.scatter + ")?" +
-        (!causes.lengths_to_bob || offset_fitted(a) ? std::string()
+        (!causes.lengths_to_bob || offset_fitted(a) || a.amplitude_sweep ? std::string()
                                                     : " Lengths measured to another point than the bob's centre (its "
                                                       "top, the knot) are fitted out by \"fit\": [\"length_offset\"].") +
         " g's uncertainty is the one the scatter supports, " + format_number(*a.g.uncertainty, 3) +
@@ -397,6 +397,9 @@ Verdict judge(const ParsedScene& scene, const Analysis& analysis) {
                         "is singular); add observations at other settings, or fit fewer unknowns");
   }
   judge_dispersion(scene, analysis, v.reasons);
+  if (analysis.amplitude_sweep && sweep_law_refuted(*analysis.amplitude_sweep)) {
+    v.reasons.push_back(sweep_law_finding(*analysis.amplitude_sweep));
+  }
   if (bob) v.reasons.push_back(std::move(*bob));
   judge_air(scene, v.reasons);
   judge_amplitudes(scene, v.reasons);

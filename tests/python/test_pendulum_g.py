@@ -75,6 +75,13 @@ def test_a_dict_and_text_reduce_as_standard_input_does():
     assert expected["status"] == "ok"
 
 
+def test_an_amplitude_sweep_without_its_length_reduces_as_the_cli_does():
+    scene = cli("import", os.path.join(DATA, "amplitude_sweep.csv")).stdout
+    expected = json.loads(cli("reduce", "-", stdin=scene).stdout)
+    assert expected["kind"] == "amplitude_sweep" and expected["g"] is None
+    assert pendulum_g.reduce(scene) == expected
+
+
 def test_options_as_the_cli_takes_them():
     scene = os.path.join(DATA, "nelson_olsson_1986.json")
     for flags, kwargs in [(["--amplitude-method", "series", "--series-terms", "2"],

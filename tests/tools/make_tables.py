@@ -15,6 +15,7 @@ import math
 import os
 import sys
 
+import mpmath
 import numpy as np
 
 G = 9.81
@@ -46,6 +47,19 @@ def scan_table(seed, h_cm, k=1 / math.sqrt(12), oscillations=10):
         t10 = oscillations * 2 * math.pi * math.sqrt((k * k + true_h * true_h) / (G * true_h)) * amp_factor(rng, 1)[0]
         t10 = round(t10 + rng.normal(0.0, 0.06), 2)
         rows.append((h, 0.05, round(t10 / oscillations, 4), 0.006))
+    return rows
+
+
+def sweep_table(seed, angles_deg, length, repeats=1, oscillations=1, sigma=0.01):
+    """Rows (theta0 in deg as given, time of `oscillations` in s): one pendulum of `length` (m) released at
+    each angle, timed `repeats` times, by the exact law T = T0 2K(sin^2(theta0/2))/pi (mpmath's ellipk,
+    not pendulum-g's AGM), a hand's N(0, sigma) on each time."""
+    rng = np.random.default_rng(seed)
+    t0 = 2 * math.pi * math.sqrt(length / G)
+    rows = []
+    for a in angles_deg:
+        law = 2 * float(mpmath.ellipk(math.sin(math.radians(abs(a)) / 2) ** 2)) / math.pi
+        rows += [(a, oscillations * t0 * law + x) for x in rng.normal(0.0, sigma, repeats)]
     return rows
 
 
@@ -103,6 +117,19 @@ def main():
     write("tests/tables/single_timings.csv", "L (cm),T (s)\n" + "".join(f"{l:.1f},{t:.3f}\n" for l, t in single))
     write("tests/tables/headerless_pivot_scan.txt",
           "".join(f"{h / 100:.3f}, {s / 100:.4f}, {t:.4f}, {u:.3f}\n" for h, s, t, u in scan_table(9, holes)))
+    # Amplitude sweeps (docs/series.md, "Amplitude sweeps"): in data/, 0.80 m timed three times at
+    # each of 10 to 80 deg; headerless signed radians with their uncertainties (x, y, sigma x, sigma y,
+    # a tab then spaces), 0.47 m; a German comment header over times of 5 periods, 1.20 m; headerless
+    # degrees after an empty line (CRLF), 0.35 m.
+    sweep = sweep_table(11, range(10, 81, 10), 0.80, repeats=3)
+    write("data/amplitude_sweep.csv", "theta (deg),T (s)\n" + "".join(f"{a},{t:.3f}\n" for a, t in sweep))
+    signed = [a for a in range(80, 0, -10)] + [-a for a in range(10, 81, 10)]
+    write("tests/tables/sweep_signed_radians.txt", "".join(
+        f"{math.radians(a):.10f}\t{t:.3f} 0.08726646 0.01\n" for a, t in sweep_table(12, signed, 0.47)))
+    write("tests/tables/sweep_winkel.txt", "# winkel in grad;t in s     5 Perioden\n" + "".join(
+        f"{a};{t:.3f}\n" for a, t in sweep_table(13, range(30, 61, 5), 1.20, oscillations=5, sigma=0.02)) + "\n")
+    write("tests/tables/sweep_degrees_headerless.txt", "\r\n" + "".join(
+        f"{a}\t{t:.3f}\r\n" for a, t in sweep_table(14, [3.5, 11, 16.5, 20.75, 28.75, 32.5], 0.35, sigma=0.004)))
     # Bad tables (tests/bad_recordings/expected.json).
     write("tests/bad_recordings/table_no_period.csv", "L (cm),theta (deg)\n55,5\n75,5\n")
     write("tests/bad_recordings/table_one_row.csv", "L (cm),t10 (s)\n55,14.9\n")

@@ -12,6 +12,7 @@
 #include <variant>
 #include <vector>
 
+#include "pendulum/amplitude_sweep.hpp"
 #include "pendulum/decay_fit.hpp"
 #include "pendulum/drag.hpp"
 #include "pendulum/estimate.hpp"
@@ -189,6 +190,9 @@ struct Analysis {
   std::optional<MonteCarloResult> monte_carlo;
   /// JSON paths of the inputs stated without an uncertainty.
   std::vector<std::string> inputs_without_uncertainty;
+  /// A series at one length and three amplitudes or more: T0 and the law
+  /// tested (amplitude_sweep_of).
+  std::optional<AmplitudeSweep> amplitude_sweep;
   /// The fit of alpha and beta when the scene gives a decay record.
   std::optional<DecayFit> decay_fit;
   /// alpha and beta given beside a decay record, for comparison.
@@ -231,9 +235,17 @@ void use_fitted_decay(ParsedScene& scene, const DecayFit& fit);
 /// `fitted` in PhysicalPendulum's parameter order.
 std::array<double, 3> physical_start(const ParsedScene& scene, const std::array<bool, 3>& fitted);
 
+/// The scene's observations as an amplitude sweep: a series (not a
+/// recording's swing-by-swing groups) of a ball at one length, measured or
+/// not, with three amplitudes or more (two where the length is not
+/// measured); none otherwise. Each period with its stated uncertainty, each
+/// amplitude as given.
+std::optional<AmplitudeSweep> amplitude_sweep_of(const ParsedScene& scene);
+
 /// Fits the scene's period model to its observations and propagates every
 /// input's uncertainty (and the decay fit's alpha-beta covariance) by
 /// automatic differentiation: implicit-function sensitivities of the fit.
+/// A scene whose length is not measured is refused (InputError at "length").
 Analysis analyse(const ParsedScene& scene, const AnalysisOptions& options = {});
 
 }  // namespace pendulum

@@ -26,6 +26,14 @@ std::string result_json(const ParsedScene& scene, const Analysis& analysis, cons
 /// microseconds and mGal, g rounded to its uncertainty, the status.
 std::string result_table(const ParsedScene& scene, const Analysis& analysis);
 
+/// The result of an amplitude sweep whose length was not measured
+/// (ParsedScene::length_measured): T0 and the law tested, "g": null.
+std::string sweep_result_json(const ParsedScene& scene, const AmplitudeSweep& sweep, const std::string& input);
+std::string sweep_result_table(const ParsedScene& scene, const AmplitudeSweep& sweep);
+/// Why that result is suspect: the reader's findings, periods scattering
+/// beyond their stated uncertainties, the law refuted; empty when ok.
+std::vector<std::string> sweep_reasons(const ParsedScene& scene, const AmplitudeSweep& sweep);
+
 /// g with its expanded uncertainty as a lab report quotes it after "g = ",
 /// both rounded to two significant digits of U (GUM 7.2.6): "9.8034 ± 0.0031
 /// m/s² (k = 2.07, 95 %, ν_eff = 31)", with "+-", "m/s^2" and "nu_eff" where

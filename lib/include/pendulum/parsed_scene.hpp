@@ -77,6 +77,9 @@ struct SceneRecording {
   std::optional<RecordingReduction> reduction = std::nullopt;
 };
 
+/// A sweep's "length" when nobody measured it (docs/series.md, "Amplitude sweeps").
+inline constexpr const char* kLengthNotMeasured = "not measured";
+
 struct ParsedScene {
   PeriodModelKind model;  ///< the registry's first, the ball, unless the observations say otherwise
   Apparatus<double> apparatus;              ///< SI values
@@ -89,6 +92,10 @@ struct ParsedScene {
   /// The series is one recording's groups of swings (RecordingReduction):
   /// Eq. (50) is not applied over them (Decay::over_timing).
   bool swing_by_swing = false;
+  /// False for an amplitude sweep whose "length" is "not measured": the
+  /// observations' lengths are 0, and it gives T0 alone (amplitude_sweep.hpp),
+  /// never g (analyse() refuses it).
+  bool length_measured = true;
   /// Unknowns besides g ("fit"), by the period model's parameter names.
   std::vector<std::string> fit;
   /// "period_uncertainty": "scatter_about_fit": single timings without an

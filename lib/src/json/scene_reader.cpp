@@ -164,6 +164,14 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
     put(o, key, Dimension::length, setting_info(v.setting).signed_distance ? Range::any : Range::non_negative, v.length,
         u.length);
     within(std::abs(v.length), 0.0, 1e3, prefix + key + ".value", "m", "a laboratory body's pivot, within 1 km");
+  } else if (length_owner.at("length").is_string() && &length_owner != &o) {
+    // An amplitude sweep whose length nobody measured gives T0, not g (docs/series.md, "Amplitude sweeps").
+    PENDULUM_FAIL_IF(length_owner.text("length") != kLengthNotMeasured, "length",
+                     "got " + shown(length_owner.at("length")) + "; expected a length ({\"value\": 0.8, \"uncertainty\": "
+                     "0.001, \"unit\": \"m\"}), or \"" + kLengthNotMeasured + "\" for an amplitude sweep whose "
+                     "length nobody measured (its small-amplitude period, no g)");
+    out.length_measured = false;
+    v.length = u.length = 0.0;
   } else {
     const Measured length = quantity(length_owner, "length", Dimension::length, Range::positive, &source.measured_to);
     v.length = length.value;
@@ -423,6 +431,24 @@ void refuse_one_setting_fit(const ParsedScene& out) {
                        " gives one period, which cannot tell g from " + fitted);
 }
 
+/// A sweep without its length: T0 alone is asked of it, so nothing is fitted
+/// but T0, and the amplitudes must differ.
+void check_sweep_without_length(const ParsedScene& out) {
+  PENDULUM_FAIL_IF(!out.fit.empty(), "fit",
+                   "got unknowns beside g with \"length\": \"" + std::string(kLengthNotMeasured) +
+                       "\"; expected none: a sweep without its length gives its small-amplitude period alone");
+  PENDULUM_FAIL_IF(out.recordings.size() > 0 || out.decay_data, "length",
+                   "got \"" + std::string(kLengthNotMeasured) + "\" in a scene with a recording or a decay record; "
+                   "expected the length: a recording's corrections need it");
+  std::vector<double> amplitudes;
+  for (const auto& o : out.observations) amplitudes.push_back(o.amplitude);
+  std::sort(amplitudes.begin(), amplitudes.end());
+  PENDULUM_FAIL_IF(std::unique(amplitudes.begin(), amplitudes.end()) - amplitudes.begin() < 2, "length",
+                   "got \"" + std::string(kLengthNotMeasured) + "\" and every observation at one amplitude; expected "
+                   "the length (g needs it), or observations at different amplitudes (an amplitude sweep's "
+                   "small-amplitude period)");
+}
+
 /// schema, title, source, notes: what every document may say about itself.
 void read_header(Object& top, ParsedScene& out) {
   if (top.has("schema")) {
@@ -532,6 +558,10 @@ ParsedScene parse_scene(const std::string& text, const SceneFiles& files) {
                        (out.observations.size() == 1 ? "" : "s") + " for " + std::to_string(unknowns) +
                        " unknowns (g" + unknown_names(out.fit) + "); expected at least as many observations "
                        "as unknowns");
+  if (!out.length_measured) {
+    check_sweep_without_length(out);
+    return out;  // every other check weighs a period against its length
+  }
   refuse_one_setting_fit(out);
   refer_lengths_to_centre(out);
   visit_period_model(out.model, [&](auto model) { decltype(model)::check_scene(out); });

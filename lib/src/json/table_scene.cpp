@@ -83,7 +83,7 @@ J observations_as(const SettingsTable& table, const std::string& name) {
   J list = J::array();
   for (const TableObservation& o : table.observations) {
     J item;
-    item[setting_key(table.setting)] = quantity_json<J>(o.setting, o.setting_sigma, table.setting_unit);
+    if (!table.sweep) item[setting_key(table.setting)] = quantity_json<J>(o.setting, o.setting_sigma, table.setting_unit);
     if (o.amplitude) item["amplitude"] = quantity_json<J>(*o.amplitude, o.amplitude_sigma, table.amplitude_unit);
     J timing = {{"oscillations_per_trial", table.oscillations}, {"unit", table.time_unit}, {"trials", o.times}};
     if (o.time_sigma) timing["uncertainty"] = *o.time_sigma;
@@ -132,7 +132,7 @@ std::string table_scene(const SettingsTable& table, const std::string& table_nam
   using json_reader::json;
   nlohmann::ordered_json scene;
   scene["schema"] = json_reader::kSceneSchema;
-  scene["title"] = table_name + ": " + setting_info(table.setting).series;
+  scene["title"] = table_name + ": " + (table.sweep ? "an amplitude sweep" : setting_info(table.setting).series);
   scene["source"] = "pendulum-g import: table " + table_name;
   // What the table's kind cannot know without its parts (models/registry.hpp).
   visit_period_model(kind_of_setting(table.setting), [&](auto model) {
@@ -145,7 +145,11 @@ std::string table_scene(const SettingsTable& table, const std::string& table_nam
   // The textbook line's intercept: lengths taped to the top of the bob or a
   // knot run to another point than its centre, by the same distance at every
   // length; three lengths or more leave a degree of freedom beside it.
-  if (table.setting == Setting::length && table.observations.size() >= 3) scene["fit"].push_back("length_offset");
+  if (table.setting == Setting::length && !table.sweep && table.observations.size() >= 3) {
+    scene["fit"].push_back("length_offset");
+  }
+  // A sweep's length is not in its table: T0 without it, g with it.
+  if (table.sweep) scene["length"] = kLengthNotMeasured;
   if (table.sigma_from_scatter) scene["period_uncertainty"] = "scatter_about_fit";
   const bool amplitudes = !table.observations.empty() && table.observations.front().amplitude;
   if (!amplitudes) scene["amplitude"] = "not recorded";

@@ -390,6 +390,7 @@ std::string result_json(const ParsedScene& scene, const Analysis& a, const Analy
     out["kind"] = "series";
     out["g"] = g_json(a);
     out["fit"] = fit_json(scene, a);
+    if (a.amplitude_sweep) out["amplitude_sweep"] = writer::amplitude_sweep_json(*a.amplitude_sweep);
     out["negligible_threshold"] = {{"fraction_of_period_uncertainty", options.negligible_fraction}};
   } else {
     const ObservationResult& o = a.observations.front();
@@ -750,6 +751,7 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
       using Model = decltype(model);
       Model::fit_results_lines(a.fit.results_of<Model>(), os);
     });
+    if (a.amplitude_sweep) writer::amplitude_sweep_lines(*a.amplitude_sweep, false, os);
   }
   os << "g                   = " << rounded(a.g.value, a.g.uncertainty) << " m/s^2";
   const int g_decimals = a.g.uncertainty ? decimals_of(*a.g.uncertainty) : 5;

@@ -8,7 +8,11 @@
 
 #include "pendulum/estimate.hpp"
 
+#include <ostream>
+
 namespace pendulum {
+
+struct AmplitudeSweep;
 
 /// JSON text as every command prints it (indent -1: one line). Throws
 /// std::logic_error at a number that is not finite, which the JSON library
@@ -38,6 +42,12 @@ std::string format_fixed(double x, int decimals);
 std::string plus_minus(const std::optional<double>& u, const char* format);
 /// "9.8034 +- 0.0015": the value rounded to its uncertainty.
 std::string rounded(double value, const std::optional<double>& u);
+
+/// An amplitude sweep's T0, law test and points (sweep_writer.cpp).
+nlohmann::ordered_json amplitude_sweep_json(const AmplitudeSweep& s);
+/// The same as lines of the result table; `with_chi2` false beside a
+/// series' fit, whose chi2 line is the same fit's at one length.
+void amplitude_sweep_lines(const AmplitudeSweep& s, bool with_chi2, std::ostream& os);
 
 }  // namespace writer
 

@@ -58,6 +58,11 @@ StraightLine textbook_line(const ParsedScene& scene, const std::array<bool, Simp
 /// where they are too close together to separate g from the offset.
 std::optional<TextbookFit> textbook_fit(const FitState<SimplePendulum::kParameters>& fit,
                                         std::vector<std::string>& warnings) {
+  // Through one length, T^2 against L is no line: an amplitude sweep's g is the fit's.
+  const auto& obs = fit.scene.observations;
+  if (obs.size() > 1 && std::all_of(obs.begin(), obs.end(), [&](const auto& o) { return o.length == obs.front().length; })) {
+    return std::nullopt;
+  }
   const StraightLine line = textbook_line(fit.scene, fit.fitted);
   const double g = 4.0 * kPi * kPi / line.slope, sigma = g * std::sqrt(line.var_slope) / line.slope;
   if (!(g > 0.0 && std::isfinite(g) && std::isfinite(sigma))) return std::nullopt;

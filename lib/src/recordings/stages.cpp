@@ -341,6 +341,8 @@ const std::pair<const char*, const char*> kUnits[] = {
     {"ms", "ms"},        {"us", "us"},          {"\xc2\xb5s", "us"},    {"\xce\xbcs", "us"},  // µs, μs
     {"deg", "deg"},      {"degree", "deg"},     {"degrees", "deg"},     {"\xc2\xb0", "deg"},  // °
     {"rad", "rad"},      {"radian", "rad"},     {"radians", "rad"},
+    // Degrees as German, Dutch, Spanish and Portuguese write them (a gradian is "gon" there).
+    {"grad", "deg"},     {"graden", "deg"},     {"grados", "deg"},      {"graus", "deg"},
     {"rad/s", "rad/s"},  {"deg/s", "deg/s"},    {"\xc2\xb0/s", "deg/s"}, {"degrees/s", "deg/s"},
     {"m", "m"},          {"cm", "cm"},          {"mm", "mm"},           {"px", "px"},
     {"pixel", "px"},     {"pixels", "px"},      {"m/s^2", "m/s^2"},     {"m/s\xc2\xb2", "m/s^2"},  // m/s²
@@ -377,6 +379,8 @@ Column classify(std::string_view raw) {
   Column c;
   c.name = to_utf8(trim_cell(raw));
   std::string s = lower_case(c.name);
+  // A header written as a comment ("# winkel in grad"): its words after the mark.
+  if (!s.empty() && s.front() == '#') s.erase(0, s.find_first_not_of("# "));
   if (const auto pos = s.find(" run #"); pos != std::string::npos) {
     c.run = std::atoi(s.c_str() + pos + 6);
     s.erase(pos);
@@ -402,6 +406,13 @@ Column classify(std::string_view raw) {
       // "Time/s", "AngVel/rad/s": the quantity over its unit, as ISO 80000 writes a table's heading.
       c.unit = s.substr(slash + 1);
       s.erase(slash);
+    } else if (const auto in = s.find(" in "); in != std::string::npos && in > 0) {
+      // "t in s", "winkel in grad", "t in s  5 Perioden": the unit after "in", the words around it kept.
+      const std::size_t from = in + 4, to = std::min(s.find(' ', from), s.size());
+      if (known_unit(s.substr(from, to - from))) {
+        c.unit = s.substr(from, to - from);
+        s = s.substr(0, in) + s.substr(to);
+      }
     }
   }
   c.unit = normal_unit(c.unit);

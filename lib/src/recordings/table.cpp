@@ -355,6 +355,61 @@ int swings_in(const std::vector<double>& l, const std::string& unit, const std::
   return best;
 }
 
+/// The sizes |x| of signed values (a release to either side).
+std::vector<double> sizes(const std::vector<double>& v) {
+  std::vector<double> out(v);
+  for (double& x : out) x = std::fabs(x);
+  return out;
+}
+
+/// c = b/a of T = a + b x^2 fitted unweighted to the sizes x and periods t,
+/// and its standard uncertainty from the scatter about the line (n - 2
+/// degrees of freedom); empty below four points.
+std::optional<std::pair<double, double>> quadratic_rise(const std::vector<double>& x, const std::vector<double>& t) {
+  const std::size_t n = x.size();
+  if (n < 4) return std::nullopt;
+  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double u = x[i] * x[i];
+    sx += u, sy += t[i], sxx += u * u, sxy += u * t[i];
+  }
+  const double d = static_cast<double>(n) * sxx - sx * sx;
+  if (!(d > 0.0)) return std::nullopt;
+  const double b = (static_cast<double>(n) * sxy - sx * sy) / d, a = (sy - b * sx) / static_cast<double>(n);
+  double ss = 0.0;
+  for (std::size_t i = 0; i < n; ++i) ss += std::pow(t[i] - a - b * x[i] * x[i], 2);
+  const double var_b = ss / static_cast<double>(n - 2) * static_cast<double>(n) / d;
+  return std::pair{b / a, std::sqrt(var_b) / a};
+}
+
+/// Whether a headerless first column reads as release angles beside these
+/// periods rather than as a setting: no length in any unit (nor times of N
+/// swings beside one), sizes up to 90 spanning a factor 3 or more, periods
+/// within 25 % of each other (the exact law rises 18 % from 0 to 90 deg)
+/// that do not fall as the size grows (a pivot scan near its minimum
+/// period may be as flat, but falls on one side).
+bool reads_as_amplitudes(const std::vector<double>& a, const std::vector<double>& t) {
+  const std::vector<double> x = sizes(a);
+  const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
+  const auto [t_lo, t_hi] = std::minmax_element(t.begin(), t.end());
+  if (!(*hi <= 90.0 && *hi >= 3.0 * *lo && *t_lo > 0.0 && *t_hi <= 1.25 * *t_lo)) return false;
+  if (lengths_fit(a, "", t) || swings_in(a, "", t) > 0) return false;
+  const auto rise = quadratic_rise(x, t);
+  return !rise || rise->first >= 0.0;
+}
+
+/// The unit of a sweep's amplitudes between 0.35 and 1.6, where their size
+/// alone cannot say (docs/series.md, "Amplitude sweeps"): radians where the
+/// periods rise with them, beyond 3 sigmas, as the law says in radians
+/// (within a factor 3 of c = 1/16 per rad^2; in degrees the law's rise is
+/// 3283 times smaller); empty where the rise does not decide.
+std::string sweep_angle_unit(const std::vector<double>& a, const std::vector<double>& t) {
+  const auto rise = quadratic_rise(sizes(a), t);
+  if (!rise || !(rise->first > 3.0 * rise->second)) return "";
+  const double law = 1.0 / 16.0;
+  return rise->first > law / 3.0 && rise->first < 3.0 * law ? "rad" : "";
+}
+
 /// Whether the first data row separates its cells by tabs and by single
 /// spaces both ("0.6<TAB>1.54 0.01 0.4", a course template's): read as runs of spaces.
 bool tabs_and_spaces(std::string_view text) {
@@ -656,6 +711,15 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
       u.kind = order[j].kind, u.uncertainty = order[j].uncertainty, u.why = order[j].why;
       u.unit = cols[j].unit;  // the cells' own, if any
     }
+    const auto periods = std::find_if(use.begin(), use.end(), [](const Use& u) { return u.kind == Kind::time && !u.uncertainty; });
+    if (use[0].kind == Kind::setting && periods != use.end() &&
+        reads_as_amplitudes(table.columns[0], table.columns[static_cast<std::size_t>(periods - use.begin())])) {
+      for (Use& u : use) {
+        if (u.kind == Kind::setting) u.kind = Kind::amplitude;
+      }
+      use[0].why = "release angles (an amplitude sweep): no length in any unit, at most 90, beside periods within 25 % "
+                   "of each other that do not fall as the angle grows";
+    }
   }
   // One column of each role: the first, but of a time of N swings beside
   // its period ("L, t, T": t/N = T), the period.
@@ -686,10 +750,11 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   };
   const auto setting_col = find(Kind::setting, false);
   const auto time_col = find(Kind::time, false);
-  if (!setting_col) {
+  const auto amplitude_col = find(Kind::amplitude, false), amplitude_u = find(Kind::amplitude, true);
+  if (!setting_col && !amplitude_col) {
     refuse("no setting column (length, pivot distance or pivot position) among " + listed() +
-           "; expected one, e.g. \"L (m)\", \"h (cm)\", \"pivot position (cm)\", or the columns named: "
-           "--columns (a scene's \"columns\"), e.g. \"l:cm,T:s\"");
+           "; expected one, e.g. \"L (m)\", \"h (cm)\", \"pivot position (cm)\", or an amplitude for an "
+           "amplitude sweep (\"theta (deg)\"), or the columns named: --columns (a scene's \"columns\"), e.g. \"l:cm,T:s\"");
   }
   if (!time_col) {
     refuse("no period column among " + listed() + "; expected the periods (\"T (s)\") or the times of N "
@@ -698,11 +763,14 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   }
   const auto setting_u = find(Kind::setting, true);
   auto time_u = find(Kind::time, true);
-  const auto amplitude_col = find(Kind::amplitude, false), amplitude_u = find(Kind::amplitude, true);
 
   SettingsTable out;
   out.rows = table.rows;
-  Use& su = use[*setting_col];
+  // No setting beside amplitudes: one pendulum at several amplitudes.
+  out.sweep = !setting_col;
+  Use no_setting;
+  no_setting.unit = "m";  // no length: nothing is scaled by it
+  Use& su = setting_col ? use[*setting_col] : no_setting;
   Use& tu = use[*time_col];
   out.setting = su.setting;
   if (options.oscillations > 0) {
@@ -731,8 +799,8 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
       }
       // A timing's stated uncertainty weighs it in the fit: 0 would make it infinitely precise.
       const bool positive = use[j].kind == Kind::time;
-      const bool non_negative = (use[j].uncertainty && !positive) || (use[j].kind == Kind::setting && use[j].setting == Setting::length) ||
-                                use[j].kind == Kind::amplitude;
+      // An amplitude may be signed (a release to either side): its size is used.
+      const bool non_negative = (use[j].uncertainty && !positive) || (use[j].kind == Kind::setting && use[j].setting == Setting::length);
       if ((positive && !(v[i] > 0.0)) || (non_negative && !(v[i] >= 0.0)) || !std::isfinite(v[i])) {
         fail(file, table.line(i), 1,
              "got " + format_number(v[i]) + " in column \"" + names[j] + "\" (" + quantity_name(use[j]) +
@@ -770,7 +838,8 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   const auto time_factor = factor_of(kTimeUnits, tu.unit);
   if (!time_factor) refuse("got the unit \"" + one_line(tu.unit, 20, true) + "\" for \"" + names[*time_col] + "\"; expected " + names_of(kTimeUnits));
   out.time_unit = tu.unit;
-  if (out.setting == Setting::length && tu.oscillations == 0 && options.oscillations == 0 && tu.decided != "option") {
+  if (!out.sweep && out.setting == Setting::length && tu.oscillations == 0 && options.oscillations == 0 &&
+      tu.decided != "option") {
     // Times that make no pendulum's periods beside these lengths: the times of N swings?
     const std::vector<double> seconds = scaled(table.columns[*time_col], *time_factor);
     const std::vector<double>& l = table.columns[*setting_col];
@@ -789,7 +858,8 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   const std::vector<double> periods = scaled(table.columns[*time_col], *time_factor / n_osc);
 
   // The setting's unit: the header's, else the one the periods agree with.
-  const std::vector<double>& settings = table.columns[*setting_col];
+  // A sweep's rows are grouped by their amplitude instead.
+  const std::vector<double>& settings = table.columns[out.sweep ? *amplitude_col : *setting_col];
   if (su.unit.empty()) {
     std::vector<std::string> plausible;
     for (const Scale& s : kLengthUnits) {
@@ -838,7 +908,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   out.setting_unit = su.unit;
   const std::vector<double> meters = scaled(settings, *setting_factor);
   // The physics across the rows: a row in another unit stands out.
-  if (out.setting == Setting::length) {
+  if (!out.sweep && out.setting == Setting::length) {
     const std::vector<double> g = row_g(meters, periods);
     const double m = median(g);
     for (std::size_t i = 0; i < g.size(); ++i) {
@@ -902,11 +972,13 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   if (amplitude_col) {
     Use& au = use[*amplitude_col];
     if (au.unit.empty()) {
-      const auto& a = table.columns[*amplitude_col];
+      const std::vector<double> a = sizes(table.columns[*amplitude_col]);
       const double hi = *std::max_element(a.begin(), a.end());
       const double lo = *std::min_element(a.begin(), a.end());
-      // Degrees past 1.6 (92 deg in radians: no timed swing); radians up to 0.35 (below 0.35 deg: no hand release).
-      au.unit = lo > 1.6 ? "deg" : hi <= 0.35 ? "rad" : "";
+      // Degrees past 1.6 (92 deg in radians: no timed swing); radians up to 0.35 (below 0.35 deg: no hand release);
+      // between, a sweep's periods may say.
+      au.unit = lo > 1.6 ? "deg" : hi <= 0.35 ? "rad" : out.sweep ? sweep_angle_unit(a, periods) : "";
+      const bool by_rise = lo <= 1.6 && hi > 0.35 && !au.unit.empty();
       if (au.unit.empty()) {
         refuse("the column \"" + names[*amplitude_col] + "\" (amplitude) has no unit and its values, " +
                format_number(lo, 3) + " to " + format_number(hi, 3) + ", may be degrees or radians; expected its "
@@ -914,23 +986,32 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
                "{\"column\": " + std::to_string(*amplitude_col + 1) + ", \"unit\": \"deg\"}})");
       }
       au.decided = au.decided == "option" ? "option" : "content";
-      out.warnings.push_back({0, "\"" + names[*amplitude_col] + "\": no unit; read as " + au.unit});
+      out.warnings.push_back({0, "\"" + names[*amplitude_col] + "\": no unit; read as " + au.unit +
+                                     (by_rise ? " (the periods rise with them as the law does in radians; in degrees "
+                                                "they would hardly rise at all)"
+                                              : "")});
     }
     const auto f = factor_of(kAngleUnits, au.unit);
     if (!f) refuse("got the unit \"" + one_line(au.unit, 20, true) + "\" for \"" + names[*amplitude_col] + "\"; expected deg or rad");
     amplitude_factor = *f;
     out.amplitude_unit = au.unit;
     (void)unit_of(amplitude_u, au, kAngleUnits);
+    const auto& a = table.columns[*amplitude_col];
+    if (std::any_of(a.begin(), a.end(), [](double x) { return x < 0.0; })) {
+      out.notes.push_back({0, "\"" + names[*amplitude_col] + "\": signed (a release to either side); each "
+                              "amplitude is its size"});
+    }
   }
   const double amplitude_u_factor =
       amplitude_u ? *factor_of(kAngleUnits, use[*amplitude_u].unit) / amplitude_factor : 1.0;
 
+  const std::string setting_word = out.sweep ? "amplitude" : setting_key(out.setting);
   // The rows at one setting, together: one observation.
   std::map<double, std::size_t> seen;  // setting -> its observation's first line
   for (std::size_t i = 0; i < table.rows; ++i) {
     const double s = settings[i];
     if (out.observations.empty() || out.observations.back().setting != s) {
-      if (const auto before = seen.find(s); before != seen.end()) {
+      if (const auto before = seen.find(s); before != seen.end() && !out.sweep) {
         fail(file, line_of(i), 1,
              std::string(setting_key(out.setting)) + " " + format_number(s, 6) + " " + su.unit + " again, after other settings (line " +
                  std::to_string(before->second) + " had it); expected the rows at one setting together: sort the "
@@ -963,7 +1044,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     std::vector<double> amps;
     for (std::size_t k = 0; k < n; ++k, ++row) {
       if (time_u) su2 += std::pow(table.columns[*time_u][row] * time_u_factor, 2) / static_cast<double>(n);
-      if (amplitude_col) amps.push_back(table.columns[*amplitude_col][row]), a += amps.back() / static_cast<double>(n);
+      if (amplitude_col) amps.push_back(std::fabs(table.columns[*amplitude_col][row])), a += amps.back() / static_cast<double>(n);
       if (amplitude_u) au2 += std::pow(table.columns[*amplitude_u][row] * amplitude_u_factor, 2) / static_cast<double>(n);
     }
     if (time_u) o.time_sigma = std::sqrt(su2);
@@ -992,7 +1073,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   }
   out.resolution = printed_resolution(table.columns[*time_col]);
   if (out.sigma_from_scatter) {
-    out.notes.push_back({0, "each " + std::string(setting_key(out.setting)) + " timed once and no uncertainty column: "
+    out.notes.push_back({0, "each " + setting_word + " timed once and no uncertainty column: "
                             "the periods' uncertainty is their scatter about the fit (n - p degrees of freedom), "
                             "at least the printed digits' " + format_number(out.resolution, 3) + " " + tu.unit +
                             "/sqrt(12); such a fit cannot test itself, and its chi2 gives no verdict"});
@@ -1000,7 +1081,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   if (out.observations.size() < table.rows) {
     out.notes.push_back({0, std::to_string(table.rows) + " rows at " + std::to_string(out.observations.size()) +
                                 " settings: the rows at one setting are one observation (their mean, its standard "
-                                "error and their count), its " + setting_key(out.setting) +
+                                "error and their count), its " + setting_word +
                                 " measured once (docs/series.md, Repeats)"});
   }
   if (!time_u && out.pooled_sigma && out.pooled_dof > 0) {
@@ -1035,29 +1116,34 @@ bool looks_like_settings_table(std::string_view text) {
       const Dialect d = sniff(lines.header, data.first);
       const std::vector<Column> header = header_columns(lines, d);
       std::optional<std::size_t> time;
-      bool x = false, y = false;
+      bool x = false, y = false, angle = false;
       for (std::size_t i = 0; i < header.size(); ++i) {
         const Column& c = header[i];
         if (c.role == Role::length || c.role == Role::pivot_distance || c.role == Role::pivot_position ||
             oscillations_in(c.word) > 0) {
           return true;
         }
-        x |= c.role == Role::x, y |= c.role == Role::y;
+        x |= c.role == Role::x, y |= c.role == Role::y, angle |= c.role == Role::angle;
         if ((c.role == Role::time || c.role == Role::period) && !time) time = i;
       }
       // An x without a y beside a time is a track's one coordinate, or a table's pivot
       // positions ("x (cm)", "T (s)"): a table where the times do not increase, as no
-      // recording's do. The rows are read as the table would read them.
-      if (!x || y || !time) return false;
+      // recording's do (but for one whose clock restarts). An angle beside times that
+      // stay within 25 % of each other over fewer rows than a record of a few swings
+      // holds is an amplitude sweep's ("theta (deg)", "T (s)"). The rows are read as
+      // the table would read them.
+      const bool track = x && !y;
+      if (!(track || angle) || !time) return false;
       const std::vector<std::string> names(header.size());  // no message quotes them here
       const Table rows = read_rows(data.begin, data.end, lines.data_line, d, names, "");
-      double previous = -HUGE_VAL;
+      double previous = -HUGE_VAL, lo = HUGE_VAL, hi = 0.0;
+      bool increasing = true;
       for (const double t : rows.columns[*time]) {
         if (std::isnan(t)) continue;  // an empty cell
-        if (!(t > previous)) return true;
-        previous = t;
+        increasing = increasing && t > previous;
+        previous = t, lo = std::min(lo, t), hi = std::max(hi, t);
       }
-      return false;
+      return (track && !increasing) || (angle && rows.rows < 50 && lo > 0.0 && hi <= 1.25 * lo);
     }
     (void)parse_settings_table(text, "");
     return true;

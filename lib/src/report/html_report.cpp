@@ -246,6 +246,20 @@ std::string decay_table(const DecayRecord& d) {
 /// `setting` heads the settings' column: "L (m)", "pivot position x (m)".
 /// Residuals as the plots draw them, measured - model, over the effective
 /// uncertainty that reduce weighs them with and warns by.
+/// An amplitude sweep's T0 and law test in words (docs/series.md).
+std::string sweep_paragraph(const AmplitudeSweep& w) {
+  std::string s = "<p>Small-amplitude period T₀ = " + esc(rounded_estimate(w.t0, 5, "s")) +
+                  " from the exact law T = T₀ 2K(sin²(θ₀/2))/π fitted to the periods";
+  if (w.coefficient) {
+    s += "; the law tested: T = a (1 + c θ₀²) gives c = " +
+         esc(estimate_text(*w.coefficient, 4, "/rad²")) + " against the law's " +
+         format_significant(w.coefficient_law, 4) + " at these amplitudes (1/16 at small ones): " +
+         (sweep_law_refuted(w) ? "<strong>refuted</strong>" : "agrees") + " (probability " +
+         format_significant(w.coefficient_probability.value_or(1.0), 3) + ")";
+  }
+  return s + ".</p>\n";
+}
+
 std::string series_table(const SeriesRecord& d, const std::string& setting) {
   std::string s = parameters_table("series", d.parameters);
   s += "<table class=\"observations\">\n<thead><tr><th scope=\"col\" class=\"num\">" + esc(setting) + "</th>"
@@ -357,7 +371,8 @@ std::string scene_section(const SceneReport& r, const std::string& anchor) {
     s += "<h3>Uncertainty budget of g</h3>\n" + figure_html(to_svg(*b, false), b->description) + budget_table(r);
   }
   if (auto f = series_figure(r, anchor + "-series")) {
-    s += "<h3>Series fit</h3>\n" + figure_html(to_svg(*f, false), f->description) + series_table(*r.series, "L (m)");
+    s += (r.series->sweep ? "<h3>Amplitude sweep</h3>\n" + sweep_paragraph(*r.series->sweep) : "<h3>Series fit</h3>\n") +
+         figure_html(to_svg(*f, false), f->description) + series_table(*r.series, "L (m)");
   }
   if (auto f = pivot_scan_figure(r, anchor + "-pivot-scan")) {
     const SettingInfo& info = setting_info(r.pivot_scan->setting);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "pendulum/amplitude.hpp"
 #include "pendulum/numeric.hpp"
 #include "pendulum/input_error.hpp"
 
@@ -224,9 +225,62 @@ Figure decay_figure(const DecayRecord& d, const std::string& id) {
   return fit_figure(p);
 }
 
+namespace {
+
+/// An amplitude sweep: T against theta0, the exact law at the fitted T0 and
+/// the quadratic the law is tested with (docs/series.md, "Amplitude sweeps").
+Figure sweep_figure(const SeriesRecord& s, const std::string& id) {
+  const AmplitudeSweep& w = *s.sweep;
+  constexpr double degree = kPi / 180.0;
+  FitPlotData p;
+  p.id = id;
+  p.title = "Sweep: T against amplitude, the exact law, the quadratic";
+  p.x = {"amplitude θ₀ (deg)", Scale::linear, true};
+  p.y = {"T (s)", Scale::linear, false};
+  p.residual_label = "T − law (s)";
+  p.observations.name = "measured T ± its effective u(T)";
+  for (std::size_t k = 0; k < s.periods.size(); ++k) {
+    p.observations.x.push_back(s.amplitudes[k] / degree);
+    p.observations.y.push_back(s.periods[k]);
+    p.observations.y_error.push_back(w.effective_sigma[k]);
+    p.model_at_x.push_back(w.law[k]);
+  }
+  const double top = w.high * 1.05;
+  constexpr int kSamples = 100;
+  for (int i = 0; i <= kSamples; ++i) {
+    const double a = std::min(top * i / kSamples, kPi * 0.999);
+    p.model.x.push_back(a / degree);
+    p.model.y.push_back(w.t0.value * (1.0 + finite_amplitude_agm(a)));
+  }
+  p.model.name = "exact law T = T₀ 2K/π, T₀ = " + format_fixed(w.t0.value, 5) + " s";
+  p.model.colour = Colour::vermillion;
+  std::string quadratic_words;
+  if (w.coefficient) {
+    Curve quadratic;
+    quadratic.name = "T = a (1 + c θ₀²), c = " + format_significant(w.coefficient->value, 3) + " /rad²";
+    auto at = [&](double a) { return w.quadratic_t0 * (1.0 + w.coefficient->value * a * a); };
+    for (double x : p.model.x) quadratic.x.push_back(x), quadratic.y.push_back(at(x * degree));
+    quadratic.colour = Colour::black;
+    quadratic.dash = Dash::dashed;
+    quadratic.width = 1.5;
+    p.textbook = quadratic;
+    for (double a : s.amplitudes) p.textbook_at_x.push_back(at(a));
+    quadratic_words = " and the quadratic a (1 + c theta0^2) fitted with the same weights (c = " +
+                      format_significant(w.coefficient->value, 3) + " per rad^2 against the law's " +
+                      format_significant(w.coefficient_law, 3) + " at these amplitudes)";
+  }
+  p.description = std::to_string(s.periods.size()) + " measured periods against their amplitudes, with the exact " +
+                  "law fitted (T0 = " + format_fixed(w.t0.value, 5) + " s)" + quadratic_words +
+                  "; the lower panel shows measured minus law" + (w.coefficient ? ", and the quadratic minus the law." : ".");
+  return fit_figure(p);
+}
+
+}  // namespace
+
 std::optional<Figure> series_figure(const SceneReport& r, const std::string& id) {
   if (!r.series || r.pivot_scan) return std::nullopt;  // a pivot scan has its own plot
   const SeriesRecord& s = *r.series;
+  if (s.sweep) return sweep_figure(s, id);
   FitPlotData p;
   p.id = id;
   p.title = "Series: T\u00B2 against length, the fit and the textbook line";

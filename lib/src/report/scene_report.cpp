@@ -140,7 +140,9 @@ SceneReport make_scene_report(const std::string& input, const ParsedScene& scene
       s.effective_uncertainties.push_back(o.effective_uncertainty > 0.0 ? o.effective_uncertainty
                                                                         : o.period_measured.uncertainty);
       s.periods_model.push_back(o.period_model);
+      s.amplitudes.push_back(o.amplitude);
     }
+    s.sweep = a.amplitude_sweep;
     for (const auto& p : a.fit.parameters) s.parameters.push_back({p.name, p.unit, p.value, p.uncertainty, p.fitted});
     s.chi2 = a.fit.chi2;
     s.dof = a.fit.dof;

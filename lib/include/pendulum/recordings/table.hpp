@@ -64,6 +64,10 @@ struct SettingsTable {
   /// uncertainty is the scatter about the fit (docs/series.md, "Single
   /// timings"), floored by `resolution`.
   bool sigma_from_scatter = false;
+  /// No setting column beside amplitudes: one pendulum at several amplitudes
+  /// (docs/series.md, "Amplitude sweeps"); each observation's `setting` is
+  /// its amplitude as written, and its length is not in the table.
+  bool sweep = false;
   /// The step of the time column's printed digits (time_unit): 0.01 for "12.74".
   double resolution = 0.0;
   std::vector<RecordingColumn> columns;  ///< every column, used or not, and why

@@ -61,6 +61,10 @@ struct SeriesRecord {
   /// the offset fitted).
   std::optional<double> textbook_g;
   double textbook_length_offset = 0.0;  ///< (m), 0 unless fitted
+  /// At one length and three amplitudes or more: the amplitudes (rad) and
+  /// the sweep's T0 and law test, plotted as T against the amplitude.
+  std::vector<double> amplitudes;
+  std::optional<AmplitudeSweep> sweep;
 };
 
 /// A physical pendulum's observations as a pivot scan (docs/report.md): the

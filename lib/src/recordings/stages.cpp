@@ -276,6 +276,11 @@ const Spelling kSpellings[] = {
     {"gatestate", Role::state},  // Vernier
     {"gate state", Role::state},
     {"state", Role::state},  // PASCO
+    // A light sensor under the swing: a gate whose beam is the light, dark while the bob passes.
+    {"light intensity", Role::state},  // PASCO's light sensor
+    {"light", Role::state},
+    {"illuminance", Role::state},
+    {"lichtintensit\xc3\xa4t", Role::state},  // Lichtintensität
     {"period", Role::period},  // Vernier's pendulum timing
     {"n", Role::counter},  // timers
     {"count", Role::counter},

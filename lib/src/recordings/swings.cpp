@@ -389,16 +389,30 @@ std::vector<Crossing> find_crossings(const std::vector<double>& t, const Signal&
 /// bare blocking times).
 /// Each gate event's state as blocked (1) or open (0). A passage blocks the
 /// beam for a small part of the swing, and exporters differ in which state
-/// they call blocked: the state held for less time overall is.
+/// they call blocked: the state held for less time overall is. A gate's
+/// states are 0 and 1; a light sensor's intensity is split halfway between
+/// its dark and bright levels (its 5th and 95th percentiles), with a tenth
+/// of their difference either side as hysteresis, so that noise on a slow
+/// edge makes no second passage.
 std::vector<double> blocked_states(const Recording& r) {
   const auto& state = r.channels[0];
-  double time_high = 0.0, time_low = 0.0;
-  for (std::size_t k = 0; k + 1 < r.time.size(); ++k) {
-    (state[k] > 0.5 ? time_high : time_low) += r.time[k + 1] - r.time[k];
+  double middle = 0.5, band = 0.0;
+  if (std::any_of(state.begin(), state.end(), [](double s) { return s != 0.0 && s != 1.0; })) {
+    std::vector<double> sorted(state);
+    std::sort(sorted.begin(), sorted.end());
+    const double dark = sorted[sorted.size() / 20], bright = sorted[sorted.size() - 1 - sorted.size() / 20];
+    middle = (dark + bright) / 2.0;
+    band = (bright - dark) / 10.0;
   }
+  std::vector<bool> high(state.size());
+  for (std::size_t k = 0; k < state.size(); ++k) {
+    high[k] = k == 0 ? state[k] > middle : state[k] > middle + band || (high[k - 1] && state[k] > middle - band);
+  }
+  double time_high = 0.0, time_low = 0.0;
+  for (std::size_t k = 0; k + 1 < r.time.size(); ++k) (high[k] ? time_high : time_low) += r.time[k + 1] - r.time[k];
   const bool high_is_blocked = time_high <= time_low;
   std::vector<double> blocked(state.size());
-  for (std::size_t k = 0; k < state.size(); ++k) blocked[k] = (state[k] > 0.5) == high_is_blocked ? 1.0 : 0.0;
+  for (std::size_t k = 0; k < state.size(); ++k) blocked[k] = high[k] == high_is_blocked ? 1.0 : 0.0;
   return blocked;
 }
 

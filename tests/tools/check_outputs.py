@@ -7,7 +7,8 @@ The JSON output is an API, and a change of the code's layout must not change a b
 a table), every template, the class (batch as JSON lines, CSV and a table), the decay fit
 and the clock, from the repository root, and compares stdout, stderr and the exit status
 with tests/outputs/<case>.txt. The cases are found from data/ and from `template --help`,
-so a new bundled file is covered as soon as it is stored.
+so a new bundled file is covered as soon as it is stored. An output showing a negative
+uncertainty ("+- -0.00000") fails whatever is stored.
 
 Usage: check_outputs.py [--update] SOURCE_DIR PENDULUM_G
 --update rewrites the stored outputs (and removes those of cases that are gone): review the
@@ -72,6 +73,12 @@ def main():
         path = os.path.join(stored, slug(name))
         seen.add(os.path.basename(path))
         got = run(argv, source)
+        # An uncertainty is never negative: no "+- -0.00000" (issue 39), in any output.
+        negative = re.search(r"(\+-|\u00b1) *[-\u2212]", got)
+        if negative:
+            differ.append(name)
+            print(f"NEGATIVE UNCERTAINTY {name}: ...{got[max(negative.start() - 60, 0):negative.end() + 20]}...")
+            continue
         want = open(path, encoding="utf-8").read() if os.path.exists(path) else None
         if got == want:
             continue

@@ -161,7 +161,9 @@ void add_recording_options(CLI::App& cmd, SwingOptions& options, std::string& se
                  "pendulum signal, a rate, then linear acceleration, then acceleration, the others' periods "
                  "compared with it). PASCO: the run (\"Run #2\"; "
                  "default run 1). Tracker's export of several tracks: the pendulum's track by its name "
-                 "(\"mass B\")");
+                 "(\"mass B\"). A spreadsheet (.xlsx): the sheet, by its name or number from 1 (default the first; "
+                 "also --sheet)");
+  cmd.add_option("--sheet", set, "A spreadsheet (.xlsx): the sheet to read, as --set");
   cmd.add_option("--columns", columns,
                  "Each column's role and unit in file order, where the file cannot tell (a headerless file, an "
                  "angle without its unit): \"t:s,theta:deg\"; roles t, theta, omega, x, y, n (counter), state, "
@@ -225,9 +227,10 @@ Command add_import_command(CLI::App& app) {
     for (const auto& f : o->formats) {
       if (f == "table" || f == "json") table = f == "table";
     }
-    if (o->table || names_table_columns(o->columns) || file_holds_settings_table(o->file)) {
+    if (o->table || names_table_columns(o->columns) || file_holds_settings_table(o->file, o->set)) {
       TableOptions options;
       options.oscillations = o->oscillations;
+      options.sheet = o->set;
       if (!o->columns.empty()) options.columns = parse_table_column_spec(o->columns, "--columns");
       const SettingsTable t = read_settings_table(o->file, options);
       const std::string name = printable_name(o->file);

@@ -170,7 +170,7 @@ TEST_CASE("The tables in data/ are tests/tools/make_tables.py's output", "[cli][
     CHECK(pendulum::test::read_text(entry.path().string()) == pendulum::test::read_text(kData + "/../" + name));
     ++files;
   }
-  CHECK(files == 26);
+  CHECK(files == 27);
   std::filesystem::remove_all(dir);
 }
 
@@ -249,4 +249,40 @@ TEST_CASE("an amplitude sweep's table reduces to its small-amplitude period, and
   std::remove(page.c_str());
   CHECK_THAT(html, Contains("<h3>Amplitude sweep</h3>") && Contains("exact law T = T\u2080 2K/\u03C0") &&
                        Contains("at these amplitudes (1/16 at small ones): agrees"));
+}
+
+TEST_CASE("a spreadsheet's sheet is read as the table it holds: stamps beside their difference, a length written once",
+          "[cli][tables][xlsx]") {
+  // tests/tools/make_tables.py writes it: sheet 1, single periods (N(0, 0.06 s)) at six lengths in cm
+  // between the stamps read off a trace; sheet 2, a sweep of 0.351 m on the exact law; sheet 3 empty.
+  const std::string book = kTests + "/tables/lab_sheet.xlsx";
+  const json lengths = json::parse(succeeded("import " + book).out);
+  const json& columns = lengths.at("import").at("columns");
+  CHECK(columns[0].at("role") == "unused");
+  CHECK_THAT(columns[0].at("why").get<std::string>(), Contains("a time stamp: column 3 is column 2 minus column 1"));
+  CHECK(columns[2].at("role") == "period");
+  CHECK(columns[3].at("unit") == "cm");
+  const std::string file = temporary_file();
+  std::ofstream(file) << lengths.dump();
+  const json g = json::parse(succeeded("reduce " + file).out).at("g");
+  CHECK(std::abs(g.at("value").get<double>() - 9.81) < 3.0 * g.at("uncertainty").get<double>());
+  // By name or number; the length in its first row is every row's, a sweep at one known length.
+  for (const std::string sheet : {"Angles", "angles", "2"}) {
+    const json sweep = json::parse(succeeded("import --sheet " + sheet + " " + book).out);
+    CHECK(sweep.at("length").at("value") == 35.1);
+    CHECK(sweep.at("observations").size() == 6);
+  }
+  std::ofstream(file) << succeeded("import --set 2 " + book).out;
+  const json series = json::parse(succeeded("reduce " + file).out);
+  std::remove(file.c_str());
+  const json& t0 = series.at("amplitude_sweep").at("small_amplitude_period");
+  CHECK(std::abs(t0.at("value").get<double>() - 2.0 * M_PI * std::sqrt(0.351 / 9.81)) <
+        3.0 * t0.at("uncertainty").get<double>());
+  // A sheet not there or empty: refused, naming the sheets.
+  for (const std::string sheet : {"Notes", "4", "Foo"}) {
+    const Run r = run("import --sheet " + sheet + " " + book);
+    CHECK(r.status == 1);
+    CHECK(r.out.empty());
+    CHECK_THAT(r.err, Contains("\"Lengths\", \"Angles\", \"Notes\""));
+  }
 }

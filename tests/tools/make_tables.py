@@ -63,11 +63,49 @@ def sweep_table(seed, angles_deg, length, repeats=1, oscillations=1, sigma=0.01)
     return rows
 
 
+def xlsx(sheets):
+    """A minimal spreadsheet (.xlsx) as bytes: `sheets` is [(name, rows)], each row a list of cells (None for
+    an empty cell, str for a shared string, a number as Excel stores it) written from row 2 (row 1 empty, as
+    students leave it); each entry dated 1980-01-01 so that the bytes are the same each run."""
+    import io
+    import zipfile
+    strings = []
+
+    def cell(ref, v):
+        if isinstance(v, str):
+            if v not in strings:
+                strings.append(v)
+            return f'<c r="{ref}" t="s"><v>{strings.index(v)}</v></c>'
+        return f'<c r="{ref}"><v>{v!r}</v></c>'
+
+    ns = 'xmlns="http://schemas.openxmlformats.org/spreadsheetml/2006/main"'
+    rel = 'xmlns:r="http://schemas.openxmlformats.org/officeDocument/2006/relationships"'
+    parts = {}
+    for k, (name, rows) in enumerate(sheets, 1):
+        body = "".join(f'<row r="{i}">' + "".join(cell(f"{chr(65 + j)}{i}", v) for j, v in enumerate(row) if v is not None)
+                       + "</row>" for i, row in enumerate(rows, 2))
+        parts[f"xl/worksheets/sheet{k}.xml"] = f'<worksheet {ns}><sheetData>{body}</sheetData></worksheet>'
+    parts["xl/workbook.xml"] = f'<workbook {ns} {rel}><sheets>' + "".join(
+        f'<sheet name="{name}" sheetId="{k}" r:id="rId{k}"/>' for k, (name, _) in enumerate(sheets, 1)) + "</sheets></workbook>"
+    parts["xl/_rels/workbook.xml.rels"] = (
+        '<Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships">' + "".join(
+            f'<Relationship Id="rId{k}" Type="http://schemas.openxmlformats.org/officeDocument/2006/relationships/'
+            f'worksheet" Target="worksheets/sheet{k}.xml"/>' for k in range(1, len(sheets) + 1)) + "</Relationships>")
+    parts["xl/sharedStrings.xml"] = f'<sst {ns}>' + "".join(
+        f"<si><t>{t.replace('&', '&amp;').replace('<', '&lt;')}</t></si>" for t in strings) + "</sst>"
+    out = io.BytesIO()
+    with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as z:
+        for name in ["xl/workbook.xml", "xl/_rels/workbook.xml.rels", "xl/sharedStrings.xml"] + sorted(
+                n for n in parts if n.startswith("xl/worksheets/")):
+            z.writestr(zipfile.ZipInfo(name, (1980, 1, 1, 0, 0, 0)), parts[name])
+    return out.getvalue()
+
+
 def write(path, text, encoding="utf-8"):
     out = os.path.join(sys.argv[1] if len(sys.argv) > 1 else ROOT, path)
     os.makedirs(os.path.dirname(out), exist_ok=True)
-    with open(out, "w", encoding=encoding, newline="") as f:
-        f.write(text)
+    with open(out, "wb") as f:
+        f.write(text if isinstance(text, bytes) else text.encode(encoding))
 
 
 def main():
@@ -130,6 +168,20 @@ def main():
         f"{a};{t:.3f}\n" for a, t in sweep_table(13, range(30, 61, 5), 1.20, oscillations=5, sigma=0.02)) + "\n")
     write("tests/tables/sweep_degrees_headerless.txt", "\r\n" + "".join(
         f"{a}\t{t:.3f}\r\n" for a, t in sweep_table(14, [3.5, 11, 16.5, 20.75, 28.75, 32.5], 0.35, sigma=0.004)))
+    # A spreadsheet (docs/series.md, "Tables"): on its first sheet, stamps read off a trace one period
+    # apart beside their difference and the length in cm, no unit written, columns C and D empty; on the
+    # second, a sweep at 0.351 m written once in the first row, its angle column twice; the third empty.
+    stamps = []
+    rng = np.random.default_rng(15)
+    for l_cm, (_, t) in zip([36.3, 34.7, 31.3, 26.8, 23.4, 17.4], lengths_table(16, [36.3, 34.7, 31.3, 26.8, 23.4, 17.4], [1] * 6, 1)):
+        start = round(float(rng.uniform(2.0, 20.0)), 3)
+        stamps.append([start, round(start + t, 3), None, None, round(t, 3), l_cm])
+    sweep_rows = [[35.1 if i == 0 else None, a, a, round(t, 3)]
+                  for i, (a, t) in enumerate(sweep_table(17, [3.5, 11, 16.5, 20.75, 28.75, 32.5], 0.351, sigma=0.004))]
+    write("tests/tables/lab_sheet.xlsx", xlsx([
+        ("Lengths", [["time1", "time2", None, None, "time", "length"]] + stamps),
+        ("Angles", [["length", "angle", "angle", "period"]] + sweep_rows),
+        ("Notes", [])]))
     # Bad tables (tests/bad_recordings/expected.json).
     write("tests/bad_recordings/table_no_period.csv", "L (cm),theta (deg)\n55,5\n75,5\n")
     write("tests/bad_recordings/table_one_row.csv", "L (cm),t10 (s)\n55,14.9\n")

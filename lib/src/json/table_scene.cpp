@@ -148,8 +148,12 @@ std::string table_scene(const SettingsTable& table, const std::string& table_nam
   if (table.setting == Setting::length && !table.sweep && table.observations.size() >= 3) {
     scene["fit"].push_back("length_offset");
   }
-  // A sweep's length is not in its table: T0 without it, g with it.
-  if (table.sweep) scene["length"] = kLengthNotMeasured;
+  // A sweep's length, once for all: T0 without it, g with it.
+  if (table.sweep) {
+    scene["length"] = table.sweep_length
+                          ? json_reader::quantity_json<nlohmann::ordered_json>(*table.sweep_length, table.sweep_length_sigma, table.setting_unit)
+                          : nlohmann::ordered_json(kLengthNotMeasured);
+  }
   if (table.sigma_from_scatter) scene["period_uncertainty"] = "scatter_about_fit";
   const bool amplitudes = !table.observations.empty() && table.observations.front().amplitude;
   if (!amplitudes) scene["amplitude"] = "not recorded";

@@ -915,11 +915,14 @@ Recording read_recording(const std::string& path, RecordingFormat format, const 
                                       "complete recording: read it again once it is whole");
   };
   try {
-    if ((looks_like_zip(map.text()) || looks_like_phyphox_experiment(map.text())) && !columns.empty()) {
+    const bool sheet = looks_like_xlsx(map.text());
+    if (((looks_like_zip(map.text()) && !sheet) || looks_like_phyphox_experiment(map.text())) && !columns.empty()) {
       throw InputError(path, "a zip archive with columns declared; expected them for a text export only (a zip's "
                              "sets are phyphox's, whose headers say)");
     }
-    Recording r = looks_like_zip(map.text())                 ? read_zip_recording(map.text(), path, format, set, limits)
+    // A spreadsheet's sheet is read as the CSV it holds, `set` naming the sheet.
+    Recording r = sheet ? parse_recording(xlsx_sheet_csv(map.text(), path, set, limits.max_bytes), path, format, "", columns)
+                  : looks_like_zip(map.text())                 ? read_zip_recording(map.text(), path, format, set, limits)
                   : looks_like_phyphox_experiment(map.text()) ? read_phyphox_experiment(map.text(), path, format, set)
                                                               : parse_recording(map.text(), path, format, set, columns);
     check_unchanged();

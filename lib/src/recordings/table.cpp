@@ -14,6 +14,7 @@
 #include <optional>
 
 #include "pendulum/files.hpp"
+#include "zip.hpp"
 #include "pendulum/input_error.hpp"
 #include "pendulum/numeric.hpp"
 #include "../text.hpp"
@@ -410,6 +411,18 @@ std::string sweep_angle_unit(const std::vector<double>& a, const std::vector<dou
   return rise->first > law / 3.0 && rise->first < 3.0 * law ? "rad" : "";
 }
 
+/// Whether d = b - a at every row, to the printed digits' rounding, d the
+/// least of the three (b - a = d also makes a = b - d: the period is the
+/// short interval between the stamps, not a stamp).
+bool is_difference(const std::vector<double>& d, const std::vector<double>& b, const std::vector<double>& a) {
+  if (d.empty() || !(median(d) < median(a))) return false;
+  const double step = std::max({printed_resolution(d), printed_resolution(b), printed_resolution(a)});
+  for (std::size_t i = 0; i < d.size(); ++i) {
+    if (!(d[i] > 0.0) || !(std::fabs(b[i] - a[i] - d[i]) <= 1.5 * step)) return false;
+  }
+  return true;
+}
+
 /// Whether the first data row separates its cells by tabs and by single
 /// spaces both ("0.6<TAB>1.54 0.01 0.4", a course template's): read as runs of spaces.
 bool tabs_and_spaces(std::string_view text) {
@@ -721,6 +734,24 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
                    "of each other that do not fall as the angle grows";
     }
   }
+  // Stamps read off a trace beside their difference ("time1, time2, time"):
+  // the difference is the period, the stamps are not.
+  for (std::size_t k = 0; k < use.size(); ++k) {
+    if (use[k].kind != Kind::time || use[k].uncertainty) continue;
+    for (std::size_t i = 0; i < use.size(); ++i) {
+      for (std::size_t j = 0; j < use.size(); ++j) {
+        if (i == j || i == k || j == k || use[i].kind != Kind::time || use[j].kind != Kind::time || use[i].uncertainty ||
+            use[j].uncertainty || !is_difference(table.columns[k], table.columns[j], table.columns[i])) {
+          continue;
+        }
+        for (const std::size_t stamp : {i, j}) {
+          use[stamp].kind = Kind::unused, use[stamp].trial = false;
+          use[stamp].why = "a time stamp: column " + std::to_string(k + 1) + " is column " + std::to_string(j + 1) +
+                           " minus column " + std::to_string(i + 1) + " at every row, the period between them";
+        }
+      }
+    }
+  }
   // One column of each role: the first, but of a time of N swings beside
   // its period ("L, t, T": t/N = T), the period.
   for (std::size_t j = 0; j < use.size(); ++j) {
@@ -785,6 +816,16 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     if (tu.trial && use[j].trial && use[j].kind == Kind::time && !use[j].uncertainty) trials.push_back(j);
   }
 
+  // A setting written once, in the first row, is every row's (a length
+  // measured once for a sweep of amplitudes).
+  if (setting_col && table.rows > 1) {
+    auto& v = table.columns[*setting_col];
+    if (std::isfinite(v[0]) && std::all_of(v.begin() + 1, v.end(), [](double x) { return std::isnan(x); })) {
+      std::fill(v.begin() + 1, v.end(), v[0]);
+      out.notes.push_back({0, "\"" + names[*setting_col] + "\": written once, in the first row (line " +
+                                  std::to_string(table.line(0)) + "): every row's"});
+    }
+  }
   // Every used cell holds a number.
   for (std::size_t j = 0; j < use.size(); ++j) {
     if (use[j].kind == Kind::unused) continue;
@@ -1005,11 +1046,23 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   const double amplitude_u_factor =
       amplitude_u ? *factor_of(kAngleUnits, use[*amplitude_u].unit) / amplitude_factor : 1.0;
 
+  // One length at several amplitudes: a sweep whose length is known.
+  if (!out.sweep && amplitude_col && out.setting == Setting::length &&
+      std::all_of(settings.begin(), settings.end(), [&](double x) { return x == settings.front(); })) {
+    std::vector<double> a = sizes(table.columns[*amplitude_col]);
+    std::sort(a.begin(), a.end());
+    if (std::unique(a.begin(), a.end()) - a.begin() >= 3) {
+      out.sweep = true;
+      out.sweep_length = settings.front();
+      if (setting_u) out.sweep_length_sigma = table.columns[*setting_u].front() * setting_u_factor;
+    }
+  }
+  const std::vector<double>& group_by = out.sweep ? table.columns[*amplitude_col] : settings;
   const std::string setting_word = out.sweep ? "amplitude" : setting_key(out.setting);
   // The rows at one setting, together: one observation.
   std::map<double, std::size_t> seen;  // setting -> its observation's first line
   for (std::size_t i = 0; i < table.rows; ++i) {
-    const double s = settings[i];
+    const double s = group_by[i];
     if (out.observations.empty() || out.observations.back().setting != s) {
       if (const auto before = seen.find(s); before != seen.end() && !out.sweep) {
         fail(file, line_of(i), 1,
@@ -1154,12 +1207,19 @@ bool looks_like_settings_table(std::string_view text) {
 
 SettingsTable read_settings_table(const std::string& path, const TableOptions& options, std::size_t max_bytes,
                                   const std::optional<std::string>& within) {
-  return parse_settings_table(read_text(path, max_bytes, "a table of settings and periods", within), path, options);
+  const std::string text = read_text(path, max_bytes, "a table of settings and periods", within);
+  // A spreadsheet's sheet is read as the CSV it holds.
+  if (looks_like_xlsx(text)) return parse_settings_table(xlsx_sheet_csv(text, path, options.sheet, max_bytes), path, options);
+  return parse_settings_table(text, path, options);
 }
 
-bool file_holds_settings_table(const std::string& path) {
+bool file_holds_settings_table(const std::string& path, const std::string& sheet) {
   try {
     const InputFile file(path, "a table or a recording");
+    if (file.size() <= kMaxSpreadsheetPeek) {
+      const std::string text = read_text(path, kMaxSpreadsheetPeek, "a table or a recording");
+      if (looks_like_xlsx(text)) return looks_like_settings_table(xlsx_sheet_csv(text, path, sheet, kMaxSpreadsheetPeek));
+    }
     std::string head(std::min<std::size_t>(file.size(), 1 << 16), '\0');
     const ssize_t got = ::pread(file.fd(), head.data(), head.size(), 0);
     if (got <= 0) return false;

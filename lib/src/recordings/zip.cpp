@@ -75,6 +75,64 @@ struct Entry {
   zip_uint64_t size;  ///< uncompressed, as the archive states it
 };
 
+/// A zip archive opened over bytes in memory; `whole` says what it should
+/// have been ("phyphox's zip export"), for the message of a damaged one.
+class Archive {
+ public:
+  Archive(std::string_view bytes, const std::string& file, std::string whole)
+      : file_(file), whole_(std::move(whole)), archive_(nullptr, zip_discard) {
+    zip_error_t error;
+    zip_error_init(&error);
+    zip_source_t* source = zip_source_buffer_create(bytes.data(), bytes.size(), 0, &error);
+    if (source) {
+      // The archive owns the source once it is open.
+      archive_.reset(zip_open_from_source(source, ZIP_RDONLY | ZIP_CHECKCONS, &error));
+      if (!archive_) zip_source_free(source);
+    }
+    const std::string why = zip_error_strerror(&error);
+    zip_error_fini(&error);
+    if (!archive_) damaged(why);
+  }
+
+  /// Every entry, in the archive's order.
+  std::vector<Entry> entries() const {
+    std::vector<Entry> out;
+    const zip_int64_t count = zip_get_num_entries(archive_.get(), 0);
+    for (zip_int64_t i = 0; i < count; ++i) {
+      zip_stat_t st;
+      zip_stat_init(&st);
+      if (zip_stat_index(archive_.get(), static_cast<zip_uint64_t>(i), 0, &st) != 0 ||
+          !(st.valid & ZIP_STAT_NAME) || !(st.valid & ZIP_STAT_SIZE)) {
+        damaged(zip_error_strerror(zip_get_error(archive_.get())));
+      }
+      out.push_back({static_cast<zip_uint64_t>(i), st.name, st.size});
+    }
+    return out;
+  }
+
+  /// The entry unpacked; one byte more than stated is damage too.
+  std::string read(const Entry& e) const {
+    std::string text(e.size, '\0');
+    std::unique_ptr<zip_file_t, int (*)(zip_file_t*)> in(zip_fopen_index(archive_.get(), e.index, 0), zip_fclose);
+    char extra;
+    if (!in || zip_fread(in.get(), text.data(), e.size) != static_cast<zip_int64_t>(e.size) ||
+        zip_fread(in.get(), &extra, 1) != 0) {
+      const char* why = in ? zip_file_strerror(in.get()) : zip_error_strerror(zip_get_error(archive_.get()));
+      damaged(one_line(e.name, 80, true) + ": " + why);
+    }
+    return text;
+  }
+
+  [[noreturn]] void fail(const std::string& message) const { throw InputError(file_, message); }
+
+ private:
+  [[noreturn]] void damaged(const std::string& why) const {
+    fail("a damaged zip archive (" + why + "); expected " + whole_ + ", whole");
+  }
+  std::string file_, whole_;
+  std::unique_ptr<zip_t, void (*)(zip_t*)> archive_;
+};
+
 }  // namespace
 
 bool looks_like_zip(std::string_view bytes) {
@@ -83,71 +141,32 @@ bool looks_like_zip(std::string_view bytes) {
 
 Recording read_zip_recording(std::string_view bytes, const std::string& file, RecordingFormat format,
                              const std::string& set, const RecordingLimits& limits) {
-  zip_error_t error;
-  zip_error_init(&error);
-  auto fail = [&](const std::string& message) {
-    zip_error_fini(&error);
-    throw InputError(file, message);
-  };
-  auto damaged = [&](const char* why) {
-    fail(std::string("a damaged zip archive (") + why + "); expected phyphox's zip export, whole");
-  };
-  zip_source_t* source = zip_source_buffer_create(bytes.data(), bytes.size(), 0, &error);
-  if (!source) damaged(zip_error_strerror(&error));
-  // The archive owns the source once it is open.
-  std::unique_ptr<zip_t, void (*)(zip_t*)> archive(zip_open_from_source(source, ZIP_RDONLY | ZIP_CHECKCONS, &error),
-                                                    zip_discard);
-  if (!archive) {
-    zip_source_free(source);
-    damaged(zip_error_strerror(&error));
-  }
-
+  const Archive archive(bytes, file, "phyphox's zip export");
   // The candidate sets: CSV files outside meta/ (phyphox's device and time tables).
   std::vector<Entry> sets;
   std::string names;  // every candidate's, for a set asked for that is not there
-  const zip_int64_t count = zip_get_num_entries(archive.get(), 0);
-  for (zip_int64_t i = 0; i < count; ++i) {
-    zip_stat_t st;
-    zip_stat_init(&st);
-    if (zip_stat_index(archive.get(), static_cast<zip_uint64_t>(i), 0, &st) != 0 ||
-        !(st.valid & ZIP_STAT_NAME) || !(st.valid & ZIP_STAT_SIZE)) {
-      damaged(zip_error_strerror(zip_get_error(archive.get())));
-    }
-    const std::string name = st.name;
-    if (name.rfind("meta/", 0) == 0 || !ends_with_csv(name)) continue;
-    if (names.size() < 300) names += (names.empty() ? "\"" : ", \"") + one_line(name, 80, true) + "\"";
+  for (const Entry& e : archive.entries()) {
+    if (e.name.rfind("meta/", 0) == 0 || !ends_with_csv(e.name)) continue;
+    if (names.size() < 300) names += (names.empty() ? "\"" : ", \"") + one_line(e.name, 80, true) + "\"";
     // A set asked for in any case, with or without ".csv": "gyroscope" is Gyroscope.csv.
-    if (!set.empty() && lower_case(name) != lower_case(set) && lower_case(name) != lower_case(set) + ".csv") continue;
-    sets.push_back({static_cast<zip_uint64_t>(i), name, st.size});
+    if (!set.empty() && lower_case(e.name) != lower_case(set) && lower_case(e.name) != lower_case(set) + ".csv") continue;
+    sets.push_back(e);
   }
   if (sets.empty()) {
-    fail(set.empty() ? "a zip archive with no CSV set outside meta/; expected phyphox's zip export "
-                       "(Gyroscope.csv, Accelerometer.csv, ...)"
-                     : "a zip archive with no set \"" + one_line(set, 80, true) + "\"; expected one of its CSV sets: " + names);
+    archive.fail(set.empty() ? "a zip archive with no CSV set outside meta/; expected phyphox's zip export "
+                               "(Gyroscope.csv, Accelerometer.csv, ...) or a spreadsheet (.xlsx)"
+                             : "a zip archive with no set \"" + one_line(set, 80, true) + "\"; expected one of its CSV sets: " + names);
   }
   // Stated sizes first: a zip bomb is refused before anything is unpacked.
   zip_uint64_t total = 0;
   for (const Entry& e : sets) total += std::min<zip_uint64_t>(e.size, limits.max_bytes + 1);
   if (total > limits.max_bytes) {
-    fail("a zip archive whose sets unpack to over " + std::to_string(limits.max_bytes) +
-         " bytes (RecordingLimits::max_bytes; a zip bomb?); expected a recording that fits");
+    archive.fail("a zip archive whose sets unpack to over " + std::to_string(limits.max_bytes) +
+                 " bytes (RecordingLimits::max_bytes; a zip bomb?); expected a recording that fits");
   }
-
   Sets read;  // in the archive's order
-  for (const Entry& e : sets) {
-    std::string text(e.size, '\0');
-    std::unique_ptr<zip_file_t, int (*)(zip_file_t*)> in(zip_fopen_index(archive.get(), e.index, 0), zip_fclose);
-    // One byte more than stated: a set longer than its header says is damaged too.
-    char extra;
-    if (!in || zip_fread(in.get(), text.data(), e.size) != static_cast<zip_int64_t>(e.size) ||
-        zip_fread(in.get(), &extra, 1) != 0) {
-      const char* why = in ? zip_file_strerror(in.get()) : zip_error_strerror(zip_get_error(archive.get()));
-      fail("a damaged zip archive (" + one_line(e.name, 80, true) + ": " + why + "); expected phyphox's zip export, whole");
-    }
-    read.add(text, e.name, file, format, set);
-  }
-  if (read.read.empty()) fail("a zip archive with no set that reads as a recording (" + read.refused + ")");
-  zip_error_fini(&error);
+  for (const Entry& e : sets) read.add(archive.read(e), e.name, file, format, set);
+  if (read.read.empty()) archive.fail("a zip archive with no set that reads as a recording (" + read.refused + ")");
   return read.best();
 }
 
@@ -184,8 +203,11 @@ std::optional<std::string> attribute(std::string_view tag, std::string_view name
   return std::nullopt;
 }
 
-/// Each element `<element ...>text</element>` of `xml` in order: its start tag and its text.
-std::vector<std::pair<std::string_view, std::string>> elements(std::string_view xml, std::string_view element) {
+/// Each element `<element ...>text</element>` of `xml` in order: its start
+/// tag and its text, decoded unless `raw` (which keeps the elements inside
+/// it for a search of their own).
+std::vector<std::pair<std::string_view, std::string>> elements(std::string_view xml, std::string_view element,
+                                                               bool raw = false) {
   std::vector<std::pair<std::string_view, std::string>> out;
   const std::string open = "<" + std::string(element), close = "</" + std::string(element) + ">";
   for (std::size_t at = xml.find(open); at != std::string_view::npos; at = xml.find(open, at + 1)) {
@@ -196,7 +218,8 @@ std::vector<std::pair<std::string_view, std::string>> elements(std::string_view 
     const std::string_view tag = xml.substr(at, tag_end + 1 - at);
     const std::size_t end = xml[tag_end - 1] == '/' ? tag_end : xml.find(close, tag_end);  // <x/> holds no text
     if (end == std::string_view::npos) break;
-    out.emplace_back(tag, end == tag_end ? std::string() : xml_text(recording_text::trim_cell(xml.substr(tag_end + 1, end - tag_end - 1))));
+    const std::string_view inner = end == tag_end ? std::string_view() : xml.substr(tag_end + 1, end - tag_end - 1);
+    out.emplace_back(tag, raw ? std::string(inner) : xml_text(recording_text::trim_cell(inner)));
   }
   return out;
 }
@@ -264,6 +287,136 @@ Recording read_phyphox_experiment(std::string_view xml, const std::string& file,
                                      "\"; expected one of its sets: " + names);
   }
   return read.best();
+}
+
+namespace {
+
+/// The column of a cell reference ("AB12" -> 27), from 0.
+std::size_t column_of(std::string_view reference) {
+  std::size_t column = 0;
+  for (char c : reference) {
+    if (c < 'A' || c > 'Z') break;
+    column = column * 26 + static_cast<std::size_t>(c - 'A' + 1);
+  }
+  return column == 0 ? 0 : column - 1;
+}
+
+/// A cell as CSV writes it: quoted where it holds a delimiter, a quote or a line end.
+std::string csv_cell(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+/// The text of a shared string or an inline one: its <t> runs together.
+std::string runs_of(std::string_view raw) {
+  std::string out;
+  for (const auto& [tag, text] : elements(raw, "t")) out += text;
+  return out;
+}
+
+}  // namespace
+
+bool looks_like_xlsx(std::string_view bytes) {
+  // Entry names stand uncompressed in the local headers.
+  return looks_like_zip(bytes) && bytes.find("xl/workbook.xml") != std::string_view::npos;
+}
+
+std::string xlsx_sheet_csv(std::string_view bytes, const std::string& file, const std::string& sheet,
+                           std::size_t max_bytes) {
+  const Archive archive(bytes, file, "a spreadsheet (.xlsx)");
+  const std::vector<Entry> entries = archive.entries();
+  auto part = [&](const std::string& name, bool required) -> std::string {
+    const auto e = std::find_if(entries.begin(), entries.end(), [&](const Entry& x) { return x.name == name; });
+    if (e == entries.end()) {
+      if (required) archive.fail("a spreadsheet without " + name + "; expected an .xlsx file as Excel or LibreOffice saves it");
+      return {};
+    }
+    if (e->size > max_bytes) {
+      archive.fail("a spreadsheet whose " + name + " unpacks to " + std::to_string(e->size) + " bytes, over " +
+                   std::to_string(max_bytes) + " (a zip bomb?); expected a table that fits");
+    }
+    return archive.read(*e);
+  };
+  // The sheets in the workbook's order, and where each is stored.
+  const std::string workbook = part("xl/workbook.xml", true), rels = part("xl/_rels/workbook.xml.rels", true);
+  struct Sheet {
+    std::string name, target;
+  };
+  std::vector<Sheet> sheets;
+  std::string names;
+  for (const auto& [tag, text] : elements(workbook, "sheet")) {
+    const auto name = attribute(tag, "name"), id = attribute(tag, "r:id");
+    if (!name || !id) continue;
+    std::string target;
+    for (const auto& [rel, unused] : elements(rels, "Relationship")) {
+      if (attribute(rel, "Id") == id) target = attribute(rel, "Target").value_or("");
+    }
+    target = target.rfind('/', 0) == 0 ? target.substr(1) : "xl/" + target;
+    sheets.push_back({*name, target});
+    names += (names.empty() ? "\"" : ", \"") + one_line(*name, 40, true) + "\"";
+  }
+  if (sheets.empty()) archive.fail("a spreadsheet with no sheet; expected one holding the table");
+  // The sheet asked for by its name (any case) or its number from 1; the first by default.
+  auto chosen = sheets.begin();
+  if (!sheet.empty()) {
+    chosen = std::find_if(sheets.begin(), sheets.end(), [&](const Sheet& x) { return lower_case(x.name) == lower_case(sheet); });
+    const std::size_t number = sheet.find_first_not_of("0123456789") == std::string::npos && sheet.size() < 4 ? std::stoul(sheet) : 0;
+    if (chosen == sheets.end() && number >= 1 && number <= sheets.size()) chosen = sheets.begin() + static_cast<long>(number - 1);
+    if (chosen == sheets.end()) {
+      archive.fail("a spreadsheet with no sheet \"" + one_line(sheet, 40, true) + "\"; expected one of " + names +
+                   " (or its number from 1)");
+    }
+  }
+  std::vector<std::string> shared;
+  for (const auto& [tag, raw] : elements(part("xl/sharedStrings.xml", false), "si", true)) shared.push_back(runs_of(raw));
+  // Its cells by row and column: a formula's cached value, a shared or inline string, a number.
+  std::vector<std::vector<std::string>> rows;
+  std::vector<bool> used;
+  std::size_t first_row = 0;  // the sheet's number of the first row that holds a cell
+  for (const auto& [row_tag, row] : elements(part(chosen->target, true), "row", true)) {
+    std::vector<std::string> cells;
+    for (const auto& [tag, raw] : elements(row, "c", true)) {
+      const std::size_t column = column_of(attribute(tag, "r").value_or(""));
+      if (column >= 16384) continue;  // beyond Excel's XFD
+      const std::string type = attribute(tag, "t").value_or("n");
+      const auto v = elements(raw, "v");
+      std::string text = type == "inlineStr" ? runs_of(raw) : v.empty() ? std::string() : v.front().second;
+      if (type == "s") {
+        const std::size_t k = text.empty() || text.find_first_not_of("0123456789") != std::string::npos ? shared.size() : std::stoul(text);
+        text = k < shared.size() ? shared[k] : std::string();
+      } else if (type == "e") {
+        text.clear();  // #DIV/0! and the like: no value
+      }
+      if (text.empty()) continue;
+      if (cells.size() <= column) cells.resize(column + 1);
+      if (used.size() <= column) used.resize(column + 1);
+      cells[column] = text;
+      used[column] = true;
+    }
+    if (cells.empty()) continue;  // an empty row stands for nothing
+    if (rows.empty()) {
+      const std::string r = attribute(row_tag, "r").value_or("1");
+      first_row = r.find_first_not_of("0123456789") == std::string::npos && r.size() < 8 ? std::stoul(r) : 1;
+    }
+    rows.push_back(std::move(cells));
+  }
+  if (rows.empty()) archive.fail("a spreadsheet whose sheet \"" + one_line(chosen->name, 40, true) + "\" is empty; expected the table on it (choose another: " + names + ")");
+  // As CSV, the columns no row uses left out; the empty rows above the
+  // first as empty lines, so that a message's line is the sheet's row.
+  std::string out(first_row > 1 ? std::min<std::size_t>(first_row - 1, 1000) : 0, '\n');
+  for (const auto& cells : rows) {
+    bool first = true;
+    for (std::size_t j = 0; j < used.size(); ++j) {
+      if (!used[j]) continue;
+      if (!first) out += ',';
+      first = false;
+      if (j < cells.size()) out += csv_cell(cells[j]);
+    }
+    out += '\n';
+  }
+  return out;
 }
 
 }  // namespace pendulum

@@ -1,6 +1,7 @@
 #pragma once
 // phyphox's zip export: one CSV per sensor set (Gyroscope.csv,
-// Accelerometer.csv, ...) and a meta/ folder (docs/recordings.md, "zip").
+// Accelerometer.csv, ...) and a meta/ folder (docs/recordings.md, "zip");
+// a spreadsheet's sheet (.xlsx) as CSV text (docs/series.md, "Tables").
 
 #include <string>
 #include <string_view>
@@ -27,6 +28,21 @@ bool looks_like_zip(std::string_view bytes);
 /// set's own errors name "file/set:line:column".
 Recording read_zip_recording(std::string_view bytes, const std::string& file, RecordingFormat format,
                              const std::string& set, const RecordingLimits& limits);
+
+/// Whether `bytes` are a spreadsheet (.xlsx): a zip archive holding xl/workbook.xml.
+bool looks_like_xlsx(std::string_view bytes);
+
+/// A sheet of a spreadsheet (.xlsx, Office Open XML) as comma-separated
+/// text, for the table and recording readers: `sheet` by its name (any case)
+/// or number from 1, the first by default; each cell's value (a formula's
+/// cached one, a shared or inline string, a number as stored), the empty
+/// rows and the columns no row uses left out, a line's number the sheet's
+/// row's up to the first row used (its empty rows above as empty lines;
+/// after it an empty row is skipped). Refused (InputError naming
+/// `file`): a damaged archive, a part missing, a sheet not there or empty,
+/// a part that unpacks to over `max_bytes`.
+std::string xlsx_sheet_csv(std::string_view bytes, const std::string& file, const std::string& sheet,
+                           std::size_t max_bytes);
 
 /// Whether `bytes` are a phyphox experiment file (".phyphox": XML whose
 /// first kilobyte opens a <phyphox> element).

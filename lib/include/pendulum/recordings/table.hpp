@@ -35,6 +35,8 @@ struct TableOptions {
   /// The time column is the time of this many oscillations (import
   /// --oscillations); 0: from the header ("t10", "10T"), else 1.
   int oscillations = 0;
+  /// A spreadsheet's (.xlsx) sheet, by its name or number from 1; the first by default.
+  std::string sheet;
 };
 
 /// The rows at one setting: one observation (docs/series.md, "Repeats").
@@ -64,10 +66,14 @@ struct SettingsTable {
   /// uncertainty is the scatter about the fit (docs/series.md, "Single
   /// timings"), floored by `resolution`.
   bool sigma_from_scatter = false;
-  /// No setting column beside amplitudes: one pendulum at several amplitudes
-  /// (docs/series.md, "Amplitude sweeps"); each observation's `setting` is
-  /// its amplitude as written, and its length is not in the table.
+  /// One pendulum at several amplitudes (docs/series.md, "Amplitude
+  /// sweeps"): no setting column beside amplitudes, or one length at three
+  /// amplitudes or more; each observation's `setting` is its amplitude as
+  /// written.
   bool sweep = false;
+  /// A sweep's one length where the table gives it (setting_unit), with
+  /// its uncertainty where stated; empty where the table has no length.
+  std::optional<double> sweep_length, sweep_length_sigma;
   /// The step of the time column's printed digits (time_unit): 0.01 for "12.74".
   double resolution = 0.0;
   std::vector<RecordingColumn> columns;  ///< every column, used or not, and why
@@ -99,9 +105,13 @@ SettingsTable read_settings_table(const std::string& path, const TableOptions& o
                                   std::size_t max_bytes = kMaxTableBytes,
                                   const std::optional<std::string>& within = {});
 
+/// The largest spreadsheet (.xlsx) file_holds_settings_table unpacks to look at (16 MiB).
+inline constexpr std::size_t kMaxSpreadsheetPeek = std::size_t{1} << 24;
+
 /// Whether the file at `path` holds a table of settings (its first 64 KiB
-/// read as looks_like_settings_table); false when it cannot be read.
-bool file_holds_settings_table(const std::string& path);
+/// read as looks_like_settings_table; a spreadsheet's `sheet`, the first by
+/// default, as the CSV it holds); false when it cannot be read.
+bool file_holds_settings_table(const std::string& path, const std::string& sheet = {});
 
 /// `--columns "l:cm,u,t10:s,u"`: one entry per column in file order: l
 /// (length), h (pivot distance), x (pivot position), T (period), tN (time of

@@ -56,7 +56,9 @@ std::string settings_table_text(const SettingsTable& t, const std::string& name)
     put("%-22s %.3g %s for one time of %d oscillations (%zu degrees of freedom)\n", "repeats' scatter",
         *t.pooled_sigma, t.time_unit.c_str(), t.oscillations, t.pooled_dof);
   }
-  const std::string setting = std::string(setting_key(t.setting)) + " (" + t.setting_unit + ")";
+  // A sweep's rows are grouped by their amplitude, as written.
+  const std::string setting = t.sweep ? "amplitude (" + t.amplitude_unit + ")"
+                                      : std::string(setting_key(t.setting)) + " (" + t.setting_unit + ")";
   const std::string time = "mean of " + std::to_string(t.oscillations) + " T (" + t.time_unit + ")";
   put("\n%-22s %5s %-18s %-18s %s\n", setting.c_str(), "rows", time.c_str(), ("sigma of one (" + t.time_unit + ")").c_str(),
       "lines");
@@ -65,7 +67,7 @@ std::string settings_table_text(const SettingsTable& t, const std::string& name)
     for (double x : b.times) mean += x / static_cast<double>(b.times.size());
     char sigma[32] = "its scatter";
     if (b.time_sigma) std::snprintf(sigma, sizeof sigma, "%.3g", *b.time_sigma);
-    put("%-22.6g %5zu %-18.7g %-18s %zu-%zu\n", b.setting, b.times.size(), mean, sigma, b.first_line, b.last_line);
+    put("%-22.6g %5zu %-18.7g %-18s %zu-%zu\n", b.setting + 0.0 /* no "-0" */, b.times.size(), mean, sigma, b.first_line, b.last_line);
   }
   return o.str();
 }

@@ -286,3 +286,38 @@ TEST_CASE("a spreadsheet's sheet is read as the table it holds: stamps beside th
     CHECK_THAT(r.err, Contains("\"Lengths\", \"Angles\", \"Notes\""));
   }
 }
+
+TEST_CASE("a sweep's table is told from a pivot scan, a recording that starts late, and a length table's slip",
+          "[cli][tables][sweep]") {
+  const std::string dir = temporary_directory();
+  auto import = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir + "/" + name) << text;
+    return run("import " + dir + "/" + name);
+  };
+  // A metre stick (k^2 = 1/12 m^2) at 15 to 50 cm, exact periods 2 pi sqrt((k^2 + h^2)/(g h)), no
+  // header: flat within 25 % like a sweep's, but U-shaped, so a pivot scan.
+  std::string scan;
+  for (int h = 15; h <= 50; h += 5) {
+    const double m = h / 100.0;
+    scan += std::to_string(h) + "\t" + std::to_string(2.0 * M_PI * std::sqrt((1.0 / 12.0 + m * m) / (9.81 * m))) + "\n";
+  }
+  const Run pivots = import("scan.txt", scan);
+  REQUIRE(pivots.status == 0);
+  CHECK(json::parse(pivots.out).at("import").at("columns")[0].at("role") == "pivot distance");
+  // "amplitude (deg)" names a sweep as "theta (deg)" does.
+  const Run named = import("amp.csv", "amplitude (deg),T (s)\n10,1.797\n20,1.808\n30,1.825\n40,1.852\n");
+  REQUIRE(named.status == 0);
+  CHECK(json::parse(named.out).at("length") == "not measured");
+  // An angle track whose clock starts at 40 s: its times are within 25 % of each other but step as
+  // a clock's, so it is a recording, not a sweep with periods of 40 s.
+  std::string track = "t (s),theta (deg)\n";
+  for (int k = 0; k < 40; ++k) track += std::to_string(40.0 + 0.1 * k) + "," + std::to_string(15.0 * std::cos(2.0 * M_PI * 0.1 * k / 1.8)) + "\n";
+  const Run late = import("late.csv", track);
+  CHECK_THAT(late.out, !Contains("amplitude sweep"));
+  CHECK_THAT(late.out + late.err, !Contains("not measured"));
+  // A negative amplitude beside lengths that change is a slip, refused; a sweep's are releases either side.
+  const Run slip = import("slip.csv", "L (m),T (s),theta (deg)\n0.4,1.27,5\n0.6,1.55,-5\n0.8,1.80,5\n");
+  CHECK(slip.status == 1);
+  CHECK_THAT(slip.err, Contains("got -5 in column \"theta (deg)\" (amplitude); expected a non-negative number"));
+  std::filesystem::remove_all(dir);
+}

@@ -83,6 +83,7 @@ TEST_CASE("Words: the header's spellings give roles and units", "[recordings][co
       {"hoek", Role::angle, ""},
       {"\xc3\xa2ngulo (graus)", Role::angle, "deg"},  // Portuguese degrees
       {"# winkel in grad", Role::angle, "deg"},         // a comment line as the header, the unit after "in"
+      {"#", Role::counter, ""},                          // but "#" alone is a counter
   };
   for (const auto& c : cases) {
     INFO(c.cell);

@@ -677,9 +677,7 @@ std::optional<AmplitudeSweep> amplitude_sweep_of(const ParsedScene& scene) {
     if (o.setting != Setting::length || std::abs(o.length - length) > 1e-9 * length) return std::nullopt;
     amplitudes.push_back(o.amplitude);
   }
-  std::sort(amplitudes.begin(), amplitudes.end());
-  const auto distinct = std::unique(amplitudes.begin(), amplitudes.end()) - amplitudes.begin();
-  if (distinct < (scene.length_measured ? 3 : 2)) return std::nullopt;
+  if (distinct_amplitudes(amplitudes) < (scene.length_measured ? 3u : 2u)) return std::nullopt;
   std::vector<SweepPoint> points;
   for (std::size_t k = 0; k < obs.size(); ++k) {
     const auto& u = scene.observation_uncertainties[k];

@@ -341,6 +341,12 @@ void judge_decay_record(const ParsedScene& scene, std::vector<std::string>& reas
                           : "degrees labelled rad? fix decay.data.amplitude_unit (\"deg\")"));
 }
 
+/// Every observation at one length: no offset can be told from g there.
+bool one_length(const ParsedScene& scene) {
+  const auto& obs = scene.observations;
+  return std::all_of(obs.begin(), obs.end(), [&](const auto& o) { return o.length == obs.front().length; });
+}
+
 bool offset_fitted(const Analysis& a) {
   return std::any_of(a.fit.parameters.begin(), a.fit.parameters.end(),
                      [](const ParameterResult& p) { return p.fitted && std::string(p.name) == "length_offset"; });
@@ -355,7 +361,7 @@ void judge_dispersion(const ParsedScene& scene, const Analysis& a, std::vector<s
         "fit: " + dispersion_finding(dispersion(a.fit.chi2, a.fit.dof), "the observations scatter about the fit") +
         ": uncertainties understated, or something the model misses (" +
         causes.scatter + ")?" +
-        (!causes.lengths_to_bob || offset_fitted(a) || a.amplitude_sweep ? std::string()
+        (!causes.lengths_to_bob || offset_fitted(a) || one_length(scene) ? std::string()
                                                     : " Lengths measured to another point than the bob's centre (its "
                                                       "top, the knot) are fitted out by \"fit\": [\"length_offset\"].") +
         " g's uncertainty is the one the scatter supports, " + format_number(*a.g.uncertainty, 3) +

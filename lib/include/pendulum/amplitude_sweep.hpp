@@ -23,7 +23,8 @@ struct SweepPoint {
 
 struct AmplitudeSweep {
   /// T0 (s) and its standard uncertainty, with its degrees of freedom
-  /// (infinite for stated uncertainties, n - 1 from the scatter).
+  /// (infinite for stated uncertainties, n - 1 from the scatter or where
+  /// the Birge ratio was applied).
   Estimate t0;
   double t0_dof;
   /// chi2 of the exact law, n - 1 degrees of freedom; its upper-tail
@@ -31,9 +32,12 @@ struct AmplitudeSweep {
   double chi2 = 0.0;
   int dof = 0;
   std::optional<double> probability;
-  /// The periods' uncertainties are their scatter about the law, floored by
-  /// the stated ones (`scale` = max(1, sqrt(chi2/dof)) multiplies them).
+  /// The periods' uncertainties are their scatter about the law: a variance
+  /// common to every period, added to the stated floors (and each
+  /// amplitude's carried to its period) until chi2 = n - 1.
   bool sigma_from_scatter = false;
+  /// T0's uncertainty over the one the stated uncertainties alone give: the
+  /// scatter's, or the Birge ratio where chi2 is improbably large; 1 otherwise.
   double scale = 1.0;
   /// Per point: T0 F(theta0_i), the effective uncertainty (period's and
   /// amplitude's, carried to the period, times `scale`) and the residual
@@ -45,8 +49,8 @@ struct AmplitudeSweep {
   std::optional<Estimate> coefficient;
   double quadratic_t0 = 0.0;  ///< the quadratic's a (s), with `coefficient`
   double coefficient_law = 0.0;
-  /// Two-sided probability of so large a |c - c_law| (Student's t at the
-  /// fit's n - 2 degrees of freedom where from the scatter, else normal).
+  /// Two-sided probability of so large a |c - c_law|, c's uncertainty from
+  /// the quadratic's own scatter: Student's t at its n - 2 degrees of freedom.
   std::optional<double> coefficient_probability;
   double low = 0.0, high = 0.0;  ///< the amplitudes' range (rad)
 };
@@ -55,11 +59,16 @@ struct AmplitudeSweep {
 /// amplitude as the law says (the same bar as an over-dispersed chi2).
 inline constexpr double kSweepLawProbability = 0.01;
 
+/// How many of `amplitudes` differ by more than 1e-6 of the largest (their
+/// rounding: 10 deg written in radians to 10 digits is still 10 deg).
+std::size_t distinct_amplitudes(std::vector<double> amplitudes);
+
 /// Fits T0 by weighted least squares with effective variances (the
 /// amplitude's uncertainty carried through dT/dtheta0 at the fit, iterated),
 /// closed form since T is linear in T0. `sigma_from_scatter`: the points'
-/// period_sigma is a floor, scaled by the Birge ratio where above 1.
-/// Needs two points or more.
+/// period_sigma is a floor, the scatter beyond it a variance of its own.
+/// The law is tested where three amplitudes differ by more than 1e-6 of the
+/// largest. Needs two points or more.
 AmplitudeSweep fit_amplitude_sweep(const std::vector<SweepPoint>& points, bool sigma_from_scatter);
 
 /// Whether the law is refuted: the coefficient's probability below kSweepLawProbability.

@@ -10,6 +10,7 @@
 #include "parts.hpp"
 #include "recording_reader.hpp"
 #include "table_reader.hpp"
+#include "pendulum/amplitude_sweep.hpp"
 #include "pendulum/argument_ranges.hpp"
 #include "pendulum/models/registry.hpp"
 #include "pendulum/scene_json.hpp"
@@ -442,8 +443,7 @@ void check_sweep_without_length(const ParsedScene& out) {
                    "expected the length: a recording's corrections need it");
   std::vector<double> amplitudes;
   for (const auto& o : out.observations) amplitudes.push_back(o.amplitude);
-  std::sort(amplitudes.begin(), amplitudes.end());
-  PENDULUM_FAIL_IF(std::unique(amplitudes.begin(), amplitudes.end()) - amplitudes.begin() < 2, "length",
+  PENDULUM_FAIL_IF(distinct_amplitudes(amplitudes) < 2, "length",
                    "got \"" + std::string(kLengthNotMeasured) + "\" and every observation at one amplitude; expected "
                    "the length (g needs it), or observations at different amplitudes (an amplitude sweep's "
                    "small-amplitude period)");

@@ -77,13 +77,18 @@ TableOptions table_options(Object& t) {
   return options;
 }
 
-/// The observations as `J` (json for the reader, ordered_json for import's print).
+/// The observations as `J` (json for the reader, ordered_json for import's
+/// print); a sweep's length, where the table gives it, in each only where
+/// `sweep_length_in_each` (a scene that names the table and gives none).
 template <class J>
-J observations_as(const SettingsTable& table, const std::string& name) {
+J observations_as(const SettingsTable& table, const std::string& name, bool sweep_length_in_each = false) {
   J list = J::array();
   for (const TableObservation& o : table.observations) {
     J item;
     if (!table.sweep) item[setting_key(table.setting)] = quantity_json<J>(o.setting, o.setting_sigma, table.setting_unit);
+    if (table.sweep && table.sweep_length && sweep_length_in_each) {
+      item["length"] = quantity_json<J>(*table.sweep_length, table.sweep_length_sigma, table.setting_unit);
+    }
     if (o.amplitude) item["amplitude"] = quantity_json<J>(*o.amplitude, o.amplitude_sigma, table.amplitude_unit);
     J timing = {{"oscillations_per_trial", table.oscillations}, {"unit", table.time_unit}, {"trials", o.times}};
     if (o.time_sigma) timing["uncertainty"] = *o.time_sigma;
@@ -100,8 +105,8 @@ J observations_as(const SettingsTable& table, const std::string& name) {
 
 }  // namespace
 
-json table_observations(const SettingsTable& table, const std::string& name) {
-  return observations_as<json>(table, name);
+json table_observations(const SettingsTable& table, const std::string& name, bool sweep_length_in_each) {
+  return observations_as<json>(table, name, sweep_length_in_each);
 }
 
 json read_table_reference(Object& top, ParsedScene& out, const RecordingReader& recordings) {
@@ -120,10 +125,14 @@ json read_table_reference(Object& top, ParsedScene& out, const RecordingReader& 
   } catch (const InputError& e) {
     throw InputError(t.path("table"), e.what());  // "file: message" or "file:line:column: message"
   }
+  PENDULUM_FAIL_IF(table.sweep && !table.sweep_length && !top.has("length"), "length",
+                   "missing, and the table " + name + " is an amplitude sweep without its length; expected the "
+                   "pendulum's length at the top level, or \"length\": \"" + std::string(kLengthNotMeasured) +
+                   "\" for its small-amplitude period alone");
   out.period_uncertainty_from_scatter |= table.sigma_from_scatter;
   for (const RecordingNote& n : table.notes) out.assumptions.push_back("observations.table: " + name + ": " + n.text);
   for (const RecordingNote& n : table.warnings) out.warnings.push_back("observations.table: " + name + ": " + n.text);
-  return table_observations(table, name);
+  return table_observations(table, name, !top.has("length"));
 }
 
 }  // namespace json_reader

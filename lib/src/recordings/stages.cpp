@@ -384,8 +384,11 @@ Column classify(std::string_view raw) {
   Column c;
   c.name = to_utf8(trim_cell(raw));
   std::string s = lower_case(c.name);
-  // A header written as a comment ("# winkel in grad"): its words after the mark.
-  if (!s.empty() && s.front() == '#') s.erase(0, s.find_first_not_of("# "));
+  // A header written as a comment ("# winkel in grad"): its words after the mark ("#" alone is a counter's).
+  if (s.size() > 1 && s.front() == '#' && s.find_first_not_of("# ") != std::string::npos &&
+      std::isalpha(static_cast<unsigned char>(s[s.find_first_not_of("# ")]))) {
+    s.erase(0, s.find_first_not_of("# "));
+  }
   if (const auto pos = s.find(" run #"); pos != std::string::npos) {
     c.run = std::atoi(s.c_str() + pos + 6);
     s.erase(pos);

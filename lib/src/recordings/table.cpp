@@ -383,12 +383,30 @@ std::optional<std::pair<double, double>> quadratic_rise(const std::vector<double
   return std::pair{b / a, std::sqrt(var_b) / a};
 }
 
+/// The residual sum of squares of the periods t about a pivot scan's curve
+/// through them: T^2 h = (4 pi^2/g)(k^2 + h^2) is a line in h^2 (Kelley
+/// Eq. 55), fitted unweighted, whatever the unit of h.
+double pivot_scan_rss(const std::vector<double>& h, const std::vector<double>& t) {
+  const std::size_t n = h.size();
+  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = h[i] * h[i], y = t[i] * t[i] * h[i];
+    sx += x, sy += y, sxx += x * x, sxy += x * y;
+  }
+  const double d = static_cast<double>(n) * sxx - sx * sx;
+  const double b = (static_cast<double>(n) * sxy - sx * sy) / d, a = (sy - b * sx) / static_cast<double>(n);
+  double rss = 0.0;
+  for (std::size_t i = 0; i < n; ++i) rss += std::pow(t[i] - std::sqrt(std::max((a + b * h[i] * h[i]) / h[i], 0.0)), 2);
+  return rss;
+}
+
 /// Whether a headerless first column reads as release angles beside these
 /// periods rather than as a setting: no length in any unit (nor times of N
 /// swings beside one), sizes up to 90 spanning a factor 3 or more, periods
 /// within 25 % of each other (the exact law rises 18 % from 0 to 90 deg)
-/// that do not fall as the size grows (a pivot scan near its minimum
-/// period may be as flat, but falls on one side).
+/// that do not fall as the size grows, and that the quadratic in the size
+/// follows better than a pivot scan's curve in it (a pivot scan about its
+/// least period is as flat, but U-shaped).
 bool reads_as_amplitudes(const std::vector<double>& a, const std::vector<double>& t) {
   const std::vector<double> x = sizes(a);
   const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
@@ -396,7 +414,19 @@ bool reads_as_amplitudes(const std::vector<double>& a, const std::vector<double>
   if (!(*hi <= 90.0 && *hi >= 3.0 * *lo && *t_lo > 0.0 && *t_hi <= 1.25 * *t_lo)) return false;
   if (lengths_fit(a, "", t) || swings_in(a, "", t) > 0) return false;
   const auto rise = quadratic_rise(x, t);
-  return !rise || rise->first >= 0.0;
+  if (rise && rise->first < 0.0) return false;
+  if (!(*lo > 0.0) || a.size() < 4) return true;
+  double rss = 0.0;
+  const std::size_t n = x.size();
+  double su = 0.0, st = 0.0, suu = 0.0, sut = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double u = x[i] * x[i];
+    su += u, st += t[i], suu += u * u, sut += u * t[i];
+  }
+  const double b = (static_cast<double>(n) * sut - su * st) / (static_cast<double>(n) * suu - su * su);
+  const double c0 = (st - b * su) / static_cast<double>(n);
+  for (std::size_t i = 0; i < n; ++i) rss += std::pow(t[i] - c0 - b * x[i] * x[i], 2);
+  return rss <= pivot_scan_rss(x, t);
 }
 
 /// The unit of a sweep's amplitudes between 0.35 and 1.6, where their size
@@ -840,8 +870,13 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
       }
       // A timing's stated uncertainty weighs it in the fit: 0 would make it infinitely precise.
       const bool positive = use[j].kind == Kind::time;
-      // An amplitude may be signed (a release to either side): its size is used.
-      const bool non_negative = (use[j].uncertainty && !positive) || (use[j].kind == Kind::setting && use[j].setting == Setting::length);
+      // An amplitude may be signed in a sweep (no setting, or one: releases to either side): its
+      // size is used; beside settings that change, a negative one is a slip.
+      const bool signed_amplitudes =
+          out.sweep || std::all_of(table.columns[*setting_col].begin(), table.columns[*setting_col].end(),
+                                   [&](double x) { return x == table.columns[*setting_col].front(); });
+      const bool non_negative = (use[j].uncertainty && !positive) || (use[j].kind == Kind::setting && use[j].setting == Setting::length) ||
+                                (use[j].kind == Kind::amplitude && !signed_amplitudes);
       if ((positive && !(v[i] > 0.0)) || (non_negative && !(v[i] >= 0.0)) || !std::isfinite(v[i])) {
         fail(file, table.line(i), 1,
              "got " + format_number(v[i]) + " in column \"" + names[j] + "\" (" + quantity_name(use[j]) +
@@ -1016,10 +1051,11 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
       const std::vector<double> a = sizes(table.columns[*amplitude_col]);
       const double hi = *std::max_element(a.begin(), a.end());
       const double lo = *std::min_element(a.begin(), a.end());
-      // Degrees past 1.6 (92 deg in radians: no timed swing); radians up to 0.35 (below 0.35 deg: no hand release);
-      // between, a sweep's periods may say.
-      au.unit = lo > 1.6 ? "deg" : hi <= 0.35 ? "rad" : out.sweep ? sweep_angle_unit(a, periods) : "";
-      const bool by_rise = lo <= 1.6 && hi > 0.35 && !au.unit.empty();
+      // Degrees past 1.6 (92 deg in radians: no timed swing), or where one is past pi (180 deg in
+      // radians: over the top); radians up to 0.35 (below 0.35 deg: no hand release); between, a
+      // sweep's periods may say.
+      au.unit = lo > 1.6 || hi > kPi ? "deg" : hi <= 0.35 ? "rad" : out.sweep ? sweep_angle_unit(a, periods) : "";
+      const bool by_rise = !(lo > 1.6 || hi > kPi || hi <= 0.35) && !au.unit.empty();
       if (au.unit.empty()) {
         refuse("the column \"" + names[*amplitude_col] + "\" (amplitude) has no unit and its values, " +
                format_number(lo, 3) + " to " + format_number(hi, 3) + ", may be degrees or radians; expected its "
@@ -1176,27 +1212,33 @@ bool looks_like_settings_table(std::string_view text) {
             oscillations_in(c.word) > 0) {
           return true;
         }
-        x |= c.role == Role::x, y |= c.role == Role::y, angle |= c.role == Role::angle;
+        x |= c.role == Role::x, y |= c.role == Role::y, angle |= c.role == Role::angle || c.role == Role::amplitude;
         if ((c.role == Role::time || c.role == Role::period) && !time) time = i;
       }
       // An x without a y beside a time is a track's one coordinate, or a table's pivot
       // positions ("x (cm)", "T (s)"): a table where the times do not increase, as no
       // recording's do (but for one whose clock restarts). An angle beside times that
-      // stay within 25 % of each other over fewer rows than a record of a few swings
-      // holds is an amplitude sweep's ("theta (deg)", "T (s)"). The rows are read as
-      // the table would read them.
+      // stay within 25 % of each other, not at a clock's steady step, is an amplitude
+      // sweep's ("theta (deg)", "T (s)"): a record of a few swings that starts late has
+      // such times, at one step. The rows are read as the table would read them.
       const bool track = x && !y;
       if (!(track || angle) || !time) return false;
       const std::vector<std::string> names(header.size());  // no message quotes them here
       const Table rows = read_rows(data.begin, data.end, lines.data_line, d, names, "");
       double previous = -HUGE_VAL, lo = HUGE_VAL, hi = 0.0;
       bool increasing = true;
+      std::vector<double> steps;
       for (const double t : rows.columns[*time]) {
         if (std::isnan(t)) continue;  // an empty cell
+        if (previous > -HUGE_VAL) steps.push_back(t - previous);
         increasing = increasing && t > previous;
         previous = t, lo = std::min(lo, t), hi = std::max(hi, t);
       }
-      return (track && !increasing) || (angle && rows.rows < 50 && lo > 0.0 && hi <= 1.25 * lo);
+      const bool clock = increasing && steps.size() >= 3 && [&] {
+        const auto [s_lo, s_hi] = std::minmax_element(steps.begin(), steps.end());
+        return *s_hi <= 1.5 * *s_lo;  // a sampling clock's step, jitter and all
+      }();
+      return (track && !increasing) || (angle && lo > 0.0 && hi <= 1.25 * lo && !clock);
     }
     (void)parse_settings_table(text, "");
     return true;

@@ -5,7 +5,8 @@
 // finite period, uncertainty and amplitudes, and no swing a negative
 // amplitude. A zip archive is refused here (parse_recording reads text;
 // libzip unpacks a file's bytes), so the zip reader is left to its
-// catalogue cases (tests/bad_recordings/). A phyphox experiment file (XML)
+// catalogue cases (tests/bad_recordings/); a spreadsheet (.xlsx) is unpacked
+// here, its first sheet read as a table. A phyphox experiment file (XML)
 // is read here as `import` reads it (read_phyphox_experiment). The same
 // bytes as a table of settings and periods (docs/series.md, "Tables"): a
 // table that reads must make a scene that reads, or refuses clearly, and
@@ -70,6 +71,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const pendulum::Recording r = pendulum::read_phyphox_experiment(text, "fuzz", pendulum::RecordingFormat::automatic, "");
       const pendulum::SwingAnalysis a = pendulum::analyse_swings(r, "fuzz");
       require(std::isfinite(a.period.value) && a.period.value > 0.0, "experiment period not finite and positive", "");
+    } catch (const pendulum::InputError& e) {
+      pendulum::fuzz::require_clear_message(e);
+    }
+  }
+  // A spreadsheet: its first sheet as CSV, then read as a table or a recording (tests/tables/lab_sheet.xlsx seeds it).
+  if (pendulum::looks_like_xlsx(text)) {
+    try {
+      const std::string csv = pendulum::xlsx_sheet_csv(text, "fuzz", "", std::size_t{1} << 24);
+      try {
+        (void)pendulum::parse_settings_table(csv, "fuzz");
+      } catch (const pendulum::InputError& e) {
+        pendulum::fuzz::require_clear_message(e);
+      }
     } catch (const pendulum::InputError& e) {
       pendulum::fuzz::require_clear_message(e);
     }

@@ -247,6 +247,11 @@ TEST_CASE("an amplitude sweep's table reduces to its small-amplitude period, and
   succeeded("report -o " + page + " " + kData + "/amplitude_sweep_scene.json");
   const std::string html = pendulum::test::read_text(page);
   std::remove(page.c_str());
+  // docs/series.md shows the plot alone as this command writes it.
+  const std::string svg = temporary_file() + ".svg";
+  succeeded("report " + kData + "/amplitude_sweep_scene.json --plot series -o " + svg);
+  CHECK(pendulum::test::read_text(svg) == pendulum::test::read_text(kData + "/../docs/amplitude-sweep.svg"));
+  std::remove(svg.c_str());
   CHECK_THAT(html, Contains("<h3>Amplitude sweep</h3>") && Contains("exact law T = T\u2080 2K/\u03C0") &&
                        Contains("at these amplitudes (1/16 at small ones): agrees"));
 }

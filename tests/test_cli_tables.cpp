@@ -170,7 +170,7 @@ TEST_CASE("The tables in data/ are tests/tools/make_tables.py's output", "[cli][
     CHECK(pendulum::test::read_text(entry.path().string()) == pendulum::test::read_text(kData + "/../" + name));
     ++files;
   }
-  CHECK(files == 27);
+  CHECK(files == 28);
   std::filesystem::remove_all(dir);
 }
 
@@ -324,5 +324,42 @@ TEST_CASE("a sweep's table is told from a pivot scan, a recording that starts la
   const Run slip = import("slip.csv", "L (m),T (s),theta (deg)\n0.4,1.27,5\n0.6,1.55,-5\n0.8,1.80,5\n");
   CHECK(slip.status == 1);
   CHECK_THAT(slip.err, Contains("got -5 in column \"theta (deg)\" (amplitude); expected a non-negative number"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("a spreadsheet's cells as other programs write them, and stamps told from their period by name",
+          "[cli][tables][xlsx]") {
+  // tests/tables/quirks_sheet.xlsx (make_tables.py): "Length " and "(cm)" in two runs beside a phonetic
+  // run "XX", "t10&#10;(&#x73;)" (a line break and a character reference), cells without their
+  // reference, an inline string "note" over no numbers.
+  const json scene = json::parse(succeeded("import " + kTests + "/tables/quirks_sheet.xlsx").out);
+  const json& columns = scene.at("import").at("columns");
+  CHECK(columns[0].at("name") == "Length (cm)");
+  CHECK(columns[1].at("name") == "t10 (s)");
+  CHECK(columns[1].at("role") == "time of 10 oscillations");
+  CHECK(scene.at("observations").size() == 3);
+  const std::string dir = temporary_directory();
+  auto import = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir + "/" + name) << text;
+    return run("import " + dir + "/" + name);
+  };
+  // A first stamp smaller than the period, or negative: the unnumbered "time" is the period.
+  for (const std::string& first : {std::string("0.41"), std::string("-0.41")}) {
+    const double a = std::stod(first);
+    std::string text = "length (cm),time1 (s),time2 (s),time (s)\n";
+    for (const auto& [l, t] : std::vector<std::pair<int, double>>{{40, 1.269}, {60, 1.554}, {80, 1.794}}) {
+      text += std::to_string(l) + "," + first + "," + std::to_string(a + t) + "," + std::to_string(t) + "\n";
+    }
+    const Run r = import("stamps.csv", text);
+    REQUIRE(r.status == 0);
+    const json parsed = json::parse(r.out);
+    const json& c = parsed.at("import").at("columns");
+    CHECK(c[3].at("role") == "period");
+    CHECK(c[1].at("role") == "unused");
+  }
+  // A length left empty beside no amplitudes is a cell left empty, not the first row's length.
+  const Run empty = import("empty.csv", "L (cm),t10 (s)\n50.0,14.19\n,17.95\n");
+  CHECK(empty.status == 1);
+  CHECK_THAT(empty.err, Contains("an empty cell in column \"L (cm)\""));
   std::filesystem::remove_all(dir);
 }

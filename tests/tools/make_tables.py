@@ -66,9 +66,7 @@ def sweep_table(seed, angles_deg, length, repeats=1, oscillations=1, sigma=0.01)
 def xlsx(sheets):
     """A minimal spreadsheet (.xlsx) as bytes: `sheets` is [(name, rows)], each row a list of cells (None for
     an empty cell, str for a shared string, a number as Excel stores it) written from row 2 (row 1 empty, as
-    students leave it); each entry dated 1980-01-01 so that the bytes are the same each run."""
-    import io
-    import zipfile
+    students leave it)."""
     strings = []
 
     def cell(ref, v):
@@ -79,24 +77,34 @@ def xlsx(sheets):
         return f'<c r="{ref}"><v>{v!r}</v></c>'
 
     ns = 'xmlns="http://schemas.openxmlformats.org/spreadsheetml/2006/main"'
-    rel = 'xmlns:r="http://schemas.openxmlformats.org/officeDocument/2006/relationships"'
     parts = {}
     for k, (name, rows) in enumerate(sheets, 1):
         body = "".join(f'<row r="{i}">' + "".join(cell(f"{chr(65 + j)}{i}", v) for j, v in enumerate(row) if v is not None)
                        + "</row>" for i, row in enumerate(rows, 2))
         parts[f"xl/worksheets/sheet{k}.xml"] = f'<worksheet {ns}><sheetData>{body}</sheetData></worksheet>'
+    parts["xl/sharedStrings.xml"] = f'<sst {ns}>' + "".join(
+        f"<si><t>{t.replace('&', '&amp;').replace('<', '&lt;')}</t></si>" for t in strings) + "</sst>"
+    return xlsx_parts(parts, [name for name, _ in sheets])
+
+
+def xlsx_parts(parts, names):
+    """The spreadsheet of `parts` (sheets and shared strings, XML as written) with its workbook naming
+    the sheets `names` (sheet1.xml, ...), each entry dated 1980-01-01."""
+    import io
+    import zipfile
+    ns = 'xmlns="http://schemas.openxmlformats.org/spreadsheetml/2006/main"'
+    rel = 'xmlns:r="http://schemas.openxmlformats.org/officeDocument/2006/relationships"'
+    parts = dict(parts)
     parts["xl/workbook.xml"] = f'<workbook {ns} {rel}><sheets>' + "".join(
-        f'<sheet name="{name}" sheetId="{k}" r:id="rId{k}"/>' for k, (name, _) in enumerate(sheets, 1)) + "</sheets></workbook>"
+        f'<sheet name="{name}" sheetId="{k}" r:id="rId{k}"/>' for k, name in enumerate(names, 1)) + "</sheets></workbook>"
     parts["xl/_rels/workbook.xml.rels"] = (
         '<Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships">' + "".join(
             f'<Relationship Id="rId{k}" Type="http://schemas.openxmlformats.org/officeDocument/2006/relationships/'
-            f'worksheet" Target="worksheets/sheet{k}.xml"/>' for k in range(1, len(sheets) + 1)) + "</Relationships>")
-    parts["xl/sharedStrings.xml"] = f'<sst {ns}>' + "".join(
-        f"<si><t>{t.replace('&', '&amp;').replace('<', '&lt;')}</t></si>" for t in strings) + "</sst>"
+            f'worksheet" Target="worksheets/sheet{k}.xml"/>' for k in range(1, len(names) + 1)) + "</Relationships>")
     out = io.BytesIO()
     with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as z:
-        for name in ["xl/workbook.xml", "xl/_rels/workbook.xml.rels", "xl/sharedStrings.xml"] + sorted(
-                n for n in parts if n.startswith("xl/worksheets/")):
+        for name in ["xl/workbook.xml", "xl/_rels/workbook.xml.rels"] + sorted(
+                n for n in parts if n.startswith("xl/") and n not in ("xl/workbook.xml", "xl/_rels/workbook.xml.rels")):
             z.writestr(zipfile.ZipInfo(name, (1980, 1, 1, 0, 0, 0)), parts[name])
     return out.getvalue()
 
@@ -182,6 +190,19 @@ def main():
         ("Lengths", [["time1", "time2", None, None, "time", "length"]] + stamps),
         ("Angles", [["length", "angle", "angle", "period"]] + sweep_rows),
         ("Notes", [])]))
+    # A spreadsheet as other programs write it: a header's words in runs (spaces kept), a phonetic run
+    # beside them (not text), a line break in a cell, a numeric character reference, cells without
+    # their reference (each follows the one before), an inline string.
+    quirks_rows = "".join(
+        f'<row r="{i + 2}"><c><v>{l}</v></c><c><v>{t:.2f}</v></c></row>' for i, (l, t) in enumerate(rows[:6]))
+    write("tests/tables/quirks_sheet.xlsx", xlsx_parts({
+        "xl/sharedStrings.xml": '<sst xmlns="http://schemas.openxmlformats.org/spreadsheetml/2006/main">'
+                                '<si><r><t xml:space="preserve">Length </t></r><r><t>(cm)</t></r>'
+                                '<rPh sb="0" eb="1"><t>XX</t></rPh></si><si><t>t10&#10;(&#x73;)</t></si></sst>',
+        "xl/worksheets/sheet1.xml": '<worksheet xmlns="http://schemas.openxmlformats.org/spreadsheetml/2006/main">'
+                                    '<sheetData><row r="1"><c t="s"><v>0</v></c><c t="s"><v>1</v></c>'
+                                    '<c t="inlineStr"><is><t>note</t></is></c></row>' + quirks_rows +
+                                    '</sheetData></worksheet>'}, ["Sheet1"]))
     # Bad tables (tests/bad_recordings/expected.json).
     write("tests/bad_recordings/table_no_period.csv", "L (cm),theta (deg)\n55,5\n75,5\n")
     write("tests/bad_recordings/table_one_row.csv", "L (cm),t10 (s)\n55,14.9\n")

@@ -390,17 +390,30 @@ std::vector<Crossing> find_crossings(const std::vector<double>& t, const Signal&
 /// Each gate event's state as blocked (1) or open (0). A passage blocks the
 /// beam for a small part of the swing, and exporters differ in which state
 /// they call blocked: the state held for less time overall is. A gate's
-/// states are 0 and 1; a light sensor's intensity is split halfway between
-/// its dark and bright levels (its 5th and 95th percentiles), with a tenth
-/// of their difference either side as hysteresis, so that noise on a slow
-/// edge makes no second passage.
+/// states are 0 and 1; a light sensor's intensity is split into its dark and
+/// bright levels by Otsu's threshold (the split of the sorted samples that
+/// maximises the variance between the two levels' means: a passage darkens
+/// 1-5 % of the samples, too few for a percentile to find), halfway between
+/// their means, with a tenth of their difference either side as hysteresis,
+/// so that noise on a slow edge makes no second passage.
 std::vector<double> blocked_states(const Recording& r) {
   const auto& state = r.channels[0];
   double middle = 0.5, band = 0.0;
   if (std::any_of(state.begin(), state.end(), [](double s) { return s != 0.0 && s != 1.0; })) {
     std::vector<double> sorted(state);
     std::sort(sorted.begin(), sorted.end());
-    const double dark = sorted[sorted.size() / 20], bright = sorted[sorted.size() - 1 - sorted.size() / 20];
+    const std::size_t n = sorted.size();
+    double total = 0.0;
+    for (double x : sorted) total += x;
+    double below = 0.0, best = -1.0, dark = sorted.front(), bright = sorted.back();
+    for (std::size_t i = 1; i < n; ++i) {
+      below += sorted[i - 1];
+      if (sorted[i] == sorted[i - 1]) continue;
+      const double w = static_cast<double>(i) / static_cast<double>(n);
+      const double m0 = below / static_cast<double>(i), m1 = (total - below) / static_cast<double>(n - i);
+      const double between = w * (1.0 - w) * (m1 - m0) * (m1 - m0);
+      if (between > best) best = between, dark = m0, bright = m1;
+    }
     middle = (dark + bright) / 2.0;
     band = (bright - dark) / 10.0;
   }

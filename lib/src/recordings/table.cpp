@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -441,11 +442,11 @@ std::string sweep_angle_unit(const std::vector<double>& a, const std::vector<dou
   return rise->first > law / 3.0 && rise->first < 3.0 * law ? "rad" : "";
 }
 
-/// Whether d = b - a at every row, to the printed digits' rounding, d the
-/// least of the three (b - a = d also makes a = b - d: the period is the
-/// short interval between the stamps, not a stamp).
+/// Whether d = b - a at every row, to the printed digits' rounding, and d
+/// is positive (b - a = d also makes a = b - d: the caller prefers as the
+/// period a column whose name is no stamp's, then the least).
 bool is_difference(const std::vector<double>& d, const std::vector<double>& b, const std::vector<double>& a) {
-  if (d.empty() || !(median(d) < median(a))) return false;
+  if (d.empty()) return false;
   const double step = std::max({printed_resolution(d), printed_resolution(b), printed_resolution(a)});
   for (std::size_t i = 0; i < d.size(); ++i) {
     if (!(d[i] > 0.0) || !(std::fabs(b[i] - a[i] - d[i]) <= 1.5 * step)) return false;
@@ -765,21 +766,32 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     }
   }
   // Stamps read off a trace beside their difference ("time1, time2, time"):
-  // the difference is the period, the stamps are not.
-  for (std::size_t k = 0; k < use.size(); ++k) {
-    if (use[k].kind != Kind::time || use[k].uncertainty) continue;
-    for (std::size_t i = 0; i < use.size(); ++i) {
-      for (std::size_t j = 0; j < use.size(); ++j) {
-        if (i == j || i == k || j == k || use[i].kind != Kind::time || use[j].kind != Kind::time || use[i].uncertainty ||
-            use[j].uncertainty || !is_difference(table.columns[k], table.columns[j], table.columns[i])) {
-          continue;
-        }
-        for (const std::size_t stamp : {i, j}) {
-          use[stamp].kind = Kind::unused, use[stamp].trial = false;
-          use[stamp].why = "a time stamp: column " + std::to_string(k + 1) + " is column " + std::to_string(j + 1) +
-                           " minus column " + std::to_string(i + 1) + " at every row, the period between them";
+  // the difference is the period, the stamps are not. Of the columns that
+  // are such a difference, the period is one whose name has no number (the
+  // stamps are numbered), then the least; among a few time columns only.
+  {
+    std::vector<std::size_t> times;
+    for (std::size_t j = 0; j < use.size(); ++j) {
+      if (use[j].kind == Kind::time && !use[j].uncertainty) times.push_back(j);
+    }
+    std::optional<std::array<std::size_t, 3>> best;  // k = j - i
+    auto rank = [&](std::size_t k) { return std::pair{use[k].oscillations != 0 || use[k].trial, median(table.columns[k])}; };
+    for (std::size_t k : times.size() >= 3 && times.size() <= 8 ? times : std::vector<std::size_t>{}) {
+      for (std::size_t i : times) {
+        for (std::size_t j : times) {
+          if (i == j || i == k || j == k || !is_difference(table.columns[k], table.columns[j], table.columns[i])) continue;
+          if (!best || rank(k) < rank((*best)[0])) best = std::array<std::size_t, 3>{k, i, j};
         }
       }
+    }
+    if (best) {
+      const auto [k, i, j] = *best;
+      for (const std::size_t stamp : {i, j}) {
+        use[stamp].kind = Kind::unused, use[stamp].trial = false;
+        use[stamp].why = "a time stamp: column " + std::to_string(k + 1) + " is column " + std::to_string(j + 1) +
+                         " minus column " + std::to_string(i + 1) + " at every row, the period between them";
+      }
+      use[k].oscillations = 0;  // "time" of none: a period
     }
   }
   // One column of each role: the first, but of a time of N swings beside
@@ -846,14 +858,19 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     if (tu.trial && use[j].trial && use[j].kind == Kind::time && !use[j].uncertainty) trials.push_back(j);
   }
 
-  // A setting written once, in the first row, is every row's (a length
-  // measured once for a sweep of amplitudes).
-  if (setting_col && table.rows > 1) {
-    auto& v = table.columns[*setting_col];
-    if (std::isfinite(v[0]) && std::all_of(v.begin() + 1, v.end(), [](double x) { return std::isnan(x); })) {
-      std::fill(v.begin() + 1, v.end(), v[0]);
-      out.notes.push_back({0, "\"" + names[*setting_col] + "\": written once, in the first row (line " +
-                                  std::to_string(table.line(0)) + "): every row's"});
+  // A length written once, in the first row, beside amplitudes is every
+  // row's (one length measured for a sweep; elsewhere an empty cell is a
+  // cell left empty), its uncertainty likewise.
+  const auto setting_u_col = find(Kind::setting, true);
+  if (setting_col && amplitude_col && table.rows > 1) {
+    for (const auto col : {setting_col, setting_u_col}) {
+      if (!col) continue;
+      auto& v = table.columns[*col];
+      if (std::isfinite(v[0]) && std::all_of(v.begin() + 1, v.end(), [](double x) { return std::isnan(x); })) {
+        std::fill(v.begin() + 1, v.end(), v[0]);
+        out.notes.push_back({0, "\"" + names[*col] + "\": written once, in the first row (line " +
+                                    std::to_string(table.line(0)) + "): every row's"});
+      }
     }
   }
   // Every used cell holds a number.

@@ -3,6 +3,7 @@
 #include <zip.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <memory>
 #include <optional>
 #include <string_view>
@@ -172,8 +173,26 @@ Recording read_zip_recording(std::string_view bytes, const std::string& file, Re
 
 namespace {
 
+/// A code point as UTF-8 (U+FFFD for none: a surrogate or beyond U+10FFFF).
+std::string utf8(unsigned long c) {
+  if (c >= 0xD800 && (c < 0xE000 || c > 0x10FFFF)) c = 0xFFFD;
+  std::string out;
+  if (c < 0x80) {
+    out += static_cast<char>(c);
+  } else if (c < 0x800) {
+    out += static_cast<char>(0xC0 | (c >> 6)), out += static_cast<char>(0x80 | (c & 0x3F));
+  } else if (c < 0x10000) {
+    out += static_cast<char>(0xE0 | (c >> 12)), out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (c & 0x3F));
+  } else {
+    out += static_cast<char>(0xF0 | (c >> 18)), out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
+    out += static_cast<char>(0x80 | ((c >> 6) & 0x3F)), out += static_cast<char>(0x80 | (c & 0x3F));
+  }
+  return out;
+}
+
 /// The text of the XML element or attribute value [p, e) with its five
-/// predefined entities decoded.
+/// predefined entities and numeric character references (&#76;, &#x4C;) decoded.
 std::string xml_text(std::string_view s) {
   static const std::pair<std::string_view, char> kEntities[] = {
       {"&amp;", '&'}, {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}, {"&apos;", '\''}};
@@ -181,11 +200,19 @@ std::string xml_text(std::string_view s) {
   for (std::size_t i = 0; i < s.size(); ++i) {
     const auto entity = std::find_if(std::begin(kEntities), std::end(kEntities),
                                      [&](const auto& en) { return s.substr(i, en.first.size()) == en.first; });
-    if (entity == std::end(kEntities)) {
-      out += s[i];
-    } else {
+    const std::size_t end = s.substr(i, 2) == "&#" ? s.find(';', i) : std::string_view::npos;
+    if (entity != std::end(kEntities)) {
       out += entity->second;
       i += entity->first.size() - 1;
+    } else if (end != std::string_view::npos && end - i <= 10) {
+      const bool hex = s.substr(i + 2, 1) == "x" || s.substr(i + 2, 1) == "X";
+      const std::string digits(s.substr(i + (hex ? 3 : 2), end - i - (hex ? 3 : 2)));
+      char* stop = nullptr;
+      const unsigned long c = std::strtoul(digits.c_str(), &stop, hex ? 16 : 10);
+      out += !digits.empty() && *stop == '\0' ? utf8(c) : std::string(s.substr(i, end + 1 - i));
+      i = end;
+    } else {
+      out += s[i];
     }
   }
   return out;
@@ -301,18 +328,29 @@ std::size_t column_of(std::string_view reference) {
   return column == 0 ? 0 : column - 1;
 }
 
-/// A cell as CSV writes it: quoted where it holds a delimiter, a quote or a line end.
-std::string csv_cell(const std::string& text) {
-  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+/// A cell as CSV writes it: a line break, a tab or a semicolon as a space
+/// (the CSV's delimiter is sniffed again: a header cell "t10<LF>(s)" is one
+/// header's words), quoted where it holds a comma or a quote.
+std::string csv_cell(std::string text) {
+  for (char& c : text) {
+    if (c == '\r' || c == '\n' || c == '\t' || c == ';') c = ' ';
+  }
+  if (text.find_first_of(",\"") == std::string::npos) return text;
   std::string out = "\"";
   for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
   return out + "\"";
 }
 
-/// The text of a shared string or an inline one: its <t> runs together.
+/// The text of a shared string or an inline one: its <t> runs together as
+/// written (spaces kept), without the phonetic runs (<rPh>) beside them.
 std::string runs_of(std::string_view raw) {
+  std::string text(raw);
+  for (std::size_t at = text.find("<rPh"); at != std::string::npos; at = text.find("<rPh", at)) {
+    const std::size_t end = text.find("</rPh>", at);
+    text.erase(at, end == std::string::npos ? std::string::npos : end + 6 - at);
+  }
   std::string out;
-  for (const auto& [tag, text] : elements(raw, "t")) out += text;
+  for (const auto& [tag, inner] : elements(text, "t", true)) out += xml_text(inner);
   return out;
 }
 
@@ -369,22 +407,28 @@ std::string xlsx_sheet_csv(std::string_view bytes, const std::string& file, cons
                    " (or its number from 1)");
     }
   }
+  // Each part held while its elements' views into it are read.
+  const std::string strings = part("xl/sharedStrings.xml", false), sheet_xml = part(chosen->target, true);
   std::vector<std::string> shared;
-  for (const auto& [tag, raw] : elements(part("xl/sharedStrings.xml", false), "si", true)) shared.push_back(runs_of(raw));
+  for (const auto& [tag, raw] : elements(strings, "si", true)) shared.push_back(runs_of(raw));
   // Its cells by row and column: a formula's cached value, a shared or inline string, a number.
   std::vector<std::vector<std::string>> rows;
   std::vector<bool> used;
   std::size_t first_row = 0;  // the sheet's number of the first row that holds a cell
-  for (const auto& [row_tag, row] : elements(part(chosen->target, true), "row", true)) {
+  for (const auto& [row_tag, row] : elements(sheet_xml, "row", true)) {
     std::vector<std::string> cells;
+    std::size_t next = 0;  // a cell without its reference (optional) follows the one before
     for (const auto& [tag, raw] : elements(row, "c", true)) {
-      const std::size_t column = column_of(attribute(tag, "r").value_or(""));
+      const auto reference = attribute(tag, "r");
+      const std::size_t column = reference ? column_of(*reference) : next;
+      next = column + 1;
       if (column >= 16384) continue;  // beyond Excel's XFD
       const std::string type = attribute(tag, "t").value_or("n");
       const auto v = elements(raw, "v");
       std::string text = type == "inlineStr" ? runs_of(raw) : v.empty() ? std::string() : v.front().second;
       if (type == "s") {
-        const std::size_t k = text.empty() || text.find_first_not_of("0123456789") != std::string::npos ? shared.size() : std::stoul(text);
+        const bool index = !text.empty() && text.size() <= 9 && text.find_first_not_of("0123456789") == std::string::npos;
+        const std::size_t k = index ? std::stoul(text) : shared.size();
         text = k < shared.size() ? shared[k] : std::string();
       } else if (type == "e") {
         text.clear();  // #DIV/0! and the like: no value

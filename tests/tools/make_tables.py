@@ -211,6 +211,8 @@ def main():
     write("tests/bad_recordings/table_setting_not_together.csv",
           "L (cm),t10 (s)\n55,14.91\n75,17.38\n55,14.88\n95,19.55\n")
     write("tests/bad_recordings/table_cell_units_mixed.csv", "10cm,0.68s\n20cm,0.94s\n0.3m,1.17s\n")
+    write("tests/bad_recordings/table_degrees_as_radians.csv",
+          "theta (rad),T (s)\n10,1.797\n20,1.808\n30,1.825\n40,1.852\n")
     write("tests/bad_recordings/table_amplitude_unit_open.csv",
           "L (cm),t10 (s),theta\n55,14.91,0.5\n75,17.38,0.6\n95,19.55,0.9\n")
 

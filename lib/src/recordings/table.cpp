@@ -1088,10 +1088,19 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     const auto f = factor_of(kAngleUnits, au.unit);
     if (!f) refuse("got the unit \"" + one_line(au.unit, 20, true) + "\" for \"" + names[*amplitude_col] + "\"; expected deg or rad");
     amplitude_factor = *f;
+    const std::vector<double> a = sizes(table.columns[*amplitude_col]);
+    const double largest = *std::max_element(a.begin(), a.end());
+    if (!(largest * amplitude_factor < kPi)) {
+      refuse("the column \"" + names[*amplitude_col] + "\" (amplitude) reaches " + format_number(largest, 4) + " " +
+             au.unit + ", 180 deg or more (over the top)" +
+             (au.unit == "rad" && largest < 180.0 ? ": it holds degrees? Say so in the header (\"theta (deg)\") or "
+                                                   "declared: --columns (a scene's \"columns\")"
+                                                 : "; expected a swing's amplitude, below 180 deg"));
+    }
     out.amplitude_unit = au.unit;
     (void)unit_of(amplitude_u, au, kAngleUnits);
-    const auto& a = table.columns[*amplitude_col];
-    if (std::any_of(a.begin(), a.end(), [](double x) { return x < 0.0; })) {
+    const auto& written = table.columns[*amplitude_col];
+    if (std::any_of(written.begin(), written.end(), [](double x) { return x < 0.0; })) {
       out.notes.push_back({0, "\"" + names[*amplitude_col] + "\": signed (a release to either side); each "
                               "amplitude is its size"});
     }

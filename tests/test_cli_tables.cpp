@@ -356,6 +356,13 @@ TEST_CASE("a spreadsheet's cells as other programs write them, and stamps told f
     const json& c = parsed.at("import").at("columns");
     CHECK(c[3].at("role") == "period");
     CHECK(c[1].at("role") == "unused");
+    // Declared, the columns are as the option says: its first period column, the stamp of 0.41 s,
+    // is the period (and makes no pendulum beside these lengths), not the difference.
+    const Run declared = run("import --columns \"l:cm,T:s,T:s,T:s\" " + dir + "/stamps.csv");
+    if (a > 0.0) {
+      CHECK(declared.status == 1);
+      CHECK_THAT(declared.err, Contains("the lengths in cm and the periods in s give 4 pi^2 L/T^2 = 141 m/s^2"));
+    }
   }
   // A length left empty beside no amplitudes is a cell left empty, not the first row's length.
   const Run empty = import("empty.csv", "L (cm),t10 (s)\n50.0,14.19\n,17.95\n");

@@ -768,8 +768,9 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   // Stamps read off a trace beside their difference ("time1, time2, time"):
   // the difference is the period, the stamps are not. Of the columns that
   // are such a difference, the period is one whose name has no number (the
-  // stamps are numbered), then the least; among a few time columns only.
-  {
+  // stamps are numbered), then the least; among a few time columns only,
+  // and never over columns the option declared.
+  if (options.columns.empty()) {
     std::vector<std::size_t> times;
     for (std::size_t j = 0; j < use.size(); ++j) {
       if (use[j].kind == Kind::time && !use[j].uncertainty) times.push_back(j);

@@ -10,6 +10,7 @@
 
 #include "pendulum/amplitude.hpp"
 #include "pendulum/dispersion.hpp"
+#include "pendulum/straight_line.hpp"
 #include "text.hpp"
 
 namespace pendulum {
@@ -23,24 +24,17 @@ std::pair<double, double> law_shape(double theta0) {
   return {f.a, f.v[0]};
 }
 
-/// The weighted straight line y = a + b x: a, b and their covariance.
-struct Line {
-  double a, b, var_a, var_b, cov;
-};
-
-Line weighted_line(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& w) {
-  double s = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    s += w[i], sx += w[i] * x[i], sy += w[i] * y[i], sxx += w[i] * x[i] * x[i], sxy += w[i] * x[i] * y[i];
-  }
-  const double d = s * sxx - sx * sx;
-  return {(sxx * sy - sx * sxy) / d, (s * sxy - sx * sy) / d, sxx / d, s / d, -sx / d};
+/// y = a + b x weighted by w (fit_straight_line with sigma_y = 1/sqrt(w)).
+StraightLine weighted_line(const std::vector<double>& x, const std::vector<double>& y, const std::vector<double>& w) {
+  std::vector<double> sigma(w.size());
+  for (std::size_t i = 0; i < w.size(); ++i) sigma[i] = 1.0 / std::sqrt(w[i]);
+  return fit_straight_line(x, y, std::vector<double>(x.size(), 0.0), sigma, true);
 }
 
-/// c = b/a of a line and its variance (first order).
-std::pair<double, double> relative_slope(const Line& l) {
-  const double c = l.b / l.a;
-  const double var = l.var_b / (l.a * l.a) + c * c * l.var_a / (l.a * l.a) - 2.0 * c * l.cov / (l.a * l.a);
+/// c = slope/intercept of a line and its variance (first order).
+std::pair<double, double> relative_slope(const StraightLine& l) {
+  const double a = l.intercept, c = l.slope / a;
+  const double var = l.var_slope / (a * a) + c * c * l.var_intercept / (a * a) - 2.0 * c * l.cov / (a * a);
   return {c, std::max(var, 0.0)};
 }
 
@@ -129,8 +123,8 @@ AmplitudeSweep fit_amplitude_sweep(const std::vector<SweepPoint>& points, bool s
   for (const SweepPoint& p : points) amplitudes.push_back(p.amplitude);
   if (distinct_amplitudes(amplitudes) < 3) return out;
   // The quadratic's c, and the law's own c fitted the same way to T0 f.
-  const Line measured = weighted_line(theta2, period, w);
-  const Line law = weighted_line(theta2, out.law, w);
+  const StraightLine measured = weighted_line(theta2, period, w);
+  const StraightLine law = weighted_line(theta2, out.law, w);
   const auto [c, var_c] = relative_slope(measured);
   // c's uncertainty is from the quadratic's own scatter (n - 2 degrees of
   // freedom), judged by Student's t: a law that misses the periods does not
@@ -139,13 +133,13 @@ AmplitudeSweep fit_amplitude_sweep(const std::vector<SweepPoint>& points, bool s
   // them, 3 % of true laws were refuted for 1 % at uncertainties a quarter
   // of the scatter: a small scatter says nothing of c's own error).
   double chi2 = 0.0;
-  for (std::size_t i = 0; i < n; ++i) chi2 += w[i] * std::pow(period[i] - measured.a - measured.b * theta2[i], 2);
+  for (std::size_t i = 0; i < n; ++i) chi2 += w[i] * std::pow(period[i] - measured.intercept - measured.slope * theta2[i], 2);
   const double s_q = std::sqrt(chi2 / static_cast<double>(n - 2));
   const double sigma_c = std::sqrt(var_c) * s_q;
-  if (!std::isfinite(c) || !std::isfinite(law.b / law.a) || !(sigma_c > 0.0) || !std::isfinite(sigma_c)) return out;
+  if (!std::isfinite(c) || !std::isfinite(law.slope / law.intercept) || !(sigma_c > 0.0) || !std::isfinite(sigma_c)) return out;
   out.coefficient = Estimate{c, sigma_c};
-  out.coefficient_law = law.b / law.a;
-  out.quadratic_t0 = measured.a;
+  out.coefficient_law = law.slope / law.intercept;
+  out.quadratic_t0 = measured.intercept;
   const double z = std::abs(c - out.coefficient_law) / sigma_c;
   out.coefficient_probability =
       2.0 * boost::math::cdf(boost::math::complement(boost::math::students_t(static_cast<double>(n - 2)), z));

@@ -15,6 +15,7 @@
 #include <optional>
 
 #include "pendulum/files.hpp"
+#include "pendulum/straight_line.hpp"
 #include "zip.hpp"
 #include "pendulum/input_error.hpp"
 #include "pendulum/numeric.hpp"
@@ -364,41 +365,44 @@ std::vector<double> sizes(const std::vector<double>& v) {
   return out;
 }
 
-/// c = b/a of T = a + b x^2 fitted unweighted to the sizes x and periods t,
-/// and its standard uncertainty from the scatter about the line (n - 2
-/// degrees of freedom); empty below four points.
-std::optional<std::pair<double, double>> quadratic_rise(const std::vector<double>& x, const std::vector<double>& t) {
+/// y = slope x + intercept fitted unweighted (fit_straight_line with equal
+/// uncertainties), and the residual sum of squares of t about its curve
+/// `at` (t itself where the line is in t).
+template <class At>
+std::pair<StraightLine, double> unweighted_line(const std::vector<double>& x, const std::vector<double>& y,
+                                                const std::vector<double>& t, At at) {
+  const StraightLine line = fit_straight_line(x, y, std::vector<double>(x.size(), 0.0), std::vector<double>(x.size(), 1.0), true);
+  double rss = 0.0;
+  for (std::size_t i = 0; i < x.size(); ++i) rss += std::pow(t[i] - at(line, i), 2);
+  return {line, rss};
+}
+
+/// T = a + b x^2 fitted unweighted to the sizes x and periods t: c = b/a,
+/// its standard uncertainty from the scatter about the line (n - 2 degrees
+/// of freedom), and that scatter's sum of squares; empty below four points.
+struct QuadraticRise {
+  double c, sigma_c, rss;
+};
+std::optional<QuadraticRise> quadratic_rise(const std::vector<double>& x, const std::vector<double>& t) {
   const std::size_t n = x.size();
   if (n < 4) return std::nullopt;
-  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double u = x[i] * x[i];
-    sx += u, sy += t[i], sxx += u * u, sxy += u * t[i];
-  }
-  const double d = static_cast<double>(n) * sxx - sx * sx;
-  if (!(d > 0.0)) return std::nullopt;
-  const double b = (static_cast<double>(n) * sxy - sx * sy) / d, a = (sy - b * sx) / static_cast<double>(n);
-  double ss = 0.0;
-  for (std::size_t i = 0; i < n; ++i) ss += std::pow(t[i] - a - b * x[i] * x[i], 2);
-  const double var_b = ss / static_cast<double>(n - 2) * static_cast<double>(n) / d;
-  return std::pair{b / a, std::sqrt(var_b) / a};
+  std::vector<double> u(n);
+  for (std::size_t i = 0; i < n; ++i) u[i] = x[i] * x[i];
+  const auto [line, rss] = unweighted_line(u, t, t, [&](const StraightLine& l, std::size_t i) { return l.intercept + l.slope * u[i]; });
+  if (!std::isfinite(line.slope) || !std::isfinite(line.intercept)) return std::nullopt;
+  const double var_b = rss / static_cast<double>(n - 2) * line.var_slope;
+  return QuadraticRise{line.slope / line.intercept, std::sqrt(var_b) / line.intercept, rss};
 }
 
 /// The residual sum of squares of the periods t about a pivot scan's curve
 /// through them: T^2 h = (4 pi^2/g)(k^2 + h^2) is a line in h^2 (Kelley
 /// Eq. 55), fitted unweighted, whatever the unit of h.
 double pivot_scan_rss(const std::vector<double>& h, const std::vector<double>& t) {
-  const std::size_t n = h.size();
-  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double x = h[i] * h[i], y = t[i] * t[i] * h[i];
-    sx += x, sy += y, sxx += x * x, sxy += x * y;
-  }
-  const double d = static_cast<double>(n) * sxx - sx * sx;
-  const double b = (static_cast<double>(n) * sxy - sx * sy) / d, a = (sy - b * sx) / static_cast<double>(n);
-  double rss = 0.0;
-  for (std::size_t i = 0; i < n; ++i) rss += std::pow(t[i] - std::sqrt(std::max((a + b * h[i] * h[i]) / h[i], 0.0)), 2);
-  return rss;
+  std::vector<double> x(h.size()), y(h.size());
+  for (std::size_t i = 0; i < h.size(); ++i) x[i] = h[i] * h[i], y[i] = t[i] * t[i] * h[i];
+  return unweighted_line(x, y, t, [&](const StraightLine& l, std::size_t i) {
+           return std::sqrt(std::max((l.intercept + l.slope * x[i]) / h[i], 0.0));
+         }).second;
 }
 
 /// Whether a headerless first column reads as release angles beside these
@@ -415,19 +419,8 @@ bool reads_as_amplitudes(const std::vector<double>& a, const std::vector<double>
   if (!(*hi <= 90.0 && *hi >= 3.0 * *lo && *t_lo > 0.0 && *t_hi <= 1.25 * *t_lo)) return false;
   if (lengths_fit(a, "", t) || swings_in(a, "", t) > 0) return false;
   const auto rise = quadratic_rise(x, t);
-  if (rise && rise->first < 0.0) return false;
-  if (!(*lo > 0.0) || a.size() < 4) return true;
-  double rss = 0.0;
-  const std::size_t n = x.size();
-  double su = 0.0, st = 0.0, suu = 0.0, sut = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double u = x[i] * x[i];
-    su += u, st += t[i], suu += u * u, sut += u * t[i];
-  }
-  const double b = (static_cast<double>(n) * sut - su * st) / (static_cast<double>(n) * suu - su * su);
-  const double c0 = (st - b * su) / static_cast<double>(n);
-  for (std::size_t i = 0; i < n; ++i) rss += std::pow(t[i] - c0 - b * x[i] * x[i], 2);
-  return rss <= pivot_scan_rss(x, t);
+  if (!rise) return true;
+  return rise->c >= 0.0 && (!(*lo > 0.0) || rise->rss <= pivot_scan_rss(x, t));
 }
 
 /// The unit of a sweep's amplitudes between 0.35 and 1.6, where their size
@@ -437,9 +430,9 @@ bool reads_as_amplitudes(const std::vector<double>& a, const std::vector<double>
 /// 3283 times smaller); empty where the rise does not decide.
 std::string sweep_angle_unit(const std::vector<double>& a, const std::vector<double>& t) {
   const auto rise = quadratic_rise(sizes(a), t);
-  if (!rise || !(rise->first > 3.0 * rise->second)) return "";
+  if (!rise || !(rise->c > 3.0 * rise->sigma_c)) return "";
   const double law = 1.0 / 16.0;
-  return rise->first > law / 3.0 && rise->first < 3.0 * law ? "rad" : "";
+  return rise->c > law / 3.0 && rise->c < 3.0 * law ? "rad" : "";
 }
 
 /// Whether d = b - a at every row, to the printed digits' rounding, and d

@@ -256,3 +256,105 @@ TEST_CASE("Monte Carlo: GUM's interval where g is linear enough, and the t input
                 << t->high << "], " << t->draws << " draws");
   CHECK_THAT(t->high - t->low, WithinRel(2.0 * b.g_expanded->expanded, 0.02));
 }
+
+namespace {
+
+/// A series at `lengths` (+- 0.5 mm), each timed as `trials` of 10
+/// oscillations, the amplitude 5 +- 0.5 deg.
+nlohmann::json series_scene(const std::vector<double>& lengths, const std::vector<std::vector<double>>& trials) {
+  nlohmann::json observations = nlohmann::json::array();
+  for (std::size_t k = 0; k < lengths.size(); ++k) {
+    observations.push_back({{"length", {{"value", lengths[k]}, {"uncertainty", 0.0005}, {"unit", "m"}}},
+                            {"amplitude", {{"value", 5.0}, {"uncertainty", 0.5}, {"unit", "deg"}}},
+                            {"timing", {{"oscillations_per_trial", 10}, {"unit", "s"}, {"trials", trials[k]}}}});
+  }
+  return {{"schema", "pendulum-g/scene/1"}, {"observations", observations}};
+}
+
+const std::vector<double> kSeriesLengths{0.4, 0.6, 0.8, 1.0, 1.2};
+
+/// Each length's trials: `count` times 10 periods of g = 9.81 m/s^2 (the
+/// ideal period: the truth does not matter here) with `scatter` (s).
+std::vector<std::vector<double>> series_trials(int count, double scatter, NormalDeviates& noise) {
+  std::vector<std::vector<double>> trials;
+  for (const double l : kSeriesLengths) {
+    trials.emplace_back();
+    for (int t = 0; t < count; ++t) trials.back().push_back(20.0 * kPi * std::sqrt(l / 9.81) + scatter * noise.next());
+  }
+  return trials;
+}
+
+}  // namespace
+
+TEST_CASE("Monte Carlo refits a series: t-distributed periods widen g as t's variance says", "[uncertainty][monte_carlo]") {
+  // Ten trials per length: each period is t with 9 degrees of freedom, whose
+  // variance is 9/7 of u^2 (S1 6.4.9); the length and amplitude normal. g is
+  // linear enough in them here (relative uncertainties ~1e-3), so the draws'
+  // variance is the budget's rows, each t row times nu/(nu - 2).
+  NormalDeviates noise(40);
+  const ParsedScene s = parse_scene(series_scene(kSeriesLengths, series_trials(10, 0.1, noise)).dump());
+  const Analysis a = analyse(s);
+  double variance = 0.0;
+  for (const BudgetEntry& b : a.budget) {
+    const double nu = b.evaluation.dof;
+    variance += b.contribution * b.contribution * (b.evaluation.distribution == Distribution::student_t ? nu / (nu - 2.0) : 1.0);
+  }
+  constexpr long kDraws = 40000;
+  const std::optional<MonteCarloResult> mc = monte_carlo(s, a, MonteCarloOptions{3, kDraws});
+  REQUIRE(mc);
+  INFO("GUM " << a.g.value << " +- " << *a.g.uncertainty << "; MC " << mc->mean << " +- " << mc->standard_uncertainty
+              << ", expected u " << std::sqrt(variance));
+  CHECK(mc->draws == kDraws);
+  // The standard error of a standard deviation from N draws: u sqrt((1 +
+  // kurtosis/2)/(2N)), t_9's excess kurtosis 6/5: 0.0045 of u; four of them.
+  CHECK_THAT(mc->standard_uncertainty, WithinRel(std::sqrt(variance), 0.018));
+  CHECK_THAT(mc->mean, WithinAbs(a.g.value, 4.0 * mc->standard_uncertainty / std::sqrt(double(kDraws))));
+  // Five periods' t tails are wider than Welch-Satterthwaite's nu_eff gives
+  // them: the check names the periods together, as the table groups them.
+  CHECK_FALSE(mc->validated);
+  CHECK(mc->bending_input == "observations[].timing.period");
+  CHECK(mc->bending_name == "5 observations' timing.period");
+}
+
+TEST_CASE("Monte Carlo of a series scaled by its Birge ratio draws the periods as a multivariate t",
+          "[uncertainty][monte_carlo]") {
+  // One trial per length, its stated uncertainty 0.01 s against a 0.05 s
+  // scatter: chi2/dof ~ 25 and the fit scales its uncertainty by S. With only
+  // the periods uncertain and g linear in them, g - g_fit is S u t_4 exactly
+  // (u the stated periods' share, t_4 the fit's n - p degrees of freedom):
+  // the 95 % interval is +- t_4(0.975) S u = 2.776 u(g).
+  NormalDeviates noise(41);
+  nlohmann::json doc = series_scene(kSeriesLengths, series_trials(1, 0.05, noise));
+  for (auto& o : doc["observations"]) {
+    o["timing"]["uncertainty"] = 0.01;
+    o["length"].erase("uncertainty");
+    o["amplitude"].erase("uncertainty");
+  }
+  const ParsedScene s = parse_scene(doc.dump());
+  const Analysis a = analyse(s);
+  REQUIRE(a.fit.scaled);
+  const std::optional<MonteCarloResult> mc = monte_carlo(s, a, MonteCarloOptions{5, 40000});
+  REQUIRE(mc);
+  INFO("S " << *a.fit.birge_ratio << ", u(g) " << *a.g.uncertainty << ", MC [" << mc->low << ", " << mc->high << "]");
+  // t_4's 97.5 % quantile: 2.7764 (GUM Table G.2); the interval's ends from
+  // 40000 draws are good to ~1 %.
+  CHECK_THAT((mc->high - mc->low) / 2.0, WithinRel(2.7764 * *a.g.uncertainty, 0.03));
+}
+
+TEST_CASE("Monte Carlo refits a physical pendulum: Kater's, every input normal", "[uncertainty][monte_carlo]") {
+  // The two pivots' periods drawn as normals too (their t_2 has no
+  // variance): the draws' u is GUM's, and their mean is g plus the amplitude's
+  // curvature, g sigma_theta^2/8 (g goes as (1 + theta0^2/8) near 0 with
+  // theta0 = 1 +- 0.2 deg at both pivots).
+  ParsedScene s = parse_scene(test::read_text(std::string(PENDULUM_DATA_DIR) + "/kater_reversible_pendulum.json"));
+  s.evaluations.clear();
+  const Analysis a = analyse(s);
+  constexpr long kDraws = 40000;
+  const std::optional<MonteCarloResult> mc = monte_carlo(s, a, MonteCarloOptions{9, kDraws});
+  REQUIRE(mc);
+  const double sigma = 0.2 * kPi / 180.0, curvature = a.g.value * sigma * sigma / 8.0;
+  INFO("GUM " << a.g.value << " +- " << *a.g.uncertainty << "; MC " << mc->mean << " +- " << mc->standard_uncertainty
+              << "; curvature " << curvature);
+  CHECK_THAT(mc->standard_uncertainty, WithinRel(*a.g.uncertainty, 0.02));
+  CHECK_THAT(mc->mean, WithinAbs(a.g.value + curvature, 4.0 * mc->standard_uncertainty / std::sqrt(double(kDraws))));
+}

@@ -653,13 +653,10 @@ std::string monte_carlo_finding(const MonteCarloResult& mc, const Analysis& a) {
     std::snprintf(text, sizeof text, "%.*f", decimals, x);
     return std::string(text);
   };
-  std::string why = "no single input's removal restores the agreement";
-  for (const BudgetEntry& b : a.budget) {
-    if (b.input == mc.bending_input) {
-      why = "it comes from " + b.input + " (" + distribution_name(b.evaluation.distribution) +
-            "): held at its value, the two agree";
-    }
-  }
+  const std::string why = mc.bending_input.empty()
+                              ? "no single input's removal restores the agreement"
+                              : "it comes from " + mc.bending_name + " (" + mc.bending_distribution + "): held at " +
+                                    (mc.bending_input == mc.bending_name ? "its value" : "their values") + ", the two agree";
   return "uncertainty: GUM's 95 % interval [" + fixed(a.g.value - U) + ", " + fixed(a.g.value + U) +
          "] m/s^2 and the Monte Carlo's shortest one [" + fixed(mc.low) + ", " + fixed(mc.high) +
          "] differ by more than the numerical tolerance " + format_number(mc.tolerance, 2) +
@@ -760,8 +757,8 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
   if (const auto& asked = options.monte_carlo ? options.monte_carlo : scene.monte_carlo) {
     out.monte_carlo = monte_carlo(scene, out, *asked);
     if (!out.monte_carlo) {
-      out.warnings.push_back("uncertainty: Monte Carlo propagation takes a scene of one observation with g its only "
-                             "unknown (a series would be refitted per draw, not implemented yet); the budget is GUM's "
+      out.warnings.push_back("uncertainty: no Monte Carlo result: the draws start from GUM's budget, which this fit "
+                             "does not give (singular), or fall outside the model's domain; the budget is GUM's "
                              "linear one");
     } else if (!out.monte_carlo->validated) {
       out.warnings.push_back(monte_carlo_finding(*out.monte_carlo, out));

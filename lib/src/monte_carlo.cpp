@@ -3,8 +3,15 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 #include <random>
+#include <string_view>
 
+#include <Eigen/Dense>
+#include <ceres/jet.h>
+
+#include "grouping.hpp"
 #include "pendulum/analysis.hpp"
 #include "pendulum/models/registry.hpp"
 #include "pendulum/numeric.hpp"
@@ -24,15 +31,18 @@ std::pair<double, double> shortest_interval(const std::vector<double>& sorted, d
 
 namespace {
 
-/// One input drawn: where its scalar is (the apparatus's zip order, or the
-/// observation's), its uncertainty and how it was evaluated.
+/// One input drawn: the scalars it moves (the apparatus's zip order, or an
+/// observation's: several where a series gives it once), its uncertainty and
+/// how it was evaluated.
 struct Drawn {
   std::string path;
-  bool of_apparatus;
-  int ordinal;
   double sigma;
   InputEvaluation evaluation;
-  int partner = -1;            ///< a correlated input's index, drawn jointly
+  /// (owner, ordinal): owner 0 the apparatus, k + 1 observation k.
+  std::vector<std::pair<std::size_t, int>> slots;
+  /// One observation's own input: the share a Birge ratio scales.
+  bool observations_own = false;
+  int partner = -1;  ///< a correlated input's index, drawn jointly
   double correlation = 0.0;
 };
 
@@ -43,12 +53,14 @@ class Deviates {
   explicit Deviates(std::uint64_t seed) : engine_(seed) {}
   double uniform() { return ((engine_() >> 11) + 0.5) * 0x1.0p-53; }  // in (0, 1)
   double normal() { return std::sqrt(-2.0 * std::log(uniform())) * std::cos(2.0 * kPi * uniform()); }
+  /// sqrt(nu / chi2_nu): a normal draw times this is Student's t with nu dof.
+  double t_scale(double nu) { return 1.0 / std::sqrt(std::chi_squared_distribution<double>(nu)(engine_) / nu); }
   /// A standardised draw of `e`'s distribution: the input is value + sigma x this.
   double draw(const InputEvaluation& e) {
     switch (e.distribution) {
       case Distribution::rectangular: return std::sqrt(3.0) * (2.0 * uniform() - 1.0);
       case Distribution::student_t:  // S1 6.4.9.7: x + (s/sqrt(n)) t_{n-1}
-        if (std::isfinite(e.dof)) return normal() / std::sqrt(std::chi_squared_distribution<double>(e.dof)(engine_) / e.dof);
+        if (std::isfinite(e.dof)) return normal() * t_scale(e.dof);
         return normal();
       case Distribution::normal: return normal();
     }
@@ -59,20 +71,92 @@ class Deviates {
   std::mt19937_64 engine_;
 };
 
+/// g of a scene whose inputs are shifted: the closed form for one
+/// observation with g its only unknown; a series refitted (Gauss-Newton from
+/// the analysis's optimum, with its effective-variance weights held, as the
+/// estimator is defined by them).
+template <class Model>
+class Refit {
+ public:
+  static constexpr int P = Model::kParameters;
+  using Jet = ceres::Jet<double, P>;
+
+  Refit(const ParsedScene& scene, const Analysis& analysis) : scene_(scene) {
+    for (int i = 0; i < P; ++i) {
+      start_[i] = analysis.fit.parameters[i].value;
+      fitted_[i] = analysis.fit.parameters[i].fitted;
+    }
+    closed_form_ = scene.observations.size() == 1 && std::count(fitted_.begin(), fitted_.end(), true) == 1;
+    for (const ObservationResult& o : analysis.observations) weights_.push_back(1.0 / o.effective_uncertainty);
+  }
+
+  double g(const Apparatus<double>& app, const std::vector<Observation<double>>& obs) const {
+    ReductionOptions exact;
+    exact.amplitude_method = AmplitudeMethod::agm;
+    if (closed_form_) return Model::solve_g(Model::kDefaults.data(), obs[0], app, choose_amplitude_method(exact, obs[0].amplitude));
+    const Apparatus<Jet> app_jet = convert_apparatus<Jet>(app, [](const Field&, double x) { return Jet(x); });
+    std::vector<Observation<Jet>> obs_jet;
+    std::vector<AmplitudeChoice> amplitude;
+    for (const auto& o : obs) {
+      obs_jet.push_back(convert_observation<Jet>(o, [](const Field&, double x) { return Jet(x); }));
+      amplitude.push_back(choose_amplitude_method(exact, o.amplitude));
+    }
+    std::array<double, P> p = start_;
+    using Matrix = Eigen::Matrix<double, P, P>;
+    using Vector = Eigen::Matrix<double, P, 1>;
+    // Near the optimum Gauss-Newton converges quadratically: a step below
+    // 1e-8 of its parameter leaves an error of order its square, far below
+    // any tolerance of S1 7.9, so no further step is evaluated.
+    for (int iteration = 0; iteration < 20; ++iteration) {
+      std::array<Jet, P> pj;
+      for (int i = 0; i < P; ++i) pj[i] = fitted_[i] ? Jet(p[i], i) : Jet(p[i]);
+      Matrix h = Matrix::Zero();
+      Vector b = Vector::Zero();
+      for (std::size_t k = 0; k < obs.size(); ++k) {
+        const Jet t = Model::predict(pj.data(), obs_jet[k], app_jet, amplitude[k]).period;
+        const Vector j = t.v * weights_[k];
+        h += j * j.transpose();
+        b += j * ((t.a - obs[k].period) * weights_[k]);
+      }
+      for (int i = 0; i < P; ++i) {
+        if (!fitted_[i]) h(i, i) = 1.0;
+      }
+      const Vector step = h.ldlt().solve(b);
+      bool small = true;
+      for (int i = 0; i < P; ++i) {
+        p[i] -= step[i];
+        if (!(std::abs(step[i]) <= 1e-8 * std::abs(p[i]))) small = false;
+      }
+      if (small) return p[0];
+    }
+    return std::numeric_limits<double>::quiet_NaN();  // no optimum near the analysis's: no draw
+  }
+
+ private:
+  const ParsedScene& scene_;
+  std::array<double, P> start_;
+  std::array<bool, P> fitted_;
+  bool closed_form_;
+  std::vector<double> weights_;
+};
+
 class Sampler {
  public:
-  explicit Sampler(const ParsedScene& scene) : scene_(scene) {
+  Sampler(const ParsedScene& scene, const Analysis& analysis) : scene_(scene), analysis_(analysis) {
     int ordinal = 0;
     zip_apparatus(scene.apparatus, scene.apparatus_uncertainty, [&](const Field& f, const double&, const double& u) {
-      add(field_path(f), true, ordinal++, u);
+      add(field_path(f), u, {0, ordinal++}, false);
     });
-    apparatus_scalars_ = ordinal;
-    ordinal = 0;
-    zip_observation(scene.observations[0], scene.observation_uncertainties[0],
-                    [&](const Field& f, const double&, const double& u) {
-                      add(scene.sources[0].path + f.path, false, ordinal++, u);
-                    });
-    observation_scalars_ = ordinal;
+    shift_sizes_.push_back(ordinal);
+    for (std::size_t k = 0; k < scene.observations.size(); ++k) {
+      const ObservationSource& source = scene.sources[k];
+      ordinal = 0;
+      zip_observation(scene.observations[k], scene.observation_uncertainties[k],
+                      [&](const Field& f, const double&, const double& u) {
+                        add(source.path_of(f.path), u, {k + 1, ordinal++}, !source.is_shared(f.path));
+                      });
+      shift_sizes_.push_back(ordinal);
+    }
     for (const auto& c : scene.input_covariances) {
       const int a = find(c.first), b = find(c.second);
       if (a < 0 || b < 0) continue;
@@ -80,33 +164,54 @@ class Sampler {
       inputs_[b].partner = a;
       inputs_[b].correlation = c.covariance / (inputs_[a].sigma * inputs_[b].sigma);
     }
+    // A fit whose scatter scaled its uncertainty by S (dispersion.hpp): the
+    // observations' own inputs drawn S times wider, as a multivariate t
+    // with the fit's degrees of freedom (s^2 estimated from n - p residuals).
+    if (analysis.fit.scaled && analysis.fit.birge_ratio && analysis.fit.dof > 0) {
+      birge_ratio_ = *analysis.fit.birge_ratio;
+      scatter_dof_ = analysis.fit.dof;
+    }
   }
 
-  /// `count` values of g, each input but `held` drawn.
-  std::vector<double> draw(long count, Deviates& deviates, const std::string& held = "") const {
-    std::vector<double> app_shift(apparatus_scalars_), obs_shift(observation_scalars_), z(inputs_.size());
+  /// `count` values of g, each input but those `held` drawn.
+  std::vector<double> draw(long count, Deviates& deviates, const std::vector<std::string>& held = {}) const {
+    std::vector<std::vector<double>> shift;
+    for (int n : shift_sizes_) shift.emplace_back(n, 0.0);
+    std::vector<double> z(inputs_.size());
     std::vector<double> out;
     out.reserve(count);
-    while (static_cast<long>(out.size()) < count) {
-      for (std::size_t i = 0; i < inputs_.size(); ++i) {
-        const Drawn& in = inputs_[i];
-        // Jointly normal with its partner: z_b = rho z_a + sqrt(1 - rho^2) z'.
-        if (in.partner >= 0 && in.partner < static_cast<int>(i)) {
-          z[i] = in.correlation * z[in.partner] + std::sqrt(std::max(0.0, 1.0 - in.correlation * in.correlation)) * deviates.normal();
-        } else {
-          z[i] = in.partner >= 0 ? deviates.normal() : deviates.draw(in.evaluation);
+    visit_period_model(scene_.model, [&](auto model) {
+      const Refit<decltype(model)> refit(scene_, analysis_);
+      // Every draw outside the model's domain would loop for ever: a bound.
+      for (long attempt = 0; static_cast<long>(out.size()) < count && attempt < 10 * count; ++attempt) {
+        const double scatter = birge_ratio_ > 0.0 ? birge_ratio_ * deviates.t_scale(scatter_dof_) : 1.0;
+        for (std::size_t i = 0; i < inputs_.size(); ++i) {
+          const Drawn& in = inputs_[i];
+          // Jointly normal with its partner: z_b = rho z_a + sqrt(1 - rho^2) z'.
+          if (in.partner >= 0 && in.partner < static_cast<int>(i)) {
+            z[i] = in.correlation * z[in.partner] +
+                   std::sqrt(std::max(0.0, 1.0 - in.correlation * in.correlation)) * deviates.normal();
+          } else {
+            z[i] = in.partner >= 0 ? deviates.normal() : deviates.draw(in.evaluation);
+          }
+          const bool is_held = std::find(held.begin(), held.end(), in.path) != held.end();
+          const double value = is_held ? 0.0 : in.sigma * z[i] * (in.observations_own ? scatter : 1.0);
+          for (const auto& [owner, at] : in.slots) shift[owner][at] = value;
         }
-        (in.of_apparatus ? app_shift : obs_shift)[in.ordinal] = in.path == held ? 0.0 : in.sigma * z[i];
+        const double g = g_of(refit, shift);
+        if (std::isfinite(g)) out.push_back(g);  // none outside the model's domain (a negative period)
       }
-      const double g = g_of(app_shift, obs_shift);
-      if (std::isfinite(g)) out.push_back(g);  // a draw outside the model's domain (a negative period) gives none
-    }
+    });
     return out;
   }
 
  private:
-  void add(std::string path, bool of_apparatus, int ordinal, double sigma) {
-    if (sigma > 0.0) inputs_.push_back({path, of_apparatus, ordinal, sigma, evaluation_of(scene_.evaluations, path)});
+  void add(std::string path, double sigma, std::pair<std::size_t, int> slot, bool observations_own) {
+    if (!(sigma > 0.0)) return;
+    const int known = find(path);
+    if (known >= 0) return inputs_[known].slots.push_back(slot);
+    InputEvaluation evaluation = evaluation_of(scene_.evaluations, path);
+    inputs_.push_back({std::move(path), sigma, std::move(evaluation), {slot}, observations_own});
   }
   int find(const std::string& path) const {
     for (std::size_t i = 0; i < inputs_.size(); ++i) {
@@ -118,26 +223,37 @@ class Sampler {
   /// g of the scene with its scalars shifted, through every correction with
   /// the exact amplitude factor; a length to the bob's top or bottom moves
   /// with the bob's drawn size, as the budget's does (analysis.cpp).
-  double g_of(const std::vector<double>& app_shift, const std::vector<double>& obs_shift) const {
+  template <class Model>
+  double g_of(const Refit<Model>& refit, const std::vector<std::vector<double>>& shift) const {
     int at = 0;
     const Apparatus<double> app =
-        convert_apparatus<double>(scene_.apparatus, [&](const Field&, double x) { return x + app_shift[at++]; });
-    at = 0;
-    Observation<double> o =
-        convert_observation<double>(scene_.observations[0], [&](const Field&, double x) { return x + obs_shift[at++]; });
-    const double sign = scene_.sources[0].knot_to_center_sign;
-    if (sign != 0.0 && app.bob) o.length += sign * (app.bob->knot_to_center() - scene_.apparatus.bob->knot_to_center());
-    ReductionOptions exact;
-    exact.amplitude_method = AmplitudeMethod::agm;
-    return visit_period_model(scene_.model, [&](auto model) {
-      using Model = decltype(model);
-      return Model::solve_g(Model::kDefaults.data(), o, app, choose_amplitude_method(exact, o.amplitude));
-    });
+        convert_apparatus<double>(scene_.apparatus, [&](const Field&, double x) { return x + shift[0][at++]; });
+    std::vector<Observation<double>> obs;
+    for (std::size_t k = 0; k < scene_.observations.size(); ++k) {
+      at = 0;
+      // An amplitude drawn below zero is the same swing to the other side.
+      Observation<double> o = convert_observation<double>(scene_.observations[k], [&](const Field& f, double x) {
+        const double drawn = x + shift[k + 1][at++];
+        return std::string_view(f.path) == "amplitude" ? std::abs(drawn) : drawn;
+      });
+      const double sign = scene_.sources[k].knot_to_center_sign;
+      if (sign != 0.0 && app.bob) o.length += sign * (app.bob->knot_to_center() - scene_.apparatus.bob->knot_to_center());
+      obs.push_back(std::move(o));
+    }
+    // A draw the model cannot reach (an angle past 180 deg) gives no g.
+    try {
+      return refit.g(app, obs);
+    } catch (const std::domain_error&) {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
   }
 
   const ParsedScene& scene_;
+  const Analysis& analysis_;
   std::vector<Drawn> inputs_;
-  int apparatus_scalars_ = 0, observation_scalars_ = 0;
+  std::vector<int> shift_sizes_;  ///< the apparatus's scalars, then each observation's
+  double birge_ratio_ = 0.0;
+  double scatter_dof_ = 0.0;
 };
 
 /// delta of S1 7.9.2: u = c 10^l with c of two digits, delta = 10^l / 2.
@@ -167,6 +283,7 @@ std::vector<double> adaptive_draws(const Sampler& sampler, Deviates& deviates) {
   std::vector<Summary> batches;
   while (static_cast<long>(all.size()) < kMostDraws) {
     const std::vector<double> batch = sampler.draw(kBatch, deviates);
+    if (batch.size() < 2) break;
     batches.push_back(summarise(batch));
     all.insert(all.end(), batch.begin(), batch.end());
     const double h = static_cast<double>(batches.size());
@@ -189,11 +306,13 @@ std::pair<double, double> disagreement(double y, double expanded, const Summary&
   return {std::abs(y - expanded - s.low), std::abs(y + expanded - s.high)};
 }
 
-/// GUM's expanded uncertainty of g without the budget row `without`.
-double expanded_without(const Analysis& a, const std::string& without) {
+/// GUM's expanded uncertainty of g without the budget rows `without`.
+double expanded_without(const Analysis& a, const std::vector<std::string>& without) {
   std::vector<VarianceComponent> components;
   for (const BudgetEntry& b : a.budget) {
-    if (b.input != without) components.push_back({b.contribution * b.contribution, b.evaluation.dof});
+    if (std::find(without.begin(), without.end(), b.input) == without.end()) {
+      components.push_back({b.contribution * b.contribution, b.evaluation.dof});
+    }
   }
   double variance = a.budget_correlation ? a.budget_correlation->variance : 0.0;
   for (const VarianceComponent& c : components) variance += c.variance;
@@ -204,10 +323,11 @@ double expanded_without(const Analysis& a, const std::string& without) {
 
 std::optional<MonteCarloResult> monte_carlo(const ParsedScene& scene, const Analysis& analysis,
                                             const MonteCarloOptions& options) {
-  if (scene.observations.size() != 1 || !scene.fit.empty() || !analysis.g_expanded) return std::nullopt;
-  const Sampler sampler(scene);
+  if (!analysis.g_expanded || analysis.budget.empty()) return std::nullopt;
+  const Sampler sampler(scene, analysis);
   Deviates deviates(options.seed);
   const std::vector<double> draws = options.draws > 0 ? sampler.draw(options.draws, deviates) : adaptive_draws(sampler, deviates);
+  if (draws.size() < 2) return std::nullopt;
   const Summary s = summarise(draws);
   MonteCarloResult r;
   r.options = options;
@@ -219,17 +339,25 @@ std::optional<MonteCarloResult> monte_carlo(const ParsedScene& scene, const Anal
   r.tolerance = numerical_tolerance(s.deviation);
   std::tie(r.d_low, r.d_high) = disagreement(analysis.g.value, analysis.g_expanded->expanded, s);
   r.validated = r.d_low <= r.tolerance && r.d_high <= r.tolerance;
-  // The input that bends g: among the three largest rows, the first whose
-  // removal (held at its value, and out of GUM's budget) restores agreement.
-  for (std::size_t i = 0; !r.validated && i < analysis.budget.size() && i < 3; ++i) {
-    const std::string& input = analysis.budget[i].input;
+  // The input that bends g: among the three largest fields (one row, or
+  // one field of every observation of a series), the first whose removal
+  // (held at its values, and out of GUM's budget) restores agreement.
+  std::vector<std::string> paths;
+  std::vector<double> contributions;
+  for (const BudgetEntry& b : analysis.budget) paths.push_back(b.input), contributions.push_back(b.contribution);
+  const std::vector<BudgetGroup> groups = group_budget(paths, contributions);
+  for (std::size_t i = 0; !r.validated && i < groups.size() && i < 3; ++i) {
+    std::vector<std::string> held;
+    for (const std::size_t row : groups[i].rows) held.push_back(paths[row]);
     Deviates again(options.seed);
-    const Summary without = summarise(sampler.draw(r.draws, again, input));
+    const Summary without = summarise(sampler.draw(r.draws, again, held));
     // Judged to the run's own tolerance: the smaller u of the rest would ask
     // for more draws than the run made.
-    const auto [d_low, d_high] = disagreement(analysis.g.value, expanded_without(analysis, input), without);
+    const auto [d_low, d_high] = disagreement(analysis.g.value, expanded_without(analysis, held), without);
     if (d_low <= r.tolerance && d_high <= r.tolerance) {
-      r.bending_input = input;
+      r.bending_input = held.size() == 1 ? held.front() : "observations[]." + groups[i].field;
+      r.bending_name = group_name(groups[i], paths);
+      r.bending_distribution = distribution_name(analysis.budget[groups[i].rows.front()].evaluation.distribution);
       break;
     }
   }

@@ -38,18 +38,26 @@ struct MonteCarloResult {
   double d_low = 0.0, d_high = 0.0;
   bool validated = false;  ///< both within the tolerance
   /// Where not validated: the input held at its value that restores the
-  /// agreement (GUM's interval without it against the draws' without it); empty if none does.
+  /// agreement (GUM's interval without it against the draws' without it);
+  /// empty if none does. In a series, one field of every observation may be
+  /// held together: "observations[].timing.period".
   std::string bending_input;
+  /// How the table says it: the path, or "18 observations' timing.period",
+  /// with the rows' distribution ("student_t").
+  std::string bending_name, bending_distribution;
 };
 
-/// g's distribution for a scene of one observation whose only unknown is g
-/// (`analysis` is its GUM result, analyse()'s). Each input with a stated
-/// uncertainty is drawn as its InputEvaluation says: normal, rectangular
-/// over +-sqrt(3)u, or the mean of n readings as value + u t_{n-1} (S1
-/// 6.4.9); a decay fit's alpha and beta jointly from their covariance.
-/// Each draw goes through every correction (the exact amplitude factor).
-/// Seeded: the same seed gives the same draws. Empty for a series (a refit
-/// per draw is not implemented).
+/// g's distribution for a scene (`analysis` is its GUM result, analyse()'s).
+/// Each input with a stated uncertainty is drawn as its InputEvaluation
+/// says: normal, rectangular over +-sqrt(3)u, or the mean of n readings as
+/// value + u t_{n-1} (S1 6.4.9); a decay fit's alpha and beta jointly from
+/// their covariance; an input a series gives once, once for all its
+/// observations. Each draw goes through every correction (the exact
+/// amplitude factor) and, for a series, the fit: refitted with the
+/// analysis's weights, its observations' own inputs drawn S times wider as a
+/// multivariate t where a Birge ratio S scaled the fit's uncertainty.
+/// Seeded: the same seed gives the same draws. Empty where the analysis
+/// has no uncertainty of g (a singular fit).
 std::optional<MonteCarloResult> monte_carlo(const ParsedScene& scene, const Analysis& analysis,
                                             const MonteCarloOptions& options);
 

@@ -29,11 +29,8 @@ Command add_amplitude_command(CLI::App& app) {
 
   return {cmd, [o] {
     const double deg = o->theta0_deg;
-    if (!(deg >= 0.0 && deg < 180.0)) {
-      throw InputError("--theta0-deg", "got " + std::to_string(deg) +
-                                           "; expected an amplitude in [0, 180) deg (at 180 deg "
-                                           "and beyond the pendulum goes over the top)");
-    }
+    const std::string why = out_of_range(ranges::amplitude_deg, deg);
+    if (!why.empty()) throw InputError(ranges::amplitude_deg.option, why);
     const double theta0 = deg * (kPi / 180.0);
     // The exact method takes degrees, so the deficit from 180 deg stays exact.
     const double ratio = o->method == AmplitudeMethod::agm

@@ -32,6 +32,10 @@ inline constexpr ArgumentRange amplitude_terms{"--terms", "terms", 1, 1000, "",
 /// A scene's length (scene.json's length.value): a laboratory's.
 inline constexpr ArgumentRange length{"--length-m", "length_m", 1e-3, 1e3, "m",
                                       "a laboratory pendulum, 1 mm to 1 km long"};
+/// reduce RECORDING --length's uncertainty: the scene reader then asks for
+/// less than the length.
+inline constexpr ArgumentRange length_uncertainty{"--length-uncertainty", "length_uncertainty", 0.0, 1e3, "m",
+                                                  "a length's standard uncertainty from 0 to 1 km"};
 /// Below the length, at most 1 km; a photogate resolves no bob under 1 mm.
 inline constexpr ArgumentRange bob_width{"--bob-width-m", "bob_width_m", 1e-3, 1e3, "m",
                                          "a bob's width across the beam from 1 mm to 1 km"};

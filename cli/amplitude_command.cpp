@@ -19,7 +19,9 @@ Command add_amplitude_command(CLI::App& app) {
       "amplitude", "Print T/T0 and the finite-amplitude correction at one amplitude as JSON");
   // Range checks happen in the run, so that a bad amplitude is bad input
   // (exit 1), not bad usage.
-  cmd->add_option("--theta0-deg", o->theta0_deg, "Amplitude (deg), 0 <= X < 180")->required();
+  cmd->add_option("--theta0-deg", o->theta0_deg, "Amplitude (deg), 0 <= X < 180")
+      ->required()
+      ->check(decimal(ranges::amplitude_deg));
   cmd->add_option("--method", o->method,
                   "agm (exact, default), series (Eq. 8, --terms terms), small_angle (theta0^2/16)")
       ->transform(CLI::CheckedTransformer(amplitude_methods(false), CLI::ignore_case).description(""))

@@ -136,7 +136,8 @@ py::dict read_recording(const std::string& path, const std::string& format, cons
   const std::optional<pendulum::RecordingFormat> family = pendulum::recording_family({format});
   if (!family) throw py::value_error("format: got '" + format + "'; expected " + pendulum::recording_family_words());
   if (range && !(std::isfinite(range->first) && std::isfinite(range->second) && range->first < range->second)) {
-    throw py::value_error("range: expected (start, end) in seconds of the recording's clock, start before end");
+    throw py::value_error("range: got " + std::string(py::repr(py::make_tuple(range->first, range->second))) +
+                          "; expected (start, end) in seconds of the recording's clock, start before end");
   }
   if (bob_width) check(pendulum::ranges::bob_width, *bob_width);
   if (length) check(pendulum::ranges::length, *length);

@@ -19,7 +19,9 @@ Command add_amplitude_command(CLI::App& app) {
       "amplitude", "Print T/T0 and the finite-amplitude correction at one amplitude as JSON");
   // Range checks happen in the run, so that a bad amplitude is bad input
   // (exit 1), not bad usage.
-  cmd->add_option("--theta0-deg", o->theta0_deg, "Amplitude (deg), 0 <= X < 180")->required();
+  cmd->add_option("--theta0-deg", o->theta0_deg, "Amplitude (deg), 0 <= X < 180")
+      ->required()
+      ->check(decimal(ranges::amplitude_deg));
   cmd->add_option("--method", o->method,
                   "agm (exact, default), series (Eq. 8, --terms terms), small_angle (theta0^2/16)")
       ->transform(CLI::CheckedTransformer(amplitude_methods(false), CLI::ignore_case).description(""))
@@ -29,11 +31,8 @@ Command add_amplitude_command(CLI::App& app) {
 
   return {cmd, [o] {
     const double deg = o->theta0_deg;
-    if (!(deg >= 0.0 && deg < 180.0)) {
-      throw InputError("--theta0-deg", "got " + std::to_string(deg) +
-                                           "; expected an amplitude in [0, 180) deg (at 180 deg "
-                                           "and beyond the pendulum goes over the top)");
-    }
+    const std::string why = out_of_range(ranges::amplitude_deg, deg);
+    if (!why.empty()) throw InputError(ranges::amplitude_deg.option, why);
     const double theta0 = deg * (kPi / 180.0);
     // The exact method takes degrees, so the deficit from 180 deg stays exact.
     const double ratio = o->method == AmplitudeMethod::agm

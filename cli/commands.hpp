@@ -73,6 +73,10 @@ std::map<std::string, AmplitudeMethod> amplitude_methods(bool with_auto);
 /// module checks too (pendulum/argument_ranges.hpp).
 CLI::Validator in_range(const ArgumentRange& range);
 
+/// A check that an option's number is decimal (0x10 is refused), its range
+/// left to the command (where out of range is bad input, exit 1).
+CLI::Validator decimal(const ArgumentRange& range);
+
 /// The options of an analysis (--negligible-fraction, --amplitude-method,
 /// --series-terms), shared by the commands that reduce one scene.
 void add_analysis_options(CLI::App& cmd, AnalysisOptions& options);

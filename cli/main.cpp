@@ -31,14 +31,25 @@ std::map<std::string, AmplitudeMethod> amplitude_methods(bool with_auto) {
   return names;
 }
 
+namespace {
+
+/// Empty when `text` is a decimal number, else what the option expects.
+std::string not_decimal(const std::string& text, const ArgumentRange& range) {
+  if (decimal_number(text)) return "";
+  return "got \"" + one_line(text, kShownValueBytes, true) + "\"; expected a decimal number: " + range.expected;
+}
+
+}  // namespace
+
+CLI::Validator decimal(const ArgumentRange& range) {
+  return CLI::Validator([range](std::string& text) { return not_decimal(text, range); }, "");
+}
+
 CLI::Validator in_range(const ArgumentRange& range) {
   return CLI::Validator(
       [range](std::string& text) {
-        const std::optional<double> value = decimal_number(text);
-        if (!value) {
-          return "got \"" + one_line(text, kShownValueBytes, true) + "\"; expected a decimal number: " + range.expected;
-        }
-        return out_of_range(range, *value);
+        const std::string why = not_decimal(text, range);
+        return why.empty() ? out_of_range(range, *decimal_number(text)) : why;
       },
       "");
 }

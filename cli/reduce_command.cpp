@@ -71,9 +71,9 @@ Command add_reduce_command(CLI::App& app) {
   cmd->add_option("--length", o->length,
                   "A recording instead of a scene: the pendulum's length, pivot to bob centre (m); the recording "
                   "gives the period and the amplitude")
-      ->check(CLI::PositiveNumber);
+      ->check(in_range(ranges::length));
   cmd->add_option("--length-uncertainty", o->length_uncertainty, "The length's standard uncertainty (m), with --length")
-      ->check(CLI::NonNegativeNumber)
+      ->check(in_range(ranges::length_uncertainty))
       ->needs("--length");
   add_analysis_options(*cmd, o->analysis);
   add_allow_outside_option(*cmd, o->allow_outside);

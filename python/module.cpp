@@ -39,8 +39,6 @@ constexpr double kDegreesPerRadian = 180.0 / pendulum::kPi;
 
 using pendulum::AmplitudeMethod;
 
-constexpr const char* kAmplitudeRange = "expected an amplitude 0 <= theta0 < pi rad";
-
 /// A scene's text and where its recordings are looked for: read from `path`
 /// as `reduce PATH` reads it, or given as text as `reduce -` takes it.
 struct SceneSource {
@@ -138,7 +136,8 @@ py::dict read_recording(const std::string& path, const std::string& format, cons
   const std::optional<pendulum::RecordingFormat> family = pendulum::recording_family({format});
   if (!family) throw py::value_error("format: got '" + format + "'; expected " + pendulum::recording_family_words());
   if (range && !(std::isfinite(range->first) && std::isfinite(range->second) && range->first < range->second)) {
-    throw py::value_error("range: expected (start, end) in seconds of the recording's clock, start before end");
+    throw py::value_error("range: got " + std::string(py::repr(py::make_tuple(range->first, range->second))) +
+                          "; expected (start, end) in seconds of the recording's clock, start before end");
   }
   if (bob_width) check(pendulum::ranges::bob_width, *bob_width);
   if (length) check(pendulum::ranges::length, *length);
@@ -246,9 +245,6 @@ std::pair<std::optional<std::string>, std::vector<std::string>> report(
   return {std::nullopt, page.warnings};
 }
 
-/// f applied to every element of `x` (any shape), into a new array of that
-/// shape; the GIL released over the loop. An element f refuses raises
-/// ValueError naming its flat index and value.
 using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 /// What a function of `x` writes into: `out` where given (numpy's `out=`: a
@@ -278,31 +274,30 @@ Doubles apart_from(const Doubles& x, const py::array_t<double>& out) {
   return overlap ? Doubles(std::vector<py::ssize_t>(x.shape(), x.shape() + x.ndim()), a) : x;
 }
 
+/// ValueError naming element `index` of an array argument, its value and
+/// the range it is outside, as check() names a single argument.
+py::value_error refused_element(const pendulum::ArgumentRange& range, std::size_t index, double value) {
+  return py::value_error(std::string(range.argument) + "[" + std::to_string(index) + "]: " +
+                         pendulum::out_of_range(range, value));
+}
+
+/// f applied to every element of `x` (any shape) in `range`, into `into` or a
+/// new array of that shape; the GIL released over the loop. The first
+/// element outside `range` raises refused_element.
 template <class F>
-py::array_t<double> map_elements(const Doubles& x, const char* name, F f, const py::object& into = py::none()) {
+py::array_t<double> map_elements(const Doubles& x, const pendulum::ArgumentRange& range, F f,
+                                 const py::object& into = py::none()) {
   py::array_t<double> out = output_for(x, into);
   const Doubles source = apart_from(x, out);
   const double* in = source.data();
   double* result = out.mutable_data();
-  const py::ssize_t n = x.size();
-  std::optional<py::ssize_t> refused;
-  std::string why;
+  const auto n = static_cast<std::size_t>(x.size());
+  std::size_t i = 0;
   {
     py::gil_scoped_release unlocked;
-    for (py::ssize_t i = 0; i < n; ++i) {
-      try {
-        result[i] = f(in[i]);
-      } catch (const std::domain_error& e) {
-        refused = i;
-        why = e.what();
-        break;
-      }
-    }
+    for (; i < n && pendulum::accepts(range, in[i]); ++i) result[i] = f(in[i]);
   }
-  if (refused) {
-    throw py::value_error(std::string(name) + "[" + std::to_string(*refused) + "]: got " +
-                          std::to_string(in[*refused]) + ": " + why);
-  }
+  if (i < n) throw refused_element(range, i, in[i]);
   return out;
 }
 
@@ -323,18 +318,11 @@ py::array_t<double> finite_amplitude(const Doubles& theta0, const std::string& m
       stop = pendulum::finite_amplitude_agm_many(source.data(), result, n);
       for (std::size_t i = 0; i < stop; ++i) result[i] += one;
     }
-    if (stop < n) {
-      throw py::value_error("theta0[" + std::to_string(stop) + "]: got " + std::to_string(source.data()[stop]) +
-                            ": " + kAmplitudeRange);
-    }
+    if (stop < n) throw refused_element(pendulum::ranges::amplitude, stop, source.data()[stop]);
     return out;
   }
-  return map_elements(theta0, "theta0", [m, terms, one](double t) {
-    // The library checks the range for the exact method only; the others
-    // are series in sin(theta0/2) that hold on the same range.
-    if (!(t >= 0.0 && t < pendulum::kPi)) {
-      throw std::domain_error(kAmplitudeRange);
-    }
+  // The series in sin(theta0/2) hold on the exact method's range.
+  return map_elements(theta0, pendulum::ranges::amplitude, [m, terms, one](double t) {
     return one + pendulum::finite_amplitude(m, t, terms);
   }, into);
 }
@@ -408,7 +396,7 @@ PYBIND11_MODULE(_core, m) {
   m.def(
       "circular_error",
       [](const py::array_t<double, py::array::c_style | py::array::forcecast>& theta0) {
-        return map_elements(theta0, "theta0", [](double t) { return pendulum::circular_error(t); });
+        return map_elements(theta0, pendulum::ranges::amplitude, [](double t) { return pendulum::circular_error(t); });
       },
       py::arg("theta0"),
       "A clock's circular error (s/day) at semi-amplitude theta0 (rad, 0 <= theta0 < pi): 86400 (2K/pi - 1), "

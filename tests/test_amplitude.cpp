@@ -133,6 +133,9 @@ TEST_CASE("Amplitudes of 180 deg and beyond, negative or NaN are errors", "[ampl
     CHECK_THROWS_AS(finite_amplitude_agm_deg(deg), std::domain_error);
     CHECK_THROWS_AS(finite_amplitude_agm(deg * test::kDegree), std::domain_error);
   }
+  // The range and message of the CLI and Python (ranges::amplitude): was "amplitude -0.000000 rad is outside ...".
+  CHECK_THROWS_WITH(finite_amplitude_agm(-1e-300), "amplitude: got -1e-300 rad; expected an amplitude from 0 to below "
+                                                   "pi rad (at 180 deg and beyond the pendulum goes over the top)");
 }
 
 TEST_CASE("Derivative through ceres::Jet matches a quad-precision central difference",

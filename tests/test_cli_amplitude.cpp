@@ -42,8 +42,15 @@ TEST_CASE("The amplitude command refuses 180 deg and beyond, negatives and NaN",
     CHECK(r.status == 1);
     CHECK(r.out.empty());
     CHECK_THAT(r.err, Contains("pendulum-g: error: --theta0-deg: got"));
-    CHECK_THAT(r.err, Contains("expected an amplitude in [0, 180) deg"));
+    CHECK_THAT(r.err, Contains("deg; expected an amplitude from 0 to below 180 deg"));
   }
+  // The value as a number is written (was 309 digits, and "-0.000000" for a negative one).
+  CHECK_THAT(run("amplitude --theta0-deg 1e300").err, Contains("got 1e+300 deg;"));
+  CHECK_THAT(run("amplitude --theta0-deg -1e-300").err, Contains("got -1e-300 deg;"));
+  // A decimal number, as every option's (0x10 was read as 16 deg).
+  const Run hexadecimal = run("amplitude --theta0-deg 0x10");
+  CHECK(hexadecimal.status == 2);
+  CHECK_THAT(hexadecimal.err, Contains("--theta0-deg: got \"0x10\"; expected a decimal number: an amplitude from 0"));
   CHECK(run("amplitude").status == 2);
   CHECK(run("amplitude --theta0-deg 10 --method magic").status == 2);
 }

@@ -20,6 +20,7 @@
 
 using nlohmann::json;
 using Catch::Matchers::Contains;
+using Catch::Matchers::StartsWith;
 using Catch::Matchers::WithinAbs;
 using Catch::Matchers::WithinRel;
 
@@ -357,4 +358,26 @@ TEST_CASE("reduce RECORDING --length reduces it as a scene naming it, without th
   // Options out of place are usage errors.
   CHECK(run("reduce " + recording + " --length -0.8").status == 2);
   CHECK(run("reduce " + recording + " --length-uncertainty 0.001").status == 2);
+}
+
+TEST_CASE("reduce RECORDING --length and --length-uncertainty check against the table of ranges", "[cli][import]") {
+  // Was: inf a 309-digit bound, nan "length.value: got null" (exit 1), 0x1 read as 1 m, 1e300 the scene's refusal.
+  const std::string recording = std::string(PENDULUM_DATA_DIR) + "/recordings/phyphox_pendulum_raw.tsv";
+  const std::string length_range = "m; expected a laboratory pendulum, 1 mm to 1 km long";
+  const std::string uncertainty_range = "m; expected a length's standard uncertainty from 0 to 1 km";
+  for (const auto& [options, message] : std::vector<std::pair<std::string, std::string>>{
+           {"--length inf", "--length: got inf " + length_range},
+           {"--length nan", "--length: got NaN " + length_range},
+           {"--length 1e300", "--length: got 1e+300 " + length_range},
+           {"--length 0", "--length: got 0 " + length_range},
+           {"--length 0x1", "--length: got \"0x1\"; expected a decimal number: a laboratory pendulum"},
+           {"--length 0.8 --length-uncertainty inf", "--length-uncertainty: got inf " + uncertainty_range},
+           {"--length 0.8 --length-uncertainty nan", "--length-uncertainty: got NaN " + uncertainty_range},
+           {"--length 0.8 --length-uncertainty -1", "--length-uncertainty: got -1 " + uncertainty_range}}) {
+    const Run r = run("reduce " + recording + " " + options);
+    INFO(options << "\nstderr: " << r.err);
+    CHECK(r.status == 2);
+    CHECK(r.out.empty());
+    CHECK_THAT(r.err, StartsWith(message));
+  }
 }

@@ -65,7 +65,7 @@ std::size_t agm_block(const double* theta0, double* excess, std::size_t n) {
   std::size_t n1 = 0, n2 = 0, n3 = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const double t = theta0[i];
-    if (!(t >= 0.0 && t < kPi)) return i;
+    if (!accepts(ranges::amplitude, t)) return i;
     const bool past_first = t > detail::kOneAgmStepLimit, past_second = t > detail::kTwoAgmStepsLimit;
     // The first case takes the amplitude, the others the deficit pi - theta0.
     first[n1] = t;

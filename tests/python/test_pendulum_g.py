@@ -222,6 +222,30 @@ def test_no_nan_or_infinity_for_finite_arguments_in_range():
                 assert np.isfinite(value), (theta0, location, q)
 
 
+@pytest.mark.parametrize("theta0_rad, deg, got", [
+    # An element's value was std::to_string's: 1e300 as 309 digits, -1e-300
+    # as "-0.000000" (a minus zero refused?), NaN as "nan".
+    (1e300, "1e300", "1e+300"), (-1e-300, "-1e-300", "-1e-300"), (float("nan"), "nan", "NaN"),
+    (math.pi, "180", None),
+])
+def test_an_amplitude_out_of_range_is_named_as_the_cli_names_it(theta0_rad, deg, got):
+    # One range (ranges::amplitude, in rad; amplitude_deg for --theta0-deg).
+    run = cli("amplitude", "--theta0-deg", deg)
+    assert run.returncode == 1, run.stderr
+    assert error_line(run.stderr) == (f"--theta0-deg: got {got or deg} deg; expected an amplitude from 0 to below "
+                                      "180 deg (at 180 deg and beyond the pendulum goes over the top)")
+    shown = got or format(math.pi, ".10g")
+    expected = (f"theta0[1]: got {shown} rad; expected an amplitude from 0 to below pi rad (at 180 deg and beyond "
+                "the pendulum goes over the top)")
+    theta0 = np.array([0.1, theta0_rad, 0.2])
+    for call in (lambda: pendulum_g.finite_amplitude(theta0), lambda: pendulum_g.circular_error(theta0),
+                 lambda: pendulum_g.finite_amplitude(theta0, method="series"),
+                 lambda: pendulum_g.finite_amplitude(theta0, method="small_angle")):
+        with pytest.raises(ValueError) as caught:
+            call()
+        assert str(caught.value) == expected
+
+
 def test_finite_amplitude_into_an_out_that_overlaps_its_input():
     # numpy's out= reads the input as it was (np.sin(x[:5], out=x[1:]) is
     # np.sin of x[:5] before the call); item 5 wrote [1, 1, 1, 1, 1].
@@ -295,7 +319,7 @@ def test_finite_amplitude_methods_and_limits():
     assert pendulum_g.finite_amplitude([1.0], method="agm")[0] == pendulum_g.finite_amplitude(1.0)
     with pytest.raises(ValueError, match=r"theta0\[1\]: got 3.14"):
         pendulum_g.finite_amplitude([1.0, math.pi, 2.0])
-    with pytest.raises(ValueError, match=r"theta0\[0\]: got nan"):
+    with pytest.raises(ValueError, match=r"theta0\[0\]: got NaN rad"):
         pendulum_g.finite_amplitude([float("nan")])
     with pytest.raises(ValueError, match="method: got 'elliptic'"):
         pendulum_g.finite_amplitude(1.0, method="elliptic")
@@ -447,8 +471,12 @@ def test_bad_recordings_raise_the_import_messages(tmp_path):
     same_answer_recording(["import", scene], lambda: pendulum_g.read_recording(scene))
     with pytest.raises(ValueError, match="format: got 'csv'"):
         pendulum_g.read_recording(scene, format="csv")
-    with pytest.raises(ValueError, match="range"):
-        pendulum_g.read_recording(scene, range=(5, 1))
+    # The values refused are named, as the CLI's --range names its text.
+    for span, shown in (((5, 1), "(5.0, 1.0)"), ((float("nan"), 1), "(nan, 1.0)"), ((0, float("inf")), "(0.0, inf)")):
+        with pytest.raises(ValueError) as caught:
+            pendulum_g.read_recording(scene, range=span)
+        assert str(caught.value) == (f"range: got {shown}; expected (start, end) in seconds of the recording's clock, "
+                                     "start before end")
 
 
 def test_range_all_reads_as_import_does():

@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "pendulum/argument_ranges.hpp"
 #include "pendulum/numeric.hpp"
 
 namespace pendulum {
@@ -166,13 +167,10 @@ T finite_amplitude_exact(const T& theta0, const T& deficit) {
   return exact_nome(deficit);
 }
 
-/// Throws std::domain_error unless 0 <= x < limit (NaN included).
-inline void require_amplitude(double x, double limit, const char* unit) {
-  if (!(x >= 0.0 && x < limit)) {
-    throw std::domain_error("amplitude " + std::to_string(x) + " " + unit +
-                            " is outside [0, 180 deg): at 180 deg and beyond the "
-                            "pendulum goes over the top");
-  }
+/// Throws std::domain_error unless x lies in `range` (ranges::amplitude or
+/// amplitude_deg; NaN refused), with the message the CLI and Python give.
+inline void require_amplitude(double x, const ArgumentRange& range) {
+  if (!accepts(range, x)) throw std::domain_error("amplitude: " + out_of_range(range, x));
 }
 
 }  // namespace detail
@@ -189,7 +187,7 @@ inline void require_amplitude(double x, double limit, const char* unit) {
 /// Eq. (17); the AGM identity K(k) = pi / (2 AGM(1, kc)).
 template <class T>
 T finite_amplitude_agm_deg(const T& theta0_deg) {
-  detail::require_amplitude(value_of(theta0_deg), 180.0, "deg");
+  detail::require_amplitude(value_of(theta0_deg), ranges::amplitude_deg);
   return detail::finite_amplitude_exact(theta0_deg * kRadiansPerDegree,
                                         (180.0 - theta0_deg) * kRadiansPerDegree);
 }
@@ -203,7 +201,7 @@ T finite_amplitude_agm_deg(const T& theta0_deg) {
 /// Reference: Nelson & Olsson (1986) Eq. (8); Kelley (1993) Eq. (17).
 template <class T>
 T finite_amplitude_agm(const T& theta0) {
-  detail::require_amplitude(value_of(theta0), kPi, "rad");
+  detail::require_amplitude(value_of(theta0), ranges::amplitude);
   return detail::finite_amplitude_exact(theta0, kPi - theta0);
 }
 
@@ -371,7 +369,7 @@ T pendulum_angle(const T& theta0, const T& omega0_t) {
   using std::asin;
   using std::cos;
   using std::sin;
-  detail::require_amplitude(value_of(theta0), kPi, "rad");
+  detail::require_amplitude(value_of(theta0), ranges::amplitude);
   const T k = sin(theta0 / 2.0);
   return 2.0 * asin(k * jacobi_sn(omega0_t, k, cos(theta0 / 2.0)));
 }

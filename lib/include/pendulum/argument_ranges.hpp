@@ -32,6 +32,10 @@ inline constexpr ArgumentRange amplitude_terms{"--terms", "terms", 1, 1000, "",
 /// A scene's length (scene.json's length.value): a laboratory's.
 inline constexpr ArgumentRange length{"--length-m", "length_m", 1e-3, 1e3, "m",
                                       "a laboratory pendulum, 1 mm to 1 km long"};
+/// reduce RECORDING --length's uncertainty: the scene reader then asks for
+/// less than the length.
+inline constexpr ArgumentRange length_uncertainty{"--length-uncertainty", "length_uncertainty", 0.0, 1e3, "m",
+                                                  "a length's standard uncertainty from 0 to 1 km"};
 /// Below the length, at most 1 km; a photogate resolves no bob under 1 mm.
 inline constexpr ArgumentRange bob_width{"--bob-width-m", "bob_width_m", 1e-3, 1e3, "m",
                                          "a bob's width across the beam from 1 mm to 1 km"};
@@ -51,10 +55,24 @@ inline constexpr ArgumentRange height{"site.height", "height", -12e3, 100e3, "m"
 inline constexpr ArgumentRange quality{"Q", "q", 1.0, 1e15, "", "a quality factor from 1 to 1e15"};
 inline constexpr ArgumentRange semi_amplitude{"semi_amplitude", "theta0", 1e-9, 3.141592653589793, "rad",
                                               "an angle from 1e-9 rad to below 180 deg", true};
+/// A pendulum's amplitude, in degrees as the amplitude command takes it and
+/// in radians as the Python functions and the library take it.
+inline constexpr ArgumentRange amplitude_deg{
+    "--theta0-deg", "theta0_deg", 0.0, 180.0, "deg",
+    "an amplitude from 0 to below 180 deg (at 180 deg and beyond the pendulum goes over the top)", true};
+inline constexpr ArgumentRange amplitude{
+    "amplitude", "theta0", 0.0, 3.141592653589793, "rad",
+    "an amplitude from 0 to below pi rad (at 180 deg and beyond the pendulum goes over the top)", true};
 }  // namespace ranges
 
+/// Whether `value` lies in `range` (a NaN does not): inline, for loops over
+/// many values.
+constexpr bool accepts(const ArgumentRange& range, double value) {
+  return value >= range.low && (range.high_open ? value < range.high : value <= range.high);
+}
+
 /// Empty when `value` lies in `range`, else "got VALUE UNIT; expected ..."
-/// (a NaN is "NaN").
+/// (a NaN is "NaN", a value is written to 10 digits, never 300).
 std::string out_of_range(const ArgumentRange& range, double value);
 
 /// `text` as a decimal number, whole ("16", "+0.5", "1e300", "inf"): not

@@ -46,13 +46,29 @@ struct Drawn {
   double correlation = 0.0;
 };
 
-/// Seeded deviates: the same seed, the same draws (Box-Muller, as
-/// decay_simulation.hpp's NormalDeviates, and libstdc++'s chi-squared).
+/// Seeded deviates: the same seed, the same draws (Marsaglia's polar
+/// method, both of its normals used: one logarithm for two and no cosine,
+/// and libstdc++'s chi-squared).
 class Deviates {
  public:
   explicit Deviates(std::uint64_t seed) : engine_(seed) {}
   double uniform() { return ((engine_() >> 11) + 0.5) * 0x1.0p-53; }  // in (0, 1)
-  double normal() { return std::sqrt(-2.0 * std::log(uniform())) * std::cos(2.0 * kPi * uniform()); }
+  double normal() {
+    if (has_spare_) {
+      has_spare_ = false;
+      return spare_;
+    }
+    double u, v, s;
+    do {
+      u = 2.0 * uniform() - 1.0;
+      v = 2.0 * uniform() - 1.0;
+      s = u * u + v * v;
+    } while (s >= 1.0);  // uniform() is never 1/2 exactly, so s > 0
+    const double f = std::sqrt(-2.0 * std::log(s) / s);
+    spare_ = v * f;
+    has_spare_ = true;
+    return u * f;
+  }
   /// sqrt(nu / chi2_nu): a normal draw times this is Student's t with nu dof.
   double t_scale(double nu) { return 1.0 / std::sqrt(std::chi_squared_distribution<double>(nu)(engine_) / nu); }
   /// A standardised draw of `e`'s distribution: the input is value + sigma x this.
@@ -69,6 +85,8 @@ class Deviates {
 
  private:
   std::mt19937_64 engine_;
+  double spare_ = 0.0;
+  bool has_spare_ = false;
 };
 
 /// g of a scene whose inputs are shifted: the closed form for one
@@ -178,6 +196,11 @@ class Sampler {
     std::vector<std::vector<double>> shift;
     for (int n : shift_sizes_) shift.emplace_back(n, 0.0);
     std::vector<double> z(inputs_.size());
+    std::vector<bool> is_held(inputs_.size());
+    for (std::size_t i = 0; i < inputs_.size(); ++i) {
+      is_held[i] = std::find(held.begin(), held.end(), inputs_[i].path) != held.end();
+    }
+    std::vector<Observation<double>> observations;  // each draw's, its storage kept
     std::vector<double> out;
     out.reserve(count);
     visit_period_model(scene_.model, [&](auto model) {
@@ -194,11 +217,10 @@ class Sampler {
           } else {
             z[i] = in.partner >= 0 ? deviates.normal() : deviates.draw(in.evaluation);
           }
-          const bool is_held = std::find(held.begin(), held.end(), in.path) != held.end();
-          const double value = is_held ? 0.0 : in.sigma * z[i] * (in.observations_own ? scatter : 1.0);
+          const double value = is_held[i] ? 0.0 : in.sigma * z[i] * (in.observations_own ? scatter : 1.0);
           for (const auto& [owner, at] : in.slots) shift[owner][at] = value;
         }
-        const double g = g_of(refit, shift);
+        const double g = g_of(refit, shift, observations);
         if (std::isfinite(g)) out.push_back(g);  // none outside the model's domain (a negative period)
       }
     });
@@ -224,11 +246,12 @@ class Sampler {
   /// the exact amplitude factor; a length to the bob's top or bottom moves
   /// with the bob's drawn size, as the budget's does (analysis.cpp).
   template <class Model>
-  double g_of(const Refit<Model>& refit, const std::vector<std::vector<double>>& shift) const {
+  double g_of(const Refit<Model>& refit, const std::vector<std::vector<double>>& shift,
+              std::vector<Observation<double>>& obs) const {
     int at = 0;
     const Apparatus<double> app =
         convert_apparatus<double>(scene_.apparatus, [&](const Field&, double x) { return x + shift[0][at++]; });
-    std::vector<Observation<double>> obs;
+    obs.clear();
     for (std::size_t k = 0; k < scene_.observations.size(); ++k) {
       at = 0;
       // An amplitude drawn below zero is the same swing to the other side.

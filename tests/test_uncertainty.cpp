@@ -341,6 +341,49 @@ TEST_CASE("Monte Carlo of a series scaled by its Birge ratio draws the periods a
   CHECK_THAT((mc->high - mc->low) / 2.0, WithinRel(2.7764 * *a.g.uncertainty, 0.03));
 }
 
+TEST_CASE("Series of five lengths: the expanded interval covers g 95 % of the time", "[uncertainty][coverage]") {
+  // The truth: g = 9.81 m/s^2; at each length the model's own period (each
+  // noiseless observation reduced, T scaled by sqrt(g'/g) three times: g goes
+  // as 1/T^2). Each experiment times 10 oscillations five times per length
+  // with a hand's 0.1 s scatter and reads each length (+- 0.5 mm) and
+  // amplitude (+- 0.5 deg) once. Each length's own s (4 dof) as its weight
+  // covered 85.8 % (rms of (g - truth)/u 1.54): E[1/s^2] is twice 1/sigma^2;
+  // the scatter pooled over the lengths (20 dof) is what covers.
+  constexpr double kTrueG = 9.81, kHand = 0.1;
+  std::vector<double> period;
+  for (const double l : kSeriesLengths) period.push_back(2.0 * kPi * std::sqrt(l / kTrueG));
+  for (int i = 0; i < 3; ++i) {
+    for (std::size_t k = 0; k < period.size(); ++k) {
+      const nlohmann::json one = stopwatch_scene({10 * period[k], 10 * period[k]}, kSeriesLengths[k], 5.0);
+      period[k] *= std::sqrt(analyse(parse_scene(one.dump())).g.value / kTrueG);
+    }
+  }
+  NormalDeviates noise(20261207);
+  constexpr int kExperiments = 1000;
+  int covered = 0, pooled = 0;
+  for (int e = 0; e < kExperiments; ++e) {
+    std::vector<double> lengths;
+    std::vector<std::vector<double>> trials;
+    for (std::size_t k = 0; k < period.size(); ++k) {
+      lengths.push_back(kSeriesLengths[k] + 0.0005 * noise.next());
+      trials.emplace_back();
+      for (int t = 0; t < 5; ++t) trials.back().push_back(10 * period[k] + kHand * noise.next());
+    }
+    nlohmann::json doc = series_scene(lengths, trials);
+    for (auto& o : doc["observations"]) o["amplitude"]["value"] = 5.0 + 0.5 * noise.next();
+    const ParsedScene s = parse_scene(doc.dump());
+    pooled += evaluation_of(s.evaluations, "observations[0].timing.period").pooled;
+    const Analysis a = analyse(s);
+    covered += std::abs(a.g.value - kTrueG) <= a.g_expanded->expanded;
+  }
+  // Bartlett's test refutes equal scatter 1 % of the time when it is equal.
+  CHECK(pooled >= 0.97 * kExperiments);
+  // Binomial standard error of a 95 % rate over 1000: sqrt(0.95 x 0.05/1000) = 0.0069.
+  const double rate = double(covered) / kExperiments;
+  INFO("expanded: " << rate << ", pooled " << pooled);
+  CHECK_THAT(rate, WithinAbs(0.95, 3 * 0.0069));
+}
+
 TEST_CASE("Monte Carlo refits a physical pendulum: Kater's, every input normal", "[uncertainty][monte_carlo]") {
   // The two pivots' periods drawn as normals too (their t_2 has no
   // variance): the draws' u is GUM's, and their mean is g plus the amplitude's

@@ -565,10 +565,18 @@ class Fit {
   double effective_dof(int i) const {
     std::vector<VarianceComponent> components;
     const auto variance = [&](auto j) { return std::pow(sensitivities_[j](i) * inputs_[j].sigma, 2); };
+    VarianceComponent pooled{0.0, kInfiniteDof};
     for (std::size_t j = 0; j < inputs_.size(); ++j) {
       const auto paired = [&](const Pair& pr) { return pr.a == static_cast<int>(j) || pr.b == static_cast<int>(j); };
-      if (std::none_of(pairs_.begin(), pairs_.end(), paired)) components.push_back({variance(j), inputs_[j].evaluation.dof});
+      if (std::any_of(pairs_.begin(), pairs_.end(), paired)) continue;
+      const InputEvaluation& e = inputs_[j].evaluation;
+      if (e.pooled) {
+        pooled = {pooled.variance + variance(j), e.dof};
+      } else {
+        components.push_back({variance(j), e.dof});
+      }
     }
+    if (pooled.variance > 0.0) components.push_back(pooled);
     for (const Pair& pr : pairs_) {
       const double together = variance(pr.a) + variance(pr.b) +
                               2.0 * sensitivities_[pr.a](i) * sensitivities_[pr.b](i) * pr.covariance;

@@ -185,6 +185,9 @@ class Sampler {
     // A fit whose scatter scaled its uncertainty by S (dispersion.hpp): the
     // observations' own inputs drawn S times wider, as a multivariate t
     // with the fit's degrees of freedom (s^2 estimated from n - p residuals).
+    for (const Drawn& in : inputs_) {
+      if (in.evaluation.pooled) pooled_dof_ = in.evaluation.dof;
+    }
     if (analysis.fit.scaled && analysis.fit.birge_ratio && analysis.fit.dof > 0) {
       birge_ratio_ = *analysis.fit.birge_ratio;
       scatter_dof_ = analysis.fit.dof;
@@ -208,6 +211,8 @@ class Sampler {
       // Every draw outside the model's domain would loop for ever: a bound.
       for (long attempt = 0; static_cast<long>(out.size()) < count && attempt < 10 * count; ++attempt) {
         const double scatter = birge_ratio_ > 0.0 ? birge_ratio_ * deviates.t_scale(scatter_dof_) : 1.0;
+        // Pooled periods share one estimated variance: a multivariate t.
+        const double pooled = pooled_dof_ > 0.0 ? deviates.t_scale(pooled_dof_) : 1.0;
         for (std::size_t i = 0; i < inputs_.size(); ++i) {
           const Drawn& in = inputs_[i];
           // Jointly normal with its partner: z_b = rho z_a + sqrt(1 - rho^2) z'.
@@ -215,7 +220,9 @@ class Sampler {
             z[i] = in.correlation * z[in.partner] +
                    std::sqrt(std::max(0.0, 1.0 - in.correlation * in.correlation)) * deviates.normal();
           } else {
-            z[i] = in.partner >= 0 ? deviates.normal() : deviates.draw(in.evaluation);
+            z[i] = in.partner >= 0 ? deviates.normal()
+                   : in.evaluation.pooled ? deviates.normal() * pooled
+                                          : deviates.draw(in.evaluation);
           }
           const double value = is_held[i] ? 0.0 : in.sigma * z[i] * (in.observations_own ? scatter : 1.0);
           for (const auto& [owner, at] : in.slots) shift[owner][at] = value;
@@ -277,6 +284,7 @@ class Sampler {
   std::vector<int> shift_sizes_;  ///< the apparatus's scalars, then each observation's
   double birge_ratio_ = 0.0;
   double scatter_dof_ = 0.0;
+  double pooled_dof_ = 0.0;  ///< of the pooled periods' one variance; 0 where none is pooled
 };
 
 /// delta of S1 7.9.2: u = c 10^l with c of two digits, delta = 10^l / 2.

@@ -54,6 +54,14 @@ struct ObservationSource {
   std::optional<std::size_t> recording = std::nullopt;
   /// The amplitude is the recording's, not the scene's own.
   bool amplitude_from_recording = false;
+  /// Two trials or more: their standard deviation and the floor under it
+  /// (the resolution/sqrt(12) or a one-trial uncertainty), in seconds of a
+  /// trial; a series pools the scatter (pool_trial_scatter).
+  struct TrialScatter {
+    double spread, floor;
+    bool floor_is_resolution;  ///< the floor's distribution: rectangular, else normal
+  };
+  std::optional<TrialScatter> trial_scatter;
 };
 
 /// How a recording named by a scene's timing was reduced (docs/recordings.md,

@@ -28,6 +28,10 @@ struct InputEvaluation {
   char type = 'B';   ///< 'A': from the scatter of repeated readings; 'B': otherwise
   Distribution distribution = Distribution::normal;
   double dof = kInfiniteDof;  ///< A: n - 1; B: infinite (GUM G.4.2: the bounds are taken as certain)
+  /// One variance estimated from several inputs' readings together (a
+  /// series' pooled trial scatter): their variances are one component of
+  /// Welch-Satterthwaite's sum, with `dof` theirs together.
+  bool pooled = false;
 };
 
 /// The evaluation `path` was given, or Type B, normal, infinite dof.

@@ -271,8 +271,10 @@ void read_timing(Object& parent, const std::string& prefix, Observation<double>&
                 "; expected repeated timings of the same oscillations (a mean of these means nothing)");
     // The resolution and a stated uncertainty are floors: a scatter below
     // them is luck.
-    sigma_trial = std::max({spread, resolution.value_or(0.0) / std::sqrt(12.0),
-                            trial_sigma.value_or(0.0)});
+    const double floor = std::max(resolution.value_or(0.0) / std::sqrt(12.0), trial_sigma.value_or(0.0));
+    sigma_trial = std::max(spread, floor);
+    source.trial_scatter = ObservationSource::TrialScatter{spread * unit->factor, floor * unit->factor,
+                                                          floor != trial_sigma.value_or(0.0)};
     // GUM 4.2: the scatter is a Type A evaluation (the mean of n readings, a
     // t with n - 1 degrees of freedom, S1 6.4.9); a floor that wins is Type B.
     evaluation = sigma_trial == spread ? InputEvaluation{period_path, 'A', Distribution::student_t, n - 1.0}

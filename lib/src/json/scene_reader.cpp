@@ -12,6 +12,7 @@
 #include "table_reader.hpp"
 #include "pendulum/amplitude_sweep.hpp"
 #include "pendulum/argument_ranges.hpp"
+#include "pendulum/dispersion.hpp"
 #include "pendulum/models/registry.hpp"
 #include "pendulum/scene_json.hpp"
 
@@ -248,6 +249,61 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
 }
 
 /// "observations": a non-empty array of objects with length, amplitude, timing.
+/// A series timed by one hand and one stopwatch: the trials' scatter, in
+/// seconds of a trial whatever the oscillations counted, pooled over every
+/// observation timed more than once, unless Bartlett's test refutes that
+/// they share it (p < 0.01). Each observation's own s from a few trials
+/// would weigh the fit by 1/s^2, which overstates its weight where s came
+/// out small (E[1/s^2] = nu/(nu - 2) sigma^-2): g's uncertainty then covered
+/// 86 % for a nominal 95 % (docs/uncertainty.md, "A series' trials").
+void pool_trial_scatter(ParsedScene& out) {
+  std::vector<std::size_t> timed;
+  double nu = 0.0, squares = 0.0, logs = 0.0, inverses = 0.0;
+  for (std::size_t k = 0; k < out.observations.size(); ++k) {
+    const auto& t = out.sources[k].trial_scatter;
+    if (!t || !(t->spread > 0.0)) continue;
+    const double v = out.sources[k].trial_count - 1.0;
+    timed.push_back(k);
+    nu += v;
+    squares += v * t->spread * t->spread;
+    logs += v * std::log(t->spread * t->spread);
+    inverses += 1.0 / v;
+  }
+  if (timed.size() < 2) return;
+  const double pooled = std::sqrt(squares / nu), groups = static_cast<double>(timed.size());
+  // Bartlett (1937): M/C against chi2 with groups - 1 degrees of freedom.
+  const double m = nu * std::log(squares / nu) - logs, c = 1.0 + (inverses - 1.0 / nu) / (3.0 * (groups - 1.0));
+  const Dispersion test = dispersion(m / c, static_cast<int>(timed.size()) - 1);
+  const std::string p = format_number(*test.probability, 2);
+  if (*test.probability < kOverDispersedProbability) {
+    out.assumptions.push_back("observations: the trials' scatter differs from one observation to the next (Bartlett's "
+                              "test p = " + p + "), so each period keeps its own");
+    return;
+  }
+  for (const std::size_t k : timed) {
+    const ObservationSource& source = out.sources[k];
+    // A table's repeats arrive with their pooled scatter as the floor
+    // (table_scene.cpp): the same number to rounding, and the pooled one.
+    const double floor = source.trial_scatter->floor;
+    const double sigma_trial = floor > pooled * (1.0 + 1e-9) ? floor : pooled, n = source.trial_count;
+    out.observation_uncertainties[k].period = sigma_trial / std::sqrt(n) / out.observations[k].oscillations_per_trial;
+    // A floor that wins is Type B, as for one observation (parts.cpp).
+    const std::string path = source.path + "timing.period";
+    const InputEvaluation evaluation =
+        sigma_trial == pooled ? InputEvaluation{path, 'A', Distribution::student_t, nu, true}
+        : source.trial_scatter->floor_is_resolution ? InputEvaluation{path, 'B', Distribution::rectangular}
+                                                   : InputEvaluation{path};
+    for (InputEvaluation& e : out.evaluations) {
+      if (e.path == path) e = evaluation;
+    }
+  }
+  out.assumptions.push_back("observations: the trials' scatter pooled over the " + std::to_string(timed.size()) +
+                            " observations timed more than once (one hand, one stopwatch; Bartlett's test of equal "
+                            "scatter p = " + p + "): " + format_number(pooled, 3) + " s a trial, " +
+                            format_number(nu, 6) + " degrees of freedom; each period's uncertainty is it over "
+                            "oscillations x sqrt(trials)");
+}
+
 void read_series(Object& top, ParsedScene& out, RecordingReader& recordings) {
   // A length or amplitude measured once is given once (shared); what
   // changes from one observation to the next is each observation's own.
@@ -286,6 +342,7 @@ void read_series(Object& top, ParsedScene& out, RecordingReader& recordings) {
                      "got a period with no uncertainty (equal trials and no resolution); expected one: a series "
                      "weighs each period by its uncertainty, so state timing.resolution or timing.uncertainty");
   }
+  pool_trial_scatter(out);
 }
 
 /// "uncertainty": {"method": "gum" | "monte-carlo", "draws": N, "seed": S}

@@ -34,7 +34,7 @@ Command add_amplitude_command(CLI::App& app) {
                                            "; expected an amplitude in [0, 180) deg (at 180 deg "
                                            "and beyond the pendulum goes over the top)");
     }
-    const double theta0 = deg * (kPi / 180.0);
+    const double theta0 = radians(deg);
     // The exact method takes degrees, so the deficit from 180 deg stays exact.
     const double ratio = o->method == AmplitudeMethod::agm
                              ? finite_amplitude_agm_deg(deg)

@@ -641,7 +641,7 @@ inline std::optional<double> cancelling_semi_amplitude(ImpulseDirection directio
     return circular_error_rate(theta0) - impulse_error_elliptic(theta0, theta, q).rate;
   };
   // Upper end: the impulsed swing below 170 deg (Eq. F-1).
-  const double hi_limit = 2.0 * std::asin(std::sin(kPi * 85.0 / 180.0) / std::sqrt(1.0 + kPi / q));
+  const double hi_limit = 2.0 * std::asin(std::sin(radians(85.0)) / std::sqrt(1.0 + kPi / q));
   double lo = relative ? 1e-9 : location * (1.0 + 1e-12) + 1e-300;
   double hi = hi_limit;
   if (!(lo < hi) || total_rate(lo) >= 0.0 || total_rate(hi) <= 0.0) return std::nullopt;
@@ -671,7 +671,7 @@ inline std::optional<double> amplitude_insensitive_semi_amplitude(ImpulseDirecti
     return circular_error_rate(theta0) +
            sign * impulse_error_elliptic(Jet(theta0, 0), Jet(location), Jet(q)).error.v[0];
   };
-  const double hi = 2.0 * std::asin(std::sin(kPi * 85.0 / 180.0) / std::sqrt(1.0 + kPi / q));
+  const double hi = 2.0 * std::asin(std::sin(radians(85.0)) / std::sqrt(1.0 + kPi / q));
   double lo = location * (1.0 + 1e-9) + 1e-300;
   if (!(lo < hi) || !(total_rate(lo) < 0.0) || !(total_rate(hi) > 0.0)) return std::nullopt;
   double top = hi;

@@ -28,6 +28,20 @@ inline constexpr double kPi = 3.14159265358979323846;
 inline constexpr double kRadiansPerDegree = kPi / 180.0;
 inline constexpr double kDegreesPerRadian = 180.0 / kPi;
 
+/// An angle x (rad) in degrees, and d (deg) in radians. As x * 180 / pi and
+/// d * pi / 180, which round differently in the last bit from a product
+/// with the constants above: the JSON prints every bit, and was made so.
+/// The recordings' amplitudes (recording_writer.cpp, the Python module)
+/// were made by the product, and keep it.
+template <class T>
+constexpr T degrees(const T& x) {
+  return x * 180.0 / kPi;
+}
+template <class T>
+constexpr T radians(const T& d) {
+  return d * kPi / 180.0;
+}
+
 /// Standard gravity (m/s^2), used only to judge plausibility, never in g.
 inline constexpr double kStandardGravity = 9.80665;
 

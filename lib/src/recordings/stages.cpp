@@ -593,7 +593,7 @@ std::pair<std::string, std::string> unitless_angle(const ColumnFacts& facts) {
   if (a > kPi / 2.0) {
     return {"deg", "swings by +-" + format_number(a, 3) + ", over 90 deg if radians: read as degrees"};
   }
-  return {"rad", "swings by +-" + format_number(a, 3) + ", " + format_number(a * 180.0 / kPi, 3) +
+  return {"rad", "swings by +-" + format_number(a, 3) + ", " + format_number(degrees(a), 3) +
                      " deg if radians: read as radians (if it is degrees, say so with --columns or \"columns\")"};
 }
 

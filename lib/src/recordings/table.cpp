@@ -216,7 +216,7 @@ struct Scale {
 };
 constexpr Scale kLengthUnits[] = {{"m", 1.0}, {"cm", 0.01}, {"mm", 0.001}, {"in", 0.0254}, {"ft", 0.3048}};
 constexpr Scale kTimeUnits[] = {{"s", 1.0}, {"ms", 1e-3}, {"min", 60.0}};
-constexpr Scale kAngleUnits[] = {{"deg", kPi / 180.0}, {"rad", 1.0}};
+constexpr Scale kAngleUnits[] = {{"deg", kRadiansPerDegree}, {"rad", 1.0}};
 
 template <std::size_t N>
 std::optional<double> factor_of(const Scale (&units)[N], const std::string& unit) {

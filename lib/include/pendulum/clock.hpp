@@ -144,14 +144,6 @@ T ellint_f(const T& phi, const T& m) {
 // The pendulum and its circular error
 // ---------------------------------------------------------------------------
 
-/// Theoretical length of a pendulum of nominal period p (s) at gravity g
-/// (m/s^2): l = p^2 g / (4 pi^2) (m). Feinstein (2005) Eq. (B-1).
-template <class T>
-T length_for_period(const T& p, const T& g) {
-  return p * p * g / (4.0 * kPi * kPi);  // Feinstein Eq. (B-1)
-}
-
-
 /// Speed at the bottom of the swing, v = sqrt(2 g h), h = l (1 - cos theta0)
 /// = 2 l sin^2(theta0/2): v = 2 sqrt(g l) sin(theta0/2) (m/s).
 /// l (m), g (m/s^2), theta0 semi-amplitude (rad). Feinstein Eq. (B-3).

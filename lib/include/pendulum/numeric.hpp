@@ -56,4 +56,18 @@ T ideal_period(const T& l, const G& g) {
   return 2.0 * kPi * sqrt(l / g);  // Eq. (3)
 }
 
+/// g = 4 pi^2 l / T^2 (m/s^2): the gravity in which the ideal pendulum of
+/// length l (m) swings in period T (s), Eq. (3) solved for g.
+template <class T>
+T gravity_for_period(const T& l, const T& period) {
+  return 4.0 * kPi * kPi * l / (period * period);
+}
+
+/// l = p^2 g / (4 pi^2) (m): the length of the ideal pendulum of period p
+/// (s) in gravity g (m/s^2). Feinstein (2005) Eq. (B-1).
+template <class T>
+T length_for_period(const T& p, const T& g) {
+  return p * p * g / (4.0 * kPi * kPi);  // Feinstein Eq. (B-1)
+}
+
 }  // namespace pendulum

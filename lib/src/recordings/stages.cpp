@@ -638,7 +638,7 @@ std::pair<std::string, std::string> unitless_time(double period) {
   if (!(period > kLongest)) return {"s", "no unit given, read as seconds"};
   for (auto [unit, scale] : {std::pair{"ms", 1e-3}, {"us", 1e-6}}) {
     if (period * scale >= kShortest && period * scale <= kLongest) {
-      const double km = kStandardGravity * period * period / (4.0 * kPi * kPi) / 1000.0;
+      const double km = length_for_period(period, kStandardGravity) / 1000.0;
       return {unit, std::string("no unit given, read as ") + (scale == 1e-3 ? "milliseconds" : "microseconds") +
                         ": as seconds its swing would take " + format_number(std::round(period), 12) +
                         " s (a pendulum " + format_number(std::round(km), 12) + " km long), as " + unit + " " +

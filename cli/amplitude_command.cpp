@@ -33,7 +33,7 @@ Command add_amplitude_command(CLI::App& app) {
     const double deg = o->theta0_deg;
     const std::string why = out_of_range(ranges::amplitude_deg, deg);
     if (!why.empty()) throw InputError(ranges::amplitude_deg.option, why);
-    const double theta0 = deg * (kPi / 180.0);
+    const double theta0 = radians(deg);
     // The exact method takes degrees, so the deficit from 180 deg stays exact.
     const double ratio = o->method == AmplitudeMethod::agm
                              ? finite_amplitude_agm_deg(deg)

@@ -97,12 +97,12 @@ std::string summary_table(const RecordingSummary& r) {
   }
   if (std::isfinite(a.start_amplitude)) {
     put("%-22s %.3f deg at the first crossing (amplitude_range.start) -> %.3f deg at the last\n", "amplitude",
-        a.start_amplitude * kDegreesPerRadian, a.end_amplitude * kDegreesPerRadian);
+        degrees(a.start_amplitude), degrees(a.end_amplitude));
   } else if (!a.decay.amplitudes.empty()) {
     // Fewer than 8 swings, or half of them, have an amplitude: no smooth curve to take its ends from.
     const auto [lo, hi] = std::minmax_element(a.decay.amplitudes.begin(), a.decay.amplitudes.end());
     put("%-22s none at the first crossing (too few swings have one); the swings' from %.3f to %.3f deg\n",
-        "amplitude", *lo * kDegreesPerRadian, *hi * kDegreesPerRadian);
+        "amplitude", degrees(*lo), degrees(*hi));
   }
   for (const RecordingNote& note : a.notes) o << "note                   " << note.text << "\n";
   // The period against amplitude in ten slices of the record.
@@ -115,7 +115,7 @@ std::string summary_table(const RecordingSummary& r) {
     for (std::size_t m = i; m < j; ++m) t += c[m].time, amp += c[m].amplitude, per += c[m].period;
     const double count = static_cast<double>(j - i);
     if (std::isfinite(amp)) {
-      put("%10.1f %14.3f %14.6f\n", t / count, amp / count * kDegreesPerRadian, per / count);
+      put("%10.1f %14.3f %14.6f\n", t / count, degrees(amp / count), per / count);
     } else {
       put("%10.1f %14s %14.6f\n", t / count, "-", per / count);
     }

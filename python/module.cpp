@@ -35,8 +35,6 @@ namespace py = pybind11;
 
 namespace {
 
-constexpr double kDegreesPerRadian = 180.0 / pendulum::kPi;
-
 using pendulum::AmplitudeMethod;
 
 /// A scene's text and where its recordings are looked for: read from `path`
@@ -160,9 +158,9 @@ py::dict read_recording(const std::string& path, const std::string& format, cons
   swings["start_s"] = column(a.swings, [](const auto& w) { return w.start; });
   swings["end_s"] = column(a.swings, [](const auto& w) { return w.end; });
   swings["peak_time_s"] = column(a.swings, [](const auto& w) { return w.peak_time; });
-  swings["amplitude_deg"] = column(a.swings, [](const auto& w) { return w.amplitude * kDegreesPerRadian; });
+  swings["amplitude_deg"] = column(a.swings, [](const auto& w) { return w.amplitude * pendulum::kDegreesPerRadian; });
   periods["time_s"] = column(a.period_curve, [](const auto& p) { return p.time; });
-  periods["amplitude_deg"] = column(a.period_curve, [](const auto& p) { return p.amplitude * kDegreesPerRadian; });
+  periods["amplitude_deg"] = column(a.period_curve, [](const auto& p) { return p.amplitude * pendulum::kDegreesPerRadian; });
   periods["period_s"] = column(a.period_curve, [](const auto& p) { return p.period; });
   py::dict out;
   out["json"] = json;

@@ -122,11 +122,11 @@ void check_observation(ParsedScene& scene, std::size_t k, const std::optional<Ex
                                                           (scene.body_from_parts ? ", and the body's parts" : "")) +
                              recording_cause(scene, source));
   }
-  const double degrees = o.amplitude * 180.0 / kPi;
+  const double deg = degrees(o.amplitude);
   // A series may sweep the amplitude on purpose.
-  if (degrees > kSmallAngleLab && !scene.series) {
+  if (deg > kSmallAngleLab && !scene.series) {
     // As given, to 15 digits: 4 made 179.99999 deg "180 deg".
-    scene.warnings.push_back(at + "amplitude.value: " + format_number(degrees, 15) +
+    scene.warnings.push_back(at + "amplitude.value: " + format_number(deg, 15) +
                              " deg is over the 20 deg of a small-angle lab; the finite-amplitude "
                              "correction is exact at any amplitude, but check the amplitude and its unit");
   }

@@ -274,15 +274,15 @@ void judge_air(const ParsedScene& scene, std::vector<std::string>& reasons) {
 }
 
 void judge_amplitudes(const ParsedScene& scene, std::vector<std::string>& reasons) {
-  constexpr double kSmallAngleLab = 20.0 * kRadiansPerDegree;
+  constexpr double kSmallAngleLab = radians(20.0);
   for (std::size_t k = 0; k < scene.observations.size(); ++k) {
     const ObservationSource& s = scene.sources[k];
     const double raw = s.amplitude_raw;
     if (s.amplitude_unit != "deg" || raw < kRadiansPerDegree || raw > kSmallAngleLab) continue;
-    const double arc_mm = scene.observations[k].length * raw * kRadiansPerDegree * 1e3;
+    const double arc_mm = scene.observations[k].length * radians(raw) * 1e3;
     reasons.push_back(s.path_of("amplitude") + ": " + format_number(raw, 4) + " deg moves the bob by " +
                       format_number(arc_mm, 2) + " mm, too little to start and watch by hand, while " +
-                      format_number(raw, 4) + " rad is " + format_number(raw / kRadiansPerDegree, 3) +
+                      format_number(raw, 4) + " rad is " + format_number(degrees(raw), 3) +
                       " deg, a small-angle lab's amplitude: radians written as deg? fix " + s.path_of("amplitude.unit") +
                       " (\"rad\")");
   }
@@ -323,20 +323,20 @@ void judge_decay_record(const ParsedScene& scene, std::vector<std::string>& reas
   constexpr double kPeakToPeakTolerance = 0.15;  // a hand's release against a reading of the first swing
   if (!scene.decay_data || scene.series || scene.decay_data->amplitudes.empty()) return;
   const double first = scene.decay_data->amplitudes.front(), swing = scene.observations.front().amplitude;
-  const double ratio = first / swing, degree = kPi / 180.0;
+  const double ratio = first / swing;
   const double swing_sigma = scene.observation_uncertainties.front().amplitude;
   if (std::abs(ratio / 2.0 - 1.0) <= kPeakToPeakTolerance && first - swing > 3.0 * swing_sigma) {
-    reasons.push_back("decay.data.amplitudes[0]: the record starts at " + format_number(first / degree, 3) + " deg, " +
-                      format_number(ratio, 3) + " times the scene's amplitude " + format_number(swing / degree, 3) +
+    reasons.push_back("decay.data.amplitudes[0]: the record starts at " + format_number(degrees(first), 3) + " deg, " +
+                      format_number(ratio, 3) + " times the scene's amplitude " + format_number(degrees(swing), 3) +
                       " deg: peak-to-peak swings written as amplitudes? An amplitude is from the rest position to "
                       "one side: halve decay.data.amplitudes");
     return;
   }
   if (ratio > 1.0 / kUnitFactor && ratio < kUnitFactor) return;
   const bool tiny = ratio < 1.0;
-  reasons.push_back("decay.data.amplitude_unit: the record starts at " + format_number(first / degree, 3) +
+  reasons.push_back("decay.data.amplitude_unit: the record starts at " + format_number(degrees(first), 3) +
                     " deg, " + (tiny ? "1/" : "") + format_number(tiny ? 1.0 / ratio : ratio, 3) +
-                    " times the scene's amplitude " + format_number(swing / degree, 3) + " deg: " +
+                    " times the scene's amplitude " + format_number(degrees(swing), 3) + " deg: " +
                     (tiny ? "radians labelled deg? fix decay.data.amplitude_unit (\"rad\")"
                           : "degrees labelled rad? fix decay.data.amplitude_unit (\"deg\")"));
 }

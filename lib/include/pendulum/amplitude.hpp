@@ -188,8 +188,7 @@ inline void require_amplitude(double x, const ArgumentRange& range) {
 template <class T>
 T finite_amplitude_agm_deg(const T& theta0_deg) {
   detail::require_amplitude(value_of(theta0_deg), ranges::amplitude_deg);
-  return detail::finite_amplitude_exact(theta0_deg * kRadiansPerDegree,
-                                        (180.0 - theta0_deg) * kRadiansPerDegree);
+  return detail::finite_amplitude_exact(radians(theta0_deg), radians(180.0 - theta0_deg));
 }
 
 /// Exact finite-amplitude correction, amplitude in radians: as

@@ -144,14 +144,6 @@ T ellint_f(const T& phi, const T& m) {
 // The pendulum and its circular error
 // ---------------------------------------------------------------------------
 
-/// Theoretical length of a pendulum of nominal period p (s) at gravity g
-/// (m/s^2): l = p^2 g / (4 pi^2) (m). Feinstein (2005) Eq. (B-1).
-template <class T>
-T length_for_period(const T& p, const T& g) {
-  return p * p * g / (4.0 * kPi * kPi);  // Feinstein Eq. (B-1)
-}
-
-
 /// Speed at the bottom of the swing, v = sqrt(2 g h), h = l (1 - cos theta0)
 /// = 2 l sin^2(theta0/2): v = 2 sqrt(g l) sin(theta0/2) (m/s).
 /// l (m), g (m/s^2), theta0 semi-amplitude (rad). Feinstein Eq. (B-3).
@@ -641,7 +633,7 @@ inline std::optional<double> cancelling_semi_amplitude(ImpulseDirection directio
     return circular_error_rate(theta0) - impulse_error_elliptic(theta0, theta, q).rate;
   };
   // Upper end: the impulsed swing below 170 deg (Eq. F-1).
-  const double hi_limit = 2.0 * std::asin(std::sin(kPi * 85.0 / 180.0) / std::sqrt(1.0 + kPi / q));
+  const double hi_limit = 2.0 * std::asin(std::sin(radians(85.0)) / std::sqrt(1.0 + kPi / q));
   double lo = relative ? 1e-9 : location * (1.0 + 1e-12) + 1e-300;
   double hi = hi_limit;
   if (!(lo < hi) || total_rate(lo) >= 0.0 || total_rate(hi) <= 0.0) return std::nullopt;
@@ -671,7 +663,7 @@ inline std::optional<double> amplitude_insensitive_semi_amplitude(ImpulseDirecti
     return circular_error_rate(theta0) +
            sign * impulse_error_elliptic(Jet(theta0, 0), Jet(location), Jet(q)).error.v[0];
   };
-  const double hi = 2.0 * std::asin(std::sin(kPi * 85.0 / 180.0) / std::sqrt(1.0 + kPi / q));
+  const double hi = 2.0 * std::asin(std::sin(radians(85.0)) / std::sqrt(1.0 + kPi / q));
   double lo = location * (1.0 + 1e-9) + 1e-300;
   if (!(lo < hi) || !(total_rate(lo) < 0.0) || !(total_rate(hi) > 0.0)) return std::nullopt;
   double top = hi;

@@ -28,6 +28,20 @@ inline constexpr double kPi = 3.14159265358979323846;
 inline constexpr double kRadiansPerDegree = kPi / 180.0;
 inline constexpr double kDegreesPerRadian = 180.0 / kPi;
 
+/// An angle x (rad) in degrees, and d (deg) in radians. As x * 180 / pi and
+/// d * pi / 180, which round differently in the last bit from a product
+/// with the constants above: the JSON prints every bit, and was made so.
+/// The recordings' amplitudes (recording_writer.cpp, the Python module)
+/// were made by the product, and keep it.
+template <class T>
+constexpr T degrees(const T& x) {
+  return x * 180.0 / kPi;
+}
+template <class T>
+constexpr T radians(const T& d) {
+  return d * kPi / 180.0;
+}
+
 /// Standard gravity (m/s^2), used only to judge plausibility, never in g.
 inline constexpr double kStandardGravity = 9.80665;
 
@@ -40,6 +54,20 @@ template <class T, class G>
 T ideal_period(const T& l, const G& g) {
   using std::sqrt;
   return 2.0 * kPi * sqrt(l / g);  // Eq. (3)
+}
+
+/// g = 4 pi^2 l / T^2 (m/s^2): the gravity in which the ideal pendulum of
+/// length l (m) swings in period T (s), Eq. (3) solved for g.
+template <class T>
+T gravity_for_period(const T& l, const T& period) {
+  return 4.0 * kPi * kPi * l / (period * period);
+}
+
+/// l = p^2 g / (4 pi^2) (m): the length of the ideal pendulum of period p
+/// (s) in gravity g (m/s^2). Feinstein (2005) Eq. (B-1).
+template <class T>
+T length_for_period(const T& p, const T& g) {
+  return p * p * g / (4.0 * kPi * kPi);  // Feinstein Eq. (B-1)
 }
 
 }  // namespace pendulum

@@ -59,8 +59,8 @@ Reduction<T> reduce(const Apparatus<T>& app, const Observation<T>& obs, const Am
   out.composition = compose(out.terms);
   out.total_ratio = out.composition.total;
   out.period_ideal = obs.period / (1.0 + out.total_ratio);                             // Eqs. (6)-(7)
-  out.g = 4.0 * kPi * kPi * swing.length / (out.period_ideal * out.period_ideal);     // Eq. (3)
-  out.g_uncorrected = 4.0 * kPi * kPi * swing.length / (obs.period * obs.period);     // Eq. (5)
+  out.g = gravity_for_period(swing.length, out.period_ideal);                         // Eq. (3)
+  out.g_uncorrected = gravity_for_period(swing.length, obs.period);                   // Eq. (5)
   return out;
 }
 

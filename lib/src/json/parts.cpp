@@ -517,7 +517,7 @@ void read_site(Object& top, ParsedScene& out) {
   Site site;
   if (o.has("latitude")) {
     const Measured lat = quantity(o, "latitude", Dimension::angle, Range::any);
-    const double deg = lat.value * 180.0 / kPi;
+    const double deg = degrees(lat.value);
     const std::string why = out_of_range(ranges::latitude, deg);
     if (!why.empty()) throw InputError("site.latitude.value", why);
     site.latitude_deg = deg;

@@ -241,7 +241,7 @@ void reduce_swing_by_swing(ParsedScene& out) {
     ObservationSource s = source;
     s.path = "swings[" + std::to_string(j) + "].";
     s.shared = {setting_key(v.setting), "amplitude"};
-    s.amplitude_raw = g.amplitude * 180.0 / kPi;
+    s.amplitude_raw = degrees(g.amplitude);
     s.amplitude_unit = "deg";
     out.observations.push_back(v);
     out.observation_uncertainties.push_back(u);
@@ -258,13 +258,13 @@ void reduce_swing_by_swing(ParsedScene& out) {
              said.end());
   const SwingGroup &first = reduction.groups.front(), &last = reduction.groups.back();
   said.push_back("timing: reduced swing by swing: the recording " + recording.summary.file + "'s amplitude falls from " +
-                 format_number(a.start_amplitude * 180.0 / kPi, 4) + " to " +
-                 format_number(a.end_amplitude * 180.0 / kPi, 4) + " deg, which moves the finite-amplitude correction by " +
+                 format_number(degrees(a.start_amplitude), 4) + " to " +
+                 format_number(degrees(a.end_amplitude), 4) + " deg, which moves the finite-amplitude correction by " +
                  shift + ", over " + format_number(kSwingBySwingShift, 2) + ": a series at one length of " +
                  std::to_string(reduction.groups.size()) + " groups of " + std::to_string(first.periods) +
                  " periods (swings[]), each timed by its own crossings and corrected at its own amplitude, " +
-                 format_number(first.amplitude * 180.0 / kPi, 4) + " deg to " +
-                 format_number(last.amplitude * 180.0 / kPi, 4) + " deg (docs/recordings.md)" +
+                 format_number(degrees(first.amplitude), 4) + " deg to " +
+                 format_number(degrees(last.amplitude), 4) + " deg (docs/recordings.md)" +
                  (reduction.decay_corrected ? "; the decay correction (Eq. 50) is not applied over them" : ""));
 }
 

@@ -30,6 +30,8 @@ nlohmann::ordered_json summary_json(const RecordingSummary& r) {
   } else {
     // start: the scene's `amplitude`, at the first crossing, where the timing starts.
     const auto [lo, hi] = std::minmax_element(a.decay.amplitudes.begin(), a.decay.amplitudes.end());
+    // In degrees by the product with kDegreesPerRadian, not degrees(): the
+    // stored output was written so, and the JSON prints the last bit.
     // null where the recording cannot say (swings.hpp, start_amplitude_uncertainty).
     const nlohmann::ordered_json start_uncertainty =
         std::isfinite(a.start_amplitude_uncertainty) ? nlohmann::ordered_json(a.start_amplitude_uncertainty * kDegreesPerRadian)

@@ -54,7 +54,7 @@ bool unrecorded(const json& a) { return a.is_string() || (a.is_object() && a.con
 Measured unrecorded_amplitude(Object& owner, ParsedScene& out, bool say) {
   const json& a = owner.at("amplitude");
   const std::string path = owner.path("amplitude");
-  double lo = kHandReleaseDeg[0] * kPi / 180.0, hi = kHandReleaseDeg[1] * kPi / 180.0;
+  double lo = radians(kHandReleaseDeg[0]), hi = radians(kHandReleaseDeg[1]);
   std::string how = "not recorded; a hand release";
   if (a.is_string()) {
     PENDULUM_FAIL_IF(a != "not recorded", path,
@@ -72,16 +72,16 @@ Measured unrecorded_amplitude(Object& owner, ParsedScene& out, bool say) {
     r.finish();
     PENDULUM_FAIL_IF(!(lo >= 0.0 && hi > lo && hi < kPi), r.path("range"),
                      "got " + shown(range) + "; expected 0 <= low < high, below 180 deg");
-    how = "released between " + format_number(lo * 180.0 / kPi, 4) + " and " + format_number(hi * 180.0 / kPi, 4) + " deg";
+    how = "released between " + format_number(degrees(lo), 4) + " and " + format_number(degrees(hi), 4) + " deg";
   }
   const double value = 0.5 * (lo + hi), sigma = (hi - lo) / std::sqrt(12.0);
   out.evaluations.push_back({path, 'B', Distribution::rectangular});
   if (say) {
     const double effect = value * sigma / 4.0;
-    out.assumptions.push_back(path + ": " + how + ", taken as uniform over " + format_number(lo * 180.0 / kPi, 4) +
-                              " to " + format_number(hi * 180.0 / kPi, 4) + " deg: " + format_number(value * 180.0 / kPi, 4) +
-                              " +- " + format_number(sigma * 180.0 / kPi, 3) + " deg ((high - low)/sqrt(12))");
-    out.warnings.push_back(path + ": " + how + ": its uncertainty, +- " + format_number(sigma * 180.0 / kPi, 3) +
+    out.assumptions.push_back(path + ": " + how + ", taken as uniform over " + format_number(degrees(lo), 4) +
+                              " to " + format_number(degrees(hi), 4) + " deg: " + format_number(degrees(value), 4) +
+                              " +- " + format_number(degrees(sigma), 3) + " deg ((high - low)/sqrt(12))");
+    out.warnings.push_back(path + ": " + how + ": its uncertainty, +- " + format_number(degrees(sigma), 3) +
                            " deg, moves g by about " + format_number(effect, 2) + " of itself (" +
                            format_number(effect * 9.80665, 2) + " m/s^2 near the Earth's g), its row " + path +
                            " in the budget; record the amplitude to remove it");
@@ -210,12 +210,12 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
     if (sensor_in_bob(r.kind)) v.amplitude_of = u.amplitude_of = AngleOf::body;
     const bool known = std::isfinite(r.swings.start_amplitude_uncertainty);
     u.amplitude = known ? r.swings.start_amplitude_uncertainty : 0.0;
-    source.amplitude_raw = v.amplitude * 180.0 / kPi;
+    source.amplitude_raw = degrees(v.amplitude);
     source.amplitude_unit = "deg";
     out.assumptions.push_back(
         prefix + "amplitude: " + format_number(source.amplitude_raw, 5) +
         " deg, the recording's at the start of its timing " +
-        (known ? "(+- " + format_number(u.amplitude * 180.0 / kPi, 2) + " deg from its swings' scatter" +
+        (known ? "(+- " + format_number(degrees(u.amplitude), 2) + " deg from its swings' scatter" +
                      (r.kind == SignalKind::position ? " and its circle's radius)" : ")")
                : std::string("(no uncertainty: a gyroscope's scale, g or a beam's width would set it)")));
   } else if (unrecorded(amplitude_owner.at("amplitude"))) {
@@ -223,7 +223,7 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
     const Measured m = unrecorded_amplitude(amplitude_owner, out, !shared || out.observations.empty());
     v.amplitude = m.value;
     u.amplitude = m.sigma;
-    source.amplitude_raw = v.amplitude * 180.0 / kPi;
+    source.amplitude_raw = degrees(v.amplitude);
     source.amplitude_unit = "deg";
   } else {
     refuse_unknown_amplitude(amplitude_owner);
@@ -240,7 +240,7 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
     source.amplitude_unit = find_unit(amplitude.at("unit").get<std::string>(), Dimension::angle)->name;
   }
   PENDULUM_FAIL_IF(v.amplitude >= kPi, source.path_of("amplitude") + ".value",
-                   "got " + format_number(v.amplitude * 180.0 / kPi) +
+                   "got " + format_number(degrees(v.amplitude)) +
                        " deg; expected an amplitude below 180 deg (at 180 deg and beyond "
                        "the pendulum goes over the top)");
   out.observations.push_back(v);

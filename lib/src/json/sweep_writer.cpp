@@ -19,8 +19,6 @@ using json = nlohmann::ordered_json;
 
 namespace {
 
-constexpr double kDegree = kPi / 180.0;
-
 /// The chi2 of the exact law judged, where the uncertainties are stated.
 std::optional<std::string> sweep_dispersion_finding(const AmplitudeSweep& s) {
   if (s.sigma_from_scatter || s.scale == 1.0) return std::nullopt;
@@ -59,7 +57,7 @@ json amplitude_sweep_json(const AmplitudeSweep& s) {
   }
   return {{"law", "T = T0 2K(sin^2(theta0/2))/pi, exact (Nelson & Olsson Eq. 8)"},
           {"small_amplitude_period", t0},
-          {"amplitudes_deg", {s.low / kDegree, s.high / kDegree}},
+          {"amplitudes_deg", {degrees(s.low), degrees(s.high)}},
           {"period_uncertainty", s.sigma_from_scatter ? "scatter_about_fit" : "stated"},
           {"scale", s.scale},
           {"chi2", s.chi2},
@@ -73,7 +71,7 @@ void amplitude_sweep_lines(const AmplitudeSweep& s, bool with_chi2, std::ostream
   char line[400];
   std::snprintf(line, sizeof line,
                 "Amplitude sweep, %.3g to %.3g deg: small-amplitude period T0 = %s s (exact law T = T0 2K/pi%s)\n",
-                s.low / kDegree, s.high / kDegree, rounded(s.t0.value, s.t0.uncertainty).c_str(),
+                degrees(s.low), degrees(s.high), rounded(s.t0.value, s.t0.uncertainty).c_str(),
                 s.sigma_from_scatter ? ", the periods' sigma from its scatter" : "");
   os << line;
   if (s.probability && with_chi2) {
@@ -102,7 +100,7 @@ std::string sweep_result_json(const ParsedScene& scene, const AmplitudeSweep& s,
     const auto& o = scene.observations[k];
     const auto& u = scene.observation_uncertainties[k];
     observations.push_back({{"index", k},
-                            {"amplitude", {{"value", o.amplitude / kDegree}, {"uncertainty", u.amplitude / kDegree}, {"unit", "deg"}}},
+                            {"amplitude", {{"value", degrees(o.amplitude)}, {"uncertainty", degrees(u.amplitude)}, {"unit", "deg"}}},
                             {"period", {{"value", o.period}, {"uncertainty", u.period}, {"unit", "s"}}},
                             {"oscillations_per_trial", o.oscillations_per_trial}});
   }
@@ -131,7 +129,7 @@ std::string sweep_result_table(const ParsedScene& scene, const AmplitudeSweep& s
   os << line;
   for (std::size_t k = 0; k < scene.observations.size(); ++k) {
     std::snprintf(line, sizeof line, "%5zu %12.2f %12.6f %10.6f %12.6f %+10.2f\n", k,
-                  scene.observations[k].amplitude / kDegree, scene.observations[k].period, s.effective_sigma[k],
+                  degrees(scene.observations[k].amplitude), scene.observations[k].period, s.effective_sigma[k],
                   s.law[k], s.residual[k]);
     os << line;
   }

@@ -711,7 +711,7 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     for (std::size_t k = 0; k < a.observations.size(); ++k) {
       const ObservationResult& o = a.observations[k];
       std::snprintf(line, sizeof line, "%5zu %9.4f %12.2f %12.6f %10.6f %12.6f %+10.2f %+12.2f\n", k, o.length,
-                    o.amplitude * 180.0 / kPi, o.period_measured.value, o.period_measured.uncertainty,
+                    degrees(o.amplitude), o.period_measured.value, o.period_measured.uncertainty,
                     o.period_model, o.residual.value_or(0.0), o.total_delta_T * 1e6);
       os << line;
     }

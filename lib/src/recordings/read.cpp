@@ -127,7 +127,7 @@ std::vector<std::size_t> find_all(const std::vector<Column>& cols, Role role) {
 /// numbers once they are read.
 double angle_scale(const Column& c, Layout& l, const Content* content, std::size_t j) {
   l.channel_unit = c.unit;
-  if (c.unit == "deg") return kPi / 180.0;
+  if (c.unit == "deg") return kRadiansPerDegree;
   if (c.unit == "rad") return 1.0;
   if (!content) return 1.0;
   const ColumnFacts& f = content->facts(j);
@@ -138,12 +138,12 @@ double angle_scale(const Column& c, Layout& l, const Content* content, std::size
   }
   l.channel_unit = unit;
   l.unit_why = "no unit in the header; " + why;
-  return unit == "deg" ? kPi / 180.0 : 1.0;
+  return unit == "deg" ? kRadiansPerDegree : 1.0;
 }
 
 double rate_scale(const Column& c, Layout& l) {
   l.channel_unit = c.unit.empty() ? "rad/s" : c.unit;
-  return c.unit == "deg/s" ? kPi / 180.0 : 1.0;
+  return c.unit == "deg/s" ? kRadiansPerDegree : 1.0;
 }
 
 /// The layout of `format` for these columns, or nullopt if they do not fit

@@ -593,7 +593,7 @@ std::pair<std::string, std::string> unitless_angle(const ColumnFacts& facts) {
   if (a > kPi / 2.0) {
     return {"deg", "swings by +-" + format_number(a, 3) + ", over 90 deg if radians: read as degrees"};
   }
-  return {"rad", "swings by +-" + format_number(a, 3) + ", " + format_number(a * 180.0 / kPi, 3) +
+  return {"rad", "swings by +-" + format_number(a, 3) + ", " + format_number(degrees(a), 3) +
                      " deg if radians: read as radians (if it is degrees, say so with --columns or \"columns\")"};
 }
 
@@ -638,7 +638,7 @@ std::pair<std::string, std::string> unitless_time(double period) {
   if (!(period > kLongest)) return {"s", "no unit given, read as seconds"};
   for (auto [unit, scale] : {std::pair{"ms", 1e-3}, {"us", 1e-6}}) {
     if (period * scale >= kShortest && period * scale <= kLongest) {
-      const double km = kStandardGravity * period * period / (4.0 * kPi * kPi) / 1000.0;
+      const double km = length_for_period(period, kStandardGravity) / 1000.0;
       return {unit, std::string("no unit given, read as ") + (scale == 1e-3 ? "milliseconds" : "microseconds") +
                         ": as seconds its swing would take " + format_number(std::round(period), 12) +
                         " s (a pendulum " + format_number(std::round(km), 12) + " km long), as " + unit + " " +

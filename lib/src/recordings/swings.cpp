@@ -1469,7 +1469,7 @@ SwingAnalysis analyse_record(const Recording& r, const std::string& file, const 
           // The curve through the swings' log amplitudes can pass 180 deg
           // where the swings scatter wildly: no swinging pendulum there.
           if (!(smooth[i] < kPi)) {
-            throw InputError(file, "the smooth amplitude curve reaches " + format_number(smooth[i] * 180.0 / kPi, 4) +
+            throw InputError(file, "the smooth amplitude curve reaches " + format_number(degrees(smooth[i]), 4) +
                                        " deg at " + seconds(out.swings[i].peak_time) +
                                        " (180 deg or more: over the top); expected a swinging pendulum");
           }

@@ -216,7 +216,7 @@ struct Scale {
 };
 constexpr Scale kLengthUnits[] = {{"m", 1.0}, {"cm", 0.01}, {"mm", 0.001}, {"in", 0.0254}, {"ft", 0.3048}};
 constexpr Scale kTimeUnits[] = {{"s", 1.0}, {"ms", 1e-3}, {"min", 60.0}};
-constexpr Scale kAngleUnits[] = {{"deg", kPi / 180.0}, {"rad", 1.0}};
+constexpr Scale kAngleUnits[] = {{"deg", kRadiansPerDegree}, {"rad", 1.0}};
 
 template <std::size_t N>
 std::optional<double> factor_of(const Scale (&units)[N], const std::string& unit) {
@@ -236,7 +236,7 @@ std::string names_of(const Scale (&units)[N]) {
 /// 4 pi^2 L / T^2 of each row (m/s^2), the settings in m and the periods in s.
 std::vector<double> row_g(const std::vector<double>& l, const std::vector<double>& t) {
   std::vector<double> g(l.size());
-  for (std::size_t i = 0; i < l.size(); ++i) g[i] = 4.0 * kPi * kPi * l[i] / (t[i] * t[i]);
+  for (std::size_t i = 0; i < l.size(); ++i) g[i] = gravity_for_period(l[i], t[i]);
   return g;
 }
 
@@ -245,7 +245,7 @@ std::vector<double> row_g(const std::vector<double>& l, const std::vector<double
 std::vector<double> row_k2(const std::vector<double>& h, const std::vector<double>& t) {
   std::vector<double> k2(h.size());
   for (std::size_t i = 0; i < h.size(); ++i) {
-    const double l = kStandardGravity * t[i] * t[i] / (4.0 * kPi * kPi);
+    const double l = length_for_period(t[i], kStandardGravity);
     k2[i] = h[i] * (l - h[i]);
   }
   return k2;
@@ -274,7 +274,7 @@ bool fits_pivot_distance(const std::vector<double>& h, const std::vector<double>
 /// the longest equivalent length.
 bool fits_pivot_position(const std::vector<double>& x, const std::vector<double>& t) {
   const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
-  const double l = kStandardGravity * std::pow(*std::max_element(t.begin(), t.end()), 2) / (4.0 * kPi * kPi);
+  const double l = length_for_period(*std::max_element(t.begin(), t.end()), kStandardGravity);
   return *hi - *lo >= 0.05 && *hi - *lo <= 2.0 * l;
 }
 

@@ -329,8 +329,8 @@ std::string recording_part(const RecordingRecord& r, const std::string& anchor, 
     row("small-amplitude period T\u2080", format_fixed(r.small_amplitude_period, 7) + " s");
   }
   if (std::isfinite(r.start_amplitude)) {
-    row("amplitude", format_fixed(r.start_amplitude * kDegreesPerRadian, 3) + "\u00B0 at the first crossing, " +
-                         format_fixed(r.end_amplitude * kDegreesPerRadian, 3) + "\u00B0 at the last");
+    row("amplitude", format_fixed(degrees(r.start_amplitude), 3) + "\u00B0 at the first crossing, " +
+                         format_fixed(degrees(r.end_amplitude), 3) + "\u00B0 at the last");
   }
   s += "</table>\n";
   if (auto f = signal_figure(r, anchor + "-signal")) {

@@ -116,7 +116,7 @@ std::optional<Figure> pivot_scan_figure(const SceneReport& r, const std::string&
     }
   }
 
-  const double amplitude = d.amplitude * kDegreesPerRadian;
+  const double amplitude = degrees(d.amplitude);
   std::string text = std::to_string(s.lengths.size()) + " measured periods against the " +
                      (positions ? "pivot's position along the body" : "pivot's distance from the centre of mass") +
                      ", with the physical-pendulum model fitted with every correction (g = " + format_fixed(r.g.value, 5) +
@@ -129,7 +129,7 @@ std::optional<Figure> pivot_scan_figure(const SceneReport& r, const std::string&
     text += "at the observations' amplitude of " + format_fixed(amplitude, 2) + " deg";
   } else {
     text += "at the median amplitude " + format_fixed(amplitude, 2) + " deg (the observations' amplitudes range from " +
-            format_fixed(d.amplitude_min * kDegreesPerRadian, 2) + " to " + format_fixed(d.amplitude_max * kDegreesPerRadian, 2) + " deg)";
+            format_fixed(degrees(d.amplitude_min), 2) + " to " + format_fixed(degrees(d.amplitude_max), 2) + " deg)";
   }
   text += "; the textbook curve T = 2 pi sqrt((k^2 + h^2)/(g h)) without corrections, from the straight line of T^2 h "
           "against h^2 fitted to the measured periods (g = " + format_fixed(d.textbook_g, 5) + " m/s^2, k = " +

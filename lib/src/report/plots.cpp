@@ -193,26 +193,26 @@ Figure decay_figure(const DecayRecord& d, const std::string& id) {
   p.observations.name = d.sigmas.empty() ? "measured amplitude" : "measured amplitude \u00B1 \u03C3";
   p.observations.x = d.times;
   p.observations.size = d.times.size() > 100 ? 2.2 : 4.0;
-  for (double a : d.amplitudes) p.observations.y.push_back(a * kDegreesPerRadian);
-  for (double s : d.sigmas) p.observations.y_error.push_back(s * kDegreesPerRadian);
+  for (double a : d.amplitudes) p.observations.y.push_back(degrees(a));
+  for (double s : d.sigmas) p.observations.y_error.push_back(degrees(s));
   // A dense record light, the fit dark over it: they differ in greyscale too.
   const bool dense = d.times.size() > 100;
   p.observations.colour = dense ? Colour::sky_blue : Colour::black;
-  for (double a : d.fitted) p.model_at_x.push_back(a * kDegreesPerRadian);
+  for (double a : d.fitted) p.model_at_x.push_back(degrees(a));
   const bool band_known = !d.grid_uncertainty.empty();
   p.model.name = band_known ? "fit of Eq. (25)"
                             : std::string("fit of Eq. (25); ") + kUncertaintyUnknown + " (singular covariance): no band";
   p.model.x = d.grid;
   p.model.colour = dense ? Colour::black : Colour::vermillion;
   p.model.width = 2.5;
-  for (double a : d.grid_fit) p.model.y.push_back(a * kDegreesPerRadian);
+  for (double a : d.grid_fit) p.model.y.push_back(degrees(a));
   if (band_known) {
     Band band;
     band.name = "fit \u00B1 1\u03C3 (from the covariance)";
     band.x = d.grid;
     for (std::size_t i = 0; i < d.grid.size(); ++i) {
-      band.lower.push_back((d.grid_fit[i] - d.grid_uncertainty[i]) * kDegreesPerRadian);
-      band.upper.push_back((d.grid_fit[i] + d.grid_uncertainty[i]) * kDegreesPerRadian);
+      band.lower.push_back(degrees(d.grid_fit[i] - d.grid_uncertainty[i]));
+      band.upper.push_back(degrees(d.grid_fit[i] + d.grid_uncertainty[i]));
     }
     band.colour = Colour::orange;
     p.model_band = band;
@@ -231,7 +231,6 @@ namespace {
 /// the quadratic the law is tested with (docs/series.md, "Amplitude sweeps").
 Figure sweep_figure(const SeriesRecord& s, const std::string& id) {
   const AmplitudeSweep& w = *s.sweep;
-  constexpr double degree = kPi / 180.0;
   FitPlotData p;
   p.id = id;
   p.title = "Sweep: T against amplitude, the exact law, the quadratic";
@@ -240,7 +239,7 @@ Figure sweep_figure(const SeriesRecord& s, const std::string& id) {
   p.residual_label = "T − law (s)";
   p.observations.name = "measured T ± its effective u(T)";
   for (std::size_t k = 0; k < s.periods.size(); ++k) {
-    p.observations.x.push_back(s.amplitudes[k] / degree);
+    p.observations.x.push_back(degrees(s.amplitudes[k]));
     p.observations.y.push_back(s.periods[k]);
     p.observations.y_error.push_back(w.effective_sigma[k]);
     p.model_at_x.push_back(w.law[k]);
@@ -249,7 +248,7 @@ Figure sweep_figure(const SeriesRecord& s, const std::string& id) {
   constexpr int kSamples = 100;
   for (int i = 0; i <= kSamples; ++i) {
     const double a = std::min(top * i / kSamples, kPi * 0.999);
-    p.model.x.push_back(a / degree);
+    p.model.x.push_back(degrees(a));
     p.model.y.push_back(w.t0.value * (1.0 + finite_amplitude_agm(a)));
   }
   p.model.name = "exact law T = T₀ 2K/π, T₀ = " + format_fixed(w.t0.value, 5) + " s";
@@ -259,7 +258,7 @@ Figure sweep_figure(const SeriesRecord& s, const std::string& id) {
     Curve quadratic;
     quadratic.name = "T = a (1 + c θ₀²), c = " + format_significant(w.coefficient->value, 3) + " /rad²";
     auto at = [&](double a) { return w.quadratic_t0 * (1.0 + w.coefficient->value * a * a); };
-    for (double x : p.model.x) quadratic.x.push_back(x), quadratic.y.push_back(at(x * degree));
+    for (double x : p.model.x) quadratic.x.push_back(x), quadratic.y.push_back(at(radians(x)));
     quadratic.colour = Colour::black;
     quadratic.dash = Dash::dashed;
     quadratic.width = 1.5;

@@ -272,7 +272,7 @@ std::optional<Figure> amplitude_figure(const RecordingRecord& r, const std::stri
   Points points;
   points.name = "amplitude of a swing";
   points.x = r.swing_times;
-  for (double a : r.swing_amplitudes) points.y.push_back(a * kDegreesPerRadian);
+  for (double a : r.swing_amplitudes) points.y.push_back(degrees(a));
   points.size = r.swing_times.size() > 100 ? 2.2 : 4.0;
   p.points.push_back(points);
   f.panels = {p};
@@ -308,7 +308,7 @@ std::optional<Figure> period_amplitude_figure(const RecordingRecord& r, const st
     }
     if (!known) continue;
     amplitude /= static_cast<double>(m);
-    d.observations.x.push_back(amplitude * kDegreesPerRadian);
+    d.observations.x.push_back(degrees(amplitude));
     d.observations.y.push_back(period / static_cast<double>(m));
     d.observations.y_error.push_back(std::hypot(r.crossing_sigmas[i * cpp], r.crossing_sigmas[(i + m) * cpp]) /
                                       static_cast<double>(m));
@@ -328,7 +328,7 @@ std::optional<Figure> period_amplitude_figure(const RecordingRecord& r, const st
   constexpr int kGrid = 121;
   for (int i = 0; i < kGrid; ++i) {
     const double theta = lo + (hi - lo) * i / (kGrid - 1);
-    d.model.x.push_back(theta * kDegreesPerRadian);
+    d.model.x.push_back(degrees(theta));
     d.model.y.push_back(t0 * ratio(theta));
   }
   d.model.name = "exact period T\u2080(1 + \u0394T/T\u2080(\u03B8\u2080)), T\u2080 = " + format_fixed(t0, 7) +

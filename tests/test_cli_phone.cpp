@@ -22,8 +22,10 @@ using nlohmann::json;
 // flow's about its section across the swing, rho pi (a/2)^2 b (plausibility.cpp):
 // at the template's 1013 hPa and 21 degC, rho = p M/(R T) = 1.19972 kg/m^3
 // (M = 0.02896 kg/mol, R = 8.314462618 J/(mol K)). Edge-on, a = 0.8 cm and
-// b = 16 cm: 0.00965 g, 2.54e-5 of T for 190 g, 39 us at 1.537 s, over the
-// 5.77 us below which a correction is negligible. Face-first, a = 7.5 cm:
+// b = 16 cm: 0.00965 g, 2.54e-5 of T for 190 g, 48 us at 1.889 s, over the
+// 22.5 us below which a correction is negligible (a tenth of the period's
+// uncertainty: the three lengths' trials of ten swings scatter by 3.9 ms
+// pooled, over 10 sqrt(3): 225 us). Face-first, a = 7.5 cm:
 // 0.848 g, 2.23e-3 of T; turned edge-on, (7.5/0.8)^2 = 87.9 times less.
 TEST_CASE("template phone: three string lengths reduce to standard gravity and the knot's mark, status ok",
           "[cli][template][phone]") {
@@ -34,7 +36,7 @@ TEST_CASE("template phone: three string lengths reduce to standard gravity and t
   const json result = json::parse(pendulum::test::read_text(file + ".out"));
   const std::string added_mass = "bob: a box's added mass in air is not modelled (Eqs. (54)-(62) are a sphere's); "
                                  "estimated as the potential flow's about its section across the swing, 0.0096 g, it "
-                                 "would lengthen the period by 2.5e-05 of itself (39 us, over the 5.77 us below which "
+                                 "would lengthen the period by 2.5e-05 of itself (48 us, over the 22.5 us below which "
                                  "a correction is negligible), and g comes out low by about 5.1e-05 of itself";
   CHECK(pendulum::test::read_text(file + ".err") == "pendulum-g: warning: " + added_mass + "\n");
   std::system(("rm -f " + file + ".json " + file + ".out " + file + ".err").c_str());

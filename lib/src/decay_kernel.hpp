@@ -2,8 +2,8 @@
 // The inner loop of the decay fit: Eq. (25), its Jacobian and the sums the
 // Gauss-Newton model needs, in one pass over the record. Compiled on its own
 // with -ffast-math -fopenmp-simd (lib/CMakeLists.txt) so that GCC vectorises
-// exp through glibc's libmvec, in versions for AVX-512, AVX2 and SSE2
-// chosen at run time. Nothing here may rely on NaN or infinity: callers check
+// exp through glibc's libmvec, in versions for AVX2 and SSE2 chosen
+// at run time (not AVX-512: decay_kernel.cpp). Nothing here may rely on NaN or infinity: callers check
 // the sums with std::isfinite.
 
 #include <cstddef>

@@ -79,8 +79,8 @@ void add_analysis_options(CLI::App& cmd, AnalysisOptions& options) {
            else monte_carlo();
          },
          "gum (default: the linear budget, its expanded uncertainty from Student's t) or monte-carlo (GUM "
-         "Supplement 1 beside it: every input drawn from its distribution, the shortest 95 % interval, and "
-         "a warning where the two disagree): docs/uncertainty.md")
+         "Supplement 1 beside it: every input drawn from its distribution and a series refitted per draw, the "
+         "shortest 95 % interval, and a warning where the two disagree): docs/uncertainty.md")
       ->check(CLI::IsMember({"gum", "monte-carlo"}))
       ->type_name("gum|monte-carlo");
   cmd.add_option_function<long>("--draws", [monte_carlo](long n) { monte_carlo().draws = n; },

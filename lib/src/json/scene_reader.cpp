@@ -257,25 +257,37 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
 /// out small (E[1/s^2] = nu/(nu - 2) sigma^-2): g's uncertainty then covered
 /// 86 % for a nominal 95 % (docs/uncertainty.md, "A series' trials").
 void pool_trial_scatter(ParsedScene& out) {
-  std::vector<std::size_t> timed;
-  double nu = 0.0, squares = 0.0, logs = 0.0, inverses = 0.0;
+  std::vector<std::size_t> timed, tested;
+  double nu = 0.0, squares = 0.0, logs = 0.0, inverses = 0.0, tested_nu = 0.0;
   for (std::size_t k = 0; k < out.observations.size(); ++k) {
     const auto& t = out.sources[k].trial_scatter;
-    if (!t || !(t->spread > 0.0)) continue;
+    if (!t) continue;
     const double v = out.sources[k].trial_count - 1.0;
     timed.push_back(k);
     nu += v;
     squares += v * t->spread * t->spread;
+    // Equal trials (their scatter below the resolution) add their
+    // degrees of freedom and no square; Bartlett's test needs a logarithm.
+    if (!(t->spread > 0.0)) continue;
+    tested.push_back(k);
     logs += v * std::log(t->spread * t->spread);
     inverses += 1.0 / v;
+    tested_nu += v;
   }
-  if (timed.size() < 2) return;
-  const double pooled = std::sqrt(squares / nu), groups = static_cast<double>(timed.size());
-  // Bartlett (1937): M/C against chi2 with groups - 1 degrees of freedom.
-  const double m = nu * std::log(squares / nu) - logs, c = 1.0 + (inverses - 1.0 / nu) / (3.0 * (groups - 1.0));
-  const Dispersion test = dispersion(m / c, static_cast<int>(timed.size()) - 1);
-  const std::string p = format_number(*test.probability, 2);
-  if (*test.probability < kOverDispersedProbability) {
+  if (timed.size() < 2 || !(squares > 0.0)) return;
+  const double pooled = std::sqrt(squares / nu);
+  // Bartlett (1937): M/C against chi2 with groups - 1 degrees of freedom,
+  // over the observations that scatter; M is 0 where they scatter alike
+  // (rounding may make it -1e-14).
+  double probability = 1.0;
+  if (tested.size() >= 2) {
+    const double groups = static_cast<double>(tested.size());
+    const double m = tested_nu * std::log(squares / tested_nu) - logs;
+    const double c = 1.0 + (inverses - 1.0 / tested_nu) / (3.0 * (groups - 1.0));
+    probability = dispersion(std::max(m / c, 0.0), static_cast<int>(tested.size()) - 1).probability.value_or(1.0);
+  }
+  const std::string p = format_number(probability, 2);
+  if (probability < kOverDispersedProbability) {
     out.assumptions.push_back("observations: the trials' scatter differs from one observation to the next (Bartlett's "
                               "test p = " + p + "), so each period keeps its own");
     return;

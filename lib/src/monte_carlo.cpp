@@ -101,8 +101,10 @@ class Refit {
 
   Refit(const ParsedScene& scene, const Analysis& analysis) : scene_(scene) {
     for (int i = 0; i < P; ++i) {
-      start_[i] = analysis.fit.parameters[i].value;
-      fitted_[i] = analysis.fit.parameters[i].fitted;
+      const ParameterResult& parameter = analysis.fit.parameters[i];
+      start_[i] = parameter.value;
+      fitted_[i] = parameter.fitted;
+      scale_[i] = parameter.uncertainty.value_or(1e-6 * std::abs(parameter.value));
     }
     closed_form_ = scene.observations.size() == 1 && std::count(fitted_.begin(), fitted_.end(), true) == 1;
     for (const ObservationResult& o : analysis.observations) weights_.push_back(1.0 / o.effective_uncertainty);
@@ -123,8 +125,10 @@ class Refit {
     using Matrix = Eigen::Matrix<double, P, P>;
     using Vector = Eigen::Matrix<double, P, 1>;
     // Near the optimum Gauss-Newton converges quadratically: a step below
-    // 1e-8 of its parameter leaves an error of order its square, far below
-    // any tolerance of S1 7.9, so no further step is evaluated.
+    // 1e-6 of its parameter's uncertainty leaves an error of order its
+    // square, far below any tolerance of S1 7.9, so no further step is
+    // evaluated. Measured in uncertainties, a run away (|g| ~ 1e13, its
+    // steps 1e-8 of it) never converges, and gives no draw.
     for (int iteration = 0; iteration < 20; ++iteration) {
       std::array<Jet, P> pj;
       for (int i = 0; i < P; ++i) pj[i] = fitted_[i] ? Jet(p[i], i) : Jet(p[i]);
@@ -140,12 +144,15 @@ class Refit {
         if (!fitted_[i]) h(i, i) = 1.0;
       }
       const Vector step = h.ldlt().solve(b);
-      bool small = true;
+      bool small = true, near = true;
       for (int i = 0; i < P; ++i) {
         p[i] -= step[i];
-        if (!(std::abs(step[i]) <= 1e-8 * std::abs(p[i]))) small = false;
+        if (!(std::abs(step[i]) <= 1e-6 * scale_[i])) small = false;
+        // A thousand uncertainties away is another minimum (an offset that
+        // absorbs the lengths), not this fit's: P(|t_2| > 1000) ~ 1e-6.
+        if (!(std::abs(p[i] - start_[i]) <= 1e3 * scale_[i])) near = false;
       }
-      if (small) return p[0];
+      if (small) return near && p[0] > 0.0 ? p[0] : std::numeric_limits<double>::quiet_NaN();
     }
     return std::numeric_limits<double>::quiet_NaN();  // no optimum near the analysis's: no draw
   }
@@ -154,6 +161,7 @@ class Refit {
   const ParsedScene& scene_;
   std::array<double, P> start_;
   std::array<bool, P> fitted_;
+  std::array<double, P> scale_;  ///< each parameter's uncertainty, the step's measure
   bool closed_form_;
   std::vector<double> weights_;
 };

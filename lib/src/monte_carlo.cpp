@@ -99,7 +99,7 @@ class Refit {
   static constexpr int P = Model::kParameters;
   using Jet = ceres::Jet<double, P>;
 
-  Refit(const ParsedScene& scene, const Analysis& analysis) : scene_(scene) {
+  Refit(const ParsedScene& scene, const Analysis& analysis) {
     for (int i = 0; i < P; ++i) {
       const ParameterResult& parameter = analysis.fit.parameters[i];
       start_[i] = parameter.value;
@@ -158,7 +158,6 @@ class Refit {
   }
 
  private:
-  const ParsedScene& scene_;
   std::array<double, P> start_;
   std::array<bool, P> fitted_;
   std::array<double, P> scale_;  ///< each parameter's uncertainty, the step's measure

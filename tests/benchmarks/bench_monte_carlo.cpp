@@ -10,22 +10,14 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "pendulum/analysis.hpp"
 #include "pendulum/monte_carlo.hpp"
 #include "pendulum/numeric.hpp"
 #include "pendulum/scene_json.hpp"
+#include "scene_files.hpp"
 
 namespace {
-
-std::string nelson_olsson() {
-  std::ifstream in(std::string(PENDULUM_DATA_DIR) + "/nelson_olsson_1986.json");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 /// Ten lengths from 0.3 to 1.2 m, each five trials of ten oscillations
 /// (t with 4 dof), the length +- 0.5 mm, the amplitude 5 +- 0.5 deg.
@@ -52,7 +44,7 @@ void run(benchmark::State& state, const std::string& text) {
   }
 }
 
-void BM_MonteCarloNelsonOlsson(benchmark::State& state) { run(state, nelson_olsson()); }
+void BM_MonteCarloNelsonOlsson(benchmark::State& state) { run(state, pendulum::test::nelson_olsson_text()); }
 BENCHMARK(BM_MonteCarloNelsonOlsson)->Arg(1000000)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 void BM_MonteCarloTenLengths(benchmark::State& state) { run(state, ten_lengths()); }

@@ -3,48 +3,40 @@
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
 
-#include <fstream>
-#include <sstream>
 
 #include "pendulum/analysis.hpp"
 #include "pendulum/output.hpp"
 #include "pendulum/scene_json.hpp"
+#include "scene_files.hpp"
 
 namespace {
 
-std::string nelson_olsson() {
-  std::ifstream in(std::string(PENDULUM_DATA_DIR) + "/nelson_olsson_1986.json");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 void BM_ParseJsonOnly(benchmark::State& state) {
-  const std::string text = nelson_olsson();
+  const std::string text = pendulum::test::nelson_olsson_text();
   for (auto _ : state) benchmark::DoNotOptimize(nlohmann::json::parse(text));
 }
 BENCHMARK(BM_ParseJsonOnly);
 
 void BM_ReduceDouble(benchmark::State& state) {
-  const pendulum::ParsedScene scene = pendulum::parse_scene(nelson_olsson());
+  const pendulum::ParsedScene scene = pendulum::parse_scene(pendulum::test::nelson_olsson_text());
   for (auto _ : state) benchmark::DoNotOptimize(pendulum::reduce(scene.apparatus, scene.observations.front()));
 }
 BENCHMARK(BM_ReduceDouble);
 
 void BM_ParseScene(benchmark::State& state) {
-  const std::string text = nelson_olsson();
+  const std::string text = pendulum::test::nelson_olsson_text();
   for (auto _ : state) benchmark::DoNotOptimize(pendulum::parse_scene(text));
 }
 BENCHMARK(BM_ParseScene);
 
 void BM_Analyse(benchmark::State& state) {
-  const pendulum::ParsedScene scene = pendulum::parse_scene(nelson_olsson());
+  const pendulum::ParsedScene scene = pendulum::parse_scene(pendulum::test::nelson_olsson_text());
   for (auto _ : state) benchmark::DoNotOptimize(pendulum::analyse(scene));
 }
 BENCHMARK(BM_Analyse);
 
 void BM_WriteJson(benchmark::State& state) {
-  const pendulum::ParsedScene scene = pendulum::parse_scene(nelson_olsson());
+  const pendulum::ParsedScene scene = pendulum::parse_scene(pendulum::test::nelson_olsson_text());
   const pendulum::AnalysisOptions options;
   const pendulum::Analysis analysis = pendulum::analyse(scene, options);
   for (auto _ : state) {
@@ -54,7 +46,7 @@ void BM_WriteJson(benchmark::State& state) {
 BENCHMARK(BM_WriteJson);
 
 void BM_WholeReduction(benchmark::State& state) {
-  const std::string text = nelson_olsson();
+  const std::string text = pendulum::test::nelson_olsson_text();
   const pendulum::AnalysisOptions options;
   for (auto _ : state) {
     const pendulum::ParsedScene scene = pendulum::parse_scene(text);

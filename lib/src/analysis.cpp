@@ -558,36 +558,26 @@ class Fit {
     }
   }
 
-  /// Parameter i's effective degrees of freedom (GUM G.4): each input's
-  /// variance with its own dof, a correlated pair's together with theirs
-  /// (one fit gave both), and the share a Birge ratio added with the fit's
-  /// (S^2 is chi2/dof).
+  /// Parameter i's effective degrees of freedom (GUM G.4), its variance's
+  /// components as variance_components() forms them.
   double effective_dof(int i) const {
-    std::vector<VarianceComponent> components;
-    const auto variance = [&](auto j) { return std::pow(sensitivities_[j](i) * inputs_[j].sigma, 2); };
-    VarianceComponent pooled{0.0, kInfiniteDof};
+    std::vector<InputShare> shares;
     for (std::size_t j = 0; j < inputs_.size(); ++j) {
-      const auto paired = [&](const Pair& pr) { return pr.a == static_cast<int>(j) || pr.b == static_cast<int>(j); };
-      if (std::any_of(pairs_.begin(), pairs_.end(), paired)) continue;
       const InputEvaluation& e = inputs_[j].evaluation;
-      if (e.pooled) {
-        pooled = {pooled.variance + variance(j), e.dof};
-      } else {
-        components.push_back({variance(j), e.dof});
-      }
+      shares.push_back({std::pow(sensitivities_[j](i) * inputs_[j].sigma, 2), e.dof, e.pooled});
     }
-    if (pooled.variance > 0.0) components.push_back(pooled);
+    std::vector<PairShare> pairs;
     for (const Pair& pr : pairs_) {
-      const double together = variance(pr.a) + variance(pr.b) +
-                              2.0 * sensitivities_[pr.a](i) * sensitivities_[pr.b](i) * pr.covariance;
-      components.push_back({std::max(together, 0.0), std::min(inputs_[pr.a].evaluation.dof, inputs_[pr.b].evaluation.dof)});
+      pairs.push_back({static_cast<std::size_t>(pr.a), static_cast<std::size_t>(pr.b),
+                       2.0 * sensitivities_[pr.a](i) * sensitivities_[pr.b](i) * pr.covariance});
     }
+    VarianceComponent birge{0.0, kInfiniteDof};
     const ParameterResult& p = out_.fit.parameters[i];
     if (out_.fit.scaled && p.uncertainty && p.uncertainty_unscaled) {
-      components.push_back({*p.uncertainty * *p.uncertainty - *p.uncertainty_unscaled * *p.uncertainty_unscaled,
-                            static_cast<double>(out_.fit.dof)});
+      birge = {*p.uncertainty * *p.uncertainty - *p.uncertainty_unscaled * *p.uncertainty_unscaled,
+               static_cast<double>(out_.fit.dof)};
     }
-    return welch_satterthwaite(components);
+    return welch_satterthwaite(variance_components(shares, pairs, birge));
   }
 
   void report_budget() {
@@ -669,6 +659,33 @@ std::string monte_carlo_finding(const MonteCarloResult& mc, const Analysis& a) {
          "] m/s^2 and the Monte Carlo's shortest one [" + fixed(mc.low) + ", " + fixed(mc.high) +
          "] differ by more than the numerical tolerance " + format_number(mc.tolerance, 2) +
          " m/s^2 (GUM Supplement 1, 8): " + why + "; quote the Monte Carlo interval";
+}
+
+/// Too few draws place the interval's ends no better than the tolerance:
+/// GUM's interval is neither validated nor refuted by them.
+std::string unjudged_finding(const MonteCarloResult& mc) {
+  return "uncertainty: " + std::to_string(mc.draws) + " Monte Carlo draws place the ends of their 95 % interval to +- " +
+         format_number(std::max(mc.low_uncertainty, mc.high_uncertainty), 2) +
+         " m/s^2, more than the numerical tolerance " + format_number(mc.tolerance, 2) +
+         " m/s^2: too few to judge GUM's interval (GUM Supplement 1, 7.9 and 8); about " +
+         std::to_string(mc.draws_to_judge) + " draws would judge it, or leave their number out for the adaptive run";
+}
+
+/// Draws dropped cut g's distribution where they fell: said past 1 in 1000.
+std::optional<std::string> rejection_finding(const MonteCarloResult& mc) {
+  const long attempts = mc.draws + mc.rejected_draws;
+  if (mc.rejected_draws * 1000 <= attempts) return std::nullopt;
+  static constexpr const char* kWhy[kRejectionKinds] = {
+      "outside the model's domain (an angle past 180 deg)", "whose refit found no optimum in 20 steps",
+      "whose refit ran over 1000 uncertainties from the fit's", "with g <= 0"};
+  std::string why;
+  for (int i = 0; i < kRejectionKinds; ++i) {
+    if (mc.rejected_by_reason[i] == 0) continue;
+    why += (why.empty() ? "" : ", ") + std::to_string(mc.rejected_by_reason[i]) + " " + kWhy[i];
+  }
+  return "uncertainty: " + std::to_string(mc.rejected_draws) + " of " + std::to_string(attempts) +
+         " Monte Carlo draws (" + format_number(100.0 * mc.rejected_draws / attempts, 2) + " %) gave no g and were "
+         "dropped (" + why + "): g's distribution is cut where they fell, and its interval is of the rest";
 }
 
 }  // namespace
@@ -768,8 +785,13 @@ Analysis analyse(const ParsedScene& given, const AnalysisOptions& options) {
       out.warnings.push_back("uncertainty: no Monte Carlo result: the draws start from GUM's budget, which this fit "
                              "does not give (singular), or fall outside the model's domain; the budget is GUM's "
                              "linear one");
-    } else if (!out.monte_carlo->validated) {
-      out.warnings.push_back(monte_carlo_finding(*out.monte_carlo, out));
+    } else {
+      if (auto w = rejection_finding(*out.monte_carlo)) out.warnings.push_back(std::move(*w));
+      if (!out.monte_carlo->judged) {
+        out.warnings.push_back(unjudged_finding(*out.monte_carlo));
+      } else if (!out.monte_carlo->validated) {
+        out.warnings.push_back(monte_carlo_finding(*out.monte_carlo, out));
+      }
     }
   }
   Verdict verdict = judge(scene, out);

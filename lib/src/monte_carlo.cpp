@@ -19,6 +19,16 @@
 
 namespace pendulum {
 
+const char* rejection_name(Rejection r) {
+  switch (r) {
+    case Rejection::outside_domain: return "outside_domain";
+    case Rejection::no_convergence: return "no_convergence";
+    case Rejection::run_away: return "run_away";
+    case Rejection::g_not_positive: return "g_not_positive";
+  }
+  return "";
+}
+
 std::pair<double, double> shortest_interval(const std::vector<double>& sorted, double probability) {
   const std::size_t m = sorted.size();
   const std::size_t q = std::min(m - 1, static_cast<std::size_t>(std::llround(probability * static_cast<double>(m))));
@@ -40,8 +50,6 @@ struct Drawn {
   InputEvaluation evaluation;
   /// (owner, ordinal): owner 0 the apparatus, k + 1 observation k.
   std::vector<std::pair<std::size_t, int>> slots;
-  /// One observation's own input: the share a Birge ratio scales.
-  bool observations_own = false;
   int partner = -1;  ///< a correlated input's index, drawn jointly
   double correlation = 0.0;
 };
@@ -89,6 +97,12 @@ class Deviates {
   bool has_spare_ = false;
 };
 
+/// One draw's g, or why it gives none.
+struct Outcome {
+  double g = 0.0;
+  std::optional<Rejection> rejected;
+};
+
 /// g of a scene whose inputs are shifted: the closed form for one
 /// observation with g its only unknown; a series refitted (Gauss-Newton from
 /// the analysis's optimum, with its effective-variance weights held, as the
@@ -110,10 +124,14 @@ class Refit {
     for (const ObservationResult& o : analysis.observations) weights_.push_back(1.0 / o.effective_uncertainty);
   }
 
-  double g(const Apparatus<double>& app, const std::vector<Observation<double>>& obs) const {
+  Outcome g(const Apparatus<double>& app, const std::vector<Observation<double>>& obs) const {
     ReductionOptions exact;
     exact.amplitude_method = AmplitudeMethod::agm;
-    if (closed_form_) return Model::solve_g(Model::kDefaults.data(), obs[0], app, choose_amplitude_method(exact, obs[0].amplitude));
+    if (closed_form_) {
+      const double g = Model::solve_g(Model::kDefaults.data(), obs[0], app, choose_amplitude_method(exact, obs[0].amplitude));
+      if (!std::isfinite(g)) return {g, Rejection::outside_domain};
+      return g > 0.0 ? Outcome{g, std::nullopt} : Outcome{g, Rejection::g_not_positive};
+    }
     const Apparatus<Jet> app_jet = convert_apparatus<Jet>(app, [](const Field&, double x) { return Jet(x); });
     std::vector<Observation<Jet>> obs_jet;
     std::vector<AmplitudeChoice> amplitude;
@@ -152,9 +170,10 @@ class Refit {
         // absorbs the lengths), not this fit's: P(|t_2| > 1000) ~ 1e-6.
         if (!(std::abs(p[i] - start_[i]) <= 1e3 * scale_[i])) near = false;
       }
-      if (small) return near && p[0] > 0.0 ? p[0] : std::numeric_limits<double>::quiet_NaN();
+      if (small && !near) return {p[0], Rejection::run_away};
+      if (small) return p[0] > 0.0 ? Outcome{p[0], std::nullopt} : Outcome{p[0], Rejection::g_not_positive};
     }
-    return std::numeric_limits<double>::quiet_NaN();  // no optimum near the analysis's: no draw
+    return {p[0], Rejection::no_convergence};
   }
 
  private:
@@ -165,12 +184,18 @@ class Refit {
   std::vector<double> weights_;
 };
 
+/// A run's values of g, and the draws that gave none by Rejection.
+struct Draws {
+  std::vector<double> g;
+  std::array<long, kRejectionKinds> rejected{};
+};
+
 class Sampler {
  public:
   Sampler(const ParsedScene& scene, const Analysis& analysis) : scene_(scene), analysis_(analysis) {
     int ordinal = 0;
     zip_apparatus(scene.apparatus, scene.apparatus_uncertainty, [&](const Field& f, const double&, const double& u) {
-      add(field_path(f), u, {0, ordinal++}, false);
+      add(field_path(f), u, {0, ordinal++});
     });
     shift_sizes_.push_back(ordinal);
     for (std::size_t k = 0; k < scene.observations.size(); ++k) {
@@ -178,7 +203,8 @@ class Sampler {
       ordinal = 0;
       zip_observation(scene.observations[k], scene.observation_uncertainties[k],
                       [&](const Field& f, const double&, const double& u) {
-                        add(source.path_of(f.path), u, {k + 1, ordinal++}, !source.is_shared(f.path));
+                        if (f.role == FieldRole::period) period_at_.push_back({ordinal, u > 0.0});
+                        add(source.path_of(f.path), u, {k + 1, ordinal++});
                       });
       shift_sizes_.push_back(ordinal);
     }
@@ -189,20 +215,26 @@ class Sampler {
       inputs_[b].partner = a;
       inputs_[b].correlation = c.covariance / (inputs_[a].sigma * inputs_[b].sigma);
     }
-    // A fit whose scatter scaled its uncertainty by S (dispersion.hpp): the
-    // observations' own inputs drawn S times wider, as a multivariate t
-    // with the fit's degrees of freedom (s^2 estimated from n - p residuals).
     for (const Drawn& in : inputs_) {
       if (in.evaluation.pooled) pooled_dof_ = in.evaluation.dof;
     }
+    // A fit whose scatter scaled its uncertainty by S (dispersion.hpp): the
+    // residuals scatter S^2 times the variance the inputs give them, as the
+    // fit weighs them. The excess, (S^2 - 1)/w_k^2, is no input's: it goes
+    // to each period (its scale there), as a multivariate t with the fit's
+    // n - p degrees of freedom (S^2 = chi2/(n - p) estimates it). Its
+    // linear share of g is (S^2 - 1)(J^T W J)^-1, what the scaling added.
     if (analysis.fit.scaled && analysis.fit.birge_ratio && analysis.fit.dof > 0) {
-      birge_ratio_ = *analysis.fit.birge_ratio;
-      scatter_dof_ = analysis.fit.dof;
+      const double s = *analysis.fit.birge_ratio;
+      for (const ObservationResult& o : analysis.observations) {
+        excess_.push_back(std::sqrt(s * s - 1.0) * o.effective_uncertainty);
+      }
+      excess_dof_ = analysis.fit.dof;
     }
   }
 
   /// `count` values of g, each input but those `held` drawn.
-  std::vector<double> draw(long count, Deviates& deviates, const std::vector<std::string>& held = {}) const {
+  Draws draw(long count, Deviates& deviates, const std::vector<std::string>& held = {}) const {
     std::vector<std::vector<double>> shift;
     for (int n : shift_sizes_) shift.emplace_back(n, 0.0);
     std::vector<double> z(inputs_.size());
@@ -211,13 +243,12 @@ class Sampler {
       is_held[i] = std::find(held.begin(), held.end(), inputs_[i].path) != held.end();
     }
     std::vector<Observation<double>> observations;  // each draw's, its storage kept
-    std::vector<double> out;
-    out.reserve(count);
+    Draws out;
+    out.g.reserve(count);
     visit_period_model(scene_.model, [&](auto model) {
       const Refit<decltype(model)> refit(scene_, analysis_);
       // Every draw outside the model's domain would loop for ever: a bound.
-      for (long attempt = 0; static_cast<long>(out.size()) < count && attempt < 10 * count; ++attempt) {
-        const double scatter = birge_ratio_ > 0.0 ? birge_ratio_ * deviates.t_scale(scatter_dof_) : 1.0;
+      for (long attempt = 0; static_cast<long>(out.g.size()) < count && attempt < 10 * count; ++attempt) {
         // Pooled periods share one estimated variance: a multivariate t.
         const double pooled = pooled_dof_ > 0.0 ? deviates.t_scale(pooled_dof_) : 1.0;
         for (std::size_t i = 0; i < inputs_.size(); ++i) {
@@ -231,23 +262,39 @@ class Sampler {
                    : in.evaluation.pooled ? deviates.normal() * pooled
                                           : deviates.draw(in.evaluation);
           }
-          const double value = is_held[i] ? 0.0 : in.sigma * z[i] * (in.observations_own ? scatter : 1.0);
+          const double value = is_held[i] ? 0.0 : in.sigma * z[i];
           for (const auto& [owner, at] : in.slots) shift[owner][at] = value;
         }
-        const double g = g_of(refit, shift, observations);
-        if (std::isfinite(g)) out.push_back(g);  // none outside the model's domain (a negative period)
+        add_excess_scatter(deviates, shift);
+        const Outcome g = g_of(refit, shift, observations);
+        if (g.rejected) {
+          ++out.rejected[static_cast<int>(*g.rejected)];
+        } else {
+          out.g.push_back(g.g);
+        }
       }
     });
     return out;
   }
 
  private:
-  void add(std::string path, double sigma, std::pair<std::size_t, int> slot, bool observations_own) {
+  void add(std::string path, double sigma, std::pair<std::size_t, int> slot) {
     if (!(sigma > 0.0)) return;
     const int known = find(path);
     if (known >= 0) return inputs_[known].slots.push_back(slot);
     InputEvaluation evaluation = evaluation_of(scene_.evaluations, path);
-    inputs_.push_back({std::move(path), sigma, std::move(evaluation), {slot}, observations_own});
+    inputs_.push_back({std::move(path), sigma, std::move(evaluation), {slot}});
+  }
+
+  /// The Birge ratio's excess added to each period's drawn shift: one
+  /// chi-square draw for all of them (one variance, estimated once).
+  void add_excess_scatter(Deviates& deviates, std::vector<std::vector<double>>& shift) const {
+    if (excess_.empty()) return;
+    const double scale = deviates.t_scale(excess_dof_);
+    for (std::size_t k = 0; k < excess_.size(); ++k) {
+      const auto [at, drawn] = period_at_[k];  // a period without an uncertainty is no input: its shift is this alone
+      shift[k + 1][at] = (drawn ? shift[k + 1][at] : 0.0) + excess_[k] * scale * deviates.normal();
+    }
   }
   int find(const std::string& path) const {
     for (std::size_t i = 0; i < inputs_.size(); ++i) {
@@ -260,7 +307,7 @@ class Sampler {
   /// the exact amplitude factor; a length to the bob's top or bottom moves
   /// with the bob's drawn size, as the budget's does (analysis.cpp).
   template <class Model>
-  double g_of(const Refit<Model>& refit, const std::vector<std::vector<double>>& shift,
+  Outcome g_of(const Refit<Model>& refit, const std::vector<std::vector<double>>& shift,
               std::vector<Observation<double>>& obs) const {
     int at = 0;
     const Apparatus<double> app =
@@ -281,7 +328,7 @@ class Sampler {
     try {
       return refit.g(app, obs);
     } catch (const std::domain_error&) {
-      return std::numeric_limits<double>::quiet_NaN();
+      return {std::numeric_limits<double>::quiet_NaN(), Rejection::outside_domain};
     }
   }
 
@@ -289,8 +336,11 @@ class Sampler {
   const Analysis& analysis_;
   std::vector<Drawn> inputs_;
   std::vector<int> shift_sizes_;  ///< the apparatus's scalars, then each observation's
-  double birge_ratio_ = 0.0;
-  double scatter_dof_ = 0.0;
+  /// Each observation's period: its place among its scalars, and whether it is drawn as an input.
+  std::vector<std::pair<int, bool>> period_at_;
+  /// Each period's excess scatter sqrt(S^2 - 1)/w_k (s), and its dof; none unscaled.
+  std::vector<double> excess_;
+  double excess_dof_ = 0.0;
   double pooled_dof_ = 0.0;  ///< of the pooled periods' one variance; 0 where none is pooled
 };
 
@@ -313,17 +363,26 @@ Summary summarise(std::vector<double> values) {
   return {mean, std::sqrt(ss / static_cast<double>(values.size() - 1)), low, high};
 }
 
+/// A run's draws and the summaries of its batches (in drawn order), whose
+/// spread measures the ends' sampling error.
+struct Run {
+  Draws draws;
+  std::vector<Summary> batches;
+};
+
 /// S1 7.9.4: batches of 10^4 until twice the standard deviation of each
 /// batch statistic's mean (g, u(g), both ends) is within the tolerance.
-std::vector<double> adaptive_draws(const Sampler& sampler, Deviates& deviates) {
+Run adaptive_draws(const Sampler& sampler, Deviates& deviates) {
   constexpr long kBatch = 10000;
-  std::vector<double> all;
-  std::vector<Summary> batches;
+  Run run;
+  std::vector<double>& all = run.draws.g;
+  std::vector<Summary>& batches = run.batches;
   while (static_cast<long>(all.size()) < kMostDraws) {
-    const std::vector<double> batch = sampler.draw(kBatch, deviates);
-    if (batch.size() < 2) break;
-    batches.push_back(summarise(batch));
-    all.insert(all.end(), batch.begin(), batch.end());
+    const Draws batch = sampler.draw(kBatch, deviates);
+    for (int i = 0; i < kRejectionKinds; ++i) run.draws.rejected[i] += batch.rejected[i];
+    if (batch.g.size() < 2) break;
+    batches.push_back(summarise(batch.g));
+    all.insert(all.end(), batch.g.begin(), batch.g.end());
     const double h = static_cast<double>(batches.size());
     if (batches.size() < 2) continue;
     const double delta = numerical_tolerance(summarise(all).deviation);
@@ -336,7 +395,40 @@ std::vector<double> adaptive_draws(const Sampler& sampler, Deviates& deviates) {
     }
     if (stable) break;
   }
-  return all;
+  return run;
+}
+
+/// A fixed number of draws, cut into ten batches for their ends' spread.
+Run fixed_draws(const Sampler& sampler, Deviates& deviates, long count) {
+  constexpr long kBatches = 10;
+  Run run{sampler.draw(count, deviates), {}};
+  const std::vector<double>& g = run.draws.g;
+  const std::size_t m = g.size() / kBatches;
+  for (std::size_t b = 0; m >= 2 && b < kBatches; ++b) {
+    run.batches.push_back(summarise(std::vector<double>(g.begin() + b * m, g.begin() + (b + 1) * m)));
+  }
+  return run;
+}
+
+/// The standard uncertainty of the ends of all the draws' shortest interval:
+/// each end's spread over the batches, s_b, carried from a batch's m draws
+/// to all M as (m/M)^(1/3). A shortest interval's end settles as M^(-1/3),
+/// not as a quantile's M^(-1/2): where g's density is smooth at the ends
+/// the interval's length is flat about its minimum, and its place wanders
+/// (the shorth's cube-root rate, Kim & Pollard 1990). An end at the edge of
+/// g's range settles faster, and is overstated. Infinite from fewer than
+/// two batches.
+std::pair<double, double> end_uncertainty(const std::vector<Summary>& batches) {
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  const double h = static_cast<double>(batches.size());
+  if (batches.size() < 2) return {kNone, kNone};
+  const auto spread = [&](double Summary::*end) {
+    double mean = 0.0, ss = 0.0;
+    for (const Summary& b : batches) mean += b.*end / h;
+    for (const Summary& b : batches) ss += (b.*end - mean) * (b.*end - mean);
+    return std::sqrt(ss / (h - 1.0)) * std::cbrt(1.0 / h);  // m/M = 1/h
+  };
+  return {spread(&Summary::low), spread(&Summary::high)};
 }
 
 /// GUM's y +- U against the draws' shortest interval (S1 8.2): d_low, d_high.
@@ -344,39 +436,68 @@ std::pair<double, double> disagreement(double y, double expanded, const Summary&
   return {std::abs(y - expanded - s.low), std::abs(y + expanded - s.high)};
 }
 
-/// GUM's expanded uncertainty of g without the budget rows `without`.
+}  // namespace
+
 double expanded_without(const Analysis& a, const std::vector<std::string>& without) {
-  std::vector<VarianceComponent> components;
+  const auto held = [&](const std::string& path) { return std::find(without.begin(), without.end(), path) != without.end(); };
+  std::vector<InputShare> shares;
+  std::vector<std::string> paths;
   for (const BudgetEntry& b : a.budget) {
-    if (std::find(without.begin(), without.end(), b.input) == without.end()) {
-      components.push_back({b.contribution * b.contribution, b.evaluation.dof});
+    if (held(b.input)) continue;
+    shares.push_back({b.contribution * b.contribution, b.evaluation.dof, b.evaluation.pooled});
+    paths.push_back(b.input);
+  }
+  std::vector<PairShare> pairs;
+  if (const std::optional<BudgetCorrelation>& c = a.budget_correlation) {
+    const auto first = std::find(paths.begin(), paths.end(), c->first), second = std::find(paths.begin(), paths.end(), c->second);
+    if (first != paths.end() && second != paths.end()) {
+      pairs.push_back({static_cast<std::size_t>(first - paths.begin()), static_cast<std::size_t>(second - paths.begin()),
+                       c->variance});
     }
   }
-  double variance = a.budget_correlation ? a.budget_correlation->variance : 0.0;
+  VarianceComponent birge{0.0, kInfiniteDof};
+  if (a.fit.scaled && a.g.uncertainty && a.g_uncertainty_unscaled) {
+    birge = {*a.g.uncertainty * *a.g.uncertainty - *a.g_uncertainty_unscaled * *a.g_uncertainty_unscaled,
+             static_cast<double>(a.fit.dof)};
+  }
+  const std::vector<VarianceComponent> components = variance_components(shares, pairs, birge);
+  double variance = 0.0;
   for (const VarianceComponent& c : components) variance += c.variance;
-  return coverage_factor(welch_satterthwaite(components)) * std::sqrt(std::max(variance, 0.0));
+  return coverage_factor(welch_satterthwaite(components)) * std::sqrt(variance);
 }
-
-}  // namespace
 
 std::optional<MonteCarloResult> monte_carlo(const ParsedScene& scene, const Analysis& analysis,
                                             const MonteCarloOptions& options) {
   if (!analysis.g_expanded || analysis.budget.empty()) return std::nullopt;
   const Sampler sampler(scene, analysis);
   Deviates deviates(options.seed);
-  const std::vector<double> draws = options.draws > 0 ? sampler.draw(options.draws, deviates) : adaptive_draws(sampler, deviates);
+  const Run run = options.draws > 0 ? fixed_draws(sampler, deviates, options.draws) : adaptive_draws(sampler, deviates);
+  const std::vector<double>& draws = run.draws.g;
   if (draws.size() < 2) return std::nullopt;
   const Summary s = summarise(draws);
   MonteCarloResult r;
   r.options = options;
   r.draws = static_cast<long>(draws.size());
+  r.rejected_by_reason = run.draws.rejected;
+  for (const long n : r.rejected_by_reason) r.rejected_draws += n;
   r.mean = s.mean;
   r.standard_uncertainty = s.deviation;
   r.low = s.low;
   r.high = s.high;
   r.tolerance = numerical_tolerance(s.deviation);
   std::tie(r.d_low, r.d_high) = disagreement(analysis.g.value, analysis.g_expanded->expanded, s);
-  r.validated = r.d_low <= r.tolerance && r.d_high <= r.tolerance;
+  std::tie(r.low_uncertainty, r.high_uncertainty) = end_uncertainty(run.batches);
+  // Judged where the ends are placed within the tolerance: as the ends'
+  // uncertainty goes as M^(-1/3), (u/delta)^3 times the draws would (up to
+  // two significant digits: the estimate is not better).
+  const double worst = std::max(r.low_uncertainty, r.high_uncertainty);
+  r.judged = worst <= r.tolerance;
+  if (!r.judged && std::isfinite(worst)) {
+    const double needed = static_cast<double>(r.draws) * std::pow(worst / r.tolerance, 3);
+    const double step = std::pow(10.0, std::floor(std::log10(needed)) - 1.0);
+    r.draws_to_judge = static_cast<long>(std::ceil(needed / step) * step);
+  }
+  r.validated = r.judged && r.d_low <= r.tolerance && r.d_high <= r.tolerance;
   // The input that bends g: among the three largest fields (one row, or
   // one field of every observation of a series), the first whose removal
   // (held at its values, and out of GUM's budget) restores agreement.
@@ -384,11 +505,11 @@ std::optional<MonteCarloResult> monte_carlo(const ParsedScene& scene, const Anal
   std::vector<double> contributions;
   for (const BudgetEntry& b : analysis.budget) paths.push_back(b.input), contributions.push_back(b.contribution);
   const std::vector<BudgetGroup> groups = group_budget(paths, contributions);
-  for (std::size_t i = 0; !r.validated && i < groups.size() && i < 3; ++i) {
+  for (std::size_t i = 0; r.judged && !r.validated && i < groups.size() && i < 3; ++i) {
     std::vector<std::string> held;
     for (const std::size_t row : groups[i].rows) held.push_back(paths[row]);
     Deviates again(options.seed);
-    const Summary without = summarise(sampler.draw(r.draws, again, held));
+    const Summary without = summarise(sampler.draw(r.draws, again, held).g);
     // Judged to the run's own tolerance: the smaller u of the rest would ask
     // for more draws than the run made.
     const auto [d_low, d_high] = disagreement(analysis.g.value, expanded_without(analysis, held), without);

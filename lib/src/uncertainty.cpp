@@ -1,5 +1,6 @@
 #include "pendulum/uncertainty.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <boost/math/distributions/normal.hpp>
@@ -32,6 +33,29 @@ double welch_satterthwaite(const std::vector<VarianceComponent>& components) {
   }
   if (!(total > 0.0) || !(denominator > 0.0)) return kInfiniteDof;
   return 1.0 / denominator;
+}
+
+std::vector<VarianceComponent> variance_components(const std::vector<InputShare>& inputs,
+                                                   const std::vector<PairShare>& pairs, VarianceComponent birge) {
+  std::vector<VarianceComponent> components;
+  VarianceComponent pooled{0.0, kInfiniteDof};
+  for (std::size_t j = 0; j < inputs.size(); ++j) {
+    const auto paired = [&](const PairShare& pr) { return pr.a == j || pr.b == j; };
+    if (std::any_of(pairs.begin(), pairs.end(), paired)) continue;
+    const InputShare& in = inputs[j];
+    if (in.pooled) {
+      pooled = {pooled.variance + in.variance, in.dof};
+    } else {
+      components.push_back({in.variance, in.dof});
+    }
+  }
+  if (pooled.variance > 0.0) components.push_back(pooled);
+  for (const PairShare& pr : pairs) {
+    components.push_back({std::max(inputs[pr.a].variance + inputs[pr.b].variance + pr.cross, 0.0),
+                          std::min(inputs[pr.a].dof, inputs[pr.b].dof)});
+  }
+  if (birge.variance > 0.0) components.push_back(birge);
+  return components;
 }
 
 double coverage_factor(double dof, double probability) {

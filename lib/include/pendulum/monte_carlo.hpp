@@ -5,6 +5,7 @@
 /// coverage interval, an adaptive number of draws, and the check of GUM's
 /// linear interval against it (S1 8). docs/uncertainty.md.
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -26,9 +27,24 @@ struct MonteCarloOptions {
 /// The adaptive run stops here whatever its tolerance (S1 7.9: a bound M).
 inline constexpr long kMostDraws = 1000000;
 
+/// Why a draw gives no g; each is counted, as dropping draws truncates g's
+/// distribution.
+enum class Rejection {
+  outside_domain,  ///< an input the model cannot take (an angle past 180 deg)
+  no_convergence,  ///< a series' refit found no optimum in 20 steps
+  run_away,        ///< ... or one over 1000 uncertainties from the fit's
+  g_not_positive,
+};
+inline constexpr int kRejectionKinds = 4;
+/// "outside_domain", as the JSON keys say it.
+const char* rejection_name(Rejection r);
+
 struct MonteCarloResult {
   MonteCarloOptions options;
   long draws = 0;
+  /// Draws that gave no g, not among `draws`, and why (by Rejection).
+  long rejected_draws = 0;
+  std::array<long, kRejectionKinds> rejected_by_reason{};
   double mean = 0.0;                  ///< (m/s^2)
   double standard_uncertainty = 0.0;  ///< the draws' standard deviation (m/s^2)
   double low = 0.0, high = 0.0;       ///< the shortest 95 % coverage interval (S1 7.7.2) (m/s^2)
@@ -36,8 +52,18 @@ struct MonteCarloResult {
   double tolerance = 0.0;
   /// S1 8.2: |y - U - low| and |y + U - high|, GUM's interval y +- U against the draws'.
   double d_low = 0.0, d_high = 0.0;
-  bool validated = false;  ///< both within the tolerance
-  /// Where not validated: the input held at its value that restores the
+  /// The standard uncertainty of `low` and `high` from the draws' own
+  /// sampling (m/s^2): the spread of their batches' ends, carried to all
+  /// the draws at the rate M^(-1/3) at which a shortest interval's ends
+  /// settle (docs/uncertainty.md).
+  double low_uncertainty = 0.0, high_uncertainty = 0.0;
+  /// Both within the tolerance: too few draws place the ends no better than
+  /// the tolerance, and their d_low and d_high say nothing of GUM's interval.
+  bool judged = false;
+  /// Where not judged: about how many draws would judge it.
+  long draws_to_judge = 0;
+  bool validated = false;  ///< judged, and d_low and d_high within the tolerance
+  /// Where judged and not validated: the input held at its value that restores the
   /// agreement (GUM's interval without it against the draws' without it);
   /// empty if none does. In a series, one field of every observation may be
   /// held together: "observations[].timing.period".
@@ -54,12 +80,21 @@ struct MonteCarloResult {
 /// their covariance; an input a series gives once, once for all its
 /// observations. Each draw goes through every correction (the exact
 /// amplitude factor) and, for a series, the fit: refitted with the
-/// analysis's weights, its observations' own inputs drawn S times wider as a
-/// multivariate t where a Birge ratio S scaled the fit's uncertainty.
+/// analysis's weights. Where a Birge ratio S scaled the fit's uncertainty,
+/// the inputs are drawn at their own uncertainties and each observation's
+/// period gets the scatter they do not explain, sqrt(S^2 - 1)/w_k (w_k its
+/// fit weight), jointly as a multivariate t with the fit's n - p dof.
 /// Seeded: the same seed gives the same draws. Empty where the analysis
 /// has no uncertainty of g (a singular fit).
 std::optional<MonteCarloResult> monte_carlo(const ParsedScene& scene, const Analysis& analysis,
                                             const MonteCarloOptions& options);
+
+/// GUM's expanded uncertainty of g (m/s^2) with the budget rows `without`
+/// held at their values: the rest's variance and Welch-Satterthwaite's
+/// nu_eff formed as analyse() forms them (variance_components), the share a
+/// Birge ratio added kept (the scatter it stands for is no input's). With
+/// none held, the analysis's own g_expanded.
+double expanded_without(const Analysis& a, const std::vector<std::string>& without);
 
 /// The shortest interval holding `probability` of the sorted `values` (S1 7.7.2).
 std::pair<double, double> shortest_interval(const std::vector<double>& sorted, double probability);

@@ -6,6 +6,7 @@
 /// uncertainty (Welch-Satterthwaite, GUM G.4) and the coverage factor from
 /// Student's t (GUM G.3). docs/uncertainty.md.
 
+#include <cstddef>
 #include <limits>
 #include <string>
 #include <vector>
@@ -46,6 +47,32 @@ struct VarianceComponent {
 /// nu_eff = u_c^4 / sum_i (c_i u_i)^4 / nu_i (GUM Eq. G.2b), u_c^2 the sum of
 /// the components; infinite when every component's dof is, or u_c is 0.
 double welch_satterthwaite(const std::vector<VarianceComponent>& components);
+
+/// One input's share of a result's variance: (c_i u_i)^2 and how u_i was evaluated.
+struct InputShare {
+  double variance;
+  double dof;
+  bool pooled;  ///< InputEvaluation::pooled
+};
+
+/// A correlated pair of `InputShare`s (a decay fit's alpha and beta): their
+/// indices and the cross term 2 c_a c_b u(a, b), which may be negative.
+struct PairShare {
+  std::size_t a, b;
+  double cross;
+};
+
+/// The independent components of a result's variance, as Welch-Satterthwaite
+/// takes them (GUM G.4): each input's share with its dof; the pooled
+/// inputs' shares as one, with their dof (one variance estimated once); a
+/// correlated pair's two shares and cross term as one, with the smaller dof
+/// (one fit gave both); and `birge`, the variance a Birge ratio added, as
+/// one with the fit's dof (S^2 is chi2/dof), where it is positive. Both the
+/// analysis's nu_eff and the Monte Carlo's GUM interval without an input
+/// are formed here, so that holding an input out changes nu_eff by that
+/// input alone.
+std::vector<VarianceComponent> variance_components(const std::vector<InputShare>& inputs,
+                                                   const std::vector<PairShare>& pairs, VarianceComponent birge);
 
 /// The coverage probability of the expanded uncertainty.
 inline constexpr double kCoverageProbability = 0.95;

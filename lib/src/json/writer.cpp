@@ -256,7 +256,13 @@ json g_json(const Analysis& a) {
                         {"d_low", mc->d_low},
                         {"d_high", mc->d_high},
                         {"validated", mc->validated},
-                        {"bending_input", mc->bending_input.empty() ? json(nullptr) : json(mc->bending_input)}};
+                        {"bending_input", mc->bending_input.empty() ? json(nullptr) : json(mc->bending_input)},
+                        {"judged", mc->judged},
+                        {"coverage_interval_uncertainty_m_s2", {mc->low_uncertainty, mc->high_uncertainty}},
+                        {"draws_to_judge", mc->judged ? json(nullptr) : json(mc->draws_to_judge)},
+                        {"rejected_draws", mc->rejected_draws}};
+    json& reasons = g["monte_carlo"]["rejected_draws_by_reason"] = json::object();
+    for (int i = 0; i < kRejectionKinds; ++i) reasons[rejection_name(static_cast<Rejection>(i))] = mc->rejected_by_reason[i];
   }
   return g;
 }
@@ -773,8 +779,10 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
     const int d = decimals_of(mc->standard_uncertainty);
     os << "g, Monte Carlo      = " << format_fixed(mc->mean, d) << " +- " << format_fixed(mc->standard_uncertainty, d)
        << " m/s^2, 95 % in [" << format_fixed(mc->low, d) << ", " << format_fixed(mc->high, d) << "] ("
-       << mc->draws << " draws; GUM's interval " << (mc->validated ? "validated" : "not validated") << " to "
-       << format_fixed(mc->tolerance, d + 1) << ")\n";
+       << mc->draws
+       << (!mc->judged ? " draws, too few to judge GUM's interval" : mc->validated ? " draws; GUM's interval validated"
+                                                                                  : " draws; GUM's interval not validated")
+       << " to " << format_fixed(mc->tolerance, d + 1) << ")\n";
   }
   if (a.expected_g) {
     std::snprintf(line, sizeof line, "expected g          = %.5f +- %.5f m/s^2 (%s)\n", a.expected_g->value,

@@ -102,7 +102,7 @@ TEST_CASE("Tables: a T-against-L table with repeats equals the same series as JS
     // trials' scatter pooled over the lengths (docs/uncertainty.md).
     const double one = pooled;
     INFO(k);
-    if (n > 1) CHECK(evaluation_of(imported.evaluations, imported.sources[k].path + "timing.period").pooled);
+    if (n > 1) CHECK(evaluation_of(imported.evaluations, imported.sources[k].path + "timing.period").shared == SharedVariance::pooled_trials);
     CHECK(imported.observations[k].period == Approx(mean / 10.0).epsilon(1e-13));
     CHECK(imported.observation_uncertainties[k].period == Approx(one / std::sqrt(n) / 10.0).epsilon(1e-12));
     CHECK(imported.observations[k].length == Approx(by_hand["observations"][k]["length"]["value"].get<double>() / 100.0));

@@ -330,14 +330,17 @@ TEST_CASE("Monte Carlo of a series scaled by its Birge ratio draws the excess sc
   // (t_4's tail beyond holds 4e-10) and bisection.
   NormalDeviates noise(41);
   nlohmann::json doc = series_scene(kSeriesLengths, series_trials(1, 0.05, noise));
+  // Each length stated to 1 nm: a scatter of the periods, not of lengths
+  // read without an uncertainty (those would fit tau, docs/series.md).
   for (auto& o : doc["observations"]) {
     o["timing"]["uncertainty"] = 0.01;
-    o["length"].erase("uncertainty");
+    o["length"]["uncertainty"] = 1e-9;
     o["amplitude"].erase("uncertainty");
   }
   const ParsedScene s = parse_scene(doc.dump());
   const Analysis a = analyse(s);
   REQUIRE(a.fit.scaled);
+  REQUIRE_FALSE(a.fit.length_scatter);
   const std::optional<MonteCarloResult> mc = monte_carlo(s, a, MonteCarloOptions{5, 40000});
   REQUIRE(mc);
   const double u = *a.g_uncertainty_unscaled, c = std::sqrt(std::pow(*a.fit.birge_ratio, 2) - 1.0) * u;
@@ -385,13 +388,14 @@ TEST_CASE("Monte Carlo of a Birge-scaled series puts the excess scatter on the p
           "[uncertainty][monte_carlo]") {
   NormalDeviates noise(42);
   SECTION("g linear in its inputs: the draws' u is the scaled budget's, the excess's share as t_5's variance") {
-    // Periods 1e-3 s against a 3e-3 s scatter, six lengths and g fitted
-    // alone: n - p = 5 and S ~ 2.5. The draws' variance is the budget's
+    // Periods stated to 1e-3 s (and lengths to 0.5 mm) against a 6e-3 s
+    // scatter, six lengths and g fitted alone: n - p = 5 and S = 2.3 with
+    // this seed (0.03 s gave S = 1.2, not scaled). The draws' variance is the budget's
     // rows (all normal) plus the excess (S^2 - 1) u_obs^2 (u_obs the share
     // the fit's weights give, uncertainty_from_observations) times t_5's
     // variance 5/3. Drawing every observation's own inputs S times wider
-    // made it S^2 u_obs^2 5/3 instead: for S = 2.5, 5 % more u.
-    const ParsedScene s = parse_scene(scattered_series(0.03, 5.0, 0.5, noise).dump());
+    // made it S^2 u_obs^2 5/3 instead.
+    const ParsedScene s = parse_scene(scattered_series(0.06, 5.0, 0.5, noise).dump());
     const Analysis a = analyse(s);
     REQUIRE(a.fit.scaled);
     REQUIRE(a.fit.dof == 5);
@@ -413,9 +417,9 @@ TEST_CASE("Monte Carlo of a Birge-scaled series puts the excess scatter on the p
     // to first order in the periods, and the mean E[f(theta)^2]/f(theta0)^2
     // - 1 ~ sigma^2/8 of g (1.5e-3 m/s^2 here), by Simpson's rule over
     // theta0 + sigma z, |z| < 10. Widened S
-    // times (S ~ 2.5) it was S^2 times that. The periods' own curvature (g
+    // times (S = 2.4) it was S^2 times that. The periods' own curvature (g
     // as 1/T^2) adds 3 u^2/(4 g), u the draws' deviation (~1e-5 m/s^2).
-    const ParsedScene s = parse_scene(scattered_series(0.03, 3.0, 2.0, noise).dump());
+    const ParsedScene s = parse_scene(scattered_series(0.06, 3.0, 2.0, noise).dump());
     const Analysis a = analyse(s);
     REQUIRE(a.fit.scaled);
     const double theta0 = 3.0 * kPi / 180.0, sigma = 2.0 * kPi / 180.0;
@@ -468,7 +472,7 @@ TEST_CASE("Series of five lengths: the expanded interval covers g 95 % of the ti
     nlohmann::json doc = series_scene(lengths, trials);
     for (auto& o : doc["observations"]) o["amplitude"]["value"] = 5.0 + 0.5 * noise.next();
     const ParsedScene s = parse_scene(doc.dump());
-    pooled += evaluation_of(s.evaluations, "observations[0].timing.period").pooled;
+    pooled += evaluation_of(s.evaluations, "observations[0].timing.period").shared == SharedVariance::pooled_trials;
     const Analysis a = analyse(s);
     covered += std::abs(a.g.value - kTrueG) <= a.g_expanded->expanded;
   }
@@ -578,7 +582,7 @@ TEST_CASE("GUM's interval without an input is the analysis's own with none held 
   };
   SECTION("pooled trials") {
     const ParsedScene s = parse_scene(series_scene(kSeriesLengths, series_trials(5, 0.1, noise)).dump());
-    REQUIRE(evaluation_of(s.evaluations, "observations[0].timing.period").pooled);
+    REQUIRE(evaluation_of(s.evaluations, "observations[0].timing.period").shared == SharedVariance::pooled_trials);
     same(s);
   }
   SECTION("a Birge-scaled fit") {
@@ -588,5 +592,12 @@ TEST_CASE("GUM's interval without an input is the analysis's own with none held 
   }
   SECTION("a decay fit's correlated alpha and beta") {
     same(parse_scene(test::read_text(std::string(PENDULUM_DATA_DIR) + "/nelson_olsson_1986_decay.json")));
+  }
+  SECTION("the lengths' fitted scatter, one estimate over every observation") {
+    nlohmann::json doc = scattered_series(0.03, 5.0, 0.5, noise);
+    for (auto& o : doc["observations"]) o["length"].erase("uncertainty");
+    const ParsedScene s = parse_scene(doc.dump());
+    REQUIRE(analyse(s).fit.length_scatter);
+    same(s);
   }
 }

@@ -204,6 +204,7 @@ class Sampler {
       zip_observation(scene.observations[k], scene.observation_uncertainties[k],
                       [&](const Field& f, const double&, const double& u) {
                         if (f.role == FieldRole::period) period_at_.push_back({ordinal, u > 0.0});
+                        if (f.role == FieldRole::length && analysis.fit.length_scatter) length_slots_.push_back({k + 1, ordinal});
                         add(source.path_of(f.path), u, {k + 1, ordinal++});
                       });
       shift_sizes_.push_back(ordinal);
@@ -216,7 +217,7 @@ class Sampler {
       inputs_[b].correlation = c.covariance / (inputs_[a].sigma * inputs_[b].sigma);
     }
     for (const Drawn& in : inputs_) {
-      if (in.evaluation.pooled) pooled_dof_ = in.evaluation.dof;
+      if (in.evaluation.shared == SharedVariance::pooled_trials) pooled_dof_ = in.evaluation.dof;
     }
     // A fit whose scatter scaled its uncertainty by S (dispersion.hpp): the
     // residuals scatter S^2 times the variance the inputs give them, as the
@@ -259,13 +260,14 @@ class Sampler {
                    std::sqrt(std::max(0.0, 1.0 - in.correlation * in.correlation)) * deviates.normal();
           } else {
             z[i] = in.partner >= 0 ? deviates.normal()
-                   : in.evaluation.pooled ? deviates.normal() * pooled
+                   : in.evaluation.shared == SharedVariance::pooled_trials ? deviates.normal() * pooled
                                           : deviates.draw(in.evaluation);
           }
           const double value = is_held[i] ? 0.0 : in.sigma * z[i];
           for (const auto& [owner, at] : in.slots) shift[owner][at] = value;
         }
         add_excess_scatter(deviates, shift);
+        draw_length_scatter(shift, deviates);
         const Outcome g = g_of(refit, shift, observations);
         if (g.rejected) {
           ++out.rejected[static_cast<int>(*g.rejected)];
@@ -278,6 +280,16 @@ class Sampler {
   }
 
  private:
+  /// The lengths' fitted scatter (analysis.cpp, Paule & Mandel) where it
+  /// was fitted instead of a Birge ratio: each length, stated without
+  /// uncertainty, moved by tau times one normal deviate, tau itself t-scaled
+  /// with the fit's dof.
+  void draw_length_scatter(std::vector<std::vector<double>>& shift, Deviates& deviates) const {
+    if (length_slots_.empty()) return;
+    const double tau = *analysis_.fit.length_scatter * deviates.t_scale(analysis_.fit.dof);
+    for (const auto& [owner, at] : length_slots_) shift[owner][at] = tau * deviates.normal();
+  }
+
   void add(std::string path, double sigma, std::pair<std::size_t, int> slot) {
     if (!(sigma > 0.0)) return;
     const int known = find(path);
@@ -342,6 +354,7 @@ class Sampler {
   std::vector<double> excess_;
   double excess_dof_ = 0.0;
   double pooled_dof_ = 0.0;  ///< of the pooled periods' one variance; 0 where none is pooled
+  std::vector<std::pair<std::size_t, int>> length_slots_;  ///< where the lengths' scatter was fitted
 };
 
 /// delta of S1 7.9.2: u = c 10^l with c of two digits, delta = 10^l / 2.
@@ -444,7 +457,7 @@ double expanded_without(const Analysis& a, const std::vector<std::string>& witho
   std::vector<std::string> paths;
   for (const BudgetEntry& b : a.budget) {
     if (held(b.input)) continue;
-    shares.push_back({b.contribution * b.contribution, b.evaluation.dof, b.evaluation.pooled});
+    shares.push_back({b.contribution * b.contribution, b.evaluation.dof, b.evaluation.shared});
     paths.push_back(b.input);
   }
   std::vector<PairShare> pairs;

@@ -38,18 +38,21 @@ double welch_satterthwaite(const std::vector<VarianceComponent>& components) {
 std::vector<VarianceComponent> variance_components(const std::vector<InputShare>& inputs,
                                                    const std::vector<PairShare>& pairs, VarianceComponent birge) {
   std::vector<VarianceComponent> components;
-  VarianceComponent pooled{0.0, kInfiniteDof};
+  VarianceComponent pooled{0.0, kInfiniteDof}, lengths{0.0, kInfiniteDof};
   for (std::size_t j = 0; j < inputs.size(); ++j) {
     const auto paired = [&](const PairShare& pr) { return pr.a == j || pr.b == j; };
     if (std::any_of(pairs.begin(), pairs.end(), paired)) continue;
     const InputShare& in = inputs[j];
-    if (in.pooled) {
-      pooled = {pooled.variance + in.variance, in.dof};
-    } else {
+    VarianceComponent& sum = in.shared == SharedVariance::pooled_trials ? pooled : lengths;
+    if (in.shared == SharedVariance::none) {
       components.push_back({in.variance, in.dof});
+    } else {
+      sum = {sum.variance + in.variance, in.dof};
     }
   }
-  if (pooled.variance > 0.0) components.push_back(pooled);
+  for (const VarianceComponent& shared : {pooled, lengths}) {
+    if (shared.variance > 0.0) components.push_back(shared);
+  }
   for (const PairShare& pr : pairs) {
     components.push_back({std::max(inputs[pr.a].variance + inputs[pr.b].variance + pr.cross, 0.0),
                           std::min(inputs[pr.a].dof, inputs[pr.b].dof)});

@@ -23,16 +23,23 @@ const char* distribution_name(Distribution d);
 
 inline constexpr double kInfiniteDof = std::numeric_limits<double>::infinity();
 
+/// An input's variance is its own, or one several inputs share.
+enum class SharedVariance {
+  none,
+  pooled_trials,   ///< a series' trial scatter pooled over its observations
+  length_scatter,  ///< a series' lengths' scatter tau, fitted from its residuals
+};
+
 /// How one input's standard uncertainty was evaluated (GUM 4.2, 4.3).
 struct InputEvaluation {
   std::string path;  ///< the input's JSON path, as the budget names it
   char type = 'B';   ///< 'A': from the scatter of repeated readings; 'B': otherwise
   Distribution distribution = Distribution::normal;
   double dof = kInfiniteDof;  ///< A: n - 1; B: infinite (GUM G.4.2: the bounds are taken as certain)
-  /// One variance estimated from several inputs' readings together (a
-  /// series' pooled trial scatter): their variances are one component of
-  /// Welch-Satterthwaite's sum, with `dof` theirs together.
-  bool pooled = false;
+  /// Where its variance is one estimated from several inputs together:
+  /// theirs are one component of Welch-Satterthwaite's sum, with `dof`
+  /// theirs together.
+  SharedVariance shared = SharedVariance::none;
 };
 
 /// The evaluation `path` was given, or Type B, normal, infinite dof.
@@ -52,7 +59,7 @@ double welch_satterthwaite(const std::vector<VarianceComponent>& components);
 struct InputShare {
   double variance;
   double dof;
-  bool pooled;  ///< InputEvaluation::pooled
+  SharedVariance shared;  ///< InputEvaluation::shared
 };
 
 /// A correlated pair of `InputShare`s (a decay fit's alpha and beta): their
@@ -63,8 +70,8 @@ struct PairShare {
 };
 
 /// The independent components of a result's variance, as Welch-Satterthwaite
-/// takes them (GUM G.4): each input's share with its dof; the pooled
-/// inputs' shares as one, with their dof (one variance estimated once); a
+/// takes them (GUM G.4): each input's share with its dof; the shares of
+/// one shared Estimate as one, with their dof (one variance estimated once); a
 /// correlated pair's two shares and cross term as one, with the smaller dof
 /// (one fit gave both); and `birge`, the variance a Birge ratio added, as
 /// one with the fit's dof (S^2 is chi2/dof), where it is positive. Both the

@@ -302,7 +302,7 @@ void pool_trial_scatter(ParsedScene& out) {
     // A floor that wins is Type B, as for one observation (parts.cpp).
     const std::string path = source.path + "timing.period";
     const InputEvaluation evaluation =
-        sigma_trial == pooled ? InputEvaluation{path, 'A', Distribution::student_t, nu, true}
+        sigma_trial == pooled ? InputEvaluation{path, 'A', Distribution::student_t, nu, SharedVariance::pooled_trials}
         : source.trial_scatter->floor_is_resolution ? InputEvaluation{path, 'B', Distribution::rectangular}
                                                    : InputEvaluation{path};
     for (InputEvaluation& e : out.evaluations) {

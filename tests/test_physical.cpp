@@ -1,7 +1,6 @@
 // The physical pendulum's period model (models/physical_pendulum.hpp) through
 // the core's fit: pivot scans and Kater's reversible pendulum, on synthetic
 // scenes drawn from the model (pivot_scan_simulation.hpp).
-#include <catch2/catch.hpp>
 
 #include <cmath>
 #include <string>
@@ -13,6 +12,9 @@
 #include "reference.hpp"
 #include "scene_files.hpp"
 #include "simulated_scans.hpp"
+// Last: glog (through Ceres, period_fit.hpp) defines CHECK as an abort, and
+// Catch's CHECK, defined after it, must be the one the tests use.
+#include <catch2/catch.hpp>
 
 using namespace pendulum;
 using Catch::Matchers::Contains;

@@ -1,7 +1,6 @@
 // Series of observations of one apparatus (issue 9): the Ceres fit of the
 // period model, its propagation of every input, and its warnings, on
 // synthetic series drawn from the model (tests/simulations/series_simulation.hpp).
-#include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -17,6 +16,9 @@
 #include "reference.hpp"
 #include "scene_files.hpp"
 #include "simulated_scans.hpp"
+// Last: glog (through Ceres, period_fit.hpp) defines CHECK as an abort, and
+// Catch's CHECK, defined after it, must be the one the tests use.
+#include <catch2/catch.hpp>
 
 using namespace pendulum;
 using Catch::Matchers::WithinAbs;

@@ -16,16 +16,40 @@
 
 namespace pendulum::cli {
 
-std::string read_input(const std::string& file) { return read_text(file, kMaxSceneBytes, "a scene file"); }
-
-SceneFiles scene_files(const std::string& file, bool allow_outside) {
-  return {scene_directory(file), allow_outside};
+std::string read_input(const std::string& file, const SceneFiles& given) {
+  return read_text(file, given.limits.applied_to(kSceneInput), "a scene file");
 }
 
-void add_allow_outside_option(CLI::App& cmd, bool& allow_outside) {
-  cmd.add_flag("--allow-outside", allow_outside,
+SceneFiles scene_files(const std::string& file, const SceneFiles& given) {
+  SceneFiles files = given;
+  files.directory = scene_directory(file);
+  return files;
+}
+
+void add_scene_file_options(CLI::App& cmd, SceneFiles& given) {
+  cmd.add_flag("--allow-outside", given.allow_outside,
                "Read recordings the scene names outside its own folder (an absolute name, .., a link leading "
                "out); by default they are refused, so that a scene reads nothing else (docs/robustness.md)");
+  add_limit_options(cmd, given.limits);
+}
+
+void add_limit_options(CLI::App& cmd, GivenLimits& given) {
+  const auto set = [](std::optional<std::size_t>& limit) { return [&limit](std::size_t n) { limit = n; }; };
+  cmd.add_option_function<std::size_t>("--max-bytes", set(given.bytes),
+                                       "The most bytes read of any input (default: a scene, a list or standard "
+                                       "input 1 MiB; a table 256 MiB; a recording 1 GiB)")
+      ->check(whole_number())
+      ->check(CLI::PositiveNumber);
+  cmd.add_option_function<std::size_t>("--max-rows", set(given.rows),
+                                       "The most rows read of a table or recording (default: a table 10000; a "
+                                       "recording 16777216)")
+      ->check(whole_number())
+      ->check(CLI::PositiveNumber);
+  cmd.add_option_function<std::size_t>("--max-columns", set(given.columns),
+                                       "The most columns read of a table or recording (default: a table 256; a "
+                                       "recording 1024)")
+      ->check(whole_number())
+      ->check(CLI::PositiveNumber);
 }
 
 void guard_standard_streams() {

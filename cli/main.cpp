@@ -4,6 +4,7 @@
 // output that could not be written. Nothing reaches stdout unless a whole
 // result does.
 
+#include <cmath>
 #include <cstring>
 #include <iostream>
 #include <vector>
@@ -43,6 +44,16 @@ std::string not_decimal(const std::string& text, const ArgumentRange& range) {
 
 CLI::Validator decimal(const ArgumentRange& range) {
   return CLI::Validator([range](std::string& text) { return not_decimal(text, range); }, "");
+}
+
+CLI::Validator whole_number() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const std::optional<double> n = decimal_number(text);
+        if (n && *n == std::floor(*n) && text.find_first_of("eE.") == std::string::npos) return "";
+        return "got \"" + one_line(text, kShownValueBytes, true) + "\"; expected a whole number in decimal digits";
+      },
+      "");
 }
 
 CLI::Validator in_range(const ArgumentRange& range) {
@@ -85,9 +96,11 @@ void add_analysis_options(CLI::App& cmd, AnalysisOptions& options) {
       ->type_name("gum|monte-carlo");
   cmd.add_option_function<long>("--draws", [monte_carlo](long n) { monte_carlo().draws = n; },
                                 "Monte Carlo draws (default: adaptive, GUM S1 7.9, at most 10^6)")
+      ->check(whole_number())
       ->check(CLI::Range(100L, kMostDraws));
   cmd.add_option_function<std::uint64_t>("--seed", [monte_carlo](std::uint64_t s) { monte_carlo().seed = s; },
-                                         "Monte Carlo seed (default 1): the same seed, the same draws");
+                                         "Monte Carlo seed (default 1): the same seed, the same draws")
+      ->check(whole_number());
 }
 
 }  // namespace pendulum::cli

@@ -144,12 +144,12 @@ fifo_by_name)
   expect 1 "/dev/zero: not a regular file (a device)" timeout 10 "$G" reduce /dev/zero
   ;;
 read_limits)
-  # 1 GiB on standard input: refused once 1 MiB (kMaxSceneBytes) + 1 byte is
+  # 1 GiB on standard input: refused once 1 MiB (kSceneInput) + 1 byte is
   # read, within bounded memory (the address space capped at 1 GiB, less
   # than the input) and quickly. AddressSanitizer reserves terabytes of
   # address space for its shadow at start, so there the cap is left out and
   # only the message, the status and the time are checked.
-  limit="got more than 1048576 bytes; expected at most 1 MiB"
+  limit="got more than 1048576 bytes; expected at most 1048576 in a scene file, a list or standard input (--max-bytes raises the limit)"
   cap="ulimit -v 1048576;"
   [ "$SANITIZED" = sanitized ] && cap=""
   start=$(date +%s)
@@ -161,6 +161,24 @@ read_limits)
   expect 1 "big.txt: $limit" "$G" reduce big.txt
   expect 1 "stdin: cannot read standard input: Bad file descriptor" sh -c "'$G' batch - <&-"
   expect 1 "stdin: cannot read standard input: Bad file descriptor" sh -c "'$G' reduce - <&-"
+  # A table's rows and a line's cells are counted as they are read: past
+  # the limit, refused at its line within the same capped address space
+  # (before, 10^5 lengths took 5.4 GB and '1,' 5*10^6 times 2.2 GB).
+  { echo "L (m),T (s)"; i=0; while [ $i -le 10000 ]; do echo "0.$((100000 + i)),1.5"; i=$((i + 1)); done; } > rows.csv
+  rows="rows.csv:10002:1: got more than 10000 rows; expected at most 10000 in a table (--max-rows raises the limit)"
+  expect 1 "$rows" sh -c "$cap exec '$G' import --table rows.csv"
+  printf '{"amplitude": "not recorded", "observations": {"table": "rows.csv"}}' > rows.json
+  expect 1 "observations.table: $rows" sh -c "$cap exec '$G' reduce rows.json"
+  expect 1 "rows.csv:10002:1: got more than 10001 rows" "$G" import --table rows.csv --max-rows 10001
+  head -c 10000000 /dev/zero | tr '\0' 1 | sed 's/1/1,/g' > cells.csv
+  expect 1 "cells.csv:1:1: got more than 256 columns; expected at most 256 in a table (--max-columns raises the limit)" \
+    sh -c "$cap exec '$G' import --table cells.csv"
+  expect 1 "cells.csv:1:1: got more than 1024 columns; expected at most 1024 in a recording (--max-columns raises" \
+    sh -c "$cap exec '$G' import cells.csv"
+  expect 1 "rec.tsv: got more than 1000 bytes; expected at most 1000 in a recording (--max-bytes raises the limit)" \
+    "$G" import rec.tsv --max-bytes 1000
+  expect 1 "rec.tsv:101:1: got more than 99 rows; expected at most 99 in a recording" "$G" import rec.tsv --max-rows 99
+  expect 2 "expected a whole number in decimal digits" "$G" import rec.tsv --max-rows 0x10
   ;;
 recording_outside)
   mkdir class

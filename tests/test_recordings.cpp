@@ -247,7 +247,7 @@ TEST_CASE("Readers name the file, line and column of a bad row", "[recordings]")
                     Contains("f:5:3") && Contains("a NUL byte"));
   CHECK_THROWS_WITH(parse_recording("a,b\n1,2\n", "f"), Contains("unrecognised header"));
   RecordingLimits small;
-  small.max_bytes = 10;
+  small.input.bytes = 10;
   CHECK_THROWS_WITH(read_recording(kDir + "pasco_rotary.csv", RecordingFormat::automatic, small),
                     Contains("expected at most 10"));
 }
@@ -706,12 +706,12 @@ TEST_CASE("A zip export is unpacked within the limit, its sets all together", "[
   CHECK(zip.channels == csv.channels);
   // A limit below the sets' stated total refuses the archive before it is unpacked.
   pendulum::RecordingLimits limits;
-  limits.max_bytes = 150000;
+  limits.input.bytes = 150000;
   try {
     pendulum::read_recording(folder + "phyphox_export.zip", pendulum::RecordingFormat::automatic, limits);
     FAIL("unpacked over the limit");
   } catch (const pendulum::InputError& e) {
-    CHECK_THAT(e.what(), Contains("unpack to over 150000 bytes"));
+    CHECK_THAT(e.what(), Contains("got more than 150000 bytes"));
   }
   // One set under the limit alone still reads, named in any case.
   const auto one = pendulum::read_recording(folder + "phyphox_export.zip", pendulum::RecordingFormat::automatic,

@@ -34,20 +34,19 @@ void add_scene_file_options(CLI::App& cmd, SceneFiles& given) {
 }
 
 void add_limit_options(CLI::App& cmd, GivenLimits& given) {
-  const auto set = [](std::optional<std::size_t>& limit) { return [&limit](std::size_t n) { limit = n; }; };
-  cmd.add_option_function<std::size_t>("--max-bytes", set(given.bytes),
-                                       "The most bytes read of any input (default: a scene, a list or standard "
-                                       "input 1 MiB; a table 256 MiB; a recording 1 GiB)")
+  cmd.add_option("--max-bytes", given.bytes,
+                 "Raise the most bytes read of every input to this (defaults: a scene, a list or standard input "
+                 "1 MiB; a table 256 MiB; a recording 1 GiB; a lower value lowers none)")
       ->check(whole_number())
       ->check(CLI::PositiveNumber);
-  cmd.add_option_function<std::size_t>("--max-rows", set(given.rows),
-                                       "The most rows read of a table or recording (default: a table 10000; a "
-                                       "recording 16777216)")
+  cmd.add_option("--max-rows", given.rows,
+                 "Raise the most rows read of every table and recording to this (defaults: a table 10000; a "
+                 "recording 16777216)")
       ->check(whole_number())
       ->check(CLI::PositiveNumber);
-  cmd.add_option_function<std::size_t>("--max-columns", set(given.columns),
-                                       "The most columns read of a table or recording (default: a table 256; a "
-                                       "recording 1024)")
+  cmd.add_option("--max-columns", given.columns,
+                 "Raise the most columns read of every table and recording to this (defaults: a table 256; a "
+                 "recording 1024)")
       ->check(whole_number())
       ->check(CLI::PositiveNumber);
 }

@@ -4,7 +4,6 @@
 // output that could not be written. Nothing reaches stdout unless a whole
 // result does.
 
-#include <cmath>
 #include <cstring>
 #include <iostream>
 #include <vector>
@@ -50,7 +49,8 @@ CLI::Validator whole_number() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
         const std::optional<double> n = decimal_number(text);
-        if (n && *n == std::floor(*n) && text.find_first_of("eE.") == std::string::npos) return "";
+        // Digits only: decimal_number also takes 1e3, 2.0 and inf.
+        if (n && text.find_first_not_of("+0123456789") == std::string::npos) return "";
         return "got \"" + one_line(text, kShownValueBytes, true) + "\"; expected a whole number in decimal digits";
       },
       "");

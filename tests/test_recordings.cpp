@@ -252,6 +252,23 @@ TEST_CASE("Readers name the file, line and column of a bad row", "[recordings]")
                     Contains("expected at most 10"));
 }
 
+TEST_CASE("A recording's rows and columns are refused at the first one past the limit", "[recordings]") {
+  const std::string h = "\"Time (s)\",\"Gyroscope x (rad/s)\"\n";
+  std::string rows = h;
+  for (int i = 0; i < 6; ++i) rows += std::to_string(i) + ",0." + std::to_string(i) + "\n";
+  const InputLimits five{1 << 20, 5, 4, "a recording"};
+  // Rows 1 to 5 are lines 2 to 6: line 7 is the sixth.
+  CHECK_THROWS_WITH(parse_recording(rows, "f", RecordingFormat::automatic, {}, {}, five),
+                    "f:7:1: got more than 5 rows; expected at most 5 in a recording (--max-rows raises the limit)");
+  // A headerless line of 10^6 cells: refused at the fifth, without splitting the rest.
+  std::string cells;
+  for (int i = 0; i < 1000000; ++i) cells += "1,";
+  CHECK_THROWS_WITH(parse_recording(cells + "\n", "f", RecordingFormat::automatic, {}, {}, five),
+                    "f:1:1: got more than 4 columns; expected at most 4 in a recording (--max-columns raises the limit)");
+  CHECK_THROWS_WITH(parse_recording("\"Time (s)\",a,b,c,d\n1,2,3,4,5\n", "f", RecordingFormat::automatic, {}, {}, five),
+                    Contains("f:1:1: got more than 4 columns"));
+}
+
 TEST_CASE("The period's uncertainty is honest and near the crossing method's Cramer-Rao bound",
           "[recordings][coverage]") {
   // 400 gyroscope recordings, seeds 1..400: 40 s at 100 Hz, l = 0.80 m,

@@ -87,16 +87,13 @@ enum class Limit { bytes, rows, columns };
 /// rows; expected at most 10000 in a table (--max-rows raises the limit)".
 std::string over_limit(const InputLimits& limits, Limit which);
 
-/// The limits --max-bytes, --max-rows and --max-columns give a command for
-/// every input it reads; each one not given is the input's own default.
+/// --max-bytes, --max-rows and --max-columns as a command was given them (0:
+/// not given). Each raises the limit of every input the command reads to
+/// it, and lowers none: a scene's 1 MiB raised to 4 MiB leaves its
+/// recordings their 1 GiB (docs/robustness.md, "Limits").
 struct GivenLimits {
-  std::optional<std::size_t> bytes, rows, columns;
-  InputLimits applied_to(InputLimits defaults) const {
-    defaults.bytes = bytes.value_or(defaults.bytes);
-    defaults.rows = rows.value_or(defaults.rows);
-    defaults.columns = columns.value_or(defaults.columns);
-    return defaults;
-  }
+  std::size_t bytes = 0, rows = 0, columns = 0;
+  InputLimits applied_to(InputLimits defaults) const;
 };
 
 /// The text of the file `path`, or of standard input for "-", at most

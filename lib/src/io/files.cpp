@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -109,6 +110,13 @@ std::string over_limit(const InputLimits& limits, Limit which) {
   const char* unit = kUnits[static_cast<int>(which)];
   return "got more than " + std::to_string(limit) + " " + unit + "; expected at most " + std::to_string(limit) + " in " +
          limits.of + " (--max-" + unit + " raises the limit)";
+}
+
+InputLimits GivenLimits::applied_to(InputLimits defaults) const {
+  defaults.bytes = std::max(defaults.bytes, bytes);
+  defaults.rows = std::max(defaults.rows, rows);
+  defaults.columns = std::max(defaults.columns, columns);
+  return defaults;
 }
 
 std::string read_text(const std::string& path, const InputLimits& limits, const std::string& expected,

@@ -15,6 +15,7 @@
 #include <optional>
 
 #include "pendulum/amplitude.hpp"
+#include "pendulum/argument_ranges.hpp"
 #include "pendulum/files.hpp"
 #include "pendulum/straight_line.hpp"
 #include "zip.hpp"
@@ -213,6 +214,21 @@ double rms(const std::vector<double>& v) {
   (void)std::frexp(largest, &exponent);
   for (double x : v) sum += std::pow(std::ldexp(x, -exponent), 2) / static_cast<double>(v.size());
   return std::ldexp(std::sqrt(sum), exponent);
+}
+
+/// The column (from 1) where cell `j` of the line `line_no` of `text`
+/// starts: a message points at the cell. Found only for a message, so the
+/// lines are counted then.
+std::size_t cell_column(std::string_view text, std::size_t line_no, const Dialect& dialect, std::size_t j) {
+  std::size_t start = 0;
+  for (std::size_t n = 1; n < line_no && start != std::string_view::npos; ++n) {
+    start = text.find('\n', start);
+    if (start != std::string_view::npos) ++start;
+  }
+  if (start == std::string_view::npos) return 1;
+  const std::string_view line = text.substr(start, text.find('\n', start) - start);
+  const std::vector<std::string_view> cells = split_cells(line, dialect, j);
+  return j < cells.size() ? static_cast<std::size_t>(cells[j].data() - line.data()) + 1 : 1;
 }
 
 /// True if `u` reads as the uncertainty of `v`: never negative, not all zero
@@ -919,6 +935,9 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     table = trial_rows(*source, *time_col, trials, origin);
   }
   auto line_of = [&](std::size_t row) { return source ? source->line(origin[row]) : table.line(row); };
+  auto refuse_cell = [&](std::size_t row, std::size_t col, const std::string& why) {
+    fail(file, line_of(row), cell_column(text, line_of(row), dialect, col), "\"" + names[col] + "\": " + why);
+  };
 
   // The time unit: the header's, else the numbers' (periods of 0.1 to 30 s).
   if (tu.unit.empty()) {
@@ -1065,9 +1084,10 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     if (!f) refuse("got the unit \"" + one_line(au.unit, 20, true) + "\" for \"" + names[*amplitude_col] + "\"; expected deg or rad");
     amplitude_factor = *f;
     const std::vector<double> a = sizes(table.columns[*amplitude_col]);
-    const double largest = *std::max_element(a.begin(), a.end());
-    if (!(largest * amplitude_factor < kPi)) {
-      refuse("the column \"" + names[*amplitude_col] + "\" (amplitude) reaches " + format_number(largest, 4) + " " +
+    const std::size_t top = static_cast<std::size_t>(std::max_element(a.begin(), a.end()) - a.begin());
+    const double largest = a[top];
+    if (!accepts(ranges::amplitude, largest * amplitude_factor)) {
+      refuse_cell(top, *amplitude_col, "got " + format_number(largest, 4) + " " +
              au.unit + ", 180 deg or more (over the top)" +
              (au.unit == "rad" && largest < 180.0 ? ": it holds degrees? Say so in the header (\"theta (deg)\") or "
                                                    "declared: --columns (a scene's \"columns\")"
@@ -1083,6 +1103,26 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   }
   const double amplitude_u_factor =
       amplitude_u ? *factor_of(kAngleUnits, use[*amplitude_u].unit) / amplitude_factor : 1.0;
+
+  // What the scene reader refuses in an observation (argument_ranges.hpp),
+  // refused here at its cell: import's scene would fail at a path the user
+  // never wrote.
+  for (std::size_t i = 0; i < table.rows; ++i) {
+    if (!out.sweep && out.setting == Setting::length) {
+      const std::string why = out_of_range(ranges::length, meters[i]);
+      if (!why.empty()) refuse_cell(i, *setting_col, why);
+      // As uncertain as itself, a length might be 0.
+      if (setting_u && table.columns[*setting_u][i] * setting_u_factor >= settings[i]) {
+        refuse_cell(i, *setting_u, "got " + format_number(table.columns[*setting_u][i]) + " " + use[*setting_u].unit +
+                                       "; expected an uncertainty smaller than the value (" +
+                                       format_number(settings[i]) + " " + su.unit + ")");
+      }
+    }
+    if (time_u) {
+      const std::string why = out_of_range(ranges::timing_uncertainty, table.columns[*time_u][i] * time_u_factor * *time_factor);
+      if (!why.empty()) refuse_cell(i, *time_u, why);
+    }
+  }
 
   // The physics across the rows: a row in another unit stands out.
   if (!out.sweep && out.setting == Setting::length) {

@@ -61,6 +61,13 @@ void check_numbers(const json& result) {
           (result.at("decay_fit").at("uncertainty_scaling") != "sigma" || result.at("decay_fit").at("dof") == 0)) {
         continue;
       }
+      // The lengths' scatter and chi2 against the stated uncertainties: both
+      // or neither, where tau was fitted (docs/series.md, "Lengths that scatter").
+      if (pointer == "/fit/length_scatter_m" || pointer == "/fit/chi2_stated") {
+        CHECK(result.at("fit").at("length_scatter_m").is_null());
+        CHECK(result.at("fit").at("chi2_stated").is_null());
+        continue;
+      }
       // The textbook curve of a scan of pivot distances has no centre.
       if (pointer == "/fit/pivot_scan/textbook/center_of_mass_position_m") continue;
       // A singular fit: no uncertainty, no correlation, and with every length

@@ -406,3 +406,74 @@ TEST_CASE("A series may give its length or amplitude once at the top level", "[s
   const Analysis a = analyse(scene);
   CHECK(std::count_if(a.budget.begin(), a.budget.end(), [](const auto& b) { return b.input == "length"; }) == 1);
 }
+
+TEST_CASE("The lengths' scatter tau solves chi2(tau) = dof: cases solved by hand", "[series][dispersion][length_scatter]") {
+  // sum r^2 / (v + s^2 t) = dof, t = tau^2. Equal slopes: 8 / (1 + t) = 1, t = 7.
+  CHECK_THAT(*length_scatter({2.0, -2.0}, {1.0, 1.0}, {1.0, 1.0}, 1), WithinRel(std::sqrt(7.0), 1e-12));
+  // 2 / (1 + t) + 4 / (1 + 2 t) = 1, i.e. 2 t^2 - 5 t - 5 = 0: t = (5 + sqrt(65)) / 4.
+  CHECK_THAT(*length_scatter({std::sqrt(2.0), 2.0}, {1.0, 1.0}, {1.0, std::sqrt(2.0)}, 1),
+             WithinRel(std::sqrt((5.0 + std::sqrt(65.0)) / 4.0), 1e-12));
+  // chi2 within dof already: no scatter.
+  CHECK(*length_scatter({0.5, 0.5}, {1.0, 1.0}, {1.0, 1.0}, 1) == 0.0);
+  // An observation no length moves (dT/dL = 0) scattering by itself: no tau reaches dof.
+  CHECK_FALSE(length_scatter({3.0, 0.1}, {1.0, 1.0}, {0.0, 1.0}, 1));
+}
+
+namespace {
+
+/// Six lengths, 0.2 m to 1.2 m, each read by tape with a 5 mm error nobody
+/// states (the scene's length uncertainty 0), periods timed to 0.2 ms.
+ParsedScene taped_series(std::uint64_t seed) {
+  SeriesSimulation sim = lengths_series(seed);
+  sim.lengths = {0.2, 0.4, 0.6, 0.8, 1.0, 1.2};
+  sim.amplitudes.assign(sim.lengths.size(), 3.0 * test::kDegree);
+  sim.length_sigma = 5e-3;
+  sim.amplitude_sigma = 0.0;
+  ParsedScene scene = simulate_series(nelson_olsson_apparatus(), sim);
+  for (auto& u : scene.observation_uncertainties) u.length = 0.0;
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("Lengths that scatter beyond their (unstated) uncertainty: tau fitted, g recovered",
+          "[series][dispersion][length_scatter]") {
+  const Analysis a = analyse(taped_series(21));
+  REQUIRE(a.fit.length_scatter);
+  REQUIRE(a.fit.chi2_stated);
+  // chi2 against the periods' 0.2 ms alone is far above its 99 % quantile; with tau it is dof.
+  CHECK(dispersion(*a.fit.chi2_stated, a.fit.dof).over_dispersed);
+  CHECK_THAT(a.fit.chi2, WithinRel(a.fit.dof, 1e-6));
+  CHECK_FALSE(a.fit.scaled);
+  // tau near the simulation's 5 mm (estimated from 4 degrees of freedom).
+  CHECK(*a.fit.length_scatter > 1e-3);
+  CHECK(*a.fit.length_scatter < 15e-3);
+  CHECK(std::abs(a.g.value - lengths_series(0).g) <= 3.0 * *a.g.uncertainty);
+  bool said = false;
+  for (const auto& w : a.warnings) said |= w.rfind("fit: the lengths scatter by ", 0) == 0;
+  CHECK(said);
+  bool budgeted = false;
+  for (const auto& b : a.budget) budgeted |= b.input.find("length_scatter") != std::string::npos;
+  CHECK(budgeted);
+}
+
+TEST_CASE("Lengths that scatter: +-1 sigma holds the true g about 68% of the time over 400 seeds",
+          "[series][coverage][dispersion][length_scatter]") {
+  // 400 series (seeds 300-699). Coverage of g +- u(g) with tau fitted from
+  // 4 degrees of freedom; the stated periods alone (tau 0) would cover
+  // P(|Z| < 0.2 ms-width) a small fraction. Binomial(400, 0.6827): standard
+  // deviation 9.3; g's interval is t-like with 4 dof (P(|t_4| < 1) = 0.626),
+  // so the count must lie between those rates, 3.5 standard deviations out.
+  const int n = 400;
+  int g_in = 0, fitted = 0;
+  for (int s = 0; s < n; ++s) {
+    const Analysis a = analyse(taped_series(300 + s));
+    REQUIRE(a.fit.converged);
+    fitted += a.fit.length_scatter.has_value();
+    g_in += std::abs(a.g.value - lengths_series(0).g) <= *a.g.uncertainty;
+  }
+  INFO("g within +-1 sigma " << g_in << " of " << n << ", tau fitted in " << fitted);
+  CHECK(fitted >= 0.95 * n);
+  CHECK(g_in >= 0.626 * n - 3.5 * 9.3);
+  CHECK(g_in <= 0.6827 * n + 3.5 * 9.3);
+}

@@ -325,14 +325,17 @@ TEST_CASE("Monte Carlo of a series scaled by its Birge ratio draws the periods a
   // the 95 % interval is +- t_4(0.975) S u = 2.776 u(g).
   NormalDeviates noise(41);
   nlohmann::json doc = series_scene(kSeriesLengths, series_trials(1, 0.05, noise));
+  // Each length stated to 1 nm: a scatter of the periods, not of lengths
+  // read without an uncertainty (those would fit tau, docs/series.md).
   for (auto& o : doc["observations"]) {
     o["timing"]["uncertainty"] = 0.01;
-    o["length"].erase("uncertainty");
+    o["length"]["uncertainty"] = 1e-9;
     o["amplitude"].erase("uncertainty");
   }
   const ParsedScene s = parse_scene(doc.dump());
   const Analysis a = analyse(s);
   REQUIRE(a.fit.scaled);
+  REQUIRE_FALSE(a.fit.length_scatter);
   const std::optional<MonteCarloResult> mc = monte_carlo(s, a, MonteCarloOptions{5, 40000});
   REQUIRE(mc);
   INFO("S " << *a.fit.birge_ratio << ", u(g) " << *a.g.uncertainty << ", MC [" << mc->low << ", " << mc->high << "]");

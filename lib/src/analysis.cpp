@@ -194,13 +194,51 @@ class Fit {
     };
     fit();
     weigh();
-    const PeriodFitSolution solution = fit();
+    PeriodFitSolution solution = fit();
+    // Paule & Mandel's iteration: tau from the residuals, the weights with
+    // it, the fit again, until tau holds still.
+    for (int i = 0; i < 50 && length_scatter_applies(); ++i) {
+      const std::optional<double> tau = next_length_scatter(i == 0);
+      if (!tau || std::abs(*tau - tau_) <= 1e-9 * *tau) break;
+      tau_ = *tau;
+      weigh();
+      solution = fit();
+    }
     Model::canonicalise(p_.data());
     out_.fit.method = "ceres_levenberg_marquardt";
     out_.fit.converged = solution.converged;
     out_.fit.termination = solution.termination;
     out_.fit.iterations = solution.iterations;
     if (!solution.converged) out_.warnings.push_back("fit: did not converge (" + solution.termination + ")");
+  }
+
+  /// Lengths read without a stated uncertainty (docs/series.md, "Lengths
+  /// that scatter"): a simple pendulum's series, each observation its own
+  /// length, degrees of freedom left.
+  bool length_scatter_applies() const {
+    if (std::string(Model::kName) != "simple_pendulum" || static_cast<int>(k_) <= free_count_) return false;
+    for (std::size_t k = 0; k < k_; ++k) {
+      if (scene_.sources[k].is_shared("length") || scene_.observation_uncertainties[k].length != 0.0) return false;
+    }
+    return true;
+  }
+
+  /// tau for the current fit; the first time, none unless chi2 against the
+  /// stated uncertainties alone is above its 99 % quantile (dispersion.hpp).
+  std::optional<double> next_length_scatter(bool first) {
+    std::vector<double> residual(k_);
+    double chi2 = 0.0;
+    for (std::size_t k = 0; k < k_; ++k) {
+      const auto& o = scene_.observations[k];
+      residual[k] = Model::predict(p_.data(), o, scene_.apparatus, amplitude_[k]).period - o.period;
+      chi2 += residual[k] * residual[k] / stated_variance_[k];
+    }
+    const int dof = static_cast<int>(k_) - free_count_;
+    if (first) {
+      if (!dispersion(chi2, dof).over_dispersed) return std::nullopt;
+      chi2_stated_ = chi2;
+    }
+    return length_scatter(residual, stated_variance_, length_slope_, dof);
   }
 
   [[noreturn]] static void throw_cannot_fit() {
@@ -210,8 +248,11 @@ class Fit {
   }
 
   /// w_k = 1 / sqrt(sum over the observation's inputs x of
-  /// (d(T_model,k - T_k)/dx sigma_x)^2) at the current parameters.
+  /// (d(T_model,k - T_k)/dx sigma_x)^2 + (dT_model,k/dL_k tau)^2) at the
+  /// current parameters.
   void weigh() {
+    stated_variance_.resize(k_);
+    length_slope_.assign(k_, 0.0);
     std::array<Dual, P> p;
     for (int i = 0; i < P; ++i) p[i] = Dual(p_[i]);
     const Apparatus<Dual> app = convert_apparatus<Dual>(scene_.apparatus, [](const Field&, double x) { return Dual(x); });
@@ -223,14 +264,18 @@ class Fit {
                       [&](const Field& field, const double&, const double& sigma) {
                         const int seed = ordinal++;
                         // A shared input moves every period alike: no scatter.
-                        if (sigma == 0.0 || scene_.sources[k].is_shared(field.path)) return;
+                        // An own length's derivative weighs its scatter (tau), stated or not.
+                        const bool length = field.role == FieldRole::length;
+                        if ((sigma == 0.0 && !length) || scene_.sources[k].is_shared(field.path)) return;
                         const Observation<Dual> o = convert_observation<Dual>(scene_.observations[k], Seeder{seed});
                         const double d = (Model::predict(p.data(), o, app, amplitude_[k]).period - o.period).v[0];
+                        if (field.role == FieldRole::length) length_slope_[k] = d;
                         const double share = d * d * sigma * sigma;
                         variance += share;
                         if (!(share <= largest)) largest = share, largest_path = field.path;
                       });
-      weights_[k] = 1.0 / std::sqrt(variance);
+      stated_variance_[k] = variance;
+      weights_[k] = 1.0 / std::sqrt(variance + std::pow(length_slope_[k] * tau_, 2));
       // An uncertainty so large that the period's effective one overflows
       // (1e300 m on a pivot) is the input's fault: name it. Not a number:
       // the model has no period at these parameters.
@@ -310,7 +355,10 @@ class Fit {
                       [&](const Field& f, const double& v, const double& u) {
                         const ObservationSource& source = scene_.sources[k];
                         const int at = ordinal++;
-                        if (!source.is_shared(f.path)) return add_input(source.path + f.path, f, v, u, {k}, at);
+                        if (!source.is_shared(f.path)) {
+                          if (tau_ > 0.0 && f.role == FieldRole::length) add_length_scatter(k, f, v, at);
+                          return add_input(source.path + f.path, f, v, u, {k}, at);
+                        }
                         const int known = find_input(f.path);
                         if (known >= 0) return inputs_[known].observations.push_back(k);
                         // Said once, by its first observation.
@@ -323,6 +371,15 @@ class Fit {
     int ordinal = 0;
     zip_apparatus(scene_.apparatus, scene_.apparatus_uncertainty,
                   [&](const Field& f, const double& v, const double& u) { add_input(field_path(f), f, v, u, {}, ordinal++); });
+  }
+
+  /// Observation k's share of the lengths' scatter: its length moved by tau,
+  /// Type A from the fit's n - p residuals.
+  void add_length_scatter(std::size_t k, const Field& f, double value, int ordinal) {
+    const std::string path = scene_.sources[k].path + "length_scatter";
+    scatter_inputs_.push_back(inputs_.size());
+    inputs_.push_back({path, f.unit, value, tau_, {k}, ordinal, f.role,
+                       InputEvaluation{path, 'A', Distribution::student_t, static_cast<double>(k_) - free_count_}});
   }
 
   void add_input(std::string path, const Field& f, double value, double sigma, std::vector<std::size_t> observations,
@@ -456,8 +513,10 @@ class Fit {
     fit.probability = d.probability;
     fit.birge_ratio = d.birge_ratio;
     // Periods whose uncertainty is the scatter about the fit: S applied wherever it is above the floor.
+    // With the lengths' scatter fitted, S = 1 by construction: nothing to scale.
     fit.scaled = (scene_.period_uncertainty_from_scatter ? d.birge_ratio && *d.birge_ratio > 1.0 : d.over_dispersed) &&
-                 !singular_;
+                 !singular_ && tau_ == 0.0;
+    if (tau_ > 0.0) report_length_scatter();
     std::vector<int> free;
     for (int i = 0; i < P; ++i) {
       const ParameterInfo& info = Model::kParameterInfo[i];
@@ -479,6 +538,20 @@ class Fit {
         }
       }
     }
+  }
+
+  void report_length_scatter() {
+    FitReport& fit = out_.fit;
+    fit.length_scatter = tau_;
+    fit.chi2_stated = chi2_stated_;
+    const Dispersion stated = dispersion(*chi2_stated_, fit.dof);
+    out_.warnings.push_back(
+        "fit: the lengths scatter by " + format_number(tau_ * 1e3, 2) +
+        " mm beyond their stated uncertainty (none stated): against the periods' uncertainties alone " +
+        dispersion_finding(stated, "the observations scatter about the fit") +
+        "; taken as each length's own unknown error (a tape read to the bob's centre), it weighs the periods "
+        "as the textbook line T^2 against L does, and its share is in g's uncertainty (the budget's "
+        "length_scatter rows)");
   }
 
   void report_observations(double g) {
@@ -565,10 +638,15 @@ class Fit {
   double effective_dof(int i) const {
     std::vector<VarianceComponent> components;
     const auto variance = [&](auto j) { return std::pow(sensitivities_[j](i) * inputs_[j].sigma, 2); };
-    VarianceComponent pooled{0.0, kInfiniteDof};
+    VarianceComponent pooled{0.0, kInfiniteDof}, scatter{0.0, static_cast<double>(k_) - free_count_};
     for (std::size_t j = 0; j < inputs_.size(); ++j) {
       const auto paired = [&](const Pair& pr) { return pr.a == static_cast<int>(j) || pr.b == static_cast<int>(j); };
       if (std::any_of(pairs_.begin(), pairs_.end(), paired)) continue;
+      // tau's shares are one estimate, from the fit's residuals.
+      if (std::find(scatter_inputs_.begin(), scatter_inputs_.end(), j) != scatter_inputs_.end()) {
+        scatter.variance += variance(j);
+        continue;
+      }
       const InputEvaluation& e = inputs_[j].evaluation;
       if (e.pooled) {
         pooled = {pooled.variance + variance(j), e.dof};
@@ -577,6 +655,7 @@ class Fit {
       }
     }
     if (pooled.variance > 0.0) components.push_back(pooled);
+    if (scatter.variance > 0.0) components.push_back(scatter);
     for (const Pair& pr : pairs_) {
       const double together = variance(pr.a) + variance(pr.b) +
                               2.0 * sensitivities_[pr.a](i) * sensitivities_[pr.b](i) * pr.covariance;
@@ -639,6 +718,12 @@ class Fit {
   int free_count_ = 0;
   std::vector<AmplitudeChoice> amplitude_;
   std::vector<double> weights_;
+  /// The lengths' fitted scatter (m), 0 where none; each period's variance
+  /// from its stated inputs (s^2) and dT/dL (s/m), at the last weigh().
+  double tau_ = 0.0;
+  std::optional<double> chi2_stated_;
+  std::vector<double> stated_variance_, length_slope_;
+  std::vector<std::size_t> scatter_inputs_;  ///< inputs_' indices of tau's per-observation shares
   std::array<double, P> p_;
   std::vector<Base> base_;
   Matrix hessian_, inverse_ = Matrix::Zero();

@@ -178,6 +178,7 @@ class Sampler {
       ordinal = 0;
       zip_observation(scene.observations[k], scene.observation_uncertainties[k],
                       [&](const Field& f, const double&, const double& u) {
+                        if (f.role == FieldRole::length && analysis.fit.length_scatter) length_slots_.push_back({k + 1, ordinal});
                         add(source.path_of(f.path), u, {k + 1, ordinal++}, !source.is_shared(f.path));
                       });
       shift_sizes_.push_back(ordinal);
@@ -234,6 +235,7 @@ class Sampler {
           const double value = is_held[i] ? 0.0 : in.sigma * z[i] * (in.observations_own ? scatter : 1.0);
           for (const auto& [owner, at] : in.slots) shift[owner][at] = value;
         }
+        draw_length_scatter(shift, deviates);
         const double g = g_of(refit, shift, observations);
         if (std::isfinite(g)) out.push_back(g);  // none outside the model's domain (a negative period)
       }
@@ -242,6 +244,15 @@ class Sampler {
   }
 
  private:
+  /// The lengths' fitted scatter (analysis.cpp, Paule & Mandel) instead of
+  /// the Birge widening: each length, stated without uncertainty, moved by
+  /// tau times one normal deviate, tau itself t-scaled with the fit's dof.
+  void draw_length_scatter(std::vector<std::vector<double>>& shift, Deviates& deviates) const {
+    if (length_slots_.empty()) return;
+    const double tau = *analysis_.fit.length_scatter * deviates.t_scale(analysis_.fit.dof);
+    for (const auto& [owner, at] : length_slots_) shift[owner][at] = tau * deviates.normal();
+  }
+
   void add(std::string path, double sigma, std::pair<std::size_t, int> slot, bool observations_own) {
     if (!(sigma > 0.0)) return;
     const int known = find(path);
@@ -292,6 +303,7 @@ class Sampler {
   double birge_ratio_ = 0.0;
   double scatter_dof_ = 0.0;
   double pooled_dof_ = 0.0;  ///< of the pooled periods' one variance; 0 where none is pooled
+  std::vector<std::pair<std::size_t, int>> length_slots_;  ///< where the lengths' scatter was fitted
 };
 
 /// delta of S1 7.9.2: u = c 10^l with c of two digits, delta = 10^l / 2.

@@ -150,6 +150,11 @@ struct FitReport {
   /// chi2 improbably large (dispersion.hpp): the result is suspect and the
   /// parameters' uncertainties carry S on the share the scatter tests.
   bool scaled = false;
+  /// The lengths' scatter beyond their stated uncertainty, tau (m), where
+  /// fitted (docs/series.md, "Lengths that scatter"): chi2 is then dof.
+  std::optional<double> length_scatter;
+  /// chi2 against the stated uncertainties alone, where tau was fitted.
+  std::optional<double> chi2_stated;
   bool converged = true;
   std::string method;  ///< "closed_form" or "ceres_levenberg_marquardt"
   std::string termination;

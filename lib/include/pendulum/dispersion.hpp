@@ -8,6 +8,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace pendulum {
 
@@ -43,6 +44,16 @@ double scaled_uncertainty(double sigma, double sigma_scatter, double scale);
 /// "the observations scatter about the fit 7.69 times as much as their
 /// stated uncertainties allow (chi2/dof = 59.1, chi2 = 887 for 15 degrees
 /// of freedom, probability 2e-132)", `points` saying what scatters about what.
+/// Paule & Mandel's extra variance, in length space: the standard deviation
+/// tau (m) of an unknown error common in size to every observation's length
+/// for which chi2 = sum_k r_k^2 / (v_k + (s_k tau)^2) equals `dof`; r_k is
+/// observation k's residual (s), v_k its stated variance (s^2), s_k its
+/// period's derivative by its length, dT_k/dL_k (s/m). 0 where the stated
+/// variances give chi2 <= dof already; empty where no tau reaches dof (the
+/// observations whose s_k is 0 alone scatter more).
+std::optional<double> length_scatter(const std::vector<double>& residual, const std::vector<double>& variance,
+                                     const std::vector<double>& slope, int dof);
+
 std::string dispersion_finding(const Dispersion& d, const std::string& points);
 
 }  // namespace pendulum

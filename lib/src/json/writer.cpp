@@ -312,6 +312,8 @@ json fit_json(const ParsedScene& scene, const Analysis& a) {
               {"probability", optional_number(f.probability)},
               {"birge_ratio", optional_number(f.birge_ratio)},
               {"uncertainties_scaled", f.scaled},
+              {"length_scatter_m", optional_number(f.length_scatter)},
+              {"chi2_stated", optional_number(f.chi2_stated)},
               {"period_uncertainty", scene.period_uncertainty_from_scatter ? "scatter_about_fit" : "stated"},
               {"converged", f.converged},
               {"termination", f.termination},
@@ -729,7 +731,13 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
         os << line;
       }
     }
-    if (scene.period_uncertainty_from_scatter && a.fit.birge_ratio) {
+    if (a.fit.length_scatter) {
+      std::snprintf(line, sizeof line,
+                    "  lengths' scatter = %.3g mm beyond their stated uncertainty (chi2/dof = %.4g against the "
+                    "periods' uncertainties alone, 1 with it)\n",
+                    *a.fit.length_scatter * 1e3, *a.fit.chi2_stated / a.fit.dof);
+      os << line;
+    } else if (scene.period_uncertainty_from_scatter && a.fit.birge_ratio) {
       std::snprintf(line, sizeof line,
                     "  periods' sigma = from the scatter about the fit, %.3g times the printed digits' floor (%d degrees "
                     "of freedom): this fit cannot test itself; chi2 gives no verdict\n",
@@ -756,7 +764,9 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
   os << "g                   = " << rounded(a.g.value, a.g.uncertainty) << " m/s^2";
   const int g_decimals = a.g.uncertainty ? decimals_of(*a.g.uncertainty) : 5;
   std::string notes;
-  if (scene.period_uncertainty_from_scatter) {
+  if (a.fit.length_scatter) {
+    notes = "with the lengths' scatter";
+  } else if (scene.period_uncertainty_from_scatter) {
     notes = "the periods' sigma from the scatter about the fit";
   } else if (a.fit.scaled && a.g_uncertainty_unscaled) {
     notes = "scaled by S = " + format_fixed(*a.fit.birge_ratio, 2) + "; from the stated uncertainties +- " +

@@ -176,9 +176,9 @@ read_limits)
   # A value below an input's default lowers none (docs/robustness.md, "Limits").
   "$G" import rec.tsv --max-rows 99 --max-bytes 1000 > out 2> err || fail "--max-rows 99 lowered a limit: $(cat err)"
   head -c 5000000 /dev/zero | tr '\0' 1 | sed 's/1/1,/g' > cells.csv
-  expect 1 "cells.csv:1:1: got more than 256 columns; expected at most 256 in a table (--max-columns raises the limit)" \
+  expect 1 "cells.csv:1:513: got more than 256 columns; expected at most 256 in a table (--max-columns raises the limit)" \
     sh -c "$cap exec '$G' import --table cells.csv"
-  expect 1 "cells.csv:1:1: got more than 1024 columns; expected at most 1024 in a recording (--max-columns raises" \
+  expect 1 "cells.csv:1:2049: got more than 1024 columns; expected at most 1024 in a recording (--max-columns raises" \
     sh -c "$cap exec '$G' import cells.csv"
   # A scene over 1 MiB, taken once --max-bytes raises the limit: its text, not its recordings'.
   { head -c 1100000 /dev/zero | tr '\0' ' '; cat x.json; } > long.json

@@ -260,13 +260,13 @@ TEST_CASE("A recording's rows and columns are refused at the first one past the 
   // Rows 1 to 5 are lines 2 to 6: line 7 is the sixth.
   CHECK_THROWS_WITH(parse_recording(rows, "f", RecordingFormat::automatic, {}, {}, five),
                     "f:7:1: got more than 5 rows; expected at most 5 in a recording (--max-rows raises the limit)");
-  // A headerless line of 10^6 cells: refused at the fifth, without splitting the rest.
+  // A headerless line of 10^6 cells: refused at the fifth (column 9), without splitting the rest.
   std::string cells;
   for (int i = 0; i < 1000000; ++i) cells += "1,";
   CHECK_THROWS_WITH(parse_recording(cells + "\n", "f", RecordingFormat::automatic, {}, {}, five),
-                    "f:1:1: got more than 4 columns; expected at most 4 in a recording (--max-columns raises the limit)");
+                    "f:1:9: got more than 4 columns; expected at most 4 in a recording (--max-columns raises the limit)");
   CHECK_THROWS_WITH(parse_recording("\"Time (s)\",a,b,c,d\n1,2,3,4,5\n", "f", RecordingFormat::automatic, {}, {}, five),
-                    Contains("f:1:1: got more than 4 columns"));
+                    Contains("f:1:18: got more than 4 columns"));
 }
 
 TEST_CASE("The period's uncertainty is honest and near the crossing method's Cramer-Rao bound",

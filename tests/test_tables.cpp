@@ -179,7 +179,7 @@ TEST_CASE("Tables: rows and columns past the limit are refused at the first one 
   CHECK_THROWS_WITH(parse_settings_table(rows + "115,21.53\n", "t", options),
                     "t:5:1: got more than 3 rows; expected at most 3 in a table (--max-rows raises the limit)");
   CHECK_THROWS_WITH(parse_settings_table("L (cm),t10 (s),theta (deg)\n55,14.91,5\n75,17.38,5\n", "t", options),
-                    "t:1:1: got more than 2 columns; expected at most 2 in a table (--max-columns raises the limit)");
+                    "t:1:16: got more than 2 columns; expected at most 2 in a table (--max-columns raises the limit)");
 }
 
 // docs/series.md lists x as a pivot position's header word, and a track's x

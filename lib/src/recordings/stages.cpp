@@ -164,7 +164,11 @@ std::vector<std::string_view> split_cells_within(std::string_view line, const Di
                                                  const InputLimits& limits, const std::string& file,
                                                  std::size_t line_no) {
   std::vector<std::string_view> cells = split_cells(line, dialect, limits.columns);
-  if (cells.size() > limits.columns) fail(file, line_no, 1, over_limit(limits, Limit::columns));
+  // At the first cell past the limit, the one that was refused.
+  if (cells.size() > limits.columns) {
+    fail(file, line_no, static_cast<std::size_t>(cells[limits.columns].data() - line.data()) + 1,
+         over_limit(limits, Limit::columns));
+  }
   return cells;
 }
 

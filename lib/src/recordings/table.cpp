@@ -1088,7 +1088,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     const double largest = a[top];
     if (!accepts(ranges::amplitude, largest * amplitude_factor)) {
       refuse_cell(top, *amplitude_col, "got " + format_number(largest, 4) + " " +
-             au.unit + ", 180 deg or more (over the top)" +
+             au.unit + (au.unit == "deg" ? "" : ", 180 deg or more") + " (over the top)" +
              (au.unit == "rad" && largest < 180.0 ? ": it holds degrees? Say so in the header (\"theta (deg)\") or "
                                                    "declared: --columns (a scene's \"columns\")"
                                                  : "; expected a swing's amplitude, below 180 deg"));

@@ -30,7 +30,7 @@ struct SceneFiles {
   bool allow_outside = false;
   /// --max-bytes, --max-rows, --max-columns: the limits of the scene's text
   /// and of every file it names (docs/robustness.md, "Limits").
-  GivenLimits limits;
+  GivenLimits limits{};
 };
 
 /// The directory of the scene file at `path`: "." for "-" (standard input)

@@ -180,6 +180,11 @@ TEST_CASE("Tables: rows and columns past the limit are refused at the first one 
                     "t:5:1: got more than 3 rows; expected at most 3 in a table (--max-rows raises the limit)");
   CHECK_THROWS_WITH(parse_settings_table("L (cm),t10 (s),theta (deg)\n55,14.91,5\n75,17.38,5\n", "t", options),
                     "t:1:16: got more than 2 columns; expected at most 2 in a table (--max-columns raises the limit)");
+  // Empty cells to the end of a line are no columns (issue 42: a header followed by 10^5 of them was
+  // "unrecognised header", then over the limit).
+  CHECK(parse_settings_table("L (cm),t10 (s),,\n55,14.91\n75,17.38\n95,19.55\n", "t", options).rows == 3);
+  const std::string wide = "L (cm),t10 (s)" + std::string(100000, ',') + "\n55,14.91\n75,17.38\n95,19.55\n";
+  CHECK(parse_settings_table(wide, "t", TableOptions{}).rows == 3);
 }
 
 // docs/series.md lists x as a pivot position's header word, and a track's x

@@ -164,10 +164,16 @@ std::vector<std::string_view> split_cells_within(std::string_view line, const Di
                                                  const InputLimits& limits, const std::string& file,
                                                  std::size_t line_no) {
   std::vector<std::string_view> cells = split_cells(line, dialect, limits.columns);
-  // At the first cell past the limit, the one that was refused.
   if (cells.size() > limits.columns) {
-    fail(file, line_no, static_cast<std::size_t>(cells[limits.columns].data() - line.data()) + 1,
-         over_limit(limits, Limit::columns));
+    // Empty cells to the end (a spreadsheet's trailing delimiters) are no
+    // columns: the line is read up to them. Else refused at the first cell
+    // past the limit.
+    const auto past = static_cast<std::size_t>(cells[limits.columns].data() - line.data());
+    if (line.find_first_not_of(std::string{dialect.delimiter, ' ', '"', '\r'}, past) == std::string_view::npos) {
+      cells.resize(limits.columns);
+      return cells;
+    }
+    fail(file, line_no, past + 1, over_limit(limits, Limit::columns));
   }
   return cells;
 }

@@ -73,7 +73,7 @@ std::vector<Job> split_documents(const std::string& input) {
 /// The scenes to reduce, and a note on stderr for each entry of a folder
 /// that is not one (a subfolder, davis.json.txt), so that none is skipped
 /// without a word.
-std::vector<Job> gather(const std::vector<std::string>& paths, const std::string& list) {
+std::vector<Job> gather(const std::vector<std::string>& paths, const std::string& list, const InputLimits& limits) {
   std::vector<Job> jobs;
   auto add_path = [&](const std::string& p) {
     std::error_code ec;
@@ -92,12 +92,12 @@ std::vector<Job> gather(const std::vector<std::string>& paths, const std::string
       add_path(p);
       continue;
     }
-    for (auto& document : split_documents(read_text("-", kMaxSceneBytes, "scenes"))) {
+    for (auto& document : split_documents(read_text("-", limits, "scenes"))) {
       jobs.push_back(std::move(document));
     }
   }
   if (!list.empty()) {
-    std::istringstream in(read_text(list, kMaxSceneBytes, "a list of scene files"));
+    std::istringstream in(read_text(list, limits, "a list of scene files"));
     std::string line;
     while (std::getline(in, line)) {
       // Surrounding spaces (and a CR) are no part of a file name.
@@ -118,7 +118,7 @@ Command add_batch_command(CLI::App& app) {
     std::string format = "jsonl";
     std::string report;
     unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
-    bool allow_outside = false;
+    SceneFiles given;  // --allow-outside, --max-bytes, ...
   };
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
@@ -145,14 +145,15 @@ Command add_batch_command(CLI::App& app) {
                   "Also write an HTML class report to this file: every g against the expected g, the failures, "
                   "each scene's section");
   cmd->add_option("--jobs", o->jobs, "Scenes reduced at once (default: the number of cores)")
+      ->check(whole_number())
       ->check(CLI::Range(1u, 256u));
-  add_allow_outside_option(*cmd, o->allow_outside);
+  add_scene_file_options(*cmd, o->given);
 
   return {cmd, [o] {
     std::vector<std::string> inputs{o->list};
     for (const auto& p : o->paths) inputs.push_back(p);
     refuse_output_over_inputs(o->report, inputs);  // a folder is no file, but --list is
-    const std::vector<Job> jobs = gather(o->paths, o->list);
+    const std::vector<Job> jobs = gather(o->paths, o->list, o->given.limits.applied_to(kSceneInput));
     if (jobs.empty()) throw InputError("", "no scenes: give files, folders, --list, or - for standard input");
     inputs.clear();
     for (const auto& job : jobs) {
@@ -161,7 +162,7 @@ Command add_batch_command(CLI::App& app) {
       if (o->report.empty()) continue;
       try {
         const std::vector<std::string> named =
-            scene_file_names(job.text ? *job.text : read_input(job.name), job.files(o->allow_outside));
+            scene_file_names(job.text ? *job.text : read_input(job.name, o->given), job.files(o->given));
         inputs.insert(inputs.end(), named.begin(), named.end());
       } catch (const InputError&) {
         // The scene's own line says why it cannot be read.
@@ -179,7 +180,7 @@ Command add_batch_command(CLI::App& app) {
     std::atomic<std::size_t> next{0};
     auto work = [&] {
       for (std::size_t i = next++; i < jobs.size(); i = next++) {
-        auto outcome = reduce_batch_scene(jobs[i], options, format, !o->report.empty(), o->allow_outside);
+        auto outcome = reduce_batch_scene(jobs[i], options, format, !o->report.empty(), o->given);
         std::lock_guard<std::mutex> lock(mutex);
         results[i] = std::move(outcome);
         ready.notify_one();

@@ -42,16 +42,21 @@ struct Command {
   std::function<int()> run;
 };
 
-/// The text of a scene file, or of standard input for "-", at most
-/// kMaxSceneBytes; a pipe or device named is refused (cli/files.cpp).
-std::string read_input(const std::string& file);
+/// The text of a scene file, or of standard input for "-", within
+/// `given`'s limits (kSceneInput unless raised); a pipe or device named is
+/// refused (cli/files.cpp).
+std::string read_input(const std::string& file, const SceneFiles& given = {});
 
 /// Where a scene file's recordings are looked for: its folder, and nowhere
-/// else unless `allow_outside` (--allow-outside).
-SceneFiles scene_files(const std::string& file, bool allow_outside);
+/// else unless given.allow_outside (--allow-outside); `given`'s limits.
+SceneFiles scene_files(const std::string& file, const SceneFiles& given);
 
-/// The option --allow-outside of the commands that read a scene.
-void add_allow_outside_option(CLI::App& cmd, bool& allow_outside);
+/// The options of the commands that read a scene: --allow-outside and the
+/// limits of what is read (--max-bytes, --max-rows, --max-columns).
+void add_scene_file_options(CLI::App& cmd, SceneFiles& given);
+
+/// --max-bytes, --max-rows, --max-columns: every input's limits (docs/robustness.md, "Limits").
+void add_limit_options(CLI::App& cmd, GivenLimits& given);
 
 /// Puts /dev/null in place of a closed standard input, output or error, the
 /// wrong way round for the first two, so that using them fails by name
@@ -76,6 +81,10 @@ CLI::Validator in_range(const ArgumentRange& range);
 /// A check that an option's number is decimal (0x10 is refused), its range
 /// left to the command (where out of range is bad input, exit 1).
 CLI::Validator decimal(const ArgumentRange& range);
+
+/// A check that an option's count is written in decimal digits (0x10,
+/// which CLI11 reads as 16, and 1e3 are refused).
+CLI::Validator whole_number();
 
 /// The options of an analysis (--negligible-fraction, --amplitude-method,
 /// --series-terms), shared by the commands that reduce one scene.

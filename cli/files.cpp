@@ -16,16 +16,39 @@
 
 namespace pendulum::cli {
 
-std::string read_input(const std::string& file) { return read_text(file, kMaxSceneBytes, "a scene file"); }
-
-SceneFiles scene_files(const std::string& file, bool allow_outside) {
-  return {scene_directory(file), allow_outside};
+std::string read_input(const std::string& file, const SceneFiles& given) {
+  return read_text(file, given.limits.applied_to(kSceneInput), "a scene file");
 }
 
-void add_allow_outside_option(CLI::App& cmd, bool& allow_outside) {
-  cmd.add_flag("--allow-outside", allow_outside,
+SceneFiles scene_files(const std::string& file, const SceneFiles& given) {
+  SceneFiles files = given;
+  files.directory = scene_directory(file);
+  return files;
+}
+
+void add_scene_file_options(CLI::App& cmd, SceneFiles& given) {
+  cmd.add_flag("--allow-outside", given.allow_outside,
                "Read recordings the scene names outside its own folder (an absolute name, .., a link leading "
                "out); by default they are refused, so that a scene reads nothing else (docs/robustness.md)");
+  add_limit_options(cmd, given.limits);
+}
+
+void add_limit_options(CLI::App& cmd, GivenLimits& given) {
+  cmd.add_option("--max-bytes", given.bytes,
+                 "Raise the most bytes read of every input to this (defaults: a scene, a list or standard input "
+                 "1 MiB; a table 256 MiB; a recording 1 GiB; a lower value lowers none)")
+      ->check(whole_number())
+      ->check(CLI::PositiveNumber);
+  cmd.add_option("--max-rows", given.rows,
+                 "Raise the most rows read of every table and recording to this (defaults: a table 10000; a "
+                 "recording 16777216)")
+      ->check(whole_number())
+      ->check(CLI::PositiveNumber);
+  cmd.add_option("--max-columns", given.columns,
+                 "Raise the most columns read of every table and recording to this (defaults: a table 256; a "
+                 "recording 1024)")
+      ->check(whole_number())
+      ->check(CLI::PositiveNumber);
 }
 
 void guard_standard_streams() {

@@ -15,7 +15,7 @@ Command add_fit_decay_command(CLI::App& app) {
     std::string file;
     std::optional<DecayModel> model;
     std::string format = "json";
-    bool allow_outside = false;
+    SceneFiles given;  // --allow-outside, --max-bytes, ...
   };
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
@@ -33,10 +33,10 @@ Command add_fit_decay_command(CLI::App& app) {
                   "by default the data decide")
       ->transform(CLI::CheckedTransformer(models, CLI::ignore_case).description(""))
       ->type_name("both|linear_only|quadratic_only");
-  add_allow_outside_option(*cmd, o->allow_outside);
+  add_scene_file_options(*cmd, o->given);
 
   return {cmd, [o] {
-    const ParsedScene scene = parse_decay_document(read_input(o->file), scene_files(o->file, o->allow_outside));
+    const ParsedScene scene = parse_decay_document(read_input(o->file, o->given), scene_files(o->file, o->given));
     if (!scene.decay_data) throw InputError("decay.data", "missing; fit-decay needs a decay record");
     DecayFitOptions fit_options;
     fit_options.model = o->model;

@@ -200,6 +200,7 @@ Command add_import_command(CLI::App& app) {
     std::string columns;
     bool table = false;
     int oscillations = 0;
+    GivenLimits limits;
   };
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
@@ -223,6 +224,7 @@ Command add_import_command(CLI::App& app) {
   cmd->add_option("--oscillations", o->oscillations,
                   "Tables: the time column is the time of this many oscillations (a header's \"t10\" says so)")
       ->check(in_range(ranges::oscillations));
+  add_limit_options(*cmd, o->limits);
 
   return {cmd, [o] {
     bool table = false;
@@ -233,6 +235,7 @@ Command add_import_command(CLI::App& app) {
       TableOptions options;
       options.oscillations = o->oscillations;
       options.sheet = o->set;
+      options.limits = o->limits.applied_to(kTableInput);
       if (!o->columns.empty()) options.columns = parse_table_column_spec(o->columns, "--columns");
       const SettingsTable t = read_settings_table(o->file, options);
       const std::string name = printable_name(o->file);
@@ -243,7 +246,8 @@ Command add_import_command(CLI::App& app) {
       return 0;
     }
     const RecordingSummary summary = analyse_recording(
-        o->file, recording_family(o->formats).value_or(RecordingFormat::automatic), o->swing, {}, o->set, o->columns);
+        o->file, recording_family(o->formats).value_or(RecordingFormat::automatic), o->swing,
+        {o->limits.applied_to(kRecordingInput), std::nullopt}, o->set, o->columns);
     std::cout << (table ? summary_table(summary) : recording_json(summary) + "\n");
     return 0;
   }};

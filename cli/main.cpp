@@ -45,6 +45,17 @@ CLI::Validator decimal(const ArgumentRange& range) {
   return CLI::Validator([range](std::string& text) { return not_decimal(text, range); }, "");
 }
 
+CLI::Validator whole_number() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const std::optional<double> n = decimal_number(text);
+        // Digits only: decimal_number also takes 1e3, 2.0 and inf.
+        if (n && text.find_first_not_of("+0123456789") == std::string::npos) return "";
+        return "got \"" + one_line(text, kShownValueBytes, true) + "\"; expected a whole number in decimal digits";
+      },
+      "");
+}
+
 CLI::Validator in_range(const ArgumentRange& range) {
   return CLI::Validator(
       [range](std::string& text) {
@@ -85,9 +96,11 @@ void add_analysis_options(CLI::App& cmd, AnalysisOptions& options) {
       ->type_name("gum|monte-carlo");
   cmd.add_option_function<long>("--draws", [monte_carlo](long n) { monte_carlo().draws = n; },
                                 "Monte Carlo draws (default: adaptive, GUM S1 7.9, at most 10^6)")
+      ->check(whole_number())
       ->check(CLI::Range(100L, kMostDraws));
   cmd.add_option_function<std::uint64_t>("--seed", [monte_carlo](std::uint64_t s) { monte_carlo().seed = s; },
-                                         "Monte Carlo seed (default 1): the same seed, the same draws");
+                                         "Monte Carlo seed (default 1): the same seed, the same draws")
+      ->check(whole_number());
 }
 
 }  // namespace pendulum::cli

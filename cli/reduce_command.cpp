@@ -54,7 +54,7 @@ Command add_reduce_command(CLI::App& app) {
     std::string file;
     std::string format = "json";
     bool strict = false;
-    bool allow_outside = false;
+    SceneFiles given;  // --allow-outside, --max-bytes, ...
     std::optional<double> length;
     std::optional<double> length_uncertainty;
     AnalysisOptions analysis;
@@ -76,17 +76,17 @@ Command add_reduce_command(CLI::App& app) {
       ->check(in_range(ranges::length_uncertainty))
       ->needs("--length");
   add_analysis_options(*cmd, o->analysis);
-  add_allow_outside_option(*cmd, o->allow_outside);
+  add_scene_file_options(*cmd, o->given);
 
   return {cmd, [o] {
     if (o->length && o->file == "-") {
       throw InputError("-", "standard input with --length; expected a recording file's name");
     }
     // A recording is read by its own reader, not as a scene's text.
-    const std::string text = o->length ? recording_scene(o->file, *o->length, o->length_uncertainty) : read_input(o->file);
+    const std::string text = o->length ? recording_scene(o->file, *o->length, o->length_uncertainty) : read_input(o->file, o->given);
     const ParsedScene scene = [&] {
       try {
-        return parse_scene(text, scene_files(o->file, o->allow_outside));
+        return parse_scene(text, scene_files(o->file, o->given));
       } catch (const InputError&) {
         // A file that is no scene but reads as a recording: say how to reduce it.
         if (o->length || o->file == "-" || is_scene_text(text) || looks_like_settings_table(text) ||

@@ -14,6 +14,7 @@ Command add_report_command(CLI::App& app) {
     report::ReportRequest request;
     std::string output = "-";
     std::vector<std::string> formats;
+    SceneFiles given;  // --allow-outside, --max-bytes, ...
   };
   auto o = std::make_shared<Options>();
   auto* cmd = app.add_subcommand(
@@ -38,7 +39,7 @@ Command add_report_command(CLI::App& app) {
           {"corrections", "budget", "decay", "series", "pivot-scan", "signal", "amplitude", "period-amplitude"}));
   add_analysis_options(*cmd, o->request.analysis);
   add_recording_options(*cmd, o->request.swing, o->request.set, o->request.columns);
-  add_allow_outside_option(*cmd, o->request.allow_outside);
+  add_scene_file_options(*cmd, o->given);
 
   return {cmd, [o, cmd] {
     std::string format = "html";
@@ -57,6 +58,8 @@ Command add_report_command(CLI::App& app) {
       std::cerr << cmd->get_name() << ": --plot makes one SVG; it does not go with --format " << format << "\n";
       return 2;
     }
+    o->request.allow_outside = o->given.allow_outside;
+    o->request.limits = o->given.limits;
     refuse_output_over_inputs(o->output, {o->request.file});
     o->request.family = recording_family(o->formats);
     const report::ReportPage page = make_report_page(

@@ -48,7 +48,7 @@ struct SceneSource {
 SceneSource scene_source(const std::optional<std::string>& path, const std::optional<std::string>& text,
                          const std::string& directory, bool allow_outside) {
   if (path) {
-    return {pendulum::read_text(*path, pendulum::kMaxSceneBytes, "a scene file"), pendulum::printable_name(*path),
+    return {pendulum::read_text(*path, pendulum::kSceneInput, "a scene file"), pendulum::printable_name(*path),
             {pendulum::scene_directory(*path), allow_outside}};
   }
   return {text.value_or(""), "-", {directory, allow_outside}};
@@ -205,7 +205,7 @@ std::pair<std::vector<std::string>, std::vector<std::pair<std::string, std::stri
   }
   const pendulum::AnalysisOptions options;
   std::vector<std::string> lines;
-  for (const auto& scene : scenes) lines.push_back(pendulum::reduce_batch_scene(scene, options, pendulum::BatchFormat::jsonl, false, allow_outside).line.text);
+  for (const auto& scene : scenes) lines.push_back(pendulum::reduce_batch_scene(scene, options, pendulum::BatchFormat::jsonl, false, {std::nullopt, allow_outside}).line.text);
   return {lines, notes};
 }
 

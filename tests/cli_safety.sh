@@ -144,12 +144,12 @@ fifo_by_name)
   expect 1 "/dev/zero: not a regular file (a device)" timeout 10 "$G" reduce /dev/zero
   ;;
 read_limits)
-  # 1 GiB on standard input: refused once 1 MiB (kMaxSceneBytes) + 1 byte is
+  # 1 GiB on standard input: refused once 1 MiB (kSceneInput) + 1 byte is
   # read, within bounded memory (the address space capped at 1 GiB, less
   # than the input) and quickly. AddressSanitizer reserves terabytes of
   # address space for its shadow at start, so there the cap is left out and
   # only the message, the status and the time are checked.
-  limit="got more than 1048576 bytes; expected at most 1 MiB"
+  limit="got more than 1048576 bytes; expected at most 1048576 in a scene file, a list or standard input (--max-bytes raises the limit)"
   cap="ulimit -v 1048576;"
   [ "$SANITIZED" = sanitized ] && cap=""
   start=$(date +%s)
@@ -161,6 +161,30 @@ read_limits)
   expect 1 "big.txt: $limit" "$G" reduce big.txt
   expect 1 "stdin: cannot read standard input: Bad file descriptor" sh -c "'$G' batch - <&-"
   expect 1 "stdin: cannot read standard input: Bad file descriptor" sh -c "'$G' reduce - <&-"
+  # A table's rows and a line's cells are counted as they are read: past
+  # the limit, refused at its line within the same capped address space
+  # (before, 10^5 lengths took 5.4 GB and '1,' 5*10^6 times 2.2 GB). The
+  # rows are a pendulum's (T = 2 pi sqrt(L/9.81 m/s^2)), so that only their
+  # number is refused.
+  awk 'BEGIN { print "L (m),T (s)"; for (i = 0; i <= 10000; i++) { l = 0.5 + i * 1e-5;
+       printf "%.5f,%.6f\n", l, 2 * 3.141592653589793 * sqrt(l / 9.81) } }' > rows.csv
+  rows="rows.csv:10002:1: got more than 10000 rows; expected at most 10000 in a table (--max-rows raises the limit)"
+  expect 1 "$rows" sh -c "$cap exec '$G' import --table rows.csv"
+  printf '{"amplitude": "not recorded", "observations": {"table": "rows.csv"}}' > rows.json
+  expect 1 "observations.table: $rows" sh -c "$cap exec '$G' reduce rows.json"
+  "$G" import --table rows.csv --max-rows 10001 > out 2> err || fail "--max-rows 10001 did not raise the limit: $(cat err)"
+  # A value below an input's default lowers none (docs/robustness.md, "Limits").
+  "$G" import rec.tsv --max-rows 99 --max-bytes 1000 > out 2> err || fail "--max-rows 99 lowered a limit: $(cat err)"
+  head -c 5000000 /dev/zero | tr '\0' 1 | sed 's/1/1,/g' > cells.csv
+  expect 1 "cells.csv:1:513: got more than 256 columns; expected at most 256 in a table (--max-columns raises the limit)" \
+    sh -c "$cap exec '$G' import --table cells.csv"
+  expect 1 "cells.csv:1:2049: got more than 1024 columns; expected at most 1024 in a recording (--max-columns raises" \
+    sh -c "$cap exec '$G' import cells.csv"
+  # A scene over 1 MiB, taken once --max-bytes raises the limit: its text, not its recordings'.
+  { head -c 1100000 /dev/zero | tr '\0' ' '; cat x.json; } > long.json
+  expect 1 "long.json: got more than 1048576 bytes" "$G" reduce long.json
+  "$G" reduce long.json --max-bytes 2000000 > out 2> err || fail "--max-bytes 2000000 did not raise a scene's limit: $(cat err)"
+  expect 2 "expected a whole number in decimal digits" "$G" import rec.tsv --max-rows 0x10
   ;;
 recording_outside)
   mkdir class
@@ -256,6 +280,14 @@ terminal_text)
   expect 2 '^--length-m: got "0x10"; expected a decimal number' "$G" import rec.tsv --length-m 0x10
   expect 1 'got the column "frame:0x1fps"; expected frame numbers with their frame rate' \
     "$G" import "$DATA/recordings/tracker_headerless_xy.txt" --columns frame:0x1fps,x:px,y:px
+  # Counts too: CLI11 read --jobs 0x2 as 2, --draws 0x100 as 256, --seed 0x10 as 16.
+  expect 2 '^--jobs: got "0x2"; expected a whole number in decimal digits' "$G" batch x.json --jobs 0x2
+  expect 2 '^--draws: got "0x100"; expected a whole number in decimal digits' \
+    "$G" reduce x.json --uncertainty monte-carlo --draws 0x100
+  expect 2 '^--seed: got "0x10"; expected a whole number in decimal digits' \
+    "$G" reduce x.json --uncertainty monte-carlo --seed 0x10
+  expect 2 '^--draws: got "1e3"; expected a whole number in decimal digits' \
+    "$G" reduce x.json --uncertainty monte-carlo --draws 1e3
   ;;
 csv_cells)
   # Names and titles in a CSV cell never start a formula (issue 42, item

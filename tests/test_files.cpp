@@ -56,12 +56,12 @@ TEST_CASE("printable_name escapes what is not printable UTF-8 and keeps names ap
 
 TEST_CASE("read_text takes a file of exactly the limit and refuses one byte more", "[files]") {
   const std::string file = temporary_name();
-  constexpr std::size_t kLimit = 1024;
-  std::ofstream(file, std::ios::binary) << std::string(kLimit, 'x');
-  CHECK(pendulum::read_text(file, kLimit, "a scene file").size() == kLimit);
-  std::ofstream(file, std::ios::binary) << std::string(kLimit + 1, 'x');
+  constexpr pendulum::InputLimits kLimit{1024, 0, 0, "a test"};
+  std::ofstream(file, std::ios::binary) << std::string(kLimit.bytes, 'x');
+  CHECK(pendulum::read_text(file, kLimit, "a scene file").size() == kLimit.bytes);
+  std::ofstream(file, std::ios::binary) << std::string(kLimit.bytes + 1, 'x');
   CHECK_THROWS_WITH(pendulum::read_text(file, kLimit, "a scene file"),
-                    file + ": " + pendulum::too_large(kLimit));
+                    file + ": got more than 1024 bytes; expected at most 1024 in a test (--max-bytes raises the limit)");
   std::remove(file.c_str());
   CHECK_THROWS_WITH(pendulum::read_text(file, kLimit, "a scene file"),
                     Contains("cannot open the file: No such file or directory"));

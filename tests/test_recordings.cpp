@@ -247,9 +247,26 @@ TEST_CASE("Readers name the file, line and column of a bad row", "[recordings]")
                     Contains("f:5:3") && Contains("a NUL byte"));
   CHECK_THROWS_WITH(parse_recording("a,b\n1,2\n", "f"), Contains("unrecognised header"));
   RecordingLimits small;
-  small.max_bytes = 10;
+  small.input.bytes = 10;
   CHECK_THROWS_WITH(read_recording(kDir + "pasco_rotary.csv", RecordingFormat::automatic, small),
                     Contains("expected at most 10"));
+}
+
+TEST_CASE("A recording's rows and columns are refused at the first one past the limit", "[recordings]") {
+  const std::string h = "\"Time (s)\",\"Gyroscope x (rad/s)\"\n";
+  std::string rows = h;
+  for (int i = 0; i < 6; ++i) rows += std::to_string(i) + ",0." + std::to_string(i) + "\n";
+  const InputLimits five{1 << 20, 5, 4, "a recording"};
+  // Rows 1 to 5 are lines 2 to 6: line 7 is the sixth.
+  CHECK_THROWS_WITH(parse_recording(rows, "f", RecordingFormat::automatic, {}, {}, five),
+                    "f:7:1: got more than 5 rows; expected at most 5 in a recording (--max-rows raises the limit)");
+  // A headerless line of 10^6 cells: refused at the fifth (column 9), without splitting the rest.
+  std::string cells;
+  for (int i = 0; i < 1000000; ++i) cells += "1,";
+  CHECK_THROWS_WITH(parse_recording(cells + "\n", "f", RecordingFormat::automatic, {}, {}, five),
+                    "f:1:9: got more than 4 columns; expected at most 4 in a recording (--max-columns raises the limit)");
+  CHECK_THROWS_WITH(parse_recording("\"Time (s)\",a,b,c,d\n1,2,3,4,5\n", "f", RecordingFormat::automatic, {}, {}, five),
+                    Contains("f:1:18: got more than 4 columns"));
 }
 
 TEST_CASE("The period's uncertainty is honest and near the crossing method's Cramer-Rao bound",
@@ -706,12 +723,12 @@ TEST_CASE("A zip export is unpacked within the limit, its sets all together", "[
   CHECK(zip.channels == csv.channels);
   // A limit below the sets' stated total refuses the archive before it is unpacked.
   pendulum::RecordingLimits limits;
-  limits.max_bytes = 150000;
+  limits.input.bytes = 150000;
   try {
     pendulum::read_recording(folder + "phyphox_export.zip", pendulum::RecordingFormat::automatic, limits);
     FAIL("unpacked over the limit");
   } catch (const pendulum::InputError& e) {
-    CHECK_THAT(e.what(), Contains("unpack to over 150000 bytes"));
+    CHECK_THAT(e.what(), Contains("got more than 150000 bytes"));
   }
   // One set under the limit alone still reads, named in any case.
   const auto one = pendulum::read_recording(folder + "phyphox_export.zip", pendulum::RecordingFormat::automatic,

@@ -170,6 +170,23 @@ TEST_CASE("Tables: a headerless h, sigma_h, T, sigma_T pivot scan", "[tables]") 
   CHECK_FALSE(looks_like_settings_table("Time (s),Gyroscope x (rad/s)\n0,0.1\n0.01,0.2\n"));
 }
 
+TEST_CASE("Tables: rows and columns past the limit are refused at the first one past it", "[tables]") {
+  TableOptions options;
+  options.limits = {1 << 20, 3, 2, "a table"};
+  const std::string rows = "L (cm),t10 (s)\n55,14.91\n75,17.38\n95,19.55\n";
+  CHECK(parse_settings_table(rows, "t", options).rows == 3);
+  // Line 5 is the fourth row.
+  CHECK_THROWS_WITH(parse_settings_table(rows + "115,21.53\n", "t", options),
+                    "t:5:1: got more than 3 rows; expected at most 3 in a table (--max-rows raises the limit)");
+  CHECK_THROWS_WITH(parse_settings_table("L (cm),t10 (s),theta (deg)\n55,14.91,5\n75,17.38,5\n", "t", options),
+                    "t:1:16: got more than 2 columns; expected at most 2 in a table (--max-columns raises the limit)");
+  // Empty cells to the end of a line are no columns (issue 42: a header followed by 10^5 of them was
+  // "unrecognised header", then over the limit).
+  CHECK(parse_settings_table("L (cm),t10 (s),,\n55,14.91\n75,17.38\n95,19.55\n", "t", options).rows == 3);
+  const std::string wide = "L (cm),t10 (s)" + std::string(100000, ',') + "\n55,14.91\n75,17.38\n95,19.55\n";
+  CHECK(parse_settings_table(wide, "t", TableOptions{}).rows == 3);
+}
+
 // docs/series.md lists x as a pivot position's header word, and a track's x
 // is a recording's: the times tell them apart, since a recording's increase.
 TEST_CASE("Tables: x and T are a pivot scan where the periods do not increase, a track's x where they do",

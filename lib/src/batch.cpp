@@ -54,16 +54,19 @@ std::vector<std::string> folder_scenes(const std::string& folder, std::vector<Sk
   return files;
 }
 
-SceneFiles BatchScene::files(bool allow_outside) const {
-  return text ? SceneFiles{".", allow_outside} : SceneFiles{scene_directory(name), allow_outside};
+SceneFiles BatchScene::files(const SceneFiles& given) const {
+  SceneFiles files = given;
+  files.directory = text ? "." : scene_directory(name);
+  return files;
 }
 
 BatchOutcome reduce_batch_scene(const BatchScene& job, const AnalysisOptions& options, BatchFormat format,
-                                bool with_report, bool allow_outside) {
+                                bool with_report, const SceneFiles& given) {
   const std::string name = job.shown();
   try {
     const ParsedScene scene =
-        parse_scene(job.text ? *job.text : read_text(job.name, kMaxSceneBytes, "a scene file"), job.files(allow_outside));
+        parse_scene(job.text ? *job.text : read_text(job.name, given.limits.applied_to(kSceneInput), "a scene file"),
+                    job.files(given));
     const Analysis analysis = analyse(scene, options);
     BatchOutcome out{batch_line(name, scene, analysis, format), {name, std::nullopt, ""}};
     if (with_report) out.entry.report = report::make_scene_report(name, scene, analysis);

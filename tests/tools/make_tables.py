@@ -109,6 +109,12 @@ def xlsx_parts(parts, names):
     return out.getvalue()
 
 
+def exact_period(l, theta0_deg):
+    """A point bob's period at any amplitude: 4 sqrt(L/g) K(m), m = sin^2(theta0/2) (Kelley 1993, Eq. 17)."""
+    m = mpmath.sin(mpmath.radians(theta0_deg) / 2) ** 2
+    return float(4 * mpmath.sqrt(mpmath.mpf(l) / G) * mpmath.ellipk(m))
+
+
 def write(path, text, encoding="utf-8"):
     out = os.path.join(sys.argv[1] if len(sys.argv) > 1 else ROOT, path)
     os.makedirs(os.path.dirname(out), exist_ok=True)
@@ -215,6 +221,21 @@ def main():
           "theta (rad),T (s)\n10,1.797\n20,1.808\n30,1.825\n40,1.852\n")
     write("tests/bad_recordings/table_amplitude_unit_open.csv",
           "L (cm),t10 (s),theta\n55,14.91,0.5\n75,17.38,0.6\n95,19.55,0.9\n")
+    # What reduce refuses in a scene, refused at the cell (issue 42 item 7); periods exact
+    # (4 sqrt(L/g) K(sin^2(theta0/2)), point bob), so that only the refused cell is wrong.
+    write("tests/bad_recordings/table_timing_sigma_underflow.csv", "L (m),T (s),sigma_T (s)\n" + "".join(
+        f"{l},{exact_period(l, 5):.5f},{'1e-200' if l == 0.5 else '0.001'}\n" for l in (0.4, 0.5, 0.6, 0.7)))
+    write("tests/bad_recordings/table_length_km.csv",
+          "L (m),T (s)\n" + "".join(f"{l:.1e},{exact_period(l, 5):.1f}\n" for l in (1e9, 1.1e9, 1.2e9)))
+    write("tests/bad_recordings/table_length_sigma_over_length.csv", "L (cm),sigma_L (cm),T (s)\n" + "".join(
+        f"{l},{s},{exact_period(l / 100, 5):.4f}\n" for l, s in ((55, 0.1), (75, 80), (95, 0.1))))
+    write("tests/bad_recordings/table_amplitude_180.csv", "L (cm),T (s),theta (deg)\n" + "".join(
+        f"{l},{exact_period(l / 100, 5):.4f},{a}\n" for l, a in ((55, 5), (75, 180), (95, 5))))
+    write("tests/bad_recordings/table_amplitude_3_2_rad.csv", "L (cm),T (s),theta (rad)\n" + "".join(
+        f"{l},{exact_period(l / 100, 5):.4f},{a}\n" for l, a in ((55, 0.1), (75, 3.2), (95, 0.1))))
+    # A correct 170 deg row beside 5 deg ones (issue 42 item 8: once refused as mixed units).
+    write("tests/tables/amplitude_170.csv", "L (m),T (s),theta (deg)\n" + "".join(
+        f"{l},{exact_period(l, a):.5f},{a}\n" for l, a in ((0.5, 5), (0.6, 5), (0.7, 5), (0.8, 170))))
 
 
 if __name__ == "__main__":

@@ -5,6 +5,7 @@
 /// diverge: a value the CLI refuses, Python refuses with the same message
 /// (docs/robustness.md, "Numbers in options and arguments").
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -36,6 +37,12 @@ inline constexpr ArgumentRange length{"--length-m", "length_m", 1e-3, 1e3, "m",
 /// less than the length.
 inline constexpr ArgumentRange length_uncertainty{"--length-uncertainty", "length_uncertainty", 0.0, 1e3, "m",
                                                   "a length's standard uncertainty from 0 to 1 km"};
+/// A timing's stated uncertainty or resolution (scene.json's
+/// timing.uncertainty and timing.resolution, a table's column): no timer of
+/// a pendulum resolves a picosecond, and 1e-200 s squares to 0 (a timing
+/// then infinitely precise); the most is a third of the trial (parts.cpp).
+inline constexpr ArgumentRange timing_uncertainty{"timing.uncertainty", "timing_uncertainty", 1e-12, std::numeric_limits<double>::infinity(), "s",
+                                                  "a time of at least 1 ps (no timer resolves a shorter one)"};
 /// Below the length, at most 1 km; a photogate resolves no bob under 1 mm.
 inline constexpr ArgumentRange bob_width{"--bob-width-m", "bob_width_m", 1e-3, 1e3, "m",
                                          "a bob's width across the beam from 1 mm to 1 km"};

@@ -23,8 +23,8 @@ struct BatchScene {
   /// distinct names).
   std::string shown() const;
   /// Where the files the scene names are looked for: the file's folder, the
-  /// working folder for standard input.
-  SceneFiles files(bool allow_outside) const;
+  /// working folder for standard input; `given`'s allow_outside and limits.
+  SceneFiles files(const SceneFiles& given) const;
 };
 
 /// An entry of a folder that is no scene, and why (a subfolder, a file not
@@ -41,12 +41,13 @@ std::vector<std::string> folder_scenes(const std::string& folder, std::vector<Sk
 /// One scene's summary line in `format` and, when `with_report`, its report;
 /// an error (InputError, or any other as "internal error: ...") becomes the
 /// failure's line. Never throws. A scene of standard input looks for its
-/// recordings in the current folder.
+/// recordings in the current folder. `given`: allow_outside and the limits
+/// (its directory is each scene's own).
 struct BatchOutcome {
   BatchLine line;
   report::ClassEntry entry;
 };
 BatchOutcome reduce_batch_scene(const BatchScene& scene, const AnalysisOptions& options, BatchFormat format,
-                                bool with_report, bool allow_outside);
+                                bool with_report, const SceneFiles& given);
 
 }  // namespace pendulum

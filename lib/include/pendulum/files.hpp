@@ -57,17 +57,52 @@ class InputFile {
   struct timespec mtime_ {};
 };
 
+/// The most of one input read (docs/robustness.md, "Limits"): its bytes,
+/// and for a recording or a table its rows and columns, each refused as
+/// soon as it is passed (no more is kept than the limit), with one message
+/// (over_limit()). `of` names the input in that message.
+struct InputLimits {
+  std::size_t bytes;
+  std::size_t rows;
+  std::size_t columns;
+  const char* of;
+};
+
+/// A scene file, a list of scenes and standard input: a scene is a few kB,
+/// and its JSON takes about 16 times its text in memory; rows and columns
+/// are a table's or a recording's.
+inline constexpr InputLimits kSceneInput{std::size_t{1} << 20, 0, 0, "a scene file, a list or standard input"};
+/// A table of settings and periods: each of its settings is an observation
+/// of a series, reduced and printed with its own budget (about 50 kB of
+/// memory each), and no laboratory times 10^4 settings.
+inline constexpr InputLimits kTableInput{std::size_t{1} << 28, 10000, 256, "a table"};
+/// A recording: 8 hours at 500 Hz (1 GiB of text, 14.4 million rows), and
+/// a PASCO or Tracker export of many runs or tracks side by side.
+inline constexpr InputLimits kRecordingInput{std::size_t{1} << 30, std::size_t{1} << 24, 1024, "a recording"};
+
+/// Which of an input's limits.
+enum class Limit { bytes, rows, columns };
+
+/// The message of an input past one of its limits: "got more than 10000
+/// rows; expected at most 10000 in a table (--max-rows raises the limit)".
+std::string over_limit(const InputLimits& limits, Limit which);
+
+/// --max-bytes, --max-rows and --max-columns as a command was given them (0:
+/// not given). Each raises the limit of every input the command reads to
+/// it, and lowers none: a scene's 1 MiB raised to 4 MiB leaves its
+/// recordings their 1 GiB (docs/robustness.md, "Limits").
+struct GivenLimits {
+  std::size_t bytes = 0, rows = 0, columns = 0;
+  InputLimits applied_to(InputLimits defaults) const;
+};
+
 /// The text of the file `path`, or of standard input for "-", at most
-/// `max_bytes`: more is refused as soon as it is read, with the same
-/// message whatever is read (too_large()). Throws InputError naming `path`
+/// limits.bytes: more is refused as soon as it is read, with the same
+/// message whatever is read (over_limit()). Throws InputError naming `path`
 /// ("stdin" for "-") and the read's error; `expected` as for InputFile.
 /// `within` as for InputFile.
-std::string read_text(const std::string& path, std::size_t max_bytes, const std::string& expected,
+std::string read_text(const std::string& path, const InputLimits& limits, const std::string& expected,
                       const std::optional<std::string>& within = {});
-
-/// The message of a read past `max_bytes`: "got more than N bytes; expected
-/// at most M MiB (...)".
-std::string too_large(std::size_t max_bytes);
 
 /// A file name fit for a message or an `input` key: control characters,
 /// bytes that are not UTF-8 and the backslash itself escaped (\n, \x1b,

@@ -10,14 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "pendulum/files.hpp"
 #include "pendulum/input_error.hpp"
 #include "pendulum/parsed_scene.hpp"
 
 namespace pendulum {
-
-/// The largest scene text accepted (1 MiB): a scene is a few kB, and a
-/// bound keeps a wrong file (a log, /dev/zero) from eating the memory.
-inline constexpr std::size_t kMaxSceneBytes = std::size_t{1} << 20;
 
 /// Where the files a scene names (a recording in `timing` or `decay.data`,
 /// docs/recordings.md) are looked for.
@@ -31,6 +28,9 @@ struct SceneFiles {
   /// link pointing out): refused by default, so that a scene reads no file
   /// but its own recordings (docs/robustness.md, "Recordings a scene names").
   bool allow_outside = false;
+  /// --max-bytes, --max-rows, --max-columns: the limits of the scene's text
+  /// and of every file it names (docs/robustness.md, "Limits").
+  GivenLimits limits{};
 };
 
 /// The directory of the scene file at `path`: "." for "-" (standard input)

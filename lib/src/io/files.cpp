@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -103,23 +104,34 @@ bool InputFile::changed() const {
          st.st_mtim.tv_nsec != mtime_.tv_nsec;
 }
 
-std::string too_large(std::size_t max_bytes) {
-  return "got more than " + std::to_string(max_bytes) + " bytes; expected at most " +
-         std::to_string(max_bytes >> 20) + " MiB (the limit of a scene file, a list and standard input)";
+std::string over_limit(const InputLimits& limits, Limit which) {
+  static const char* const kUnits[] = {"bytes", "rows", "columns"};
+  const std::size_t limit = which == Limit::bytes ? limits.bytes : which == Limit::rows ? limits.rows : limits.columns;
+  const char* unit = kUnits[static_cast<int>(which)];
+  return "got more than " + std::to_string(limit) + " " + unit + "; expected at most " + std::to_string(limit) + " in " +
+         limits.of + " (--max-" + unit + " raises the limit)";
 }
 
-std::string read_text(const std::string& path, std::size_t max_bytes, const std::string& expected,
+InputLimits GivenLimits::applied_to(InputLimits defaults) const {
+  defaults.bytes = std::max(defaults.bytes, bytes);
+  defaults.rows = std::max(defaults.rows, rows);
+  defaults.columns = std::max(defaults.columns, columns);
+  return defaults;
+}
+
+std::string read_text(const std::string& path, const InputLimits& limits, const std::string& expected,
                       const std::optional<std::string>& within) {
   std::optional<InputFile> file;
   if (path != "-") file.emplace(path, expected, within);
   const int fd = file ? file->fd() : STDIN_FILENO;
   const std::string name = file ? file->path() : "stdin";
+  const std::size_t max_bytes = limits.bytes;
   // One byte past the limit tells a file at the limit from a larger one.
-  std::string text(file ? std::min(file->size(), max_bytes) + 1 : 65536, '\0');
+  std::string text(file ? std::min(file->size(), max_bytes) + 1 : std::min<std::size_t>(65536, max_bytes + 1), '\0');
   std::size_t used = 0;
   for (;;) {
     if (used == text.size()) {
-      if (used > max_bytes) throw InputError(name, too_large(max_bytes));
+      if (used > max_bytes) throw InputError(name, over_limit(limits, Limit::bytes));
       text.resize(std::min(2 * text.size(), max_bytes + 1));
     }
     const ssize_t n = ::read(fd, text.data() + used, text.size() - used);
@@ -135,7 +147,7 @@ std::string read_text(const std::string& path, std::size_t max_bytes, const std:
                                  reason(errno));
     }
   }
-  if (used > max_bytes) throw InputError(name, too_large(max_bytes));
+  if (used > max_bytes) throw InputError(name, over_limit(limits, Limit::bytes));
   text.resize(used);
   return text;
 }

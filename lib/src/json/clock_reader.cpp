@@ -65,7 +65,7 @@ ClockQuantity quantity(Object& parent, const std::string& key, std::optional<Dim
 }  // namespace
 
 ClockScene parse_clock_scene(const std::string& text) {
-  const json doc = parse_json(text, kMaxSceneBytes);
+  const json doc = parse_json(text, kSceneInput);
   Object top(doc, "", "a JSON object (the clock scene)");
   ClockScene s;
   PENDULUM_FAIL_IF(!top.has("schema"), "schema",

@@ -234,6 +234,8 @@ void read_timing(Object& parent, const std::string& prefix, Observation<double>&
       throw InputError(t.path(key), "got " + format_number(x) + " " + unit_name +
                                         "; expected a positive time");
     }
+    const std::string why = out_of_range(ranges::timing_uncertainty, x * unit->factor);
+    PENDULUM_FAIL_IF(!why.empty(), t.path(key), why);
     return x;
   };
   const std::optional<double> resolution = optional_time("resolution");

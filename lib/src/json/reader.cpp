@@ -113,12 +113,12 @@ std::optional<std::string> trailing_comma(const std::string& text) {
 
 }  // namespace
 
-json parse_json(const std::string& given, std::size_t max_bytes) {
+json parse_json(const std::string& given, const InputLimits& limits) {
   const bool utf16_le = given.size() >= 2 && given[0] == '\xff' && given[1] == '\xfe';
   const bool utf16_be = given.size() >= 2 && given[0] == '\xfe' && given[1] == '\xff';
   const std::string text = utf16_le || utf16_be ? utf16_to_utf8(given, utf16_le) : given;
-  if (text.size() > max_bytes) {
-    throw InputError("", too_large(max_bytes));  // as the files' reader says it
+  if (text.size() > limits.bytes) {
+    throw InputError("", over_limit(limits, Limit::bytes));  // as the files' reader says it
   }
   struct Frame {
     bool array = false;

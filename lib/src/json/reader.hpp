@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pendulum/files.hpp"
 #include "pendulum/input_error.hpp"
 #include "pendulum/units.hpp"
 #include "../text.hpp"
@@ -34,7 +35,7 @@ std::string join_path(const std::string& path, const std::string& key);
 /// value being read, to name it in syntax errors, refuses values nested too
 /// deep, and refuses a key given twice in one object, which the JSON library
 /// would silently resolve by keeping the last.
-json parse_json(const std::string& text, std::size_t max_bytes);
+json parse_json(const std::string& text, const InputLimits& limits);
 
 /// A JSON object being read: remembers which keys were asked for, so that
 /// finish() can refuse the others by name.

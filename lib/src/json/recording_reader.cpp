@@ -103,8 +103,7 @@ std::size_t RecordingReader::read(Object& o, ParsedScene& out) {
   };
   auto it = std::find_if(done_.begin(), done_.end(), same);
   if (it == done_.end()) {
-    RecordingLimits limits;
-    limits.within = within();
+    const RecordingLimits limits{this->limits(kRecordingInput), within()};
     try {
       done_.push_back({file, recording_format_name(format), set, options.bob_width, options.range, options.whole_record,
                        analyse_recording(file, format, options, limits, set, columns)});

@@ -43,6 +43,9 @@ class RecordingReader {
     return files_.allow_outside ? std::nullopt : files_.directory;
   }
 
+  /// The limits of a file of a kind whose defaults are `defaults`, as the command raised them.
+  InputLimits limits(const InputLimits& defaults) const { return files_.limits.applied_to(defaults); }
+
  private:
   SceneFiles files_;
   struct Done {

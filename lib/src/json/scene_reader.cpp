@@ -575,7 +575,7 @@ std::vector<std::string> scene_file_names(const std::string& text, const SceneFi
   std::vector<std::string> out;
   json doc;
   try {
-    doc = parse_json(text, kMaxSceneBytes);  // nested at most 10 deep: the walk below is bounded
+    doc = parse_json(text, files.limits.applied_to(kSceneInput));  // nested at most 10 deep: the walk below is bounded
   } catch (const InputError&) {
     return out;
   }
@@ -598,7 +598,7 @@ std::vector<std::string> scene_file_names(const std::string& text, const SceneFi
 }
 
 ParsedScene parse_scene(const std::string& text, const SceneFiles& files) {
-  const json doc = parse_json(text, kMaxSceneBytes);
+  const json doc = parse_json(text, files.limits.applied_to(kSceneInput));
   RecordingReader recordings(files);
   ParsedScene out;
   Object top(doc, "", "a JSON object (the scene)");
@@ -640,7 +640,7 @@ ParsedScene parse_scene(const std::string& text, const SceneFiles& files) {
 }
 
 ParsedScene parse_decay_document(const std::string& text, const SceneFiles& files) {
-  const json doc = parse_json(text, kMaxSceneBytes);
+  const json doc = parse_json(text, files.limits.applied_to(kSceneInput));
   Object top(doc, "", "a JSON object (the scene)");
   for (const char* key : {"observations", "timing", "length", "amplitude"}) {
     if (top.has(key)) return parse_scene(text, files);

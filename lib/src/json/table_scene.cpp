@@ -115,13 +115,14 @@ json read_table_reference(Object& top, ParsedScene& out, const RecordingReader& 
   const std::string name = t.text("table");
   PENDULUM_FAIL_IF(name.empty() || name.find('\0') != std::string::npos, t.path("table"),
                    "got " + shown(t.at("table")) + "; expected the name of a table file (CSV or tab-separated)");
-  const TableOptions options = table_options(t);
+  TableOptions options = table_options(t);
+  options.limits = recordings.limits(kTableInput);
   if (t.has("source")) t.text("source");
   t.finish();
   const std::string file = recordings.resolve(t, "table", "tables");
   SettingsTable table;
   try {
-    table = read_settings_table(file, options, kMaxTableBytes, recordings.within());
+    table = read_settings_table(file, options, recordings.within());
   } catch (const InputError& e) {
     throw InputError(t.path("table"), e.what());  // "file: message" or "file:line:column: message"
   }

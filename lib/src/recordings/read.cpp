@@ -533,7 +533,7 @@ bool tracked(Role role) {
 }
 
 Recording parse_text(std::string_view text, const std::string& file, RecordingFormat format, const std::string& set,
-                     const std::string& column_spec);
+                     const std::string& column_spec, const InputLimits& limits);
 
 /// Throws, naming its line and column, if [text, text + size) holds a NUL byte.
 void refuse_binary(std::string_view text, std::size_t size, const std::string& file) {
@@ -550,7 +550,7 @@ void refuse_binary(std::string_view text, std::size_t size, const std::string& f
 }  // namespace
 
 Recording parse_recording(std::string_view text, const std::string& file, RecordingFormat format,
-                          const std::string& set, const std::string& columns) {
+                          const std::string& set, const std::string& columns, const InputLimits& limits) {
   if (looks_like_zip(text)) {
     fail(file, 1, 1, "a zip archive; expected a text export here (a zip is unpacked when read from its file: read_recording)");
   }
@@ -559,7 +559,7 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
   // rows refuse it, and the text is searched for it only then (a search of
   // the whole text up front took 3 % of reading a large file).
   try {
-    return parse_text(text, file, format, set, columns);
+    return parse_text(text, file, format, set, columns, limits);
   } catch (const InputError&) {
     refuse_binary(text, text.size(), file);
     throw;
@@ -569,7 +569,7 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
 namespace {
 
 Recording parse_text(std::string_view text, const std::string& file, RecordingFormat format, const std::string& set,
-                     const std::string& column_spec) {
+                     const std::string& column_spec, const InputLimits& limits) {
   const std::string_view original = text;
   text = strip_bom(text);
   const HeaderLines lines = find_header(text, file);
@@ -582,8 +582,8 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
   Dialect dialect = sniff(header, data.first);
   if (header) {
     // A header naming other columns than the rows hold is no guide to them.
-    const std::size_t named = filled_cells(split_cells(*header, dialect));
-    const std::vector<std::string_view> first = split_cells(data.first, dialect);
+    const std::size_t named = filled_cells(split_cells_within(*header, dialect, limits, file, header_line));
+    const std::vector<std::string_view> first = split_cells_within(data.first, dialect, limits, file, lines.data_line);
     if (named != first.size() && named != filled_cells(first)) {
       header_notes.push_back({header_line, "the header names " + std::to_string(named) + " column" + (named == 1 ? "" : "s") +
                                                " over rows of " + std::to_string(first.size()) +
@@ -635,7 +635,7 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
       }
     }
   } else {
-    cols.resize(cells(data.first).size());
+    cols.resize(split_cells_within(data.first, dialect, limits, file, lines.data_line).size());
     for (std::size_t j = 0; j < cols.size(); ++j) cols[j].decided = "content";
   }
   std::vector<std::string> names(cols.size());  // as messages quote them
@@ -716,7 +716,7 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
   // A header no layout fits is refused before its rows are read.
   if (!headerless) (void)detect(format, cols, preamble, false, file, header_line, run, track, nullptr);
 
-  Table table = read_rows(data.begin, data.end, lines.data_line, dialect, names, file);
+  Table table = read_rows(data.begin, data.end, lines.data_line, dialect, names, file, limits);
   if (headerless) {
     // A trailing delimiter on every row is no column.
     while (cols.size() > 1 && is_constant(table.columns.back()) &&
@@ -900,10 +900,7 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
 Recording read_recording(const std::string& path, RecordingFormat format, const RecordingLimits& limits,
                          const std::string& set, const std::string& columns) {
   const InputFile file(path, "a recording file", limits.within);
-  if (file.size() > limits.max_bytes) {
-    throw InputError(file.path(), "the file has " + std::to_string(file.size()) + " bytes; expected at most " +
-                                      std::to_string(limits.max_bytes) + " (RecordingLimits::max_bytes)");
-  }
+  if (file.size() > limits.input.bytes) throw InputError(file.path(), over_limit(limits.input, Limit::bytes));
   // Mapped, not read: no copy of the text (docs/robustness.md says what a
   // copy would cost). A file cut or rewritten while it is read is refused,
   // whatever the parser made of it.
@@ -921,10 +918,10 @@ Recording read_recording(const std::string& path, RecordingFormat format, const 
                              "sets are phyphox's, whose headers say)");
     }
     // A spreadsheet's sheet is read as the CSV it holds, `set` naming the sheet.
-    Recording r = sheet ? parse_recording(xlsx_sheet_csv(map.text(), path, set, limits.max_bytes), path, format, "", columns)
+    Recording r = sheet ? parse_recording(xlsx_sheet_csv(map.text(), path, set, limits.input.bytes), path, format, "", columns, limits.input)
                   : looks_like_zip(map.text())                 ? read_zip_recording(map.text(), path, format, set, limits)
                   : looks_like_phyphox_experiment(map.text()) ? read_phyphox_experiment(map.text(), path, format, set)
-                                                              : parse_recording(map.text(), path, format, set, columns);
+                                                              : parse_recording(map.text(), path, format, set, columns, limits.input);
     check_unchanged();
     return r;
   } catch (const InputError&) {

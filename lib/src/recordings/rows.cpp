@@ -29,7 +29,7 @@ std::size_t Table::line(std::size_t row) const {
 }
 
 Table read_rows(const char* p, const char* end, std::size_t line_no, const Dialect& dialect,
-                const std::vector<std::string>& names, const std::string& file) {
+                const std::vector<std::string>& names, const std::string& file, const InputLimits& limits) {
   const std::size_t ncols = names.size();
   const char delimiter = dialect.delimiter;
   const bool spaces = delimiter == ' ';
@@ -43,7 +43,8 @@ Table read_rows(const char* p, const char* end, std::size_t line_no, const Diale
     const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
     const std::size_t first = nl ? static_cast<std::size_t>(static_cast<const char*>(nl) - p) : static_cast<std::size_t>(end - p);
     const double bytes_per_row = static_cast<double>(std::max<std::size_t>(first + 1, 4));
-    const std::size_t guess = static_cast<std::size_t>(1.05 * static_cast<double>(end - p) / bytes_per_row) + 16;
+    const std::size_t guess = std::min(static_cast<std::size_t>(1.05 * static_cast<double>(end - p) / bytes_per_row) + 16,
+                                       limits.rows + 1);
     for (auto& c : table.columns) {
       c.reserve(guess);
       detail::huge_pages(c);
@@ -181,6 +182,7 @@ Table read_rows(const char* p, const char* end, std::size_t line_no, const Diale
   };
   std::size_t expected_line = 0;  // the line the next row has without a jump
   for (const char* e = nullptr; p < end; p = e < end ? e + 1 : end, ++line_no) {
+    if (table.rows == limits.rows && !is_blank(p, line_end(p))) fail(file, line_no, 1, over_limit(limits, Limit::rows));
     const char* plain = plain_row(p);
     if (plain) {
       e = plain;

@@ -160,11 +160,29 @@ std::size_t filled_cells(const std::vector<std::string_view>& cells) {
   return n;
 }
 
-std::vector<std::string_view> split_cells(std::string_view line, const Dialect& dialect) {
+std::vector<std::string_view> split_cells_within(std::string_view line, const Dialect& dialect,
+                                                 const InputLimits& limits, const std::string& file,
+                                                 std::size_t line_no) {
+  std::vector<std::string_view> cells = split_cells(line, dialect, limits.columns);
+  if (cells.size() > limits.columns) {
+    // Empty cells to the end (a spreadsheet's trailing delimiters) are no
+    // columns: the line is read up to them. Else refused at the first cell
+    // past the limit.
+    const auto past = static_cast<std::size_t>(cells[limits.columns].data() - line.data());
+    if (line.find_first_not_of(std::string{dialect.delimiter, ' ', '"', '\r'}, past) == std::string_view::npos) {
+      cells.resize(limits.columns);
+      return cells;
+    }
+    fail(file, line_no, past + 1, over_limit(limits, Limit::columns));
+  }
+  return cells;
+}
+
+std::vector<std::string_view> split_cells(std::string_view line, const Dialect& dialect, std::size_t most) {
   std::vector<std::string_view> out;
   if (dialect.delimiter == ' ') {
     line = trim_spaces(line);
-    for (std::size_t start = 0; start < line.size();) {
+    for (std::size_t start = 0; start < line.size() && out.size() <= most;) {
       std::size_t stop = start;
       if (line[start] == '"') {
         const std::size_t close = line.find('"', start + 1);
@@ -198,7 +216,7 @@ std::vector<std::string_view> split_cells(std::string_view line, const Dialect& 
       d = line.find(dialect.delimiter, from);
     }
     out.push_back(trim_cell(line.substr(start, d == std::string_view::npos ? d : d - start)));
-    if (d == std::string_view::npos) return out;
+    if (d == std::string_view::npos || out.size() > most) return out;
     start = d + 1;
   }
 }

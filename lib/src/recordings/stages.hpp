@@ -98,7 +98,15 @@ std::string_view trim_cell(std::string_view s);
 /// The cells of a line, spaces, CR and quotes trimmed (a quoted cell keeps
 /// its delimiters). With runs of spaces, a header's "(s)" or "[deg]" joins
 /// the word before it.
-std::vector<std::string_view> split_cells(std::string_view line, const Dialect& dialect);
+/// At most `most` + 1 cells are split.
+std::vector<std::string_view> split_cells(std::string_view line, const Dialect& dialect,
+                                          std::size_t most = std::string_view::npos);
+
+/// split_cells of the line `line_no` of `file`, refused past limits.columns
+/// cells as soon as they are passed: a line of 10^7 cells costs no more.
+std::vector<std::string_view> split_cells_within(std::string_view line, const Dialect& dialect,
+                                                 const InputLimits& limits, const std::string& file,
+                                                 std::size_t line_no);
 
 /// The number of cells up to the last non-empty one (at least 1): a
 /// trailing delimiter makes no column.
@@ -193,9 +201,11 @@ struct Table {
 
 /// Reads the rows of [p, end), the first on line `line_no`, with `names`
 /// (one per column) naming the columns in messages; refuses a truncated or
-/// overlong row, a cell that is not a number, mixed delimiters.
+/// overlong row, a cell that is not a number, mixed delimiters, a row past
+/// limits.rows (refused as it is reached; the columns' storage is reserved
+/// for at most that many).
 Table read_rows(const char* p, const char* end, std::size_t line_no, const Dialect& dialect,
-                const std::vector<std::string>& names, const std::string& file);
+                const std::vector<std::string>& names, const std::string& file, const InputLimits& limits);
 
 // --- content ----------------------------------------------------------------
 

@@ -14,6 +14,8 @@
 #include <map>
 #include <optional>
 
+#include "pendulum/amplitude.hpp"
+#include "pendulum/argument_ranges.hpp"
 #include "pendulum/files.hpp"
 #include "pendulum/straight_line.hpp"
 #include "zip.hpp"
@@ -198,6 +200,35 @@ double median(std::vector<double> x) {
   const auto mid = x.begin() + static_cast<std::ptrdiff_t>(x.size() / 2);
   std::nth_element(x.begin(), mid, x.end());
   return *mid;
+}
+
+/// The root mean square of `v`, scaled by the power of two nearest its
+/// largest size so that a stated 1e-200 s does not square to 0 (a timing
+/// then claimed exact); the scaling is exact, so other values' rms keeps
+/// every bit.
+double rms(const std::vector<double>& v) {
+  double largest = 0.0, sum = 0.0;
+  for (double x : v) largest = std::max(largest, std::fabs(x));
+  if (!(largest > 0.0)) return largest;
+  int exponent = 0;
+  (void)std::frexp(largest, &exponent);
+  for (double x : v) sum += std::pow(std::ldexp(x, -exponent), 2) / static_cast<double>(v.size());
+  return std::ldexp(std::sqrt(sum), exponent);
+}
+
+/// The column (from 1) where cell `j` of the line `line_no` of `text`
+/// starts: a message points at the cell. Found only for a message, so the
+/// lines are counted then.
+std::size_t cell_column(std::string_view text, std::size_t line_no, const Dialect& dialect, std::size_t j) {
+  std::size_t start = 0;
+  for (std::size_t n = 1; n < line_no && start != std::string_view::npos; ++n) {
+    start = text.find('\n', start);
+    if (start != std::string_view::npos) ++start;
+  }
+  if (start == std::string_view::npos) return 1;
+  const std::string_view line = text.substr(start, text.find('\n', start) - start);
+  const std::vector<std::string_view> cells = split_cells(line, dialect, j);
+  return j < cells.size() ? static_cast<std::size_t>(cells[j].data() - line.data()) + 1 : 1;
 }
 
 /// True if `u` reads as the uncertainty of `v`: never negative, not all zero
@@ -560,10 +591,12 @@ Table trial_rows(const Table& t, std::size_t time, const std::vector<std::size_t
 /// The header's columns, a trailing delimiter's empty one dropped; under
 /// a units row ("(m),,," below "Length,Time,..."), the names of the line
 /// above with the units of that row.
-std::vector<Column> header_columns(const HeaderLines& lines, const Dialect& dialect) {
+std::vector<Column> header_columns(const HeaderLines& lines, const Dialect& dialect, const InputLimits& limits,
+                                   const std::string& file) {
   auto columns_of = [&](std::string_view line) {
     std::vector<Column> cols;
-    for (std::string_view cell : split_cells(line, dialect)) cols.push_back(classify(cell));
+    const std::size_t line_no = line.data() == lines.header->data() ? lines.header_line : lines.header_line - 1;
+    for (std::string_view cell : split_cells_within(line, dialect, limits, file, line_no)) cols.push_back(classify(cell));
     while (cols.size() > 1 && cols.back().name.empty()) cols.pop_back();
     return cols;
   };
@@ -655,13 +688,13 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
 
   std::vector<Column> cols;
   if (lines.header) {
-    cols = header_columns(lines, dialect);
+    cols = header_columns(lines, dialect, options.limits, file);
   } else {
-    cols.resize(split_cells(data.first, dialect).size());
+    cols.resize(split_cells_within(data.first, dialect, options.limits, file, lines.data_line).size());
   }
   std::vector<std::string> names(cols.size());  // as messages quote them
   for (std::size_t j = 0; j < cols.size(); ++j) names[j] = column_label(cols[j].name, j + 1);
-  Table table = read_rows(data.begin, data.end, lines.data_line, dialect, names, file);
+  Table table = read_rows(data.begin, data.end, lines.data_line, dialect, names, file, options.limits);
   for (std::size_t j = 0; j < cols.size(); ++j) {
     if (cols[j].unit.empty()) cols[j].unit = table.cell_units[j];
   }
@@ -902,6 +935,9 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     table = trial_rows(*source, *time_col, trials, origin);
   }
   auto line_of = [&](std::size_t row) { return source ? source->line(origin[row]) : table.line(row); };
+  auto refuse_cell = [&](std::size_t row, std::size_t col, const std::string& why) {
+    fail(file, line_of(row), cell_column(text, line_of(row), dialect, col), "\"" + names[col] + "\": " + why);
+  };
 
   // The time unit: the header's, else the numbers' (periods of 0.1 to 30 s).
   if (tu.unit.empty()) {
@@ -994,41 +1030,6 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   }
   out.setting_unit = su.unit;
   const std::vector<double> meters = scaled(settings, *setting_factor);
-  // The physics across the rows: a row in another unit stands out.
-  if (!out.sweep && out.setting == Setting::length) {
-    const std::vector<double> g = row_g(meters, periods);
-    const double m = median(g);
-    for (std::size_t i = 0; i < g.size(); ++i) {
-      if (g[i] > 3.0 * m || g[i] < m / 3.0) {
-        fail(file, line_of(i), 1,
-             "L = " + format_number(settings[i], 6) + " " + su.unit + " and T = " + format_number(periods[i], 6) +
-                 " s give 4 pi^2 L/T^2 = " + format_number(g[i], 3) + " m/s^2, " + format_number(g[i] / m, 2) +
-                 " times the other rows' " + format_number(m, 3) + ": expected one unit in each column (a length or a "
-                 "time written in another unit, mixed units?)");
-      }
-    }
-    if (m < 2.0 || m > 50.0) {
-      refuse("the lengths in " + su.unit + " and the periods in " + tu.unit + " give 4 pi^2 L/T^2 = " +
-             format_number(m, 3) + " m/s^2; expected about 9.8: a unit in the header wrong?");
-    }
-  } else if (out.setting == Setting::pivot_distance) {
-    const std::vector<double> k2 = row_k2(meters, periods);
-    for (std::size_t i = 0; i < k2.size(); ++i) {
-      // At h = 0 the equivalent length k^2/h + h below would be 0/0.
-      if (!(meters[i] > 0.0)) {
-        fail(file, line_of(i), 1,
-             "got a pivot h = " + format_number(settings[i], 6) + " " + su.unit + " from the centre of mass; expected "
-             "a pivot away from it (at the centre the body has no restoring torque and its period is infinite)");
-      }
-      if (!(k2[i] > 0.0)) {
-        fail(file, line_of(i), 1,
-             "h = " + format_number(settings[i], 6) + " " + su.unit + " is beyond the equivalent length gT^2/4pi^2 = " +
-                 format_number(k2[i] / meters[i] + meters[i], 4) + " m of its period " + format_number(periods[i], 6) +
-                 " s, which no body has; expected one unit in each column (mixed units?)");
-      }
-    }
-  }
-
   // The other columns' units.
   auto unit_of = [&](std::optional<std::size_t> col, const Use& of, auto& units) -> double {
     if (!col) return 1.0;
@@ -1083,10 +1084,11 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     if (!f) refuse("got the unit \"" + one_line(au.unit, 20, true) + "\" for \"" + names[*amplitude_col] + "\"; expected deg or rad");
     amplitude_factor = *f;
     const std::vector<double> a = sizes(table.columns[*amplitude_col]);
-    const double largest = *std::max_element(a.begin(), a.end());
-    if (!(largest * amplitude_factor < kPi)) {
-      refuse("the column \"" + names[*amplitude_col] + "\" (amplitude) reaches " + format_number(largest, 4) + " " +
-             au.unit + ", 180 deg or more (over the top)" +
+    const std::size_t top = static_cast<std::size_t>(std::max_element(a.begin(), a.end()) - a.begin());
+    const double largest = a[top];
+    if (!accepts(ranges::amplitude, largest * amplitude_factor)) {
+      refuse_cell(top, *amplitude_col, "got " + format_number(largest, 4) + " " +
+             au.unit + (au.unit == "deg" ? "" : ", 180 deg or more") + " (over the top)" +
              (au.unit == "rad" && largest < 180.0 ? ": it holds degrees? Say so in the header (\"theta (deg)\") or "
                                                    "declared: --columns (a scene's \"columns\")"
                                                  : "; expected a swing's amplitude, below 180 deg"));
@@ -1101,6 +1103,68 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   }
   const double amplitude_u_factor =
       amplitude_u ? *factor_of(kAngleUnits, use[*amplitude_u].unit) / amplitude_factor : 1.0;
+
+  // What the scene reader refuses in an observation (argument_ranges.hpp),
+  // refused here at its cell: import's scene would fail at a path the user
+  // never wrote.
+  for (std::size_t i = 0; i < table.rows; ++i) {
+    if (!out.sweep && out.setting == Setting::length) {
+      const std::string why = out_of_range(ranges::length, meters[i]);
+      if (!why.empty()) refuse_cell(i, *setting_col, why);
+      // As uncertain as itself, a length might be 0.
+      if (setting_u && table.columns[*setting_u][i] * setting_u_factor >= settings[i]) {
+        refuse_cell(i, *setting_u, "got " + format_number(table.columns[*setting_u][i]) + " " + use[*setting_u].unit +
+                                       "; expected an uncertainty smaller than the value (" +
+                                       format_number(settings[i]) + " " + su.unit + ")");
+      }
+    }
+    if (time_u) {
+      const std::string why = out_of_range(ranges::timing_uncertainty, table.columns[*time_u][i] * time_u_factor * *time_factor);
+      if (!why.empty()) refuse_cell(i, *time_u, why);
+    }
+  }
+
+  // The physics across the rows: a row in another unit stands out.
+  if (!out.sweep && out.setting == Setting::length) {
+    // Each row's small-amplitude period: a 170 deg swing's is 0.36 of its own.
+    std::vector<double> small = periods;
+    for (std::size_t i = 0; amplitude_col && i < small.size(); ++i) {
+      small[i] /= 1.0 + finite_amplitude_agm(std::fabs(table.columns[*amplitude_col][i]) * amplitude_factor);
+    }
+    const std::vector<double> g = row_g(meters, small);
+    const double m = median(g);
+    for (std::size_t i = 0; i < g.size(); ++i) {
+      if (g[i] > 3.0 * m || g[i] < m / 3.0) {
+        fail(file, line_of(i), 1,
+             "L = " + format_number(settings[i], 6) + " " + su.unit + " and T = " + format_number(periods[i], 6) + " s" +
+                 (amplitude_col ? " (T0 = " + format_number(small[i], 6) + " s at its amplitude)" : "") +
+                 " give 4 pi^2 L/T" + (amplitude_col ? "0" : "") + "^2 = " + format_number(g[i], 3) + " m/s^2, " + format_number(g[i] / m, 2) +
+                 " times the other rows' " + format_number(m, 3) + ": expected one unit in each column (a length or a "
+                 "time written in another unit, mixed units?)");
+      }
+    }
+    if (m < 2.0 || m > 50.0) {
+      refuse("the lengths in " + su.unit + " and the periods in " + tu.unit + " give 4 pi^2 L/T^2 = " +
+             format_number(m, 3) + " m/s^2; expected about 9.8: a unit in the header wrong?");
+    }
+  } else if (out.setting == Setting::pivot_distance) {
+    const std::vector<double> k2 = row_k2(meters, periods);
+    for (std::size_t i = 0; i < k2.size(); ++i) {
+      // At h = 0 the equivalent length k^2/h + h below would be 0/0.
+      if (!(meters[i] > 0.0)) {
+        fail(file, line_of(i), 1,
+             "got a pivot h = " + format_number(settings[i], 6) + " " + su.unit + " from the centre of mass; expected "
+             "a pivot away from it (at the centre the body has no restoring torque and its period is infinite)");
+      }
+      if (!(k2[i] > 0.0)) {
+        fail(file, line_of(i), 1,
+             "h = " + format_number(settings[i], 6) + " " + su.unit + " is beyond the equivalent length gT^2/4pi^2 = " +
+                 format_number(k2[i] / meters[i] + meters[i], 4) + " m of its period " + format_number(periods[i], 6) +
+                 " s, which no body has; expected one unit in each column (mixed units?)");
+      }
+    }
+  }
+
 
   // One length at several amplitudes: a sweep whose length is known.
   if (!out.sweep && amplitude_col && out.setting == Setting::length &&
@@ -1149,14 +1213,14 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     for (double t : o.times) mean += t / static_cast<double>(n);
     for (double t : o.times) ss += (t - mean) * (t - mean);
     out.pooled_dof += n - 1;
-    double su2 = 0.0, a = 0.0, au2 = 0.0;
-    std::vector<double> amps;
+    double a = 0.0, au2 = 0.0;
+    std::vector<double> amps, time_sigmas;
     for (std::size_t k = 0; k < n; ++k, ++row) {
-      if (time_u) su2 += std::pow(table.columns[*time_u][row] * time_u_factor, 2) / static_cast<double>(n);
+      if (time_u) time_sigmas.push_back(table.columns[*time_u][row] * time_u_factor);
       if (amplitude_col) amps.push_back(std::fabs(table.columns[*amplitude_col][row])), a += amps.back() / static_cast<double>(n);
       if (amplitude_u) au2 += std::pow(table.columns[*amplitude_u][row] * amplitude_u_factor, 2) / static_cast<double>(n);
     }
-    if (time_u) o.time_sigma = std::sqrt(su2);
+    if (time_u) o.time_sigma = rms(time_sigmas);
     if (amplitude_col) {
       o.amplitude = a;
       // The mean of the releases: its standard error, or the stated ones' over sqrt(n).
@@ -1223,7 +1287,7 @@ bool looks_like_settings_table(std::string_view text) {
     if (lines.header) {
       const DataRows data = data_rows(text, lines, "", "a table or a recording");
       const Dialect d = sniff(lines.header, data.first);
-      const std::vector<Column> header = header_columns(lines, d);
+      const std::vector<Column> header = header_columns(lines, d, kTableInput, "");
       std::optional<std::size_t> time;
       bool x = false, y = false, angle = false;
       for (std::size_t i = 0; i < header.size(); ++i) {
@@ -1244,7 +1308,7 @@ bool looks_like_settings_table(std::string_view text) {
       const bool track = x && !y;
       if (!(track || angle) || !time) return false;
       const std::vector<std::string> names(header.size());  // no message quotes them here
-      const Table rows = read_rows(data.begin, data.end, lines.data_line, d, names, "");
+      const Table rows = read_rows(data.begin, data.end, lines.data_line, d, names, "", kTableInput);
       double previous = -HUGE_VAL, lo = HUGE_VAL, hi = 0.0;
       bool increasing = true;
       std::vector<double> steps;
@@ -1267,11 +1331,11 @@ bool looks_like_settings_table(std::string_view text) {
   }
 }
 
-SettingsTable read_settings_table(const std::string& path, const TableOptions& options, std::size_t max_bytes,
+SettingsTable read_settings_table(const std::string& path, const TableOptions& options,
                                   const std::optional<std::string>& within) {
-  const std::string text = read_text(path, max_bytes, "a table of settings and periods", within);
+  const std::string text = read_text(path, options.limits, "a table of settings and periods", within);
   // A spreadsheet's sheet is read as the CSV it holds.
-  if (looks_like_xlsx(text)) return parse_settings_table(xlsx_sheet_csv(text, path, options.sheet, max_bytes), path, options);
+  if (looks_like_xlsx(text)) return parse_settings_table(xlsx_sheet_csv(text, path, options.sheet, options.limits.bytes), path, options);
   return parse_settings_table(text, path, options);
 }
 
@@ -1279,7 +1343,7 @@ bool file_holds_settings_table(const std::string& path, const std::string& sheet
   try {
     const InputFile file(path, "a table or a recording");
     if (file.size() <= kMaxSpreadsheetPeek) {
-      const std::string text = read_text(path, kMaxSpreadsheetPeek, "a table or a recording");
+      const std::string text = read_text(path, {kMaxSpreadsheetPeek, 0, 0, "a spreadsheet"}, "a table or a recording");
       if (looks_like_xlsx(text)) return looks_like_settings_table(xlsx_sheet_csv(text, path, sheet, kMaxSpreadsheetPeek));
     }
     std::string head(std::min<std::size_t>(file.size(), 1 << 16), '\0');

@@ -41,9 +41,9 @@ struct Sets {
   /// Parses the set `name` (its text), unless `wanted` names another; the
   /// set asked for throws its own error.
   void add(std::string_view text, const std::string& name, const std::string& file, RecordingFormat format,
-           const std::string& wanted) {
+           const std::string& wanted, const InputLimits& limits = kRecordingInput) {
     try {
-      read.push_back(parse_recording(text, file + "/" + one_line(name, 80, true), format));
+      read.push_back(parse_recording(text, file + "/" + one_line(name, 80, true), format, {}, {}, limits));
       read.back().set = name;
     } catch (const InputError& bad) {
       if (!wanted.empty()) throw;
@@ -160,13 +160,10 @@ Recording read_zip_recording(std::string_view bytes, const std::string& file, Re
   }
   // Stated sizes first: a zip bomb is refused before anything is unpacked.
   zip_uint64_t total = 0;
-  for (const Entry& e : sets) total += std::min<zip_uint64_t>(e.size, limits.max_bytes + 1);
-  if (total > limits.max_bytes) {
-    archive.fail("a zip archive whose sets unpack to over " + std::to_string(limits.max_bytes) +
-                 " bytes (RecordingLimits::max_bytes; a zip bomb?); expected a recording that fits");
-  }
+  for (const Entry& e : sets) total += std::min<zip_uint64_t>(e.size, limits.input.bytes + 1);
+  if (total > limits.input.bytes) archive.fail("a zip archive whose sets unpack (a zip bomb?): " + over_limit(limits.input, Limit::bytes));
   Sets read;  // in the archive's order
-  for (const Entry& e : sets) read.add(archive.read(e), e.name, file, format, set);
+  for (const Entry& e : sets) read.add(archive.read(e), e.name, file, format, set, limits.input);
   if (read.read.empty()) archive.fail("a zip archive with no set that reads as a recording (" + read.refused + ")");
   return read.best();
 }

@@ -24,7 +24,7 @@ bool looks_like_zip(std::string_view bytes);
 /// parsed recording: no set is unpacked twice), whose periods
 /// analyse_recording compares, and each set that does not read is a note.
 /// Refused (InputError naming `file`): a damaged archive, no usable set, a
-/// set that unpacks to more than limits.max_bytes in all (a zip bomb). A
+/// set that unpacks to more than limits.input.bytes in all (a zip bomb). A
 /// set's own errors name "file/set:line:column".
 Recording read_zip_recording(std::string_view bytes, const std::string& file, RecordingFormat format,
                              const std::string& set, const RecordingLimits& limits);

@@ -38,7 +38,7 @@ ReportPage make_report_page(const ReportRequest& o,
                             const std::function<void(const std::vector<std::string>&)>& check_recordings) {
   const bool svg = !o.plot.empty();
   if (!o.text && (o.family || looks_like_recording(o.file))) {
-    const Recording samples = read_recording(o.file, o.family.value_or(RecordingFormat::automatic), {}, o.set, o.columns);
+    const Recording samples = read_recording(o.file, o.family.value_or(RecordingFormat::automatic), {o.limits.applied_to(kRecordingInput), std::nullopt}, o.set, o.columns);
     const RecordingSummary summary{o.file,      samples.format,  samples.kind,
                                    samples.rows, samples.dropped,
                                    analyse_candidates(samples, o.file, o.family.value_or(RecordingFormat::automatic),
@@ -47,14 +47,14 @@ ReportPage make_report_page(const ReportRequest& o,
     const RecordingRecord r = make_recording_record(summary, &samples);
     return {svg ? recording_plot_svg(r, o.plot) : recording_report_html(r), {}};
   }
-  const std::string text = o.text ? *o.text : read_text(o.file, kMaxSceneBytes, "a scene file");
-  const SceneFiles files{o.directory ? *o.directory : scene_directory(o.file), o.allow_outside};
+  const std::string text = o.text ? *o.text : read_text(o.file, o.limits.applied_to(kSceneInput), "a scene file");
+  const SceneFiles files{o.directory ? *o.directory : scene_directory(o.file), o.allow_outside, o.limits};
   if (check_recordings) check_recordings(scene_file_names(text, files));  // before any is read
   const ParsedScene scene = parse_scene(text, files);
   const Analysis analysis = analyse(scene, o.analysis);
   // The recordings the scene names, read again for their signal plots
   // (once each: the report draws a recording named twice once).
-  RecordingLimits limits;
+  RecordingLimits limits{o.limits.applied_to(kRecordingInput), std::nullopt};
   limits.within = o.allow_outside ? std::nullopt : files.directory;
   std::vector<Recording> samples;
   for (std::size_t i = 0; i < scene.recordings.size(); ++i) {

@@ -26,6 +26,8 @@
 #include <string_view>
 #include <vector>
 
+#include "pendulum/files.hpp"
+
 namespace pendulum {
 
 /// The family of a recording; `automatic` recognises it from the header.
@@ -139,9 +141,9 @@ struct Recording {
 
 /// Limits that keep a wrong file from eating the memory or the time.
 struct RecordingLimits {
-  /// 1 GiB: 8 hours at 500 Hz. For a zip archive, also the most its sets
-  /// may unpack to, all together.
-  std::size_t max_bytes = std::size_t{1} << 30;
+  /// Bytes, rows and columns (kRecordingInput unless raised). For a zip
+  /// archive, its bytes are also the most its sets may unpack to, all together.
+  InputLimits input = kRecordingInput;
   /// The folder the file must lie in, opened beneath it (InputFile): a
   /// scene's folder, unless --allow-outside.
   std::optional<std::string> within;
@@ -156,12 +158,13 @@ struct RecordingLimits {
 /// case, required there), and is refused for a family that has one set only.
 /// `columns` ("t:s,theta:deg": a role and unit per column in file order,
 /// "-" for one not used) declares what the file cannot say
-/// (docs/recordings.md, "Columns").
+/// (docs/recordings.md, "Columns"). More rows or columns than `limits`
+/// allow are refused as they are reached.
 Recording parse_recording(std::string_view text, const std::string& file,
                           RecordingFormat format = RecordingFormat::automatic, const std::string& set = {},
-                          const std::string& columns = {});
+                          const std::string& columns = {}, const InputLimits& limits = kRecordingInput);
 
-/// Reads the file at `path` (at most limits.max_bytes; a larger file, a
+/// Reads the file at `path` (at most limits.input.bytes; a larger file, a
 /// directory, a device or a pipe is refused) and parses it. A zip archive
 /// (phyphox's zip export) is unpacked in memory: `set` names the CSV inside
 /// to read, and by default the one with the best pendulum signal is read

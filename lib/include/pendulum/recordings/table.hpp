@@ -37,6 +37,8 @@ struct TableOptions {
   int oscillations = 0;
   /// A spreadsheet's (.xlsx) sheet, by its name or number from 1; the first by default.
   std::string sheet;
+  /// Bytes, rows and columns read (docs/robustness.md, "Limits").
+  InputLimits limits = kTableInput;
 };
 
 /// The rows at one setting: one observation (docs/series.md, "Repeats").
@@ -96,13 +98,9 @@ bool looks_like_settings_table(std::string_view text);
 /// after others (its rows must be together).
 SettingsTable parse_settings_table(std::string_view text, const std::string& file, const TableOptions& options = {});
 
-/// The largest table read_settings_table reads unless told (256 MiB).
-inline constexpr std::size_t kMaxTableBytes = std::size_t{1} << 28;
-
-/// The file at `path` (at most `max_bytes`, beneath the folder `within`
-/// when given: InputFile), parsed.
+/// The file at `path` (at most options.limits.bytes, beneath the folder
+/// `within` when given: InputFile), parsed.
 SettingsTable read_settings_table(const std::string& path, const TableOptions& options = {},
-                                  std::size_t max_bytes = kMaxTableBytes,
                                   const std::optional<std::string>& within = {});
 
 /// The largest spreadsheet (.xlsx) file_holds_settings_table unpacks to look at (16 MiB).

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "pendulum/analysis.hpp"
+#include "pendulum/files.hpp"
 #include "pendulum/recordings/swings.hpp"
 
 namespace pendulum::report {
@@ -19,6 +20,7 @@ struct ReportRequest {
   std::optional<std::string> text;  ///< the scene's text, read instead of `file`
   std::optional<std::string> directory;  ///< where a `text` scene's recordings are; default: file's folder
   bool allow_outside = false;            ///< --allow-outside
+  GivenLimits limits;                    ///< --max-bytes, --max-rows, --max-columns
   std::optional<RecordingFormat> family;  ///< the input is a recording of this family (--format)
   std::string plot;                       ///< empty: the HTML page; else this one SVG plot (--plot)
   AnalysisOptions analysis;

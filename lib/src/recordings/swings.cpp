@@ -1480,16 +1480,20 @@ SwingAnalysis analyse_record(const Recording& r, const std::string& file, const 
       index_amplitudes.resize(theta.size());
       for (std::size_t i = 0; i < theta.size(); ++i) index_amplitudes[i] = smooth_with(c, out.swings[i].peak_time);
       // The smooth amplitude's own uncertainty moves the index, hence the
-      // period: g^T C g with g the period's change per coefficient (a step of
-      // one standard uncertainty each; the dependence is linear at that scale).
-      Eigen::VectorXd g(order + 1);
-      for (int j = 0; j <= order; ++j) {
-        Eigen::VectorXd shifted = c;
-        const double step = std::sqrt(cov(j, j));
-        shifted[j] += step;
-        g[j] = step > 0.0 ? (period_with(shifted).value - out.period.value) / step : 0.0;
+      // period: g^T C g = sum_k (the period's change for a step of one
+      // standard uncertainty along C's k-th principal axis)^2, the
+      // dependence linear at that scale. Along the axes, not one coefficient
+      // at a time: those of a high order are strongly correlated, and one
+      // moved alone by its own sigma is a curve the swings rule out (order 8
+      // through 91 deg to 10 deg had reached 222 deg half a swing before the
+      // first measured one).
+      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> axes(cov);
+      double variance = 0.0;
+      for (int k = 0; k <= order; ++k) {
+        const double sigma = std::sqrt(std::max(axes.eigenvalues()[k], 0.0));
+        if (sigma > 0.0) variance += std::pow(period_with(c + sigma * axes.eigenvectors().col(k)).value - out.period.value, 2);
       }
-      out.period.amplitude_uncertainty = std::sqrt(std::max(0.0, g.dot(cov * g)));
+      out.period.amplitude_uncertainty = std::sqrt(variance);
       out.period.uncertainty = std::max(std::hypot(out.period.uncertainty, out.period.amplitude_uncertainty),
                                         out.period.resolution_floor);
       amplitudes();  // again, with the final period

@@ -33,6 +33,7 @@ struct RecordingSimulation {
   double theta0 = 0.25;      // rad, release amplitude
   double alpha = 2e-3;       // 1/s
   double beta = 4e-3;        // 1/(s rad)
+  double friction = 0.0;     // rad/s^2, a dry (Coulomb) friction's constant deceleration, a bearing's
   double rate_hz = 100.0;    // nominal sampling rate
   double duration = 60.0;    // s
   double noise = 0.01;       // sensor noise sigma per axis (signal unit)
@@ -61,7 +62,7 @@ inline SimulatedRecording simulate_recording(const RecordingSimulation& s) {
   const double eps = 3.0 * M_PI / 4.0 * s.beta / w0;
   auto f = [&](double th, double om, double& dth, double& dom) {
     dth = om;
-    dom = -w0 * w0 * std::sin(th) - 2.0 * s.alpha * om - eps * om * std::fabs(om);
+    dom = -w0 * w0 * std::sin(th) - 2.0 * s.alpha * om - eps * om * std::fabs(om) - s.friction * ((om > 0.0) - (om < 0.0));
   };
   const double norm = std::sqrt(s.axis[0] * s.axis[0] + s.axis[1] * s.axis[1] + s.axis[2] * s.axis[2]);
   NormalDeviates normal(s.seed);

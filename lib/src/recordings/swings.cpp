@@ -696,14 +696,17 @@ Recording restricted(const Recording& r, std::pair<double, double> range, const 
 /// bias warming up) it moved them by 20 robust sigmas on a clean track, but
 /// it cancels from every full period. With `lengths` (one per interval, in
 /// index steps: 1 + DeltaT/T0 of its swing's smooth amplitude) each period
-/// is taken per its own length, and without them less a quadratic drift:
+/// is taken per its own length, its noise joined by what `length_errors`
+/// (per interval, in the weights' unit) say the lengths may be off by, and
+/// without them less a quadratic drift:
 /// a strong decay shortens the periods by more than their noise from one
 /// to the next. Beyond 6 robust sigmas is an outlier (1 in 5e8 for normal
 /// noise); outliers 4 entries apart or less are one stretch, and one within
 /// 4 entries of an end reaches it. join_glitches makes glitches of them.
 std::vector<Glitch> outlier_stretches(const std::vector<Crossing>& c, const std::vector<long>& index, int per_period,
                                   const std::vector<double>& weight, double quantum,
-                                  const std::vector<double>& lengths = {}) {
+                                  const std::vector<double>& lengths = {},
+                                  const std::vector<double>& length_errors = {}) {
   constexpr double kOutlier = 6.0;
   constexpr std::size_t kJoin = 4, kNeighbours = 10;
   const std::size_t n = c.size(), span = static_cast<std::size_t>(per_period);
@@ -716,13 +719,14 @@ std::vector<Glitch> outlier_stretches(const std::vector<Crossing>& c, const std:
   std::vector<double> d, sd;
   for (std::size_t i = 0; i + span < n; ++i) {
     if (index[i + span] - index[i] > 2 * per_period) continue;
-    double steps = 0.0;
+    double steps = 0.0, steps_error = 0.0;
     for (std::size_t k = i; k < i + span; ++k) {
       steps += static_cast<double>(index[k + 1] - index[k]) * (lengths.empty() ? 1.0 : lengths[k]);
+      if (!length_errors.empty()) steps_error += static_cast<double>(index[k + 1] - index[k]) * length_errors[k];
     }
     at.push_back(i);
     d.push_back((c[i + span].time - c[i].time) / steps);
-    sd.push_back(std::sqrt(1.0 / weight[i] + 1.0 / weight[i + span]) / steps);
+    sd.push_back(std::hypot(std::sqrt(1.0 / weight[i] + 1.0 / weight[i + span]), d.back() * steps_error) / steps);
   }
   const std::size_t m = d.size();
   if (m < 4) return out;
@@ -1480,16 +1484,20 @@ SwingAnalysis analyse_record(const Recording& r, const std::string& file, const 
       index_amplitudes.resize(theta.size());
       for (std::size_t i = 0; i < theta.size(); ++i) index_amplitudes[i] = smooth_with(c, out.swings[i].peak_time);
       // The smooth amplitude's own uncertainty moves the index, hence the
-      // period: g^T C g with g the period's change per coefficient (a step of
-      // one standard uncertainty each; the dependence is linear at that scale).
-      Eigen::VectorXd g(order + 1);
-      for (int j = 0; j <= order; ++j) {
-        Eigen::VectorXd shifted = c;
-        const double step = std::sqrt(cov(j, j));
-        shifted[j] += step;
-        g[j] = step > 0.0 ? (period_with(shifted).value - out.period.value) / step : 0.0;
+      // period: g^T C g = sum_k (the period's change for a step of one
+      // standard uncertainty along C's k-th principal axis)^2, the
+      // dependence linear at that scale. Along the axes, not one coefficient
+      // at a time: those of a high order are strongly correlated, and one
+      // moved alone by its own sigma is a curve the swings rule out (order 8
+      // through 91 deg to 10 deg had reached 222 deg half a swing before the
+      // first measured one).
+      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> axes(cov);
+      double variance = 0.0;
+      for (int k = 0; k <= order; ++k) {
+        const double sigma = std::sqrt(std::max(axes.eigenvalues()[k], 0.0));
+        if (sigma > 0.0) variance += std::pow(period_with(c + sigma * axes.eigenvectors().col(k)).value - out.period.value, 2);
       }
-      out.period.amplitude_uncertainty = std::sqrt(std::max(0.0, g.dot(cov * g)));
+      out.period.amplitude_uncertainty = std::sqrt(variance);
       out.period.uncertainty = std::max(std::hypot(out.period.uncertainty, out.period.amplitude_uncertainty),
                                         out.period.resolution_floor);
       amplitudes();  // again, with the final period
@@ -1520,9 +1528,36 @@ SwingAnalysis analyse_record(const Recording& r, const std::string& file, const 
     index[i] = i ? index[i - 1] + out.crossings[i].steps : 0;
     if (!events) weight[i] = out.crossings[i].slope * out.crossings[i].slope * out.crossings[i].samples;
   }
-  std::vector<double> lengths;
-  for (double theta_i : index_amplitudes) lengths.push_back(1.0 + finite_amplitude_agm(theta_i));
-  out.outliers = outlier_stretches(out.crossings, index, cpp, weight, quantum, lengths);
+  // Each interval's length in index steps, and what it may be off by where
+  // the smooth curve misses the swings' own amplitudes there (the mean of
+  // their residuals over the 2 swings on either side: a curve that bends
+  // too little at the start crosses them within a few swings): a curve 2 %
+  // low at 91 deg read the periods there 0.7 % long, a drift that against
+  // the crossings' noise alone was a release of 96 sigmas, cut pass after
+  // pass (33 s of a 133 s record, the start amplitude 53 deg for 91).
+  std::vector<double> lengths, length_errors, residuals;
+  for (std::size_t k = 0; k < index_amplitudes.size(); ++k) {
+    if (std::isfinite(theta[k]) && theta[k] > 0.0) residuals.push_back(std::fabs(theta[k] - index_amplitudes[k]));
+  }
+  const double scatter = 1.4826 * median_of(residuals);  // of one swing's amplitude about the curve
+  for (std::size_t i = 0; i < index_amplitudes.size(); ++i) {
+    const double smooth = index_amplitudes[i];
+    lengths.push_back(1.0 + finite_amplitude_agm(smooth));
+    if (!(out.noise > 0.0)) continue;
+    double sum = 0.0;
+    int count = 0;
+    for (std::size_t k = i > 2 ? i - 2 : 0; k < std::min(theta.size(), i + 3); ++k) {
+      if (std::isfinite(theta[k]) && theta[k] > 0.0) sum += theta[k] - index_amplitudes[k], ++count;
+    }
+    // Only a misfit beyond 3 sigmas of the swings' own scatter: the mean of
+    // a few noisy swings is no misfit, and would hide a real release.
+    const double mean = count ? sum / count : 0.0;
+    const double misfit = count && std::fabs(mean) > 3.0 * scatter / std::sqrt(count) ? mean : 0.0;
+    // In the weights' unit: a crossing's time scatters by noise / sqrt(weight).
+    length_errors.push_back(std::fabs(finite_amplitude_agm(std::min(smooth + std::fabs(misfit), kPi * (1.0 - 1e-9))) -
+                                      finite_amplitude_agm(smooth)) / out.noise);
+  }
+  out.outliers = outlier_stretches(out.crossings, index, cpp, weight, quantum, lengths, length_errors);
   out.glitches = join_glitches(out.outliers, out.crossings, out.period.value);
   report_glitches(out, [&](std::size_t a, std::size_t b) {
     const std::vector<Crossing> part(out.crossings.begin() + a, out.crossings.begin() + b + 1);

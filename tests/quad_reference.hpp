@@ -23,24 +23,11 @@ inline Quad agm_quad(Quad a, Quad b) {
 /// K(m) = pi / (2 AGM(1, sqrt(1 - m))), 0 <= m < 1.
 inline Quad complete_k_quad(Quad m) { return M_PIq / (2 * agm_quad(1, sqrtq(1 - m))); }
 
-/// DeltaT/T0 = 2K/pi - 1 at the amplitude theta0_deg (deg), taken exactly
-/// as the double it is. m = sin^2(theta0/2) and kc = cos(theta0/2) come from
-/// theta0 up to 90 deg and from the deficit 180 - theta0 (exact in quad)
-/// above. For m < 0.1, Eq. (8) summed until a term is below 1e-40 of the sum
+/// DeltaT/T0 = 2K/pi - 1 from m = sin^2(theta0/2) and kc = cos(theta0/2).
+/// For m < 0.1, Eq. (8) summed until a term is below 1e-40 of the sum
 /// (convergence ratio < 0.1); otherwise 1/AGM(1, kc) - 1, which loses at most
 /// 2 of its 34 digits to the subtraction.
-inline Quad delta_ratio_quad(double theta0_deg) {
-  const Quad deg = theta0_deg;
-  Quad m, kc;
-  if (theta0_deg <= 90.0) {
-    const Quad k = sinq(deg * M_PIq / 360);
-    m = k * k;
-    kc = cosq(deg * M_PIq / 360);
-  } else {
-    kc = sinq((180 - deg) * M_PIq / 360);
-    const Quad k = cosq((180 - deg) * M_PIq / 360);
-    m = k * k;
-  }
+inline Quad delta_ratio_quad_of(Quad m, Quad kc) {
   if (m >= 0.1Q) return 1 / agm_quad(1, kc) - 1;
   Quad sum = 0, coefficient = 1, power = 1;
   for (int n = 1;; ++n) {
@@ -50,6 +37,28 @@ inline Quad delta_ratio_quad(double theta0_deg) {
     sum += term;
     if (term <= 1e-40Q * sum) return sum;
   }
+}
+
+/// DeltaT/T0 at the half amplitude (rad) or, above 45 deg, from the half
+/// deficit (rad), each given in quad.
+inline Quad delta_ratio_quad_half(Quad half, Quad half_deficit, bool from_deficit) {
+  if (!from_deficit) return delta_ratio_quad_of(sinq(half) * sinq(half), cosq(half));
+  return delta_ratio_quad_of(cosq(half_deficit) * cosq(half_deficit), sinq(half_deficit));
+}
+
+/// DeltaT/T0 at the amplitude theta0_deg (deg), taken exactly as the double
+/// it is. m and kc come from theta0 up to 90 deg and from the deficit
+/// 180 - theta0 (exact in quad) above.
+inline Quad delta_ratio_quad(double theta0_deg) {
+  const Quad deg = theta0_deg;
+  return delta_ratio_quad_half(deg * M_PIq / 360, (180 - deg) * M_PIq / 360, theta0_deg > 90.0);
+}
+
+/// DeltaT/T0 at the amplitude theta0 (rad), taken exactly as the double it
+/// is: above pi/2 from the deficit to quad pi (1e-34 absolute).
+inline Quad delta_ratio_quad_rad(double theta0) {
+  const Quad rad = theta0;
+  return delta_ratio_quad_half(rad / 2, (M_PIq - rad) / 2, rad > M_PIq / 2);
 }
 
 /// Carlson's R_F(x, y, z) by duplication; stops when the arguments agree to

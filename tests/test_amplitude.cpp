@@ -84,6 +84,23 @@ TEST_CASE("The radian entry agrees with the degree entry", "[amplitude]") {
   }
 }
 
+TEST_CASE("The radian entry is exact for its own amplitude up to the last double below pi",
+          "[amplitude][quad]") {
+  // Deficits pi - theta0 from 1.6 rad to 1.6e-15 rad and the last double
+  // below pi (deficit 5.7e-16 from the true pi, 4.4e-16 from the double),
+  // against quad precision from the deficit to quad pi: with the deficit
+  // from the double pi alone, the result at 179.9 deg was 1.0e-14 off.
+  std::vector<double> theta{std::nextafter(kPi, 0.0)};
+  for (int i = 0; i <= 1500; ++i) theta.push_back(kPi - std::pow(10.0, 0.2 - i / 100.0));
+  double worst = 0.0, worst_at = 0.0;
+  for (double t : theta) {
+    const double e = relative_error(finite_amplitude_agm(t), test::delta_ratio_quad_rad(t));
+    if (e > worst) worst = e, worst_at = t;
+  }
+  INFO("worst relative error " << worst << " at pi - " << static_cast<double>(M_PIq - worst_at) << " rad");
+  CHECK(worst <= kExactRelativeErrorBound);
+}
+
 TEST_CASE("Hard cases: tiny amplitudes, m from 0.85 to 0.9, the last 1e-5 deg before 180",
           "[amplitude][quad]") {
   // Every library route that forms k = sin(theta0/2) rounds k to exactly 1

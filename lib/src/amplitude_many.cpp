@@ -69,7 +69,7 @@ std::size_t agm_block(const double* theta0, double* excess, std::size_t n) {
     const bool past_first = t > detail::kOneAgmStepLimit, past_second = t > detail::kTwoAgmStepsLimit;
     // The first case takes the amplitude, the others the deficit pi - theta0.
     first[n1] = t;
-    second[n2] = third[n3] = kPi - t;
+    second[n2] = third[n3] = detail::deficit_of(t);
     at_first[n1] = at_second[n2] = at_third[n3] = static_cast<std::uint16_t>(i);
     n1 += !past_first;
     n2 += past_first && !past_second;

@@ -283,15 +283,6 @@ def exact_ratio(theta0):
     return 2 * mpmath.ellipk(mpmath.sin(mpmath.mpf(theta0) / 2) ** 2) / mpmath.pi
 
 
-def exact_ratio_as_documented(theta0):
-    """exact_ratio at the amplitude the radian form is exact for: above
-    90 deg it works from the deficit pi - theta0 with the double pi, 1.2e-16
-    below the true one (lib/include/pendulum/amplitude.hpp)."""
-    if theta0 <= math.pi / 2:
-        return exact_ratio(theta0)
-    return exact_ratio(mpmath.pi - (mpmath.mpf(math.pi) - mpmath.mpf(theta0)))
-
-
 def test_finite_amplitude_against_mpmath_over_the_whole_range():
     # Amplitudes from 1e-8 rad to within 1e-9 rad of pi, as numpy arrays of
     # two shapes: the result keeps the shape, each element within 4 ulp.
@@ -300,10 +291,23 @@ def test_finite_amplitude_against_mpmath_over_the_whole_range():
     excess = pendulum_g.finite_amplitude(theta, excess=True)
     assert got.shape == theta.shape
     for t, ratio, dt in zip(theta.ravel(), got.ravel(), excess.ravel()):
-        exact = exact_ratio_as_documented(t)
+        exact = exact_ratio(t)
         assert abs(ratio - float(exact)) <= 4 * np.spacing(float(exact))
         # The excess keeps its relative precision where T/T0 - 1 would not.
         assert abs(dt - float(exact - 1)) <= 4e-15 * float(exact - 1)
+
+
+def test_finite_amplitude_exact_near_180_deg_for_radians():
+    # Deficits pi - theta0 from 0.3 rad to the last double below pi, each
+    # amplitude taken as the double it is: within 1e-15 of mpmath at 50
+    # digits, as the degree form is (the deficit from the double pi alone,
+    # 1.2e-16 short, was 1.0e-14 off at 179.9 deg).
+    theta = np.append(math.pi - np.geomspace(0.3, 1e-15, 60), np.nextafter(math.pi, 0.0))
+    theta = np.append(theta, np.radians([160.0, 170.0, 179.0, 179.9, 179.99]))
+    got = pendulum_g.finite_amplitude(theta)
+    for t, ratio in zip(theta, got):
+        exact = exact_ratio(t)
+        assert abs(ratio - exact) <= 1e-15 * exact, (t, float((ratio - exact) / exact))
 
 
 def test_finite_amplitude_methods_and_limits():

@@ -136,6 +136,17 @@ T exact_nome(const T& deficit) {
          theta3_minus_1 * (2.0 + theta3_minus_1) * (l_minus_pi / kPi + 1.0);
 }
 
+/// The deficit pi - theta0 (rad) of an amplitude theta0 >= pi/2 (rad),
+/// rounded once: kPi - theta0 is exact (Sterbenz), and the true pi's
+/// 1.2e-16 beyond the double kPi is added to it. From kPi alone, the
+/// deficit near 180 deg was short by that much (1.0e-14 of DeltaT/T0 at
+/// 179.9 deg, 1.6e-15 at 179 deg).
+template <class T>
+T deficit_of(const T& theta0) {
+  constexpr double kPiBeyondDouble = 1.2246467991473532e-16;  // pi - kPi = sin(kPi), to 17 digits
+  return (kPi - theta0) + kPiBeyondDouble;
+}
+
 /// The upper limits (rad) of the first two cases.
 inline constexpr double kOneAgmStepLimit = kPi / 2.0;
 inline constexpr double kTwoAgmStepsLimit = kPi * (8.0 / 9.0);
@@ -192,16 +203,16 @@ T finite_amplitude_agm_deg(const T& theta0_deg) {
 }
 
 /// Exact finite-amplitude correction, amplitude in radians: as
-/// finite_amplitude_agm_deg. The deficit pi - theta0 is exact for the double
-/// pi, which is 1.2e-16 below the true pi: near 180 deg the result is exact
-/// for an amplitude that much smaller. Use the degree form there.
+/// finite_amplitude_agm_deg, the deficit pi - theta0 taken from the true pi
+/// (detail::deficit_of), so that near 180 deg too the result is exact for
+/// the amplitude given.
 /// \param theta0 amplitude (rad), 0 <= theta0 < pi; else std::domain_error.
-/// \return DeltaT/T0 (dimensionless).
+/// \return DeltaT/T0 (dimensionless), relative error below 1e-15.
 /// Reference: Nelson & Olsson (1986) Eq. (8); Kelley (1993) Eq. (17).
 template <class T>
 T finite_amplitude_agm(const T& theta0) {
   detail::require_amplitude(value_of(theta0), ranges::amplitude);
-  return detail::finite_amplitude_exact(theta0, kPi - theta0);
+  return detail::finite_amplitude_exact(theta0, detail::deficit_of(theta0));
 }
 
 /// finite_amplitude_agm at each of `n` amplitudes theta0[i] (rad) into

@@ -11,6 +11,7 @@
 #include "pendulum/analysis.hpp"
 #include "simulations/decay_simulation.hpp"
 #include "pendulum/monte_carlo.hpp"
+#include "pendulum/output.hpp"
 #include "pendulum/scene_json.hpp"
 #include "pendulum/uncertainty.hpp"
 #include "catalogue.hpp"
@@ -542,6 +543,24 @@ TEST_CASE("Monte Carlo: too few draws judge nothing, and name no input", "[uncer
   INFO("low end: spread over runs " << spread << ", stated " << stated << "; a quantile's 2.67 u/sqrt(M) "
                                     << 2.67 * *a.g.uncertainty / std::sqrt(2000.0));
   CHECK_THAT(stated, WithinRel(spread, 0.39));
+}
+
+TEST_CASE("Monte Carlo ends placed by fewer than two batches: null in JSON",
+          "[uncertainty][monte_carlo]") {
+  // end_uncertainty is infinite from fewer than two batches of kept draws
+  // (monte_carlo.cpp): the writer refused the infinity (require_finite: an
+  // internal error, exit 3).
+  const ParsedScene s = parse_scene(test::nelson_olsson_text());
+  Analysis a = analyse(s);
+  a.monte_carlo = monte_carlo(s, a, MonteCarloOptions{3, 1000});
+  REQUIRE(a.monte_carlo);
+  a.monte_carlo->low_uncertainty = a.monte_carlo->high_uncertainty = std::numeric_limits<double>::infinity();
+  a.monte_carlo->judged = a.monte_carlo->validated = false;
+  a.monte_carlo->draws_to_judge = 0;
+  const auto doc = nlohmann::json::parse(result_json(s, a, AnalysisOptions{}, "scene.json"));
+  const auto& mc = doc.at("g").at("monte_carlo");
+  CHECK(mc.at("coverage_interval_uncertainty_m_s2") == nlohmann::json::array({nullptr, nullptr}));
+  CHECK(mc.at("draws_to_judge").is_null());
 }
 
 TEST_CASE("Monte Carlo counts the draws it drops", "[uncertainty][monte_carlo]") {

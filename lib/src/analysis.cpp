@@ -742,9 +742,14 @@ std::string monte_carlo_finding(const MonteCarloResult& mc, const Analysis& a) {
 /// Too few draws place the interval's ends no better than the tolerance:
 /// GUM's interval is neither validated nor refuted by them.
 std::string unjudged_finding(const MonteCarloResult& mc) {
+  const double worst = std::max(mc.low_uncertainty, mc.high_uncertainty);
+  // Infinite where too few draws were kept to form two batches.
+  if (!std::isfinite(worst)) {
+    return "uncertainty: " + std::to_string(mc.draws) +
+           " Monte Carlo draws kept are too few to place the ends of their 95 % interval: GUM's interval is not judged";
+  }
   return "uncertainty: " + std::to_string(mc.draws) + " Monte Carlo draws place the ends of their 95 % interval to +- " +
-         format_number(std::max(mc.low_uncertainty, mc.high_uncertainty), 2) +
-         " m/s^2, more than the numerical tolerance " + format_number(mc.tolerance, 2) +
+         format_number(worst, 2) + " m/s^2, more than the numerical tolerance " + format_number(mc.tolerance, 2) +
          " m/s^2: too few to judge GUM's interval (GUM Supplement 1, 7.9 and 8); about " +
          std::to_string(mc.draws_to_judge) + " draws would judge it, or leave their number out for the adaptive run";
 }

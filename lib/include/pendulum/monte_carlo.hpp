@@ -60,7 +60,8 @@ struct MonteCarloResult {
   /// Both within the tolerance: too few draws place the ends no better than
   /// the tolerance, and their d_low and d_high say nothing of GUM's interval.
   bool judged = false;
-  /// Where not judged: about how many draws would judge it.
+  /// Where not judged: about how many draws would judge it; 0 where the
+  /// ends' uncertainty is unknown (fewer than two batches of draws kept).
   long draws_to_judge = 0;
   bool validated = false;  ///< judged, and d_low and d_high within the tolerance
   /// Where judged and not validated: the input held at its value that restores the

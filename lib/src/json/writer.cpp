@@ -41,6 +41,8 @@ using json = nlohmann::ordered_json;
 
 json optional_number(const std::optional<double>& x) { return x ? json(*x) : json(nullptr); }
 
+json finite_or_null(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+
 json measured(const ValueWithUncertainty& x, const char* unit) {
   return {{"value", x.value}, {"uncertainty", x.uncertainty}, {"unit", unit}};
 }
@@ -76,6 +78,7 @@ constexpr const char* kResultSchema = "pendulum-g/result/1";
 
 using json = nlohmann::ordered_json;
 
+using writer::finite_or_null;
 using writer::format_fixed;
 using writer::measured;
 using writer::optional_number;
@@ -258,8 +261,8 @@ json g_json(const Analysis& a) {
                         {"validated", mc->validated},
                         {"bending_input", mc->bending_input.empty() ? json(nullptr) : json(mc->bending_input)},
                         {"judged", mc->judged},
-                        {"coverage_interval_uncertainty_m_s2", {mc->low_uncertainty, mc->high_uncertainty}},
-                        {"draws_to_judge", mc->judged ? json(nullptr) : json(mc->draws_to_judge)},
+                        {"coverage_interval_uncertainty_m_s2", {finite_or_null(mc->low_uncertainty), finite_or_null(mc->high_uncertainty)}},
+                        {"draws_to_judge", mc->judged || mc->draws_to_judge == 0 ? json(nullptr) : json(mc->draws_to_judge)},
                         {"rejected_draws", mc->rejected_draws}};
     json& reasons = g["monte_carlo"]["rejected_draws_by_reason"] = json::object();
     for (int i = 0; i < kRejectionKinds; ++i) reasons[rejection_name(static_cast<Rejection>(i))] = mc->rejected_by_reason[i];

@@ -31,6 +31,9 @@ namespace writer {
 
 /// The number, or null.
 nlohmann::ordered_json optional_number(const std::optional<double>& x);
+/// x, or null where it is not finite (unknown: an end of a Monte Carlo
+/// interval placed by fewer than two batches).
+nlohmann::ordered_json finite_or_null(double x);
 /// {"value", "uncertainty", "unit"}, the uncertainty null where unknown.
 nlohmann::ordered_json measured(const ValueWithUncertainty& x, const char* unit);
 nlohmann::ordered_json measured(const Estimate& x, const char* unit);

@@ -13,6 +13,7 @@
 #include "pendulum/output.hpp"
 #include "pendulum/recordings/read.hpp"
 #include "pendulum/recordings/table.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "pendulum/scene_json.hpp"
 
 namespace pendulum::cli {
@@ -107,7 +108,7 @@ Command add_reduce_command(CLI::App& app) {
       if (o->format != "table") print_warnings(scene.warnings);
       return o->strict && !sweep_reasons(scene, sweep).empty() ? kExitSuspect : 0;
     }
-    const Analysis analysis = analyse(scene, o->analysis);
+    const Analysis analysis = reduce_scene(scene, o->analysis);
     const std::string output =
         o->format == "table"
             ? result_table(scene, analysis)

@@ -27,6 +27,7 @@
 #include "pendulum/output_files.hpp"
 #include "pendulum/recordings/swings.hpp"
 #include "pendulum/recordings/table.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "pendulum/report/report_page.hpp"
 #include "pendulum/scene_json.hpp"
 #include "pendulum/site.hpp"
@@ -91,7 +92,7 @@ std::string reduce_json(const std::optional<std::string>& path, const std::optio
   const pendulum::ParsedScene scene = pendulum::parse_scene(source.text, source.files);
   // An amplitude sweep without its length: T0 and the law, as the CLI's reduce prints them.
   if (!scene.length_measured) return pendulum::sweep_result_json(scene, *pendulum::amplitude_sweep_of(scene), source.input);
-  const pendulum::Analysis analysis = pendulum::analyse(scene, options);
+  const pendulum::Analysis analysis = pendulum::reduce_scene(scene, options);
   return pendulum::result_json(scene, analysis, options, source.input);
 }
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "pendulum/analysis.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "pendulum/bodies.hpp"
 #include "pendulum/parsed_scene.hpp"
 #include "simulations/pivot_scan_simulation.hpp"
@@ -49,7 +49,7 @@ Coverage coverage_of_g(SceneOf scene_of, int n, double truth, double factor) {
   for (int k = 0; k < n; ++k) {
     ParsedScene scene = scene_of(k);
     understate(scene, factor);
-    const Analysis a = analyse(scene);
+    const Analysis a = reduce_scene(scene);
     c.scaled += std::abs(a.g.value - truth) <= *a.g.uncertainty;
     c.unscaled += std::abs(a.g.value - truth) <= *a.g_uncertainty_unscaled;
   }

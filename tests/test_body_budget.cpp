@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pendulum/air.hpp"
-#include "pendulum/analysis.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "pendulum/scene_json.hpp"
 #include "reference.hpp"
 #include "scene_files.hpp"
@@ -30,7 +30,7 @@ AnalysisOptions exact() {
   return options;
 }
 
-double g_of(const json& scene) { return analyse(parse_scene(scene.dump()), exact()).g.value; }
+double g_of(const json& scene) { return reduce_scene(parse_scene(scene.dump()), exact()).g.value; }
 
 /// The quantity object {"value", "uncertainty", "unit"} at a budget path
 /// ("body.parts[1].mass", "observations[0].amplitude"), or null when the
@@ -71,7 +71,7 @@ struct Checked {
 /// uncertainty; rows agree within `tolerance` of the budget's largest
 /// contribution (m/s^2 per standard uncertainty).
 Checked check_budget(const json& scene, double step, double tolerance) {
-  const Analysis a = analyse(parse_scene(scene.dump()), exact());
+  const Analysis a = reduce_scene(parse_scene(scene.dump()), exact());
   REQUIRE(!a.budget.empty());
   const double largest = a.budget.front().contribution;
   Checked checked;
@@ -143,7 +143,7 @@ TEST_CASE("A body in parts: each part's row in g's budget is the finite differen
   // step is 1e-2 of each uncertainty: the truncation (h^2 g'''/6) and the
   // rounding (1e-16 g / h) each stay below 1e-9 of the largest row.
   const json scene = weighted_rod();
-  const Analysis a = analyse(parse_scene(scene.dump()), exact());
+  const Analysis a = reduce_scene(parse_scene(scene.dump()), exact());
   REQUIRE(a.fit.method == std::string("closed_form"));
   // Every part's every value is an input: 4 + 5 + 4 fields.
   int rows = 0;
@@ -164,7 +164,7 @@ TEST_CASE("Kater in parts: the parts and the rough centre in g's budget, against
   // exact. The fit converges to about 1e-12 of g: steps of a whole standard
   // uncertainty keep that noise below 1e-5 of the smallest row checked.
   const json scene = kater_in_parts();
-  const Analysis a = analyse(parse_scene(scene.dump()), exact());
+  const Analysis a = reduce_scene(parse_scene(scene.dump()), exact());
   REQUIRE(a.fit.converged);
   const Checked checked = check_budget(scene, 1.0, 1e-5);
   CHECK(checked.parts == 9);  // 5 of the bar, 4 of the weight
@@ -195,7 +195,7 @@ TEST_CASE("Kelley's expansion coefficient carries its uncertainty into g's budge
   scene["temperature"] = quantity(35.0, 0.0, "degC");
   scene["reference_temperature"] = quantity(20.0, 0.0, "degC");
   scene["material"] = "steel";
-  const Analysis a = analyse(parse_scene(scene.dump()), exact());
+  const Analysis a = reduce_scene(parse_scene(scene.dump()), exact());
   const double w = 1.1e-5, g = a.g.value;
   bool found = false;
   for (const auto& b : a.budget) {

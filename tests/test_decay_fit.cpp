@@ -11,7 +11,7 @@
 
 #include <Eigen/Dense>
 
-#include "pendulum/analysis.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "simulations/decay_simulation.hpp"
 #include "pendulum/scene_json.hpp"
 #include "reference.hpp"
@@ -249,7 +249,7 @@ TEST_CASE("A term on its bound keeps the two-term covariance, and the damping ro
       {"decay", {{"data", {{"time_unit", "s"}, {"amplitude_unit", "rad"}, {"times", d.times},
                            {"amplitudes", d.amplitudes}, {"sigmas", d.sigmas}}}}}};
   const ParsedScene scene = parse_scene(scene_json.dump());
-  const Analysis with_record = analyse(scene);
+  const Analysis with_record = reduce_scene(scene);
   REQUIRE(with_record.decay_fit);
   CHECK(with_record.decay_fit->beta.uncertainty == f.beta.uncertainty);
   ParsedScene held = scene;
@@ -259,7 +259,7 @@ TEST_CASE("A term on its bound keeps the two-term covariance, and the damping ro
   CHECK(held.input_covariances[0].covariance == f.covariance[1]);
   held.apparatus_uncertainty.decay = Decay<double>{0.0, 0.0};
   held.input_covariances.clear();
-  const Analysis without = analyse(held);
+  const Analysis without = reduce_scene(held);
 
   using J = ceres::Jet<double, 2>;
   const Apparatus<J> dual = convert_apparatus<J>(held.apparatus, [](const Field& field, double x) {
@@ -391,7 +391,7 @@ TEST_CASE("The bundled record gives back the paper's alpha and beta, and Table I
   const ParsedScene scene = parse_scene(test::read_text(std::string(PENDULUM_DATA_DIR) +
                                                         "/nelson_olsson_1986_decay.json"));
   REQUIRE(scene.decay_data);
-  const Analysis a = analyse(scene);
+  const Analysis a = reduce_scene(scene);
   REQUIRE(a.decay_fit);
   const DecayFit& f = *a.decay_fit;
   // Drawn from Eqs. (28)-(29): the fit must find them within 2 sigma.

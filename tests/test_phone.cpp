@@ -10,7 +10,7 @@
 #include <fstream>
 #include <string>
 
-#include "pendulum/analysis.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "pendulum/mass.hpp"
 #include "pendulum/reduction.hpp"
 #include "pendulum/scene_json.hpp"
@@ -245,7 +245,7 @@ TEST_CASE("A box near its two modes' 3:1 resonance on the string gets a warning,
       "air": "vacuum"
     })J";
     std::string all;
-    for (const auto& w : analyse(parse_scene(text)).warnings) all += w + "\n";
+    for (const auto& w : reduce_scene(parse_scene(text)).warnings) all += w + "\n";
     return all;
   };
   CHECK_THAT(warnings_at(52.0), Catch::Matchers::Contains("amplitude: the bob's two modes on the string are near 3:1 "
@@ -288,7 +288,7 @@ TEST_CASE("Coverage: a phone on strings of 0.1 to 2 m, +-1 sigma holds g and the
     sim.length_sigma = 1e-3;
     sim.amplitude_sigma = 1.0 * kPi / 180.0;
     sim.seed = 1000 + k;
-    const Analysis a = analyse(simulate_series(app, sim));
+    const Analysis a = reduce_scene(simulate_series(app, sim));
     REQUIRE(a.fit.converged);
     g_in += std::abs(a.g.value - sim.g) <= *a.g.uncertainty;
     for (const auto& p : a.fit.parameters) {
@@ -336,7 +336,7 @@ TEST_CASE("Coverage: lengths measured to the top of a phone whose height is meas
       scene.sources[i].measured_to = "top_of_bob";
       scene.sources[i].knot_to_center_sign = 1.0;
     }
-    const Analysis a = analyse(scene);
+    const Analysis a = reduce_scene(scene);
     REQUIRE(a.fit.converged);
     g_in += std::abs(a.g.value - sim.g) <= *a.g.uncertainty;
   }
@@ -359,7 +359,7 @@ TEST_CASE("A phone scene: bob.shape and its dimensions, measured to the top, rig
   CHECK_THAT(scene.observations[0].length, WithinRel(0.28, 1e-15));  // the knot plus half the height
   CHECK_THAT(scene.observation_uncertainties[0].length, WithinRel(0.001, 1e-15));
   // One observation: g = 4 pi^2 l (T/T0)^2 / T^2 with the rows' T/T0.
-  const Analysis a = analyse(scene);
+  const Analysis a = reduce_scene(scene);
   const auto& rows = a.observations[0].corrections;
   auto row = [&](const char* id) -> const CorrectionRow& {
     for (const auto& r : rows) {
@@ -419,7 +419,7 @@ TEST_CASE("A phyphox gyroscope recording of a phone on a string, reduced end to 
   CHECK(scene.observations[0].amplitude_of == AngleOf::body);
   REQUIRE(scene.decay_data);
   CHECK(scene.decay_data->angle_of == AngleOf::body);
-  const Analysis a = analyse(scene);
+  const Analysis a = reduce_scene(scene);
   REQUIRE(a.observations[0].amplitude_pendulum);
   // The corrections took the line's angle: c times the phone's.
   CHECK_THAT(*a.observations[0].amplitude_pendulum, WithinRel(c * scene.observations[0].amplitude, 1e-12));

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "pendulum/analysis.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "pendulum/period_fit.hpp"
 #include "simulations/pivot_scan_simulation.hpp"
 #include "pendulum/scene_json.hpp"
@@ -59,7 +59,7 @@ PivotScanSimulation kater(double second_pivot, std::uint64_t seed) {
 TEST_CASE("Pivot scan: a noiseless metre stick gives back g, k and the centre", "[physical]") {
   PivotScanSimulation sim = test::metre_stick(1);
   sim.noise = false;
-  const Analysis a = analyse(simulate_pivot_scan({}, sim), exact());
+  const Analysis a = reduce_scene(simulate_pivot_scan({}, sim), exact());
   INFO(a.fit.termination);
   CHECK(a.fit.converged);
   CHECK(a.fit.model == std::string("physical_pendulum"));
@@ -90,7 +90,7 @@ TEST_CASE("Kater: the generic fit and Bessel's formula agree to 1e-12", "[physic
   // centre: equal periods but for the noise; the centre recorded off by
   // N(0, 1 mm).
   const ParsedScene scene = simulate_pivot_scan({}, kater(0.8136, 3));
-  const Analysis a = analyse(scene, exact());
+  const Analysis a = reduce_scene(scene, exact());
   CHECK(a.fit.converged);
   // Bessel on the ideal periods: the measured ones over 2K(sin(A/2))/pi,
   // with K from std::comp_ellint_1 (modulus k), and the recorded centre.
@@ -122,7 +122,7 @@ TEST_CASE("Kater: the generic fit and Bessel's formula agree to 1e-12", "[physic
 
 TEST_CASE("Kater: a warning when T1 and T2 are too far apart", "[physical][kater]") {
   // h2 = 0.45 m against the conjugate 0.3136 m: T1^2 - T2^2 no longer small.
-  const Analysis a = analyse(simulate_pivot_scan({}, kater(0.95, 3)), exact());
+  const Analysis a = reduce_scene(simulate_pivot_scan({}, kater(0.95, 3)), exact());
   bool warned = false;
   for (const auto& w : a.warnings) warned = warned || w.find("kater: the periods differ") != std::string::npos;
   CHECK(warned);
@@ -139,7 +139,7 @@ TEST_CASE("Pivot scans: +-1 sigma holds the truth 68% of the time", "[physical][
   double chi2 = 0.0;
   for (int s = 0; s < n; ++s) {
     const PivotScanSimulation sim = test::metre_stick(1000 + s);
-    const Analysis a = analyse(simulate_pivot_scan({}, sim));
+    const Analysis a = reduce_scene(simulate_pivot_scan({}, sim));
     REQUIRE(a.fit.converged);
     g_in += std::abs(a.g.value - sim.g) <= *a.g.uncertainty;
     g_unscaled_in += std::abs(a.g.value - sim.g) <= *a.g_uncertainty_unscaled;
@@ -174,7 +174,7 @@ TEST_CASE("Pivot scans whose sigmas are 3 times too small: the scaled sigma cove
 TEST_CASE("A pivot scan at chi2/dof near 60 is suspect, with the scatter's sigma", "[physical][dispersion]") {
   ParsedScene scene = simulate_pivot_scan({}, test::metre_stick(11));
   test::understate(scene, std::sqrt(60.0));
-  const Analysis a = analyse(scene);
+  const Analysis a = reduce_scene(scene);
   INFO(a.fit.chi2 / a.fit.dof);
   REQUIRE(a.fit.birge_ratio);
   CHECK(a.fit.chi2 / a.fit.dof > 30.0);
@@ -189,7 +189,7 @@ TEST_CASE("A pivot scan at chi2/dof near 60 is suspect, with the scatter's sigma
 TEST_CASE("The pivot scan's textbook curve is in the fit, Kater's is Bessel's formula on the measured periods",
           "[physical][textbook]") {
   const ParsedScene scene = simulate_pivot_scan({}, kater(0.8136, 3));
-  const Analysis a = analyse(scene);
+  const Analysis a = reduce_scene(scene);
   const PivotScan* scan = a.fit.results_of<PhysicalPendulum>();
   REQUIRE((scan && scan->textbook));
   const auto& t = *scan->textbook;
@@ -224,7 +224,7 @@ TEST_CASE("The bundled physical scenes are what their generator writes, and give
     }
     // The truth: the site's normal gravity within 3 of the fit's standard
     // uncertainties; the metre stick's k and centre those of its parts.
-    const Analysis a = analyse(file);
+    const Analysis a = reduce_scene(file);
     INFO(name);
     REQUIRE(a.expected_g);
     CHECK(std::abs(a.g.value - a.expected_g->value) < 3 * *a.g.uncertainty);
@@ -262,7 +262,7 @@ std::string rod_scene(const std::string& extra) {
 TEST_CASE("One pivot of a body in parts: the closed form is Eq. (56) solved for g", "[physical]") {
   const ParsedScene scene = parse_scene(rod_scene(""));
   CHECK(scene.model == kind_of<PhysicalPendulum>());
-  const Analysis a = analyse(scene, exact());
+  const Analysis a = reduce_scene(scene, exact());
   CHECK(a.fit.method == "closed_form");
   // Independently: the body's k and centre (bodies.hpp), then
   // g = 4 pi^2 l (2K/pi)^2 / T^2 with K from std::comp_ellint_1.
@@ -279,10 +279,10 @@ TEST_CASE("One pivot of a body in parts: the closed form is Eq. (56) solved for 
 TEST_CASE("Temperature: every length of the body scales by (1 + w C)/(1 + w C_ref), Eq. (41)", "[physical]") {
   // The same swing read at 20 degC and at 35 degC of a steel body (Kelley's
   // table, 1.1e-5 /K): l and so g grow by (1 + 35 w)/(1 + 20 w).
-  const Analysis cold = analyse(parse_scene(rod_scene(
+  const Analysis cold = reduce_scene(parse_scene(rod_scene(
       R"(, "temperature": {"value": 20, "unit": "degC"}, "reference_temperature": {"value": 20, "unit": "degC"},
           "material": "steel")")), exact());
-  const Analysis warm = analyse(parse_scene(rod_scene(
+  const Analysis warm = reduce_scene(parse_scene(rod_scene(
       R"(, "temperature": {"value": 35, "uncertainty": 0.5, "unit": "degC"},
           "reference_temperature": {"value": 20, "unit": "degC"}, "material": "steel")")), exact());
   const double w = 1.1e-5;
@@ -308,7 +308,7 @@ TEST_CASE("Pivot scan of a body in parts, k held and the centre fitted, gives ba
   ParsedScene scene = simulate_pivot_scan(app, sim);
   scene.apparatus_uncertainty.body->radius_of_gyration = 0.0;
   scene.fit = {"center_of_mass_position"};
-  const Analysis a = analyse(scene, exact());
+  const Analysis a = reduce_scene(scene, exact());
   CHECK(a.fit.converged);
   CHECK_THAT(a.g.value, WithinRel(sim.g, 1e-12));
   CHECK_THAT(parameter(a, "center_of_mass_position").value, WithinAbs(sim.center_of_mass_position, 1e-12));
@@ -333,7 +333,7 @@ TEST_CASE("Pivot scans: every fit ends by its own stopping rule in a few steps, 
     sim.amplitudes.resize(10);
     sim.period_sigma = 1e-3;
     const ParsedScene scene = simulate_pivot_scan({}, sim);
-    const Analysis a = analyse(scene, exact());
+    const Analysis a = reduce_scene(scene, exact());
     INFO("seed " << seed << ": " << a.fit.termination);
     CHECK(a.fit.converged);
     CHECK_THAT(a.fit.termination, Contains("SOLVER_TERMINATE_SUCCESSFULLY"));

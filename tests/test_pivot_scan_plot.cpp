@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "pendulum/analysis.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "pendulum/models/physical_pendulum.hpp"
 #include "pendulum/report/html_report.hpp"
 #include "pendulum/report/plots.hpp"
@@ -28,7 +28,7 @@ struct Reduced {
 
 Reduced reduced(const std::string& file) {
   Reduced r{parse_scene(test::read_text(std::string(PENDULUM_DATA_DIR) + "/" + file)), {}, {}};
-  r.analysis = analyse(r.scene);
+  r.analysis = reduce_scene(r.scene);
   r.report = make_scene_report(file, r.scene, r.analysis);
   return r;
 }
@@ -166,7 +166,7 @@ TEST_CASE("pivot scan plot: amplitudes that vary, the curve at their median", "[
   for (std::size_t k = 0; k < r.scene.observations.size(); ++k) {
     r.scene.observations[k].amplitude = (2.0 + 0.5 * k) * kPi / 180.0;
   }
-  r.analysis = analyse(r.scene);
+  r.analysis = reduce_scene(r.scene);
   r.report = make_scene_report("varied", r.scene, r.analysis);
   check_plot(r);
   CHECK_THAT(r.report.pivot_scan->amplitude, WithinRel(6.25 * kPi / 180.0, 1e-15));

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-#include "pendulum/analysis.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "simulations/decay_simulation.hpp"
 #include "pendulum/scene_json.hpp"
 #include "reference.hpp"
@@ -28,7 +28,7 @@ const CorrectionRow& row(const Analysis& a, const std::string& id) {
 }  // namespace
 
 TEST_CASE("Nelson-Olsson: Eqs. (5), (90), (91)", "[reduction][table2]") {
-  const Analysis a = analyse(parse_scene(test::nelson_olsson_text()));
+  const Analysis a = reduce_scene(parse_scene(test::nelson_olsson_text()));
   // Eq. (5): g = 9.8007 +- 0.0014 m/s^2 with T0 = T (only T and l enter).
   const TextbookFit* textbook = a.fit.results_of<SimplePendulum>();
   REQUIRE(textbook);
@@ -46,7 +46,7 @@ TEST_CASE("Nelson-Olsson: Eqs. (5), (90), (91)", "[reduction][table2]") {
 }
 
 TEST_CASE("The rows and the amplitude cross term add up to T - T0 (Eqs. 6-7 as a product)", "[reduction]") {
-  const Analysis a = analyse(parse_scene(test::nelson_olsson_text()));
+  const Analysis a = reduce_scene(parse_scene(test::nelson_olsson_text()));
   const ObservationResult& o = a.observations.front();
   double sum_t = 0.0;
   REQUIRE(o.corrections.size() == kCorrectionCount);  // the cross term is negligible at 3 deg
@@ -66,7 +66,7 @@ TEST_CASE("The rows and the amplitude cross term add up to T - T0 (Eqs. 6-7 as a
 
 TEST_CASE("Corrections under a tenth of the period's uncertainty are flagged negligible",
           "[reduction]") {
-  const Analysis a = analyse(parse_scene(test::nelson_olsson_text()));
+  const Analysis a = reduce_scene(parse_scene(test::nelson_olsson_text()));
   for (const char* id : {"wire_flexibility", "bob_rotation", "double_pendulum", "linear_damping",
                          "quadratic_damping", "wire_stretch", "support_motion"}) {
     INFO(id);
@@ -85,7 +85,7 @@ TEST_CASE("A bare scene computes only what it has", "[reduction]") {
   auto doc = nlohmann::json::parse(test::nelson_olsson_text());
   for (const char* part : {"ring", "cap", "cap_screw", "wire", "support", "decay"}) doc.erase(part);
   doc["air"] = "vacuum";
-  const Analysis a = analyse(parse_scene(doc.dump()));
+  const Analysis a = reduce_scene(parse_scene(doc.dump()));
   for (const auto& r : a.observations.front().corrections) {
     const std::string id = r.info.id;
     const bool present = id == "finite_amplitude" || id == "bob_radius" || id == "bob_rotation";
@@ -192,7 +192,7 @@ TEST_CASE("The propagated uncertainties match finite differences", "[reduction][
   const ParsedScene s = parse_scene(test::nelson_olsson_text());
   AnalysisOptions exact;
   exact.reduction.amplitude_method = AmplitudeMethod::agm;
-  const Analysis a = analyse(s, exact);
+  const Analysis a = reduce_scene(s, exact);
   const Propagated fd = finite_difference_uncertainty(s);
   CHECK_THAT(*a.g.uncertainty, WithinRel(fd.g, 1e-6));
   CHECK_THAT(*a.observations.front().period_ideal.uncertainty, WithinRel(fd.period_ideal, 1e-6));
@@ -218,7 +218,7 @@ TEST_CASE("Monte Carlo agrees with the linear propagation", "[reduction][budget]
   // 1/sqrt(2 x 4000) = 1.1%; the test allows 4.5%, which also covers the
   // curvature of the amplitude correction (relative sigma^2/(2 theta^2) = 0.5%).
   const ParsedScene s = parse_scene(test::nelson_olsson_text());
-  const Analysis a = analyse(s);
+  const Analysis a = reduce_scene(s);
   NormalDeviates noise(20261122);
   const int n = 4000;
   double sum = 0.0, sum2 = 0.0;
@@ -238,7 +238,7 @@ TEST_CASE("Monte Carlo agrees with the linear propagation", "[reduction][budget]
 
 TEST_CASE("A decay fit's alpha-beta correlation enters the budget", "[reduction][budget]") {
   const ParsedScene s = parse_scene(test::read_text(std::string(PENDULUM_DATA_DIR) + "/nelson_olsson_1986_decay.json"));
-  const Analysis a = analyse(s);
+  const Analysis a = reduce_scene(s);
   REQUIRE(a.budget_correlation);
   CHECK(a.budget_correlation->correlation < -0.9);
   double quadrature = a.budget_correlation->variance;
@@ -251,8 +251,8 @@ TEST_CASE("Amplitude methods differ by their truncation only", "[reduction]") {
   AnalysisOptions small, exact;
   small.reduction.amplitude_method = AmplitudeMethod::small_angle;
   exact.reduction.amplitude_method = AmplitudeMethod::agm;
-  const CorrectionRow exact_row = row(analyse(s, exact), "finite_amplitude");
-  const CorrectionRow small_row = row(analyse(s, small), "finite_amplitude");
+  const CorrectionRow exact_row = row(reduce_scene(s, exact), "finite_amplitude");
+  const CorrectionRow small_row = row(reduce_scene(s, small), "finite_amplitude");
   CHECK(small_row.method == "small_angle");
   CHECK(exact_row.method == "agm");
   // 11 theta^4 / 3072 T0 = 0.094 us at 3 deg (Eq. 8, second term).
@@ -271,7 +271,7 @@ TEST_CASE("The automatic amplitude method is the cheapest within 1% of the perio
   ParsedScene s = parse_scene(test::nelson_olsson_text());
   // Nelson-Olsson: sigma_T = 169 us, so the budget is 1.69 us; theta0^2/16
   // is within 0.23 us at 3 deg.
-  const CorrectionRow automatic = row(analyse(s), "finite_amplitude");
+  const CorrectionRow automatic = row(reduce_scene(s), "finite_amplitude");
   CHECK(automatic.method == "small_angle");
   double& sigma_t = s.observation_uncertainties[0].period;
   CHECK(*automatic.error_bound_delta_T < 0.01 * sigma_t);
@@ -279,12 +279,12 @@ TEST_CASE("The automatic amplitude method is the cheapest within 1% of the perio
   // Eq. (8) with 1 term (omitted A_2 m^2 T0 = 0.23 us) no longer fit; with 2
   // terms the omitted tail is A_3 m^3 T0 / (1 - m) = 1.1e-4 us.
   sigma_t /= 100.0;
-  const CorrectionRow tight = row(analyse(s), "finite_amplitude");
+  const CorrectionRow tight = row(reduce_scene(s), "finite_amplitude");
   CHECK(tight.method == "series");
   CHECK(tight.series_terms == 2);
   CHECK(*tight.error_bound_delta_T < 0.01 * sigma_t);
   // No stated uncertainty: nothing is known to be small enough but the
   // exact method.
   sigma_t = 0.0;
-  CHECK(row(analyse(s), "finite_amplitude").method == "agm");
+  CHECK(row(reduce_scene(s), "finite_amplitude").method == "agm");
 }

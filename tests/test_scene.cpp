@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "pendulum/analysis.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "pendulum/scene_json.hpp"
 #include "reference.hpp"
 #include "scene_files.hpp"
@@ -252,7 +252,7 @@ TEST_CASE("A length measured to the top or bottom of the bob is referred to its 
   // the bob's own corrections, is the same for the top, the bottom and the
   // centre (half the sum; half the difference is the length's share).
   const auto diameter_sensitivity = [](const ParsedScene& s) {
-    for (const auto& b : analyse(s).budget)
+    for (const auto& b : reduce_scene(s).budget)
       if (b.input == "bob.diameter") return b.sensitivity;
     FAIL("no bob.diameter in the budget");
     return 0.0;
@@ -261,7 +261,7 @@ TEST_CASE("A length measured to the top or bottom of the bob is referred to its 
     const auto g_at = [&](double diameter_cm) {
       const std::string patch = R"J({"length": {"value": )J" + std::to_string(length) + R"J(, "measured_to": ")J" + to +
                                 R"J("}, "bob": {"diameter": {"value": )J" + std::to_string(diameter_cm) + "}}}";
-      return analyse(parse_scene(patched(patch.c_str()))).g.value;
+      return reduce_scene(parse_scene(patched(patch.c_str()))).g.value;
     };
     const double h = 1e-4;  // cm
     return (g_at(6.10 + h) - g_at(6.10 - h)) / (2 * h * 0.01);
@@ -270,7 +270,7 @@ TEST_CASE("A length measured to the top or bottom of the bob is referred to its 
   CHECK_THAT(at_top, WithinRel(finite_difference("top_of_bob", 2.9739), 1e-5));
   CHECK_THAT(at_bottom, WithinRel(finite_difference("bottom_of_bob", 3.0349), 1e-5));
   CHECK_THAT((at_top + at_bottom) / 2.0, WithinRel(diameter_sensitivity(centre), 1e-3));
-  CHECK_THAT((at_top - at_bottom) / 2.0, WithinRel(analyse(centre).g.value / 3.0044 / 2.0, 1e-3));
+  CHECK_THAT((at_top - at_bottom) / 2.0, WithinRel(reduce_scene(centre).g.value / 3.0044 / 2.0, 1e-3));
 }
 
 TEST_CASE("A scene naming a recording: read only where the caller says the scene's folder is", "[scene][recordings]") {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <regex>
 
-#include "pendulum/analysis.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "pendulum/dispersion.hpp"
 #include "pendulum/period_fit.hpp"
 #include "pendulum/report/html_report.hpp"
@@ -80,7 +80,7 @@ AnalysisOptions exact() {
 TEST_CASE("A noiseless series gives back g and the length offset to 1e-12", "[series]") {
   SeriesSimulation sim = lengths_series(1);
   sim.noise = false;
-  const Analysis a = analyse(simulate_series(nelson_olsson_apparatus(), sim), exact());
+  const Analysis a = reduce_scene(simulate_series(nelson_olsson_apparatus(), sim), exact());
   INFO(a.fit.termination);
   CHECK(a.fit.method == "ceres_levenberg_marquardt");
   CHECK(a.fit.converged);
@@ -112,7 +112,7 @@ TEST_CASE("Coverage: +-1 sigma holds the true g and offset 68% of the time", "[s
   double chi2 = 0.0;
   for (int k = 0; k < n; ++k) {
     const SeriesSimulation sim = lengths_series(100 + k);
-    const Analysis a = analyse(simulate_series(nelson_olsson_apparatus(), sim));
+    const Analysis a = reduce_scene(simulate_series(nelson_olsson_apparatus(), sim));
     REQUIRE(a.fit.converged);
     g_in += std::abs(a.g.value - sim.g) <= *a.g.uncertainty;
     g_unscaled_in += std::abs(a.g.value - sim.g) <= *a.g_uncertainty_unscaled;
@@ -141,7 +141,7 @@ TEST_CASE("The uncertainties of a series match finite differences of the fit", "
   SeriesSimulation sim = lengths_series(7);
   sim.noise = false;
   const ParsedScene scene = simulate_series(nelson_olsson_apparatus(), sim);
-  const Analysis a = analyse(scene, exact());
+  const Analysis a = reduce_scene(scene, exact());
   double variance = 0.0;
   for (std::size_t k = 0; k < scene.observations.size(); ++k) {
     for (int field = 0; field < 3; ++field) {
@@ -149,7 +149,7 @@ TEST_CASE("The uncertainties of a series match finite differences of the fit", "
         ParsedScene t = scene;
         Observation<double>& o = t.observations[k];
         (field == 0 ? o.period : field == 1 ? o.length : o.amplitude) += h;
-        return analyse(t, exact()).g.value;
+        return reduce_scene(t, exact()).g.value;
       };
       const auto& u = scene.observation_uncertainties[k];
       const double sigma = field == 0 ? u.period : field == 1 ? u.length : u.amplitude;
@@ -177,8 +177,8 @@ TEST_CASE("A series of one observation equals the closed-form reduction", "[seri
   ParsedScene series = single;
   series.series = true;
   series.sources[0].path = "observations[0].";
-  const Analysis closed = analyse(single);
-  const Analysis as_series = analyse(series);
+  const Analysis closed = reduce_scene(single);
+  const Analysis as_series = reduce_scene(series);
   CHECK(closed.fit.method == "closed_form");
   CHECK_THAT(as_series.g.value, WithinRel(closed.g.value, 1e-15));
   CHECK_THAT(*as_series.g.uncertainty, WithinRel(*closed.g.uncertainty, 1e-15));
@@ -202,7 +202,7 @@ TEST_CASE("One length swung from 1 to 170 deg gives one g with the exact amplitu
   // the sweep (2K(sin 85 deg)/pi).
   const SeriesSimulation sim = amplitude_sweep();
   const ParsedScene scene = simulate_series(nelson_olsson_apparatus(), sim);
-  const Analysis a = analyse(scene, exact());
+  const Analysis a = reduce_scene(scene, exact());
   CHECK_THAT(a.g.value, WithinRel(sim.g, 1e-12));
   for (const auto& o : a.observations) CHECK(std::abs(*o.residual) < 1e-6);
 
@@ -221,7 +221,7 @@ TEST_CASE("One length swung from 1 to 170 deg gives one g with the exact amplitu
              WithinRel(sim.g * 0.4038603574051547, 1e-9));
   AnalysisOptions small;
   small.reduction.amplitude_method = AmplitudeMethod::small_angle;
-  const Analysis wrong = analyse(scene, small);
+  const Analysis wrong = reduce_scene(scene, small);
   REQUIRE(wrong.fit.probability);
   CHECK(*wrong.fit.probability < 1e-6);
   // The stated uncertainties put g far off; the scatter's (issue 20) admits
@@ -236,7 +236,7 @@ TEST_CASE("Lengths too close together, or all equal, are named", "[series][warni
   SeriesSimulation sim = lengths_series(5);
   sim.lengths = {1.000, 1.001, 1.002};
   sim.amplitudes.assign(3, 3.0 * test::kDegree);
-  const Analysis close = analyse(simulate_series(nelson_olsson_apparatus(), sim));
+  const Analysis close = reduce_scene(simulate_series(nelson_olsson_apparatus(), sim));
   const auto named = [](const Analysis& a, const char* text) {
     return std::any_of(a.warnings.begin(), a.warnings.end(),
                        [&](const std::string& w) { return w.find(text) != std::string::npos; });
@@ -249,7 +249,7 @@ TEST_CASE("Lengths too close together, or all equal, are named", "[series][warni
   sim.lengths = {1.0, 1.0, 1.0};
   sim.noise = false;
   const ParsedScene scene = simulate_series(nelson_olsson_apparatus(), sim);
-  const Analysis equal = analyse(scene);
+  const Analysis equal = reduce_scene(scene);
   CHECK_FALSE(equal.g.uncertainty);
   CHECK(equal.budget.empty());
   CHECK(named(equal, "covariance is singular"));
@@ -285,7 +285,7 @@ TEST_CASE("A series at chi2/dof near 60 is suspect, with the scatter's sigma", "
   // Stated sigmas sqrt(60) times too small make E[chi2/dof] = 60.
   ParsedScene scene = simulate_series(nelson_olsson_apparatus(), lengths_series(7));
   test::understate(scene, std::sqrt(60.0));
-  const Analysis a = analyse(scene);
+  const Analysis a = reduce_scene(scene);
   INFO(a.fit.chi2 / a.fit.dof);
   REQUIRE(a.fit.birge_ratio);
   CHECK(a.fit.chi2 / a.fit.dof > 20.0);
@@ -305,7 +305,7 @@ TEST_CASE("A series at chi2/dof near 60 is suspect, with the scatter's sigma", "
 TEST_CASE("A period off the model by many sigma, and an implausible chi2, are named", "[series][warnings]") {
   ParsedScene scene = simulate_series(nelson_olsson_apparatus(), lengths_series(9));
   scene.observations[2].period *= 1.01;  // a miscounted oscillation in 100
-  const Analysis a = analyse(scene);
+  const Analysis a = reduce_scene(scene);
   bool outlier = false, chi2 = false;
   for (const auto& w : a.warnings) {
     outlier |= w.rfind("observations[2].timing: the period", 0) == 0;
@@ -333,7 +333,7 @@ TEST_CASE("The bundled series is what its generator writes, and gives back its t
   }
   // The truth (tests/tools/make_series_scene.cpp): the site's normal gravity
   // and the ball's radius, each within 3 of the fit's standard uncertainties.
-  const Analysis a = analyse(file);
+  const Analysis a = reduce_scene(file);
   REQUIRE(a.expected_g);
   CHECK(std::abs(a.g.value - a.expected_g->value) < 3 * *a.g.uncertainty);
   const ParameterResult& offset = parameter(a, "length_offset");
@@ -352,12 +352,12 @@ TEST_CASE("A length measured once for every amplitude is one input of the budget
   const ParsedScene independent = simulate_series(nelson_olsson_apparatus(), sim);
   ParsedScene shared = independent;
   for (auto& s : shared.sources) s.shared = {"length"};
-  const Analysis a = analyse(shared, exact());
+  const Analysis a = reduce_scene(shared, exact());
 
   auto g_at = [&](double h) {
     ParsedScene t = shared;
     for (auto& o : t.observations) o.length += h;
-    return analyse(t, exact()).g.value;
+    return reduce_scene(t, exact()).g.value;
   };
   const double h = 1e-3 * sim.length_sigma;
   const double dg_dl = (g_at(h) - g_at(-h)) / (2 * h);
@@ -374,7 +374,7 @@ TEST_CASE("A length measured once for every amplitude is one input of the budget
 
   // Treated as eight independent lengths, the same 1 mm averages down: the
   // lengths' quadrature sum is about 1/sqrt(8) of the shared length's.
-  const Analysis apart = analyse(independent, exact());
+  const Analysis apart = reduce_scene(independent, exact());
   double lengths = 0.0;
   for (const auto& b : apart.budget) {
     if (b.input.find("].length") != std::string::npos) lengths += b.contribution * b.contribution;
@@ -384,7 +384,7 @@ TEST_CASE("A length measured once for every amplitude is one input of the budget
   // the fit's g is the one with the lengths' uncertainties left out.
   ParsedScene exact_lengths = independent;
   for (auto& u : exact_lengths.observation_uncertainties) u.length = 0.0;
-  CHECK_THAT(a.g.value, WithinRel(analyse(exact_lengths, exact()).g.value, 1e-15));
+  CHECK_THAT(a.g.value, WithinRel(reduce_scene(exact_lengths, exact()).g.value, 1e-15));
 }
 
 TEST_CASE("A series may give its length or amplitude once at the top level", "[series][json]") {
@@ -405,7 +405,7 @@ TEST_CASE("A series may give its length or amplitude once at the top level", "[s
     CHECK(scene.sources[k].path_of("length.value") == "length.value");
     CHECK(scene.sources[k].path_of("amplitude") == "observations[" + std::to_string(k) + "].amplitude");
   }
-  const Analysis a = analyse(scene);
+  const Analysis a = reduce_scene(scene);
   CHECK(std::count_if(a.budget.begin(), a.budget.end(), [](const auto& b) { return b.input == "length"; }) == 1);
 }
 
@@ -440,7 +440,7 @@ ParsedScene taped_series(std::uint64_t seed) {
 
 TEST_CASE("Lengths that scatter beyond their (unstated) uncertainty: tau fitted, g recovered",
           "[series][dispersion][length_scatter]") {
-  const Analysis a = analyse(taped_series(21));
+  const Analysis a = reduce_scene(taped_series(21));
   REQUIRE(a.fit.length_scatter);
   REQUIRE(a.fit.chi2_stated);
   // chi2 against the periods' 0.2 ms alone is far above its 99 % quantile; with tau it is dof.
@@ -469,7 +469,7 @@ TEST_CASE("Lengths that scatter: +-1 sigma holds the true g about 68% of the tim
   const int n = 400;
   int g_in = 0, fitted = 0;
   for (int s = 0; s < n; ++s) {
-    const Analysis a = analyse(taped_series(300 + s));
+    const Analysis a = reduce_scene(taped_series(300 + s));
     REQUIRE(a.fit.converged);
     fitted += a.fit.length_scatter.has_value();
     g_in += std::abs(a.g.value - lengths_series(0).g) <= *a.g.uncertainty;

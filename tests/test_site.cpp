@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "pendulum/analysis.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "pendulum/scene_json.hpp"
 #include "pendulum/site.hpp"
 #include "scene_files.hpp"
@@ -57,7 +57,7 @@ TEST_CASE("Without a site, g is compared with standard gravity and the Earth's s
   CHECK_THAT(e.range->second, WithinAbs(kGammaPole, 1e-9));
   CHECK_THAT(e.range->first, WithinAbs(kGammaEquator - 3.086e-6 * kSurfaceHeightHigh, 1e-4));
   CHECK(e.uncertainty == std::max(e.value - e.range->first, e.range->second - e.value));
-  const Analysis a = analyse(parse_scene(test::nelson_olsson_text()));
+  const Analysis a = reduce_scene(parse_scene(test::nelson_olsson_text()));
   CHECK(a.expected_g);  // Nelson & Olsson give a site
   CHECK_FALSE(a.surface_g);
 }
@@ -80,7 +80,7 @@ TEST_CASE("A measured reference g is preferred to normal gravity", "[site]") {
 
 TEST_CASE("Nelson-Olsson's g agrees with the site's 9.8026 m/s^2 within 1 sigma", "[site][table2]") {
   // Sec. IV: "The experimental values ... agree with this geodesic value within 1 s.d."
-  const Analysis a = analyse(parse_scene(test::nelson_olsson_text()));
+  const Analysis a = reduce_scene(parse_scene(test::nelson_olsson_text()));
   REQUIRE(a.expected_g);
   REQUIRE(a.z_score);
   CHECK_THAT(a.expected_g->value, WithinAbs(9.8026, 1e-12));

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "pendulum/amplitude.hpp"
-#include "pendulum/analysis.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "pendulum/numeric.hpp"
 #include "pendulum/scene_json.hpp"
 #include "pendulum/status.hpp"
@@ -86,7 +86,7 @@ TEST_CASE("Hand timing draws no outlier warning, a miscounted oscillation does",
         {"air", "vacuum"},  // else a warning about the air for a ball of unknown material
         {"timing", {{"oscillations_per_trial", 10}, {"unit", "s"}, {"resolution", 0.01}, {"trials", trials}}}};
     const ParsedScene clean = parse_scene(doc.dump());
-    const Analysis a = analyse(clean);
+    const Analysis a = reduce_scene(clean);
     clean_warnings += !clean.warnings.empty() || !a.warnings.empty();
     clean_suspect += a.status != ResultStatus::ok;
     // One oscillation too many counted in the third trial: one period more.
@@ -146,13 +146,13 @@ namespace {
 /// site's expected g, less `late` s each (a stopwatch started late) and its
 /// length less `short_by` (m): the reasons of its verdict.
 std::vector<std::string> reasons_with(nlohmann::json doc, double late, double short_by) {
-  const Analysis first = analyse(parse_scene(doc.dump()));
+  const Analysis first = reduce_scene(parse_scene(doc.dump()));
   REQUIRE(first.expected_g);
   // g T^2 is fixed for one geometry (Eq. 5 and a physical pendulum's alike).
   const double scale = std::sqrt(first.g.value / first.expected_g->value);
   for (auto& t : doc["timing"]["trials"]) t = std::round((t.get<double>() * scale - late) * 100.0) / 100.0;
   if (short_by > 0.0) doc["length"]["value"] = doc["length"]["value"].get<double>() - short_by * 100.0;  // cm
-  return analyse(parse_scene(doc.dump())).status_reasons;
+  return reduce_scene(parse_scene(doc.dump())).status_reasons;
 }
 
 bool names(const std::vector<std::string>& reasons, const std::string& words) {

@@ -12,7 +12,7 @@
 
 #include "long_decay.hpp"
 #include "pendulum/amplitude.hpp"
-#include "pendulum/analysis.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "pendulum/output.hpp"
 #include "pendulum/recordings/swing_series.hpp"
 #include "pendulum/scene_json.hpp"
@@ -32,7 +32,7 @@ Reduced reduce_in(const std::string& dir, LongDecayMethod m, double mean_deg = 0
   SceneFiles files;
   files.directory = dir;
   Reduced r{parse_scene(long_decay_scene("decay.csv", m, mean_deg), files), {}};
-  r.analysis = analyse(r.scene);
+  r.analysis = reduce_scene(r.scene);
   return r;
 }
 
@@ -84,7 +84,7 @@ TEST_CASE("A long decay from 81 deg is reduced swing by swing, and its g is the 
   CHECK(how.shift_sigmas > kSwingBySwingShift);
   CHECK(parsed.observations.size() == how.groups.size());
   CHECK(parsed.observations.size() >= 10);
-  const Analysis a = analyse(parsed);
+  const Analysis a = reduce_scene(parsed);
   // The groups' amplitudes span the decay, 81 deg to 17 deg (each group's is its 4 periods' mean).
   CHECK(how.groups.front().amplitude * 180.0 / M_PI > 70.0);
   CHECK(how.groups.back().amplitude * 180.0 / M_PI < 20.0);
@@ -173,7 +173,7 @@ TEST_CASE("A short small decay stays one mean period: the rule's other side", "[
   CHECK(how.shift_sigmas < kSwingBySwingShift);
   CHECK_FALSE(parsed.swing_by_swing);
   CHECK_FALSE(parsed.series);
-  const Analysis a = analyse(parsed);
+  const Analysis a = reduce_scene(parsed);
   CHECK(std::abs(a.g.value - kLongDecayG) < 3.0 * a.g.uncertainty.value());
   // Asked for, the same record reduces swing by swing.
   const Reduced by_swing = reduce_in(dir, LongDecayMethod::swing_by_swing);

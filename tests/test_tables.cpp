@@ -14,7 +14,7 @@
 #include <iomanip>
 #include <random>
 
-#include "pendulum/analysis.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "pendulum/recordings/table.hpp"
 #include "pendulum/scene_json.hpp"
 #include "scene_files.hpp"
@@ -107,7 +107,7 @@ TEST_CASE("Tables: a T-against-L table with repeats equals the same series as JS
     CHECK(imported.observation_uncertainties[k].period == Approx(one / std::sqrt(n) / 10.0).epsilon(1e-12));
     CHECK(imported.observations[k].length == Approx(by_hand["observations"][k]["length"]["value"].get<double>() / 100.0));
   }
-  const Analysis a = analyse(imported), b = analyse(hand);
+  const Analysis a = reduce_scene(imported), b = reduce_scene(hand);
   CHECK(a.g.value == Approx(b.g.value).epsilon(1e-12));
   CHECK(*a.g.uncertainty == Approx(*b.g.uncertainty).epsilon(1e-10));
 
@@ -118,7 +118,7 @@ TEST_CASE("Tables: a T-against-L table with repeats equals the same series as JS
   SceneFiles files;
   files.directory = kData;
   const ParsedScene referenced = parse_scene(named.dump(), files);
-  CHECK(analyse(referenced).g.value == Approx(b.g.value).epsilon(1e-12));
+  CHECK(reduce_scene(referenced).g.value == Approx(b.g.value).epsilon(1e-12));
   // Counted row by row, the same length read once would weigh up to seven times.
   json rows = json::array();
   for (const auto& [l, t] : rows_of(file)) {
@@ -126,7 +126,7 @@ TEST_CASE("Tables: a T-against-L table with repeats equals the same series as JS
                     {"timing", {{"oscillations_per_trial", 10}, {"unit", "s"}, {"trials", {t}}, {"uncertainty", pooled}}}});
   }
   const Analysis ungrouped =
-      analyse(parse_scene(json{{"amplitude", "not recorded"}, {"fit", {"length_offset"}}, {"observations", rows}}.dump()));
+      reduce_scene(parse_scene(json{{"amplitude", "not recorded"}, {"fit", {"length_offset"}}, {"observations", rows}}.dump()));
   // With the trials' scatter pooled over the lengths (docs/uncertainty.md), a
   // length's mean of n trials weighs what its n rows weigh (the normal
   // equations hold the same sums), and the shared amplitude weighs none:
@@ -149,9 +149,9 @@ TEST_CASE("Tables: the layouts of one series read to one result", "[tables]") {
   CHECK(comma.oscillations == 10);
   CHECK(quoted.oscillations == 10);
   CHECK(bare.oscillations == 10);
-  const double g = analyse(parse_scene(table_scene(comma, "a"))).g.value;
-  CHECK(analyse(parse_scene(table_scene(quoted, "b"))).g.value == Approx(g).epsilon(1e-12));
-  CHECK(analyse(parse_scene(table_scene(bare, "c"))).g.value == Approx(g).epsilon(1e-12));
+  const double g = reduce_scene(parse_scene(table_scene(comma, "a"))).g.value;
+  CHECK(reduce_scene(parse_scene(table_scene(quoted, "b"))).g.value == Approx(g).epsilon(1e-12));
+  CHECK(reduce_scene(parse_scene(table_scene(bare, "c"))).g.value == Approx(g).epsilon(1e-12));
 }
 
 TEST_CASE("Tables: a headerless h, sigma_h, T, sigma_T pivot scan", "[tables]") {
@@ -164,7 +164,7 @@ TEST_CASE("Tables: a headerless h, sigma_h, T, sigma_T pivot scan", "[tables]") 
   CHECK(scan.columns[3].role == "uncertainty of the period");
   for (const auto& c : scan.columns) CHECK(c.decided_by == "content");
   // make_tables.py: a metre stick, k = 1/sqrt(12) m, g = 9.81 m/s^2.
-  const Analysis a = analyse(parse_scene(table_scene(scan, "scan")));
+  const Analysis a = reduce_scene(parse_scene(table_scene(scan, "scan")));
   CHECK(std::abs(a.g.value - 9.81) < 3.0 * *a.g.uncertainty);
   // A recording is no table: phyphox's header names no setting.
   CHECK_FALSE(looks_like_settings_table("Time (s),Gyroscope x (rad/s)\n0,0.1\n0.01,0.2\n"));
@@ -209,7 +209,7 @@ TEST_CASE("Amplitude not recorded: a uniform distribution over its range", "[tab
   auto with = [&](const json& amplitude) {
     json s = base;
     s["amplitude"] = amplitude;
-    return analyse(parse_scene(s.dump()));
+    return reduce_scene(parse_scene(s.dump()));
   };
   // GUM 4.3.7: uniform over [a, b] is (a + b)/2 +- (b - a)/sqrt(12).
   const Analysis range = with({{"range", {3, 15}}, {"unit", "deg"}});
@@ -237,7 +237,7 @@ TEST_CASE("Amplitude not recorded: a uniform distribution over its range", "[tab
 // uncertainties of the generator's 9.81 m/s^2.
 namespace {
 
-Analysis reduced(const SettingsTable& t) { return analyse(parse_scene(table_scene(t, "t"))); }
+Analysis reduced(const SettingsTable& t) { return reduce_scene(parse_scene(table_scene(t, "t"))); }
 
 std::vector<std::string> roles(const SettingsTable& t) {
   std::vector<std::string> out;
@@ -312,7 +312,7 @@ TEST_CASE("Tables: single timings take their uncertainty from the scatter about 
   const ParsedScene scene = parse_scene(table_scene(t, "t"));
   CHECK(scene.period_uncertainty_from_scatter);
   CHECK(scene.fit == std::vector<std::string>{"length_offset"});
-  const Analysis a = analyse(scene);
+  const Analysis a = reduce_scene(scene);
   check_g(t);
   // chi2 gives no verdict: no status reason from it, whatever its size.
   for (const auto& r : a.status_reasons) CHECK(r.find("scatter about the fit") == std::string::npos);

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <string>
 
-#include "pendulum/analysis.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "simulations/decay_simulation.hpp"
 #include "pendulum/monte_carlo.hpp"
 #include "pendulum/output.hpp"
@@ -70,7 +70,7 @@ TEST_CASE("The coverage factor is Student's t quantile (GUM Table G.2)", "[uncer
 }
 
 TEST_CASE("Each input says how its uncertainty was evaluated", "[uncertainty]") {
-  const Analysis a = analyse(parse_scene(test::nelson_olsson_text()));
+  const Analysis a = reduce_scene(parse_scene(test::nelson_olsson_text()));
   // Ten trials scattering by more than the 0.01 s resolution: Type A, the
   // mean's t with 9 degrees of freedom; the rest are stated, Type B.
   const BudgetEntry& period = entry(a, "timing.period");
@@ -95,20 +95,20 @@ TEST_CASE("Each input says how its uncertainty was evaluated", "[uncertainty]") 
   nlohmann::json doc = nlohmann::json::parse(test::nelson_olsson_text());
   SECTION("an amplitude not recorded is rectangular") {
     doc["amplitude"] = "not recorded";
-    const Analysis b = analyse(parse_scene(doc.dump()));
+    const Analysis b = reduce_scene(parse_scene(doc.dump()));
     CHECK(entry(b, "amplitude").evaluation.distribution == Distribution::rectangular);
     CHECK(entry(b, "amplitude").evaluation.type == 'B');
   }
   SECTION("a single trial read to a resolution is rectangular") {
     doc["timing"]["trials"] = {347.84};
-    const Analysis b = analyse(parse_scene(doc.dump()));
+    const Analysis b = reduce_scene(parse_scene(doc.dump()));
     CHECK(entry(b, "timing.period").evaluation.distribution == Distribution::rectangular);
     CHECK(std::isinf(b.g_expanded->effective_dof));
     CHECK_THAT(b.g_expanded->coverage_factor, WithinAbs(1.960, 0.0005));
   }
   SECTION("equal trials whose resolution is the floor are rectangular, Type B") {
     doc["timing"]["trials"] = {347.84, 347.84, 347.84};
-    const Analysis b = analyse(parse_scene(doc.dump()));
+    const Analysis b = reduce_scene(parse_scene(doc.dump()));
     CHECK(entry(b, "timing.period").evaluation.type == 'B');
     CHECK(entry(b, "timing.period").evaluation.distribution == Distribution::rectangular);
   }
@@ -116,7 +116,7 @@ TEST_CASE("Each input says how its uncertainty was evaluated", "[uncertainty]") 
 
 TEST_CASE("A decay fit's alpha and beta are Type A with the fit's degrees of freedom", "[uncertainty]") {
   const ParsedScene s = parse_scene(test::read_text(std::string(PENDULUM_DATA_DIR) + "/nelson_olsson_1986_decay.json"));
-  const Analysis a = analyse(s);
+  const Analysis a = reduce_scene(s);
   REQUIRE(a.decay_fit);
   const BudgetEntry& alpha = entry(a, "decay.alpha");
   CHECK(alpha.evaluation.type == 'A');
@@ -133,7 +133,7 @@ TEST_CASE("Five stopwatch trials: the expanded interval covers g 95 % of the tim
   constexpr double kTrueG = 9.81, kLength = 1.0, kAmplitude = 5.0, kHand = 0.1;
   double period = 2.0 * kPi * std::sqrt(kLength / kTrueG);
   for (int i = 0; i < 3; ++i) {
-    const double g = analyse(parse_scene(stopwatch_scene({10 * period, 10 * period}, kLength, kAmplitude).dump())).g.value;
+    const double g = reduce_scene(parse_scene(stopwatch_scene({10 * period, 10 * period}, kLength, kAmplitude).dump())).g.value;
     period *= std::sqrt(g / kTrueG);
   }
   NormalDeviates noise(20261206);
@@ -144,7 +144,7 @@ TEST_CASE("Five stopwatch trials: the expanded interval covers g 95 % of the tim
     std::vector<double> trials;
     for (int t = 0; t < 5; ++t) trials.push_back(10 * period + kHand * noise.next());
     const double length = kLength + 0.0005 * noise.next(), amplitude = kAmplitude + 0.5 * noise.next();
-    const Analysis a = analyse(parse_scene(stopwatch_scene(trials, length, amplitude).dump()));
+    const Analysis a = reduce_scene(parse_scene(stopwatch_scene(trials, length, amplitude).dump()));
     const double error = std::abs(a.g.value - kTrueG);
     covered += error <= a.g_expanded->expanded;
     covered_by_two += error <= 2.0 * *a.g.uncertainty;
@@ -199,7 +199,7 @@ TEST_CASE("Monte Carlo: g through theta0^2 with theta0 rectangular, against its 
   }
   const double deviation = std::sqrt(square - mean * mean);
   const ParsedScene s = parse_scene(amplitude_only_scene());
-  Analysis a = analyse(s);
+  Analysis a = reduce_scene(s);
   const std::optional<MonteCarloResult> mc = monte_carlo(s, a, MonteCarloOptions{20261206, 0});
   REQUIRE(mc);
   INFO("draws " << mc->draws << ", tolerance " << mc->tolerance << "; mean " << mc->mean << " (exact " << mean
@@ -223,13 +223,13 @@ TEST_CASE("Monte Carlo: g through theta0^2 with theta0 rectangular, against its 
 TEST_CASE("Monte Carlo: GUM's interval where g is linear enough, and the t input that bends Nelson & Olsson's",
           "[uncertainty][monte_carlo]") {
   const ParsedScene s = parse_scene(test::nelson_olsson_text());
-  const Analysis a = analyse(s);
+  const Analysis a = reduce_scene(s);
   // Every input normal (the ten trials' mean drawn as a normal too): g is
   // linear enough in them at these uncertainties (the amplitude known to
   // +-0.3 deg), and S1 8 validates GUM's interval to the tolerance.
   ParsedScene normal = s;
   normal.evaluations.clear();
-  const Analysis an = analyse(normal);
+  const Analysis an = reduce_scene(normal);
   const std::optional<MonteCarloResult> linear = monte_carlo(normal, an, MonteCarloOptions{7, 0});
   REQUIRE(linear);
   INFO("GUM " << an.g.value << " +- " << an.g_expanded->expanded << "; MC [" << linear->low << ", " << linear->high
@@ -250,7 +250,7 @@ TEST_CASE("Monte Carlo: GUM's interval where g is linear enough, and the t input
   // normal draw would give +- 1.96 u, 29 % narrower).
   const ParsedScene five = parse_scene(
       stopwatch_scene({20.03, 20.11, 19.95, 20.07, 19.99}, 1.0, 5.0).dump());
-  const Analysis b = analyse(five);
+  const Analysis b = reduce_scene(five);
   const std::optional<MonteCarloResult> t = monte_carlo(five, b, MonteCarloOptions{11, 0});
   REQUIRE(t);
   INFO("GUM u " << *b.g.uncertainty << ", k " << b.g_expanded->coverage_factor << "; MC [" << t->low << ", "
@@ -294,7 +294,7 @@ TEST_CASE("Monte Carlo refits a series: t-distributed periods widen g as t's var
   // variance is the budget's rows, each t row times nu/(nu - 2).
   NormalDeviates noise(40);
   const ParsedScene s = parse_scene(series_scene(kSeriesLengths, series_trials(10, 0.1, noise)).dump());
-  const Analysis a = analyse(s);
+  const Analysis a = reduce_scene(s);
   double variance = 0.0;
   for (const BudgetEntry& b : a.budget) {
     const double nu = b.evaluation.dof;
@@ -339,7 +339,7 @@ TEST_CASE("Monte Carlo of a series scaled by its Birge ratio draws the excess sc
     o["amplitude"].erase("uncertainty");
   }
   const ParsedScene s = parse_scene(doc.dump());
-  const Analysis a = analyse(s);
+  const Analysis a = reduce_scene(s);
   REQUIRE(a.fit.scaled);
   REQUIRE_FALSE(a.fit.length_scatter);
   const std::optional<MonteCarloResult> mc = monte_carlo(s, a, MonteCarloOptions{5, 40000});
@@ -397,7 +397,7 @@ TEST_CASE("Monte Carlo of a Birge-scaled series puts the excess scatter on the p
     // variance 5/3. Drawing every observation's own inputs S times wider
     // made it S^2 u_obs^2 5/3 instead.
     const ParsedScene s = parse_scene(scattered_series(0.06, 5.0, 0.5, noise).dump());
-    const Analysis a = analyse(s);
+    const Analysis a = reduce_scene(s);
     REQUIRE(a.fit.scaled);
     REQUIRE(a.fit.dof == 5);
     const double s2 = std::pow(*a.fit.birge_ratio, 2), u_obs = *a.fit.parameters[0].uncertainty_from_observations;
@@ -421,7 +421,7 @@ TEST_CASE("Monte Carlo of a Birge-scaled series puts the excess scatter on the p
     // times (S = 2.4) it was S^2 times that. The periods' own curvature (g
     // as 1/T^2) adds 3 u^2/(4 g), u the draws' deviation (~1e-5 m/s^2).
     const ParsedScene s = parse_scene(scattered_series(0.06, 3.0, 2.0, noise).dump());
-    const Analysis a = analyse(s);
+    const Analysis a = reduce_scene(s);
     REQUIRE(a.fit.scaled);
     const double theta0 = 3.0 * kPi / 180.0, sigma = 2.0 * kPi / 180.0;
     const auto f2 = [](double theta) { return std::pow(2.0 * std::comp_ellint_1(std::sin(theta / 2.0)) / kPi, 2); };
@@ -456,7 +456,7 @@ TEST_CASE("Series of five lengths: the expanded interval covers g 95 % of the ti
   for (int i = 0; i < 3; ++i) {
     for (std::size_t k = 0; k < period.size(); ++k) {
       const nlohmann::json one = stopwatch_scene({10 * period[k], 10 * period[k]}, kSeriesLengths[k], 5.0);
-      period[k] *= std::sqrt(analyse(parse_scene(one.dump())).g.value / kTrueG);
+      period[k] *= std::sqrt(reduce_scene(parse_scene(one.dump())).g.value / kTrueG);
     }
   }
   NormalDeviates noise(20261207);
@@ -474,7 +474,7 @@ TEST_CASE("Series of five lengths: the expanded interval covers g 95 % of the ti
     for (auto& o : doc["observations"]) o["amplitude"]["value"] = 5.0 + 0.5 * noise.next();
     const ParsedScene s = parse_scene(doc.dump());
     pooled += evaluation_of(s.evaluations, "observations[0].timing.period").shared == SharedVariance::pooled_trials;
-    const Analysis a = analyse(s);
+    const Analysis a = reduce_scene(s);
     covered += std::abs(a.g.value - kTrueG) <= a.g_expanded->expanded;
   }
   // Bartlett's test refutes equal scatter 1 % of the time when it is equal.
@@ -492,7 +492,7 @@ TEST_CASE("Monte Carlo refits a physical pendulum: Kater's, every input normal",
   // theta0 = 1 +- 0.2 deg at both pivots).
   ParsedScene s = parse_scene(test::read_text(std::string(PENDULUM_DATA_DIR) + "/kater_reversible_pendulum.json"));
   s.evaluations.clear();
-  const Analysis a = analyse(s);
+  const Analysis a = reduce_scene(s);
   constexpr long kDraws = 40000;
   const std::optional<MonteCarloResult> mc = monte_carlo(s, a, MonteCarloOptions{9, kDraws});
   REQUIRE(mc);
@@ -510,7 +510,7 @@ TEST_CASE("Monte Carlo: too few draws judge nothing, and name no input", "[uncer
   // 1000 draws place them to ~2e-4 m/s^2, four times delta.
   ParsedScene s = parse_scene(test::nelson_olsson_text());
   s.evaluations.clear();
-  const Analysis a = analyse(s);
+  const Analysis a = reduce_scene(s);
   const std::optional<MonteCarloResult> few = monte_carlo(s, a, MonteCarloOptions{3, 1000});
   REQUIRE(few);
   INFO("ends +- " << few->low_uncertainty << ", " << few->high_uncertainty << "; tolerance " << few->tolerance);
@@ -521,7 +521,7 @@ TEST_CASE("Monte Carlo: too few draws judge nothing, and name no input", "[uncer
   CHECK(few->draws_to_judge > 1000);
   AnalysisOptions options;
   options.monte_carlo = MonteCarloOptions{3, 1000};
-  const Analysis said = analyse(s, options);
+  const Analysis said = reduce_scene(s, options);
   const auto unjudged = std::find_if(said.warnings.begin(), said.warnings.end(), [](const std::string& w) {
     return w.find("too few to judge GUM's interval") != std::string::npos;
   });
@@ -551,7 +551,7 @@ TEST_CASE("Monte Carlo ends placed by fewer than two batches: null in JSON",
   // (monte_carlo.cpp): the writer refused the infinity (require_finite: an
   // internal error, exit 3).
   const ParsedScene s = parse_scene(test::nelson_olsson_text());
-  Analysis a = analyse(s);
+  Analysis a = reduce_scene(s);
   a.monte_carlo = monte_carlo(s, a, MonteCarloOptions{3, 1000});
   REQUIRE(a.monte_carlo);
   a.monte_carlo->low_uncertainty = a.monte_carlo->high_uncertainty = std::numeric_limits<double>::infinity();
@@ -573,7 +573,7 @@ TEST_CASE("Monte Carlo counts the draws it drops", "[uncertainty][monte_carlo]")
   s.evaluations.clear();
   AnalysisOptions options;
   options.monte_carlo = MonteCarloOptions{5, 20000};
-  const Analysis a = analyse(s, options);
+  const Analysis a = reduce_scene(s, options);
   REQUIRE(a.monte_carlo);
   const MonteCarloResult& mc = *a.monte_carlo;
   const double attempts = double(mc.draws + mc.rejected_draws);
@@ -595,7 +595,7 @@ TEST_CASE("GUM's interval without an input is the analysis's own with none held 
   // dof (nu_eff far too large) and dropped the Birge share.
   NormalDeviates noise(43);
   const auto same = [](const ParsedScene& s) {
-    const Analysis a = analyse(s);
+    const Analysis a = reduce_scene(s);
     REQUIRE(a.g_expanded);
     CHECK_THAT(expanded_without(a, {}), WithinRel(a.g_expanded->expanded, 1e-12));
   };
@@ -606,7 +606,7 @@ TEST_CASE("GUM's interval without an input is the analysis's own with none held 
   }
   SECTION("a Birge-scaled fit") {
     const ParsedScene s = parse_scene(scattered_series(0.03, 5.0, 0.5, noise).dump());
-    REQUIRE(analyse(s).fit.scaled);
+    REQUIRE(reduce_scene(s).fit.scaled);
     same(s);
   }
   SECTION("a decay fit's correlated alpha and beta") {
@@ -616,7 +616,7 @@ TEST_CASE("GUM's interval without an input is the analysis's own with none held 
     nlohmann::json doc = scattered_series(0.03, 5.0, 0.5, noise);
     for (auto& o : doc["observations"]) o["length"].erase("uncertainty");
     const ParsedScene s = parse_scene(doc.dump());
-    REQUIRE(analyse(s).fit.length_scatter);
+    REQUIRE(reduce_scene(s).fit.length_scatter);
     same(s);
   }
 }

@@ -9,6 +9,7 @@
 
 #include "pendulum/files.hpp"
 #include "pendulum/input_error.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "pendulum/scene_json.hpp"
 
 namespace pendulum {
@@ -67,7 +68,7 @@ BatchOutcome reduce_batch_scene(const BatchScene& job, const AnalysisOptions& op
     const ParsedScene scene =
         parse_scene(job.text ? *job.text : read_text(job.name, given.limits.applied_to(kSceneInput), "a scene file"),
                     job.files(given));
-    const Analysis analysis = analyse(scene, options);
+    const Analysis analysis = reduce_scene(scene, options);
     BatchOutcome out{batch_line(name, scene, analysis, format), {name, std::nullopt, ""}};
     if (with_report) out.entry.report = report::make_scene_report(name, scene, analysis);
     return out;

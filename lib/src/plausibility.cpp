@@ -11,7 +11,7 @@
 #include "pendulum/input_error.hpp"
 #include "pendulum/models/registry.hpp"
 #include "pendulum/reduction.hpp"
-#include "pendulum/status.hpp"
+#include "pendulum/slips.hpp"
 #include "pendulum/units.hpp"
 #include "text.hpp"
 

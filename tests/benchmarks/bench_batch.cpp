@@ -10,7 +10,7 @@
 #include <sstream>
 #include <thread>
 
-#include "pendulum/analysis.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "simulations/decay_simulation.hpp"
 #include "pendulum/output.hpp"
 #include "pendulum/scene_json.hpp"
@@ -51,7 +51,7 @@ const std::vector<std::string>& decay_scenes() {
 /// Everything `pendulum-g batch` does for one scene but the file read.
 std::string whole(const std::string& text) {
   const pendulum::ParsedScene scene = pendulum::parse_scene(text);
-  return pendulum::batch_line("-", scene, pendulum::analyse(scene)).text;
+  return pendulum::batch_line("-", scene, pendulum::reduce_scene(scene)).text;
 }
 
 template <class F>
@@ -78,7 +78,7 @@ void BM_Analyse(benchmark::State& state) {
   std::vector<pendulum::ParsedScene> parsed;
   for (const auto& t : plain_scenes()) parsed.push_back(pendulum::parse_scene(t));
   for (auto _ : state) {
-    for (const auto& p : parsed) benchmark::DoNotOptimize(pendulum::analyse(p));
+    for (const auto& p : parsed) benchmark::DoNotOptimize(pendulum::reduce_scene(p));
   }
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * parsed.size()));
 }

@@ -3,7 +3,7 @@
 // seed 40 + start) released at 5 to 90 deg, reduced (a) as one mean period
 // at the start amplitude, (a') the same with the decay correction (Eq. 50),
 // (b) one mean period at the swings' mean amplitude, (c) swing by swing.
-// Each benchmark times the reduction of the parsed scene (analyse(); for (c)
+// Each benchmark times the reduction of the parsed scene (reduce_scene(); for (c)
 // with the grouping, swing_groups()); reading and analysing the recording,
 // common to all, is BM_ReadRecording. Counters: the error of g against the
 // simulation's (the length is exact, so g's uncertainty is the period's),
@@ -18,6 +18,7 @@
 
 #include "../long_decay.hpp"
 #include "pendulum/analysis.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "pendulum/input_error.hpp"
 #include "pendulum/recordings/swing_series.hpp"
 #include "pendulum/scene_json.hpp"
@@ -60,7 +61,7 @@ void BM_Reduce(benchmark::State& state) {
   const bool by_swing = method == LongDecayMethod::swing_by_swing;
   Analysis a;
   try {
-    a = analyse(scene);
+    a = reduce_scene(scene);
   } catch (const InputError& refused) {  // Eq. 50 beyond its first order at 90 deg: a row, not an abort
     state.SkipWithError(refused.what());
     return;
@@ -70,7 +71,7 @@ void BM_Reduce(benchmark::State& state) {
       const std::vector<SwingGroup> groups = swing_groups(scene.recordings[0].summary.swings);
       benchmark::DoNotOptimize(groups);
     }
-    a = analyse(scene);
+    a = reduce_scene(scene);
     benchmark::DoNotOptimize(a);
   }
   const double sigma = a.g.uncertainty.value_or(NAN);

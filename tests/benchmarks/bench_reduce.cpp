@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 
-#include "pendulum/analysis.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "pendulum/output.hpp"
 #include "pendulum/scene_json.hpp"
 #include "scene_files.hpp"
@@ -31,14 +31,14 @@ BENCHMARK(BM_ParseScene);
 
 void BM_Analyse(benchmark::State& state) {
   const pendulum::ParsedScene scene = pendulum::parse_scene(pendulum::test::nelson_olsson_text());
-  for (auto _ : state) benchmark::DoNotOptimize(pendulum::analyse(scene));
+  for (auto _ : state) benchmark::DoNotOptimize(pendulum::reduce_scene(scene));
 }
 BENCHMARK(BM_Analyse);
 
 void BM_WriteJson(benchmark::State& state) {
   const pendulum::ParsedScene scene = pendulum::parse_scene(pendulum::test::nelson_olsson_text());
   const pendulum::AnalysisOptions options;
-  const pendulum::Analysis analysis = pendulum::analyse(scene, options);
+  const pendulum::Analysis analysis = pendulum::reduce_scene(scene, options);
   for (auto _ : state) {
     benchmark::DoNotOptimize(pendulum::result_json(scene, analysis, options, "-"));
   }
@@ -50,7 +50,7 @@ void BM_WholeReduction(benchmark::State& state) {
   const pendulum::AnalysisOptions options;
   for (auto _ : state) {
     const pendulum::ParsedScene scene = pendulum::parse_scene(text);
-    const pendulum::Analysis analysis = pendulum::analyse(scene, options);
+    const pendulum::Analysis analysis = pendulum::reduce_scene(scene, options);
     benchmark::DoNotOptimize(pendulum::result_json(scene, analysis, options, "-", -1));
   }
 }

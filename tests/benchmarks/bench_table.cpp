@@ -12,7 +12,7 @@
 #include <fstream>
 #include <random>
 
-#include "pendulum/analysis.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "pendulum/scene_json.hpp"
 
 namespace {
@@ -58,13 +58,13 @@ void BM_TableReadAndReduce(benchmark::State& state) {
   const std::string scene = R"({"amplitude": "not recorded", "observations": {"table": "lengths.csv"}})";
   pendulum::SceneFiles files;
   files.directory = d.directory;
-  for (auto _ : state) benchmark::DoNotOptimize(pendulum::analyse(pendulum::parse_scene(scene, files)).g.value);
+  for (auto _ : state) benchmark::DoNotOptimize(pendulum::reduce_scene(pendulum::parse_scene(scene, files)).g.value);
 }
 BENCHMARK(BM_TableReadAndReduce)->Unit(benchmark::kMillisecond);
 
 void BM_JsonReadAndReduce(benchmark::State& state) {
   const Data& d = data();
-  for (auto _ : state) benchmark::DoNotOptimize(pendulum::analyse(pendulum::parse_scene(d.json)).g.value);
+  for (auto _ : state) benchmark::DoNotOptimize(pendulum::reduce_scene(pendulum::parse_scene(d.json)).g.value);
 }
 BENCHMARK(BM_JsonReadAndReduce)->Unit(benchmark::kMillisecond);
 

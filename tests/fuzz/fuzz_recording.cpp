@@ -21,7 +21,7 @@
 #include "pendulum/recordings/read.hpp"
 #include "pendulum/recordings/swings.hpp"
 #include "pendulum/recordings/table.hpp"
-#include "pendulum/analysis.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "pendulum/scene_json.hpp"
 #include "../../lib/src/recordings/zip.hpp"
 
@@ -92,7 +92,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const pendulum::SettingsTable t = pendulum::parse_settings_table(text, "fuzz");
     require(!t.observations.empty(), "a table without observations", "");
-    const pendulum::Analysis a = pendulum::analyse(pendulum::parse_scene(pendulum::table_scene(t, "fuzz")));
+    const pendulum::Analysis a = pendulum::reduce_scene(pendulum::parse_scene(pendulum::table_scene(t, "fuzz")));
     require(std::isfinite(a.g.value), "table g not finite", "");
   } catch (const pendulum::InputError& e) {
     pendulum::fuzz::require_clear_message(e);

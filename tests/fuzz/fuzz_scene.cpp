@@ -21,7 +21,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "pendulum/analysis.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "pendulum/output.hpp"
 #include "pendulum/clock_scene.hpp"
 #include "pendulum/scene_json.hpp"
@@ -136,7 +136,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const auto method : {AmplitudeMethod::agm, AmplitudeMethod::series, AmplitudeMethod::small_angle}) {
       pendulum::AnalysisOptions options;  // --amplitude-method
       options.reduction.amplitude_method = method;
-      const pendulum::Analysis analysis = pendulum::analyse(scene, options);
+      const pendulum::Analysis analysis = pendulum::reduce_scene(scene, options);
       const auto result = nlohmann::json::parse(pendulum::result_json(scene, analysis, options, "fuzz"));
       require_finite(result, "");
       require(analysis.g.value > 0.0, "g not positive", result.dump());

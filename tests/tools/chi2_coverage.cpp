@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "pendulum/analysis.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "pendulum/dispersion.hpp"
 #include "simulations/pivot_scan_simulation.hpp"
 #include "simulations/series_simulation.hpp"
@@ -79,7 +79,7 @@ int main(int argc, char** argv) {
       for (int s = 0; s < n; ++s) {
         ParsedScene scene = c.scene(5000 + s);
         test::understate(scene, understated);
-        const Analysis a = analyse(scene);
+        const Analysis a = reduce_scene(scene);
         const Dispersion d = dispersion(a.fit.chi2, a.fit.dof);
         const double sigma = *a.g_uncertainty_unscaled, own = *a.fit.parameters[0].uncertainty_from_observations;
         for (std::size_t r = 0; r < rules.size(); ++r) {

@@ -16,11 +16,10 @@
 #include "pendulum/decay_fit.hpp"
 #include "pendulum/drag.hpp"
 #include "pendulum/estimate.hpp"
-#include "pendulum/monte_carlo.hpp"
+#include "pendulum/monte_carlo_result.hpp"
 #include "pendulum/models/registry.hpp"
 #include "pendulum/parsed_scene.hpp"
 #include "pendulum/reduction.hpp"
-#include "pendulum/status.hpp"
 #include "pendulum/uncertainty.hpp"
 
 namespace pendulum {
@@ -40,6 +39,11 @@ struct AnalysisOptions {
 
 enum class Status { applied, negligible, skipped };
 const char* status_name(Status s);
+
+/// The verdict on a result, which judge() gives (status.hpp). The names are
+/// an API: "ok", "suspect", "failed".
+enum class ResultStatus { ok, suspect, failed };
+const char* result_status_name(ResultStatus s);
 
 struct CorrectionRow {
   CorrectionInfo info;
@@ -191,7 +195,8 @@ struct Analysis {
   std::optional<BudgetCorrelation> budget_correlation;
   /// g's expanded uncertainty for 95 % coverage; empty without an uncertainty.
   std::optional<ExpandedUncertainty> g_expanded;
-  /// GUM Supplement 1's g where asked for (monte_carlo.hpp).
+  /// GUM Supplement 1's g where asked for (monte_carlo.hpp; reduce_scene()
+  /// runs it).
   std::optional<MonteCarloResult> monte_carlo;
   /// JSON paths of the inputs stated without an uncertainty.
   std::vector<std::string> inputs_without_uncertainty;
@@ -218,7 +223,7 @@ struct Analysis {
   /// typical values would not leave negligible.
   std::vector<std::string> warnings;
   /// ok or suspect, and why suspect: the likely slip and the input to fix
-  /// (status.hpp).
+  /// (judge(), status.hpp; reduce_scene() sets them, analyse() leaves them ok).
   ResultStatus status = ResultStatus::ok;
   std::vector<std::string> status_reasons;
 };
@@ -230,6 +235,10 @@ std::vector<std::string> review_decay_fit(const DecayFit& fit);
 /// The apparatus with alpha and beta taken from the fit of the decay
 /// record (their uncertainties from the fit's covariance).
 void use_fitted_decay(ParsedScene& scene, const DecayFit& fit);
+
+/// The scene an analysis reduces: `given` with alpha and beta from `fit`
+/// (use_fitted_decay); empty where there is no fit, and `given` is that scene.
+std::optional<ParsedScene> scene_with_fitted_decay(const ParsedScene& given, const std::optional<DecayFit>& fit);
 
 /// A physical pendulum's starting parameters (g, k, centre) for the fit:
 /// T^2 h = (4 pi^2/g)(k^2 + h^2) is a straight line in h^2 (Kelley Eq. 55),
@@ -251,6 +260,7 @@ std::optional<AmplitudeSweep> amplitude_sweep_of(const ParsedScene& scene);
 /// input's uncertainty (and the decay fit's alpha-beta covariance) by
 /// automatic differentiation: implicit-function sensitivities of the fit.
 /// A scene whose length is not measured is refused (InputError at "length").
+/// Neither the Monte Carlo nor the verdict: reduce_scene() adds them.
 Analysis analyse(const ParsedScene& scene, const AnalysisOptions& options = {});
 
 }  // namespace pendulum

@@ -9,7 +9,7 @@
 
 #include "pendulum/apparatus.hpp"
 #include "pendulum/decay_fit.hpp"
-#include "pendulum/monte_carlo.hpp"
+#include "pendulum/monte_carlo_result.hpp"
 #include "pendulum/observation.hpp"
 #include "pendulum/period_model.hpp"
 #include "pendulum/recordings/swing_series.hpp"

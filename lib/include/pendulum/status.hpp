@@ -9,15 +9,11 @@
 #include <string>
 #include <vector>
 
+#include "pendulum/analysis.hpp"
 #include "pendulum/parsed_scene.hpp"
+#include "pendulum/slips.hpp"
 
 namespace pendulum {
-
-struct Analysis;
-
-/// The names are an API: "ok", "suspect", "failed".
-enum class ResultStatus { ok, suspect, failed };
-const char* result_status_name(ResultStatus s);
 
 /// g more than this many combined standard uncertainties from the site's g is suspect...
 inline constexpr double kSuspectSigmas = 3.0;
@@ -25,20 +21,6 @@ inline constexpr double kSuspectSigmas = 3.0;
 /// kSuspectSigmas of its own standard uncertainties beyond the range of g
 /// on the Earth's surface).
 inline constexpr double kSuspectFraction = 0.05;
-
-/// The slip in the scene that makes g `ratio` times the true g, by
-/// g = 4 pi^2 L / T^2: a length unit slip scales g as the length, a period
-/// slip by the inverse square (half swings counted: T/2, g x 4). Empty when
-/// no slip's ratio is within 15% of `ratio`. The text names the slip and the
-/// input to fix, e.g. "the period is half the true one: ...".
-std::optional<std::string> name_slip(double ratio);
-
-/// Why the bob's density (its mass over the sphere of its diameter) is
-/// implausible, when it is: below 50 kg/m^3, lighter than any solid ball a
-/// pendulum swings (a ping-pong ball is about 80), or below the air's. Names
-/// a mass in kg written as g (or a diameter in mm written as cm) when a
-/// thousand times the density is a solid's (500 to 22590 kg/m^3).
-std::optional<std::string> bob_density_slip(const Apparatus<double>& apparatus);
 
 /// The verdict on one analysed scene: suspect when g is more than
 /// kSuspectSigmas combined standard uncertainties from the site's expected

@@ -8,7 +8,9 @@
 #include <nlohmann/json.hpp>
 
 #include "pendulum/models/registry.hpp"
+#include "pendulum/monte_carlo.hpp"
 #include "pendulum/output.hpp"
+#include "pendulum/status.hpp"
 #include "writer.hpp"
 #include "../grouping.hpp"
 #include "../text.hpp"

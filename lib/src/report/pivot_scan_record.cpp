@@ -71,12 +71,8 @@ std::optional<PivotScanRecord> pivot_scan_record(const ParsedScene& given, const
   const PivotScan* pivot_scan = a.fit.results_of<PhysicalPendulum>();
   if (!pivot_scan || !pivot_scan->textbook || a.observations.empty()) return std::nullopt;
   // The apparatus the analysis fitted with: alpha and beta from the decay record's fit.
-  ParsedScene fitted_decay;
-  if (given.decay_data && a.decay_fit) {
-    fitted_decay = given;
-    use_fitted_decay(fitted_decay, *a.decay_fit);
-  }
-  const ParsedScene& scene = given.decay_data && a.decay_fit ? fitted_decay : given;
+  const std::optional<ParsedScene> fitted_decay = scene_with_fitted_decay(given, a.decay_fit);
+  const ParsedScene& scene = fitted_decay ? *fitted_decay : given;
   const Apparatus<double>& app = scene.apparatus;
   const PivotScan& scan = *pivot_scan;
   std::array<double, M::kParameters> p{};

@@ -9,6 +9,7 @@
 #include "pendulum/input_error.hpp"
 #include "pendulum/recordings/read.hpp"
 #include "pendulum/recordings/table.hpp"
+#include "pendulum/reduce_scene.hpp"
 #include "pendulum/report/html_report.hpp"
 #include "pendulum/report/plots.hpp"
 #include "pendulum/report/recording_report.hpp"
@@ -51,7 +52,7 @@ ReportPage make_report_page(const ReportRequest& o,
   const SceneFiles files{o.directory ? *o.directory : scene_directory(o.file), o.allow_outside, o.limits};
   if (check_recordings) check_recordings(scene_file_names(text, files));  // before any is read
   const ParsedScene scene = parse_scene(text, files);
-  const Analysis analysis = analyse(scene, o.analysis);
+  const Analysis analysis = reduce_scene(scene, o.analysis);
   // The recordings the scene names, read again for their signal plots
   // (once each: the report draws a recording named twice once).
   RecordingLimits limits{o.limits.applied_to(kRecordingInput), std::nullopt};

@@ -5,8 +5,8 @@
 #include "commands.hpp"
 #include "pendulum/clock_scene.hpp"
 #include "pendulum/files.hpp"
-#include "pendulum/output.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/output.hpp"
+#include "pendulum/json/scene_json.hpp"
 
 namespace pendulum::cli {
 

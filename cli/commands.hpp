@@ -16,7 +16,7 @@
 #include "pendulum/amplitude.hpp"
 #include "pendulum/argument_ranges.hpp"
 #include "pendulum/output_files.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 
 namespace pendulum {
 struct AnalysisOptions;

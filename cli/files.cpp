@@ -12,7 +12,7 @@
 
 #include "commands.hpp"
 #include "pendulum/files.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 
 namespace pendulum::cli {
 

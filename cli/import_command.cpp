@@ -12,7 +12,7 @@
 
 #include "commands.hpp"
 #include "pendulum/numeric.hpp"
-#include "pendulum/output.hpp"
+#include "pendulum/json/output.hpp"
 #include "pendulum/recordings/swings.hpp"
 #include "pendulum/recordings/table.hpp"
 #include "pendulum/files.hpp"

@@ -14,7 +14,7 @@
 #include "pendulum/analysis.hpp"
 #include "pendulum/files.hpp"
 #include "pendulum/printable.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 
 namespace pendulum::cli {
 

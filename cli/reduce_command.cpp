@@ -10,11 +10,11 @@
 #include "pendulum/analysis.hpp"
 #include "pendulum/files.hpp"
 #include "pendulum/input_error.hpp"
-#include "pendulum/output.hpp"
+#include "pendulum/json/output.hpp"
 #include "pendulum/recordings/read.hpp"
 #include "pendulum/recordings/table.hpp"
 #include "pendulum/reduce_scene.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 
 namespace pendulum::cli {
 

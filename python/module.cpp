@@ -23,13 +23,13 @@
 #include "pendulum/clock_scene.hpp"
 #include "pendulum/files.hpp"
 #include "pendulum/input_error.hpp"
-#include "pendulum/output.hpp"
+#include "pendulum/json/output.hpp"
 #include "pendulum/output_files.hpp"
 #include "pendulum/recordings/swings.hpp"
 #include "pendulum/recordings/table.hpp"
 #include "pendulum/reduce_scene.hpp"
 #include "pendulum/report/report_page.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "pendulum/site.hpp"
 
 namespace py = pybind11;

@@ -13,7 +13,7 @@
 
 #include "pendulum/reduce_scene.hpp"
 #include "simulations/decay_simulation.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "reference.hpp"
 #include "scene_files.hpp"
 #include "textbook_decay_fit.hpp"

@@ -2,7 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "pendulum/drag.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "reference.hpp"
 #include "scene_files.hpp"
 

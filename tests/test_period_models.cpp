@@ -11,7 +11,7 @@
 
 #include "catalogue.hpp"
 #include "pendulum/models/registry.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 
 using namespace pendulum;
 

@@ -13,7 +13,7 @@
 #include "pendulum/reduce_scene.hpp"
 #include "pendulum/mass.hpp"
 #include "pendulum/reduction.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "simulations/series_simulation.hpp"
 #include "quad_reference.hpp"
 #include "recording_simulation.hpp"

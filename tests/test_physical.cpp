@@ -8,7 +8,7 @@
 #include "pendulum/reduce_scene.hpp"
 #include "pendulum/period_fit.hpp"
 #include "simulations/pivot_scan_simulation.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "reference.hpp"
 #include "scene_files.hpp"
 #include "simulated_scans.hpp"

@@ -10,7 +10,7 @@
 #include "pendulum/models/physical_pendulum.hpp"
 #include "pendulum/report/html_report.hpp"
 #include "pendulum/report/plots.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "scene_files.hpp"
 
 using namespace pendulum;

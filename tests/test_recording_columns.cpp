@@ -15,7 +15,7 @@
 #include "pendulum/input_error.hpp"
 #include "pendulum/recordings/read.hpp"
 #include "pendulum/recordings/swings.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "recording_simulation.hpp"
 #include "../lib/src/recordings/stages.hpp"
 #include "../lib/src/recordings/zip.hpp"

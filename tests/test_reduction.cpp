@@ -9,7 +9,7 @@
 
 #include "pendulum/reduce_scene.hpp"
 #include "simulations/decay_simulation.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "reference.hpp"
 #include "catalogue.hpp"
 #include "scene_files.hpp"

@@ -11,7 +11,7 @@
 #include "pendulum/period_fit.hpp"
 #include "pendulum/report/html_report.hpp"
 #include "pendulum/report/scene_report.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "simulations/series_simulation.hpp"
 #include "reference.hpp"
 #include "scene_files.hpp"

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "pendulum/reduce_scene.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "pendulum/site.hpp"
 #include "scene_files.hpp"
 

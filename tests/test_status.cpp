@@ -11,7 +11,7 @@
 #include "pendulum/amplitude.hpp"
 #include "pendulum/reduce_scene.hpp"
 #include "pendulum/numeric.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "pendulum/status.hpp"
 
 using namespace pendulum;

@@ -13,9 +13,9 @@
 #include "long_decay.hpp"
 #include "pendulum/amplitude.hpp"
 #include "pendulum/reduce_scene.hpp"
-#include "pendulum/output.hpp"
+#include "pendulum/json/output.hpp"
 #include "pendulum/recordings/swing_series.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "scene_files.hpp"
 
 using namespace pendulum;

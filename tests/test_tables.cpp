@@ -16,7 +16,7 @@
 
 #include "pendulum/reduce_scene.hpp"
 #include "pendulum/recordings/table.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "scene_files.hpp"
 
 using namespace pendulum;

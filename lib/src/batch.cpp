@@ -10,7 +10,7 @@
 #include "pendulum/files.hpp"
 #include "pendulum/input_error.hpp"
 #include "pendulum/reduce_scene.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 
 namespace pendulum {
 namespace {

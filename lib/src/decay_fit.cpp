@@ -14,7 +14,7 @@
 #include "decay_kernel.hpp"
 #include "text.hpp"
 #include "pendulum/numeric.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/input_error.hpp"
 
 namespace pendulum {
 

@@ -12,7 +12,9 @@
 #include <Eigen/Dense>
 #include <ceres/jet.h>
 
-#include "pendulum/analysis.hpp"
+#include "pendulum/analysis_options.hpp"
+#include "pendulum/estimate.hpp"
+#include "pendulum/parsed_scene.hpp"
 
 namespace pendulum {
 

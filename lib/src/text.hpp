@@ -14,12 +14,6 @@ namespace pendulum {
 /// matched in any case; other bytes are kept).
 std::string lower_case(std::string_view s);
 
-/// The length of the well-formed UTF-8 sequence at s[i] (1 to 4; RFC 3629:
-/// no overlong forms, no surrogates, nothing above U+10FFFF), 0 if none or
-/// if it is a C1 control (U+0080 to U+009F: a terminal takes U+009B as CSI,
-/// as it does ESC [).
-std::size_t printable_utf8_length(const std::string& s, std::size_t i);
-
 /// `x` with `digits` significant digits.
 std::string format_number(double x, int digits = 10);
 

@@ -12,8 +12,8 @@
 
 #include "pendulum/reduce_scene.hpp"
 #include "simulations/decay_simulation.hpp"
-#include "pendulum/output.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/output.hpp"
+#include "pendulum/json/scene_json.hpp"
 
 namespace {
 

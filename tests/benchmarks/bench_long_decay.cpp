@@ -21,7 +21,7 @@
 #include "pendulum/reduce_scene.hpp"
 #include "pendulum/input_error.hpp"
 #include "pendulum/recordings/swing_series.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 
 namespace {
 

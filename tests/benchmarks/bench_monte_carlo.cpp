@@ -14,7 +14,7 @@
 #include "pendulum/analysis.hpp"
 #include "pendulum/monte_carlo.hpp"
 #include "pendulum/numeric.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "scene_files.hpp"
 
 namespace {

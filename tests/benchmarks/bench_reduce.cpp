@@ -5,8 +5,8 @@
 
 
 #include "pendulum/reduce_scene.hpp"
-#include "pendulum/output.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/output.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "scene_files.hpp"
 
 namespace {

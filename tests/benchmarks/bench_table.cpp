@@ -13,7 +13,7 @@
 #include <random>
 
 #include "pendulum/reduce_scene.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 
 namespace {
 

@@ -22,7 +22,7 @@
 #include "pendulum/recordings/swings.hpp"
 #include "pendulum/recordings/table.hpp"
 #include "pendulum/reduce_scene.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "../../lib/src/recordings/zip.hpp"
 
 using pendulum::fuzz::require;

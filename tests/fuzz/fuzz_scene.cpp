@@ -22,9 +22,9 @@
 #include <nlohmann/json.hpp>
 
 #include "pendulum/reduce_scene.hpp"
-#include "pendulum/output.hpp"
+#include "pendulum/json/output.hpp"
 #include "pendulum/clock_scene.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "fuzz_checks.hpp"
 
 namespace {

@@ -25,7 +25,7 @@
 #include <nlohmann/json.hpp>
 
 #include "simulations/decay_simulation.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "simulations/series_simulation.hpp"
 #include "pendulum/site.hpp"
 

@@ -30,7 +30,7 @@
 #include "pendulum/damping.hpp"
 #include "simulations/decay_simulation.hpp"
 #include "pendulum/drag.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "simulations/series_simulation.hpp"
 #include "pendulum/site.hpp"
 

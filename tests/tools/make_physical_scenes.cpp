@@ -28,7 +28,7 @@
 #include <nlohmann/json.hpp>
 
 #include "simulations/pivot_scan_simulation.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "pendulum/site.hpp"
 
 namespace {

@@ -17,7 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "simulations/series_simulation.hpp"
 #include "pendulum/site.hpp"
 

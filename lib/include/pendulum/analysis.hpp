@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "pendulum/amplitude_sweep.hpp"
+#include "pendulum/analysis_options.hpp"
 #include "pendulum/decay_fit.hpp"
 #include "pendulum/drag.hpp"
 #include "pendulum/estimate.hpp"
@@ -23,19 +24,6 @@
 #include "pendulum/uncertainty.hpp"
 
 namespace pendulum {
-
-struct AnalysisOptions {
-  ReductionOptions reduction;
-  /// A correction smaller than this fraction of the period's uncertainty is
-  /// flagged negligible (it is still applied).
-  double negligible_fraction = 0.1;
-  /// With the automatic amplitude method, the chosen method's error bound
-  /// stays below this fraction of the period's uncertainty.
-  double amplitude_fraction = 0.01;
-  /// `--uncertainty monte-carlo`: GUM Supplement 1 beside the budget (a
-  /// scene's "uncertainty" asks the same; these options win).
-  std::optional<MonteCarloOptions> monte_carlo;
-};
 
 enum class Status { applied, negligible, skipped };
 const char* status_name(Status s);

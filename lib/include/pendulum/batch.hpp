@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "pendulum/analysis.hpp"
-#include "pendulum/output.hpp"
+#include "pendulum/json/output.hpp"
 #include "pendulum/report/html_report.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 
 namespace pendulum {
 

@@ -40,16 +40,10 @@ struct ObservationSource {
   std::vector<std::string> shared{};
 
   /// Whether `key` ("length", or a path below it: "length.value") is shared.
-  bool is_shared(const std::string& key) const {
-    const std::string head = key.substr(0, key.find('.'));
-    for (const auto& s : shared) {
-      if (s == head) return true;
-    }
-    return false;
-  }
+  bool is_shared(const std::string& key) const;
   /// The JSON path of one of its keys ("amplitude", "length.value"): at the
   /// top level where it is shared.
-  std::string path_of(const std::string& key) const { return is_shared(key) ? key : path + key; }
+  std::string path_of(const std::string& key) const;
   /// Index in ParsedScene::recordings when the timing names a recording.
   std::optional<std::size_t> recording = std::nullopt;
   /// The amplitude is the recording's, not the scene's own.
@@ -146,8 +140,6 @@ struct ParsedScene {
 
 /// Whose angle the scene's decay record followed, and so the angle its
 /// fitted beta is of: the bob's for a sensor in it, else the pendulum's.
-inline AngleOf decay_angle_of(const ParsedScene& scene) {
-  return scene.decay_data ? scene.decay_data->angle_of : AngleOf::pendulum;
-}
+AngleOf decay_angle_of(const ParsedScene& scene);
 
 }  // namespace pendulum

@@ -19,7 +19,7 @@
 #include "pendulum/amplitude.hpp"
 #include "pendulum/apparatus.hpp"
 #include "pendulum/detail/newton_decrement.hpp"
-#include "pendulum/models/registry.hpp"
+#include "pendulum/period_model.hpp"
 #include "pendulum/observation.hpp"
 
 namespace pendulum {
@@ -296,7 +296,7 @@ PeriodFitSolution fit_periods(const PeriodFitProblem<Model>& problem,
   constexpr int P = Model::kParameters;
   constexpr int Q = P - 1;
   static_assert(Q >= 1, "a period model has parameters besides g");
-  static_assert(is_period_model<Model>(), "Model has every piece of a period model (models/registry.hpp)");
+  static_assert(is_period_model<Model>(), "Model has every piece of a period model (period_model.hpp)");
   std::array<double, Q> q;
   std::copy(initial.begin() + 1, initial.end(), q.begin());
   const detail::ProjectedPeriods<Model> projected(problem, initial);

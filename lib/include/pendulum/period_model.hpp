@@ -3,8 +3,8 @@
 /// \brief What every period model shares: its parameters' names and units,
 /// and what it predicts for one observation.
 ///
-/// A period model is a struct with (models/registry.hpp checks every piece
-/// at compile time; docs/core.md):
+/// A period model is a struct with (is_period_model, at the end, checks every
+/// piece at compile time; docs/core.md):
 ///   kName: its name in the output ("fit.model"),
 ///   kSettings: the observation keys it reads (Setting), by which the reader
 ///       knows a scene's kind,
@@ -54,9 +54,14 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
+#include <iosfwd>
 #include <optional>
+#include <type_traits>
+#include <utility>
 
 #include "pendulum/corrections.hpp"
+#include "pendulum/observation.hpp"
 
 namespace pendulum {
 
@@ -241,6 +246,80 @@ PeriodPrediction<T> prediction_of(const T* p, const Observation<T>& o, const App
   out.ideal = ideal_period(s.length, p[0]);
   out.period = out.ideal * (1.0 + out.composition.total);
   return out;
+}
+
+namespace detail {
+
+/// A sink for the rows a model owns (own_corrections), to check it exists.
+struct RowSink {
+  void set(CorrectionId, const double&, const char*) {}
+  void skip(std::initializer_list<CorrectionId>, const char*) {}
+};
+
+template <class M, class = void>
+struct HasModelPieces : std::false_type {};
+
+// Every piece a period model declares (the list above); a kind that lacks
+// one does not compile as a registered model.
+template <class M>
+struct HasModelPieces<
+    M, std::void_t<decltype(M::kName), decltype(M::kSettings), decltype(M::kParameters),
+                   decltype(M::kParameterInfo), decltype(M::kDefaults), decltype(M::kCorrectionUse),
+                   decltype(M::canonicalise(std::declval<double*>())),
+                   decltype(M::start(std::declval<const ParsedScene&>(),
+                                     std::declval<const std::array<bool, M::kParameters>&>())),
+                   decltype(M::report(std::declval<const FitState<M::kParameters>&>(), std::declval<Analysis&>())),
+                   typename M::Results,
+                   decltype(M::put_fit_results(std::declval<const typename M::Results*>(), std::declval<JsonOut&>())),
+                   decltype(M::put_observation_results(std::declval<const typename M::Results*>(),
+                                                       std::declval<JsonOut&>())),
+                   decltype(M::fit_results_lines(std::declval<const typename M::Results*>(),
+                                                 std::declval<std::ostream&>())),
+                   decltype(M::observation_results_lines(std::declval<const typename M::Results*>(),
+                                                         std::declval<std::ostream&>())),
+                   decltype(M::predict(std::declval<const double*>(), std::declval<const Observation<double>&>(),
+                                       std::declval<const Apparatus<double>&>(),
+                                       std::declval<const AmplitudeChoice&>())),
+                   decltype(M::own_corrections(std::declval<const Apparatus<double>&>(),
+                                               std::declval<const Swing<double>&>(), std::declval<RowSink&>())),
+                   decltype(M::swing(std::declval<const Observation<double>&>())),
+                   decltype(M::swing_at(std::declval<const double*>(), std::declval<Swing<double>>(),
+                                        std::declval<const Apparatus<double>&>())),
+                   decltype(M::composition(std::declval<const Apparatus<double>&>(),
+                                           std::declval<const Swing<double>&>(),
+                                           std::declval<const AmplitudeChoice&>())),
+                   decltype(M::solve_g(std::declval<const double*>(), std::declval<const Observation<double>&>(),
+                                       std::declval<const Apparatus<double>&>(),
+                                       std::declval<const AmplitudeChoice&>())),
+                   decltype(M::read_keys(std::declval<json_reader::Object&>(), std::declval<ParsedScene&>())),
+                   decltype(M::unknowns_of_observations_alone(Setting::length)),
+                   decltype(M::check_scene(std::declval<const ParsedScene&>())),
+                   decltype(M::expectation(std::declval<const ParsedScene&>(),
+                                           std::declval<const Observation<double>&>())),
+                   decltype(M::check_rows(std::declval<const ParsedScene&>(),
+                                          std::declval<const Observation<double>&>())),
+                   decltype(M::skipped_part_warnings(std::declval<const ParsedScene&>(), 0.0)),
+                   decltype(M::kSuspectCauses)>> : std::true_type {};
+
+}  // namespace detail
+
+/// Whether M is a period model: every piece of the interface, with g its
+/// first parameter and one table row per correction.
+template <class M>
+constexpr bool is_period_model() {
+  if constexpr (!detail::HasModelPieces<M>::value) {
+    return false;
+  } else {
+    return std::is_same_v<decltype(M::expectation(std::declval<const ParsedScene&>(),
+                                                  std::declval<const Observation<double>&>())),
+                          std::optional<Expectation>> &&
+           std::is_same_v<std::remove_cv_t<decltype(M::kSuspectCauses)>, SuspectCauses> &&
+           std::is_same_v<decltype(M::unknowns_of_observations_alone(Setting::length)),
+                          std::array<bool, M::kParameters>> &&
+           M::kParameters >= 1 && M::kParameterInfo.size() == std::size_t(M::kParameters) &&
+           M::kDefaults.size() == std::size_t(M::kParameters) && M::kCorrectionUse.size() == kCorrectionCount &&
+           !M::kSettings.empty();
+  }
 }
 
 }  // namespace pendulum

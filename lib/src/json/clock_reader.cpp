@@ -6,7 +6,7 @@
 
 #include "pendulum/argument_ranges.hpp"
 #include "pendulum/clock_scene.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "reader.hpp"
 
 namespace pendulum {

@@ -4,7 +4,7 @@
 #include <optional>
 #include <sstream>
 
-#include "pendulum/output.hpp"
+#include "pendulum/json/output.hpp"
 #include "pendulum/printable.hpp"
 #include "writer.hpp"
 

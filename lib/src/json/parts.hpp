@@ -2,7 +2,7 @@
 // Readers of each part of a scene file (docs/scene.md), on the JSON
 // toolkit of reader.hpp. Each reads its key from `top` into the scene and
 // checks what it can alone; checks across parts and observations are the
-// scene reader's (scene_reader.cpp).
+// scene reader's (scene_json.cpp).
 
 #include <string>
 

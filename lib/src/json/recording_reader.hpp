@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "pendulum/parsed_scene.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 #include "reader.hpp"
 
 namespace pendulum::json_reader {

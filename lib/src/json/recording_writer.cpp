@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "pendulum/numeric.hpp"
-#include "pendulum/output.hpp"
+#include "pendulum/json/output.hpp"
 #include "pendulum/recordings/swings.hpp"
 
 namespace pendulum {

@@ -7,7 +7,7 @@
 #include "pendulum/amplitude_sweep.hpp"
 #include "pendulum/dispersion.hpp"
 #include "pendulum/numeric.hpp"
-#include "pendulum/output.hpp"
+#include "pendulum/json/output.hpp"
 #include "pendulum/parsed_scene.hpp"
 #include "writer.hpp"
 #include "../grouping.hpp"

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "pendulum/analysis.hpp"
 #include "../fit_state.hpp"
 #include "../json/writer.hpp"
 #include "../text.hpp"

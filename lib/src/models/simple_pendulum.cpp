@@ -12,6 +12,7 @@
 
 #include <boost/math/special_functions/gamma.hpp>
 
+#include "pendulum/analysis.hpp"
 #include "../fit_state.hpp"
 #include "../json/writer.hpp"
 #include "../plausibility.hpp"

@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "pendulum/numeric.hpp"
-#include "pendulum/output.hpp"
+#include "pendulum/json/output.hpp"
 #include "pendulum/status.hpp"
 #include "pendulum/report/plots.hpp"
 #include "pendulum/report/svg_plot.hpp"

@@ -13,7 +13,7 @@
 #include "pendulum/report/html_report.hpp"
 #include "pendulum/report/plots.hpp"
 #include "pendulum/report/recording_report.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 
 namespace pendulum::report {
 

@@ -144,7 +144,7 @@ struct PhysicalPendulum {
   static void observation_results_lines(const Results*, std::ostream&) {}
 
   /// center_of_mass_position, body, temperature, with the checks across
-  /// its observations (json/physical_reader.cpp). After "fit".
+  /// its observations (models/physical_reader.cpp). After "fit".
   static void read_keys(json_reader::Object& top, ParsedScene& out);
   /// The unknowns besides g a scene of observations alone (a table's: no
   /// parts, no measured centre) fits: k, and the centre from pivot positions

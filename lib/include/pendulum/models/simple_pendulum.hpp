@@ -70,7 +70,7 @@ struct SimplePendulum {
   /// none, the lengths being to the bob's centre.
   static constexpr std::array<bool, kParameters> unknowns_of_observations_alone(Setting) { return {}; }
   /// The bob, ring and cap fit above every observation's length
-  /// (json/scene_reader.cpp).
+  /// (json/scene_json.cpp).
   static void check_scene(const ParsedScene& scene);
   /// At standard gravity: 2 pi sqrt(l/g) (Eq. 3) times every row's T/T0;
   /// a slip is judged with the finite amplitude alone, before it drives

@@ -14,7 +14,7 @@
 #include "pendulum/argument_ranges.hpp"
 #include "pendulum/dispersion.hpp"
 #include "pendulum/models/registry.hpp"
-#include "pendulum/scene_json.hpp"
+#include "pendulum/json/scene_json.hpp"
 
 namespace pendulum {
 

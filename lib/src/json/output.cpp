@@ -9,7 +9,7 @@
 
 #include "pendulum/models/registry.hpp"
 #include "pendulum/monte_carlo.hpp"
-#include "pendulum/output.hpp"
+#include "pendulum/json/output.hpp"
 #include "pendulum/status.hpp"
 #include "writer.hpp"
 #include "../grouping.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-/// \file scene_json.hpp
+/// \file json/scene_json.hpp
 /// \brief Reading a scene file (docs/scene.md) into a ParsedScene in SI units.
 ///
 /// Validation happens here, once, at the edge: every error names the JSON

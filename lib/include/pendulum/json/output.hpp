@@ -1,5 +1,5 @@
 #pragma once
-/// \file output.hpp
+/// \file json/output.hpp
 /// \brief What the commands print: the result of `reduce` as JSON (an API,
 /// docs/output.md) and as a table for people at a terminal, the decay fit,
 /// and a batch's summary lines. JSON text in, so that no header below the

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "parts.hpp"
+#include "../json/parts.hpp"
 #include "pendulum/bodies.hpp"
 #include "pendulum/models/physical_pendulum.hpp"
 

@@ -231,7 +231,7 @@ class Fit {
   /// that scatter"): a simple pendulum's series, each observation its own
   /// length, degrees of freedom left.
   bool length_scatter_applies() const {
-    if (std::string(Model::kName) != "simple_pendulum" || static_cast<int>(k_) <= free_count_) return false;
+    if (!std::is_same_v<Model, SimplePendulum> || static_cast<int>(k_) <= free_count_) return false;
     for (std::size_t k = 0; k < k_; ++k) {
       if (scene_.sources[k].is_shared("length") || scene_.observation_uncertainties[k].length != 0.0) return false;
     }

@@ -20,6 +20,10 @@ std::string format_number(double x, int digits) {
   return os.str();
 }
 
+std::string uncertainty_not_below_value(const std::string& u, const std::string& value) {
+  return "got " + u + "; expected an uncertainty smaller than the value (" + value + ")";
+}
+
 std::string format_percent(double fraction) {
   const double percent = 100.0 * fraction;
   if (std::abs(percent) < 10.0) return format_number(percent, 2) + "%";

@@ -17,6 +17,11 @@ std::string lower_case(std::string_view s);
 /// `x` with `digits` significant digits.
 std::string format_number(double x, int digits = 10);
 
+/// The refusal of an uncertainty as large as its value, which might then be
+/// 0: "got 80 cm; expected an uncertainty smaller than the value (75 cm)".
+/// `u` and `value` as the input wrote them, each with its unit.
+std::string uncertainty_not_below_value(const std::string& u, const std::string& value);
+
 /// A fraction as a percentage for a message: "5.3%", "8%", "120%" (two
 /// significant digits below 10%, whole percents above, never "1e+02%").
 std::string format_percent(double fraction);

@@ -36,8 +36,8 @@ ClockQuantity quantity(Object& parent, const std::string& key, std::optional<Dim
                      "got " + format_number(j.at("value").get<double>()) + " " + j.at("unit").get<std::string>() +
                          "; expected " + what);
     PENDULUM_FAIL_IF(m.value > 0.0 && m.sigma >= m.value, parent.path(key) + ".uncertainty",
-                     "got " + shown(j.at("uncertainty")) + " " + j.at("unit").get<std::string>() +
-                         "; expected an uncertainty smaller than the value");
+                     uncertainty_not_below_value(shown(j.at("uncertainty")) + " " + j.at("unit").get<std::string>(),
+                                                 shown(j.at("value")) + " " + j.at("unit").get<std::string>()));
     return {m.value, m.sigma};
   }
   if (j.is_number()) {
@@ -58,7 +58,7 @@ ClockQuantity quantity(Object& parent, const std::string& key, std::optional<Dim
   q.finish();
   PENDULUM_FAIL_IF(!(x >= lo && x <= hi), q.path("value"), "got " + format_number(x) + "; expected " + what);
   PENDULUM_FAIL_IF(x > 0.0 && u >= x, q.path("uncertainty"),
-                   "got " + format_number(u) + "; expected an uncertainty smaller than the value");
+                   uncertainty_not_below_value(format_number(u), format_number(x)));
   return {x, u};
 }
 

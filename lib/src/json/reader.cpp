@@ -352,9 +352,7 @@ Measured quantity(Object& parent, const std::string& key, Dimension dim, Range r
   }
   // A positive quantity as uncertain as itself might be 0: it is unknown.
   PENDULUM_FAIL_IF(range == Range::positive && sigma >= si, q.path("uncertainty"),
-          "got " + format_number(u) + " " + unit_name +
-              "; expected an uncertainty smaller than the value (" + format_number(raw) + " " +
-              unit_name + ")");
+          uncertainty_not_below_value(format_number(u) + " " + unit_name, format_number(raw) + " " + unit_name));
   return {si, sigma};
 }
 

@@ -105,8 +105,8 @@ void refuse_unknown_amplitude(Object& owner) {
   if (!a.contains("uncertainty") || !a["uncertainty"].is_number()) return;
   const double u = a["uncertainty"].get<double>();
   PENDULUM_FAIL_IF(std::isfinite(u) && u >= v, path + ".uncertainty",
-                   "got " + format_number(u) + " " + unit_name + "; expected an uncertainty smaller than the value (" +
-                       format_number(v) + " " + unit_name + "): an amplitude known only to lie between " +
+                   uncertainty_not_below_value(format_number(u) + " " + unit_name, format_number(v) + " " + unit_name) +
+                       ": an amplitude known only to lie between " +
                        format_number(std::max(0.0, v - u)) + " and " + format_number(v + u) + " " + unit_name +
                        " is written \"amplitude\": {\"range\": [" + format_number(std::max(0.0, v - u)) + ", " +
                        format_number(v + u) + "], \"unit\": \"" + unit_name + "\"} (or \"not recorded\", docs/scene.md)");

@@ -1113,9 +1113,9 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
       if (!why.empty()) refuse_cell(i, *setting_col, why);
       // As uncertain as itself, a length might be 0.
       if (setting_u && table.columns[*setting_u][i] * setting_u_factor >= settings[i]) {
-        refuse_cell(i, *setting_u, "got " + format_number(table.columns[*setting_u][i]) + " " + use[*setting_u].unit +
-                                       "; expected an uncertainty smaller than the value (" +
-                                       format_number(settings[i]) + " " + su.unit + ")");
+        refuse_cell(i, *setting_u,
+                    uncertainty_not_below_value(format_number(table.columns[*setting_u][i]) + " " + use[*setting_u].unit,
+                                                format_number(settings[i]) + " " + su.unit));
       }
     }
     if (time_u) {

@@ -30,6 +30,7 @@ enum class Rejection {
   g_not_positive,
 };
 inline constexpr int kRejectionKinds = 4;
+
 struct MonteCarloResult {
   MonteCarloOptions options;
   long draws = 0;

@@ -127,6 +127,21 @@ std::string settings_of_kinds() {
   return out;
 }
 
+/// The kind a scene names (its "kind": a registered model's kName, as
+/// fit.model prints it).
+PeriodModelKind kind_named(Object& top) {
+  const std::string name = top.text("kind");
+  std::optional<PeriodModelKind> kind;
+  std::string names;
+  for_each_period_model([&](auto model) {
+    using M = decltype(model);
+    if (name == M::kName) kind = kind_of<M>();
+    names += std::string(names.empty() ? "\"" : ", \"") + M::kName + "\"";
+  });
+  PENDULUM_FAIL_IF(!kind, "kind", "got " + shown(top.at("kind")) + "; expected one of " + names);
+  return *kind;
+}
+
 /// The keys of one observation, under `o` (the top level, or an item of
 /// "observations") with `prefix` on every path; `shared`, in a series, holds
 /// the length or amplitude given once for all.
@@ -603,12 +618,20 @@ ParsedScene parse_scene(const std::string& text, const SceneFiles& files) {
   ParsedScene out;
   Object top(doc, "", "a JSON object (the scene)");
   read_header(top, out);
+  const std::optional<PeriodModelKind> named = top.has("kind") ? std::optional(kind_named(top)) : std::nullopt;
   (void)top.has("import");  // import's report of a table's columns (docs/series.md): free-form, not read
 
   if (top.has("observations")) {
     read_series(top, out, recordings);
   } else {
     read_observation(top, "", out, recordings);
+  }
+  // The kind the observations' keys set must be the one the scene names.
+  if (named && *named != out.model) {
+    const std::string set = visit_period_model(out.model, [](auto model) { return decltype(model)::kName; });
+    throw InputError("kind", "got " + shown(top.at("kind")) + " for observations set by " +
+                                 setting_key(out.observations.front().setting) + ", which make a " + set +
+                                 "; expected \"" + set + "\", or observations of the kind named: " + settings_of_kinds());
   }
   read_parts(top, out);
   if (top.has("decay")) read_decay(top, out, recordings);

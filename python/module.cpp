@@ -23,6 +23,7 @@
 #include "pendulum/clock_scene.hpp"
 #include "pendulum/files.hpp"
 #include "pendulum/input_error.hpp"
+#include "pendulum/interrupt.hpp"
 #include "pendulum/json/output.hpp"
 #include "pendulum/output_files.hpp"
 #include "pendulum/recordings/swings.hpp"
@@ -35,6 +36,22 @@
 namespace py = pybind11;
 
 namespace {
+
+/// Whether Ctrl-C was pressed: Python's signal handler ran and raised
+/// KeyboardInterrupt, now the error this thread reports.
+bool python_signalled() {
+  py::gil_scoped_acquire held;
+  return PyErr_CheckSignals() != 0;
+}
+
+/// A long call: the GIL released for other threads, and Ctrl-C heard
+/// (docs/python.md, "Ctrl-C"): the library's checks ask Python, as its
+/// interpreter would between two statements, and the call stops with
+/// KeyboardInterrupt instead of after the whole reduction.
+struct LongCall {
+  py::gil_scoped_release unlocked;
+  pendulum::InterruptScope interruptible{&python_signalled};
+};
 
 using pendulum::AmplitudeMethod;
 
@@ -88,7 +105,7 @@ std::string reduce_json(const std::optional<std::string>& path, const std::optio
                         const std::string& method, int series_terms) {
   const pendulum::AnalysisOptions options = analysis_options(negligible_fraction, method, series_terms);
   const SceneSource source = scene_source(path, text, directory, allow_outside);
-  py::gil_scoped_release unlocked;
+  const LongCall long_call;
   const pendulum::ParsedScene scene = pendulum::parse_scene(source.text, source.files);
   // An amplitude sweep without its length: T0 and the law, as the CLI's reduce prints them.
   if (!scene.length_measured) return pendulum::sweep_result_json(scene, *pendulum::amplitude_sweep_of(scene), source.input);
@@ -108,7 +125,7 @@ std::string fit_decay_json(const std::optional<std::string>& path, const std::op
       throw py::value_error("model: got '" + *model + "'; expected both, linear_only or quadratic_only");
     }
   }
-  py::gil_scoped_release unlocked;
+  const LongCall long_call;
   const pendulum::ParsedScene scene = pendulum::parse_decay_document(source.text, source.files);
   if (!scene.decay_data) throw pendulum::InputError("decay.data", "missing; fit-decay needs a decay record");
   const pendulum::DecayFit fit = pendulum::fit_decay(*scene.decay_data, fit_options);
@@ -150,7 +167,7 @@ py::dict read_recording(const std::string& path, const std::string& format, cons
   pendulum::RecordingSummary r;
   std::string json;
   {
-    py::gil_scoped_release unlocked;
+    const LongCall long_call;
     r = pendulum::analyse_recording(path, *family, options, {}, set, columns);
     json = pendulum::recording_json(r);
   }
@@ -180,7 +197,7 @@ std::pair<std::string, std::vector<std::string>> read_table(const std::string& p
     options.oscillations = *oscillations;
   }
   if (!columns.empty()) options.columns = pendulum::parse_table_column_spec(columns, "columns");
-  py::gil_scoped_release unlocked;
+  const LongCall long_call;
   const pendulum::SettingsTable t = pendulum::read_settings_table(path, options);
   std::vector<std::string> warnings;
   for (const auto& w : t.warnings) warnings.push_back(w.text);
@@ -191,7 +208,7 @@ std::pair<std::string, std::vector<std::string>> read_table(const std::string& p
 /// line), and the folder entries it skips with a note, as (path, why).
 std::pair<std::vector<std::string>, std::vector<std::pair<std::string, std::string>>> batch_lines(
     const std::vector<std::string>& paths, bool allow_outside) {
-  py::gil_scoped_release unlocked;
+  const LongCall long_call;
   std::vector<pendulum::BatchScene> scenes;
   std::vector<std::pair<std::string, std::string>> notes;
   for (const auto& p : paths) {
@@ -233,7 +250,7 @@ std::pair<std::optional<std::string>, std::vector<std::string>> report(
   request.set = set;
   request.columns = columns;
   request.analysis = analysis_options(negligible_fraction, method, series_terms);
-  py::gil_scoped_release unlocked;
+  const LongCall long_call;
   if (!output.empty() && path) pendulum::refuse_output_over_inputs(output, {*path});
   pendulum::report::ReportPage page = pendulum::report::make_report_page(
       request, [&](const std::vector<std::string>& recordings) {
@@ -352,6 +369,9 @@ PYBIND11_MODULE(_core, m) {
       PyErr_SetString(PyExc_OSError, (std::string("output: ") + e.what()).c_str());
     } catch (const pendulum::UsageError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());  // the CLI's exit status 2
+    } catch (const pendulum::Interrupted&) {
+      // python_signalled() left KeyboardInterrupt (or what a handler raised) set.
+      if (!PyErr_Occurred()) PyErr_SetNone(PyExc_KeyboardInterrupt);
     }
   });
 

@@ -12,6 +12,7 @@
 
 #include "pendulum/dispersion.hpp"
 #include "pendulum/input_error.hpp"
+#include "pendulum/interrupt.hpp"
 #include "pendulum/models/registry.hpp"
 #include "pendulum/period_fit.hpp"
 #include "fit_state.hpp"
@@ -429,6 +430,7 @@ class Fit {
     std::vector<std::size_t> every(k_);
     for (std::size_t k = 0; k < k_; ++k) every[k] = k;
     for (std::size_t j = 0; j < inputs_.size(); ++j) {
+      check_interrupt();
       const Input& in = inputs_[j];
       const bool of_apparatus = in.observations.empty();
       const std::vector<std::size_t>& touched = of_apparatus ? every : in.observations;

@@ -13,6 +13,7 @@
 
 #include "grouping.hpp"
 #include "pendulum/analysis.hpp"
+#include "pendulum/interrupt.hpp"
 #include "pendulum/models/registry.hpp"
 #include "pendulum/numeric.hpp"
 #include "pendulum/reduction.hpp"
@@ -250,6 +251,7 @@ class Sampler {
       const Refit<decltype(model)> refit(scene_, analysis_);
       // Every draw outside the model's domain would loop for ever: a bound.
       for (long attempt = 0; static_cast<long>(out.g.size()) < count && attempt < 10 * count; ++attempt) {
+        check_interrupt();
         // Pooled periods share one estimated variance: a multivariate t.
         const double pooled = pooled_dof_ > 0.0 ? deviates.t_scale(pooled_dof_) : 1.0;
         for (std::size_t i = 0; i < inputs_.size(); ++i) {

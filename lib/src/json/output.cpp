@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "pendulum/interrupt.hpp"
 #include "pendulum/models/registry.hpp"
 #include "pendulum/monte_carlo.hpp"
 #include "pendulum/json/output.hpp"
@@ -294,6 +295,7 @@ json fit_json(const ParsedScene& scene, const Analysis& a) {
   }
   json observations = json::array();
   for (std::size_t k = 0; k < a.observations.size(); ++k) {
+    check_interrupt();
     const ObservationResult& o = a.observations[k];
     const auto& u = scene.observation_uncertainties[k];
     observations.push_back(
@@ -722,6 +724,7 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
                   "T meas (s)", "+- (s)", "T model (s)", "resid (sd)", "T-T0 (us)");
     os << line;
     for (std::size_t k = 0; k < a.observations.size(); ++k) {
+      check_interrupt();
       const ObservationResult& o = a.observations[k];
       std::snprintf(line, sizeof line, "%5zu %9.4f %12.2f %12.6f %10.6f %12.6f %+10.2f %+12.2f\n", k, o.length,
                     degrees(o.amplitude), o.period_measured.value, o.period_measured.uncertainty,

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "huge_pages.hpp"
+#include "pendulum/interrupt.hpp"
 #include "number.hpp"
 #include "stages.hpp"
 
@@ -182,6 +183,7 @@ Table read_rows(const char* p, const char* end, std::size_t line_no, const Diale
   };
   std::size_t expected_line = 0;  // the line the next row has without a jump
   for (const char* e = nullptr; p < end; p = e < end ? e + 1 : end, ++line_no) {
+    check_interrupt();
     if (table.rows == limits.rows && !is_blank(p, line_end(p))) fail(file, line_no, 1, over_limit(limits, Limit::rows));
     const char* plain = plain_row(p);
     if (plain) {

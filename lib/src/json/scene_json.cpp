@@ -114,15 +114,19 @@ void refuse_unknown_amplitude(Object& owner) {
 
 /// Each registered kind's setting keys: "by length (simple_pendulum), or by
 /// pivot_distance or pivot_position (physical_pendulum)".
+/// The keys that set a kind's observations: "pivot_distance or pivot_position".
+template <class M>
+std::string settings_of() {
+  std::string out;
+  for (std::size_t i = 0; i < M::kSettings.size(); ++i) out += std::string(i == 0 ? "" : " or ") + setting_key(M::kSettings[i]);
+  return out;
+}
+
 std::string settings_of_kinds() {
   std::string out;
   for_each_period_model([&](auto model) {
     using M = decltype(model);
-    out += out.empty() ? "by " : ", or by ";
-    for (std::size_t i = 0; i < M::kSettings.size(); ++i) {
-      out += std::string(i == 0 ? "" : " or ") + setting_key(M::kSettings[i]);
-    }
-    out += std::string(" (") + M::kName + ")";
+    out += (out.empty() ? "by " : ", or by ") + settings_of<M>() + " (" + M::kName + ")";
   });
   return out;
 }
@@ -554,32 +558,6 @@ void read_header(Object& top, ParsedScene& out) {
 
 }  // namespace
 
-// The ball model's parts against its lengths (period_model.hpp, check_scene).
-void SimplePendulum::check_scene(const ParsedScene& out) {
-  const Apparatus<double>& v = out.apparatus;
-  for (std::size_t k = 0; k < out.observations.size(); ++k) {
-    const double length = out.observations[k].length;
-    const std::string at = out.sources[k].path_of("length") + ".value";
-    if (!v.bob) continue;
-    const double radius = v.bob->knot_to_center();
-    PENDULUM_FAIL_IF(radius >= length, at,
-                     "got " + format_number(length) + " m; expected more than the bob " +
-                         (v.bob->shape == BobShape::sphere ? "radius " : "half height ") +
-                         format_number(radius) + " m");
-    if (v.ring) {
-      PENDULUM_FAIL_IF(v.ring->pivot_distance + v.ring->outer_radius >= length - radius, "ring.outer_radius.value",
-                       "the ring reaches " + format_number(v.ring->pivot_distance + v.ring->outer_radius) +
-                           " m below the pivot; expected it to end above the bob, which starts at " +
-                           format_number(length - radius) + " m");
-    }
-    if (v.cap) {
-      PENDULUM_FAIL_IF(v.cap->center_distance >= length, "cap.center_distance.value",
-                       "got " + format_number(v.cap->center_distance) + " m; expected less than the length (" +
-                           format_number(length) + " m): the cap hangs between the pivot and the bob");
-    }
-  }
-}
-
 std::string scene_directory(const std::string& path) {
   if (path == "-") return ".";
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();
@@ -629,9 +607,10 @@ ParsedScene parse_scene(const std::string& text, const SceneFiles& files) {
   // The kind the observations' keys set must be the one the scene names.
   if (named && *named != out.model) {
     const std::string set = visit_period_model(out.model, [](auto model) { return decltype(model)::kName; });
+    const std::string keys = visit_period_model(*named, [](auto model) { return settings_of<decltype(model)>(); });
     throw InputError("kind", "got " + shown(top.at("kind")) + " for observations set by " +
                                  setting_key(out.observations.front().setting) + ", which make a " + set +
-                                 "; expected \"" + set + "\", or observations of the kind named: " + settings_of_kinds());
+                                 "; expected \"" + set + "\", or observations set by " + keys);
   }
   read_parts(top, out);
   if (top.has("decay")) read_decay(top, out, recordings);

@@ -13,6 +13,7 @@
 #include <boost/math/special_functions/gamma.hpp>
 
 #include "pendulum/analysis.hpp"
+#include "pendulum/input_error.hpp"
 #include "../fit_state.hpp"
 #include "../json/writer.hpp"
 #include "../plausibility.hpp"
@@ -175,6 +176,33 @@ void SimplePendulum::fit_results_lines(const Results* textbook, std::ostream& os
 
 void SimplePendulum::observation_results_lines(const Results* textbook, std::ostream& os) {
   if (textbook) os << "g (uncorrected)     = " << writer::rounded(textbook->g.value, textbook->g.uncertainty) << " m/s^2\n";
+}
+
+// The ball model's parts against its lengths (period_model.hpp, check_scene).
+void SimplePendulum::check_scene(const ParsedScene& out) {
+  const Apparatus<double>& v = out.apparatus;
+  for (std::size_t k = 0; k < out.observations.size(); ++k) {
+    const double length = out.observations[k].length;
+    const std::string at = out.sources[k].path_of("length") + ".value";
+    if (!v.bob) continue;
+    const double radius = v.bob->knot_to_center();
+    if (radius >= length) {
+      throw InputError(at, "got " + format_number(length) + " m; expected more than the bob " +
+                               (v.bob->shape == BobShape::sphere ? "radius " : "half height ") +
+                               format_number(radius) + " m");
+    }
+    if (v.ring && v.ring->pivot_distance + v.ring->outer_radius >= length - radius) {
+      throw InputError("ring.outer_radius.value",
+                       "the ring reaches " + format_number(v.ring->pivot_distance + v.ring->outer_radius) +
+                           " m below the pivot; expected it to end above the bob, which starts at " +
+                           format_number(length - radius) + " m");
+    }
+    if (v.cap && v.cap->center_distance >= length) {
+      throw InputError("cap.center_distance.value",
+                       "got " + format_number(v.cap->center_distance) + " m; expected less than the length (" +
+                           format_number(length) + " m): the cap hangs between the pivot and the bob");
+    }
+  }
 }
 
 }  // namespace pendulum

@@ -79,6 +79,16 @@ double crossing_method_bound(const std::vector<Crossing>& c, const std::vector<d
   return per_period * per_period * info.inverse()(1, 1);
 }
 
+/// The noise-free amplitude at time t (s): the turning amplitudes
+/// log-interpolated between the turning points either side.
+double truth_at(const test::SimulatedRecording& sim, double t) {
+  const auto it = std::upper_bound(sim.turning_times.begin(), sim.turning_times.end(), t);
+  const std::size_t i = std::max<std::size_t>(1, it - sim.turning_times.begin());
+  const double ta = sim.turning_times[i - 1], tb = sim.turning_times[i];
+  const double la = std::log(sim.turning_amplitudes[i - 1]), lb = std::log(sim.turning_amplitudes[i]);
+  return std::exp(la + (lb - la) * (t - ta) / (tb - ta));
+}
+
 }  // namespace
 
 TEST_CASE("Each family's recording in data/recordings/ is read and reduced", "[recordings]") {
@@ -326,13 +336,6 @@ TEST_CASE("The start amplitude's uncertainty is honest where the recording measu
   // log-interpolated to the first crossing. A rotary sensor's angle in steps
   // of 0.00153 rad (PASCO's) without noise errs less than its uncertainty
   // says: the steps are not noise, and the uncertainty is an upper bound there.
-  const auto truth_at = [](const test::SimulatedRecording& sim, double t) {
-    const auto it = std::upper_bound(sim.turning_times.begin(), sim.turning_times.end(), t);
-    const std::size_t i = std::max<std::size_t>(1, it - sim.turning_times.begin());
-    const double ta = sim.turning_times[i - 1], tb = sim.turning_times[i];
-    const double la = std::log(sim.turning_amplitudes[i - 1]), lb = std::log(sim.turning_amplitudes[i]);
-    return std::exp(la + (lb - la) * (t - ta) / (tb - ta));
-  };
   enum Sensor { tracked_angle, video, rotary };
   for (const Sensor sensor : {tracked_angle, video, rotary}) {
     constexpr int kRuns = 200;
@@ -368,6 +371,47 @@ TEST_CASE("The start amplitude's uncertainty is honest where the recording measu
     } else {
       CHECK(std::fabs(coverage - p) < tolerance);
     }
+  }
+}
+
+TEST_CASE("A video track whose circle is not the pendulum's takes its angles from the pendulum's length",
+          "[recordings]") {
+  // Tracker's headerless "t x y" in metres, l = 0.30 m, released at 26 deg,
+  // 60 s at 30 frames/s, 1.5 mm of noise on x and y, from a camera pitched
+  // 50 deg off square to the swing: the heights show cos 50 deg of
+  // themselves, the track's circle has l / cos 50 deg = 0.47 m for radius,
+  // and its angles were 0.64 of the true ones. The length the period gives
+  // (the simulation's g is standard gravity) or the stated one scales the
+  // displacement instead; from a square camera the circle's angles stay.
+  // The truth: the noise-free turning amplitudes at the first crossing.
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    RecordingSimulation s;
+    s.length = 0.30, s.theta0 = 26.0 * M_PI / 180.0, s.duration = 60.0, s.rate_hz = 30.0, s.noise = 0.0;
+    s.drop = 0.0, s.seed = seed;
+    const test::SimulatedRecording sim = simulate_recording(s);
+    const auto note_on_circle = [](const SwingAnalysis& a) {
+      return std::any_of(a.notes.begin(), a.notes.end(),
+                         [](const RecordingNote& n) { return n.text.find("the track's circle") != std::string::npos; });
+    };
+    for (const bool stated : {false, true}) {
+      SwingOptions options;
+      if (stated) options.length = s.length;
+      const SwingAnalysis a = analyse_swings(
+          parse_recording(test::published_csv(sim, s.length, test::PublishedLayout::tilted_camera, 0.0015, seed), "tilted.txt"),
+          "tilted.txt", options);
+      const double truth = truth_at(sim, a.crossings.front().time);
+      INFO("seed " << seed << (stated ? ", length stated" : "") << ": start " << a.start_amplitude << " +- "
+                   << a.start_amplitude_uncertainty << " rad, truth " << truth);
+      CHECK(std::fabs(a.start_amplitude - truth) <= 3.0 * a.start_amplitude_uncertainty);
+      CHECK(a.start_amplitude_uncertainty < 0.05 * truth);  // a 36 % error is no 3 sigmas
+      CHECK(note_on_circle(a));
+    }
+    const SwingAnalysis square = analyse_swings(
+        parse_recording(test::published_csv(sim, s.length, test::PublishedLayout::headerless_txy, 0.0015, seed), "square.txt"),
+        "square.txt");
+    CHECK_FALSE(note_on_circle(square));
+    CHECK(std::fabs(square.start_amplitude - truth_at(sim, square.crossings.front().time)) <=
+          3.0 * square.start_amplitude_uncertainty);
   }
 }
 

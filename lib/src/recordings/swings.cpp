@@ -37,6 +37,9 @@ struct Signal {
   /// Relative standard uncertainty of a scale common to every sample (a
   /// video track's circle radius); 0 where there is none.
   double scale_uncertainty = 0.0;
+  /// A video track's circle: its radius and that radius's standard
+  /// uncertainty (the track's unit); 0 where the angles are not its.
+  double radius = 0.0, radius_sigma = 0.0;
 };
 
 /// Projection on the principal axis of the mean-removed vectors: one pass
@@ -161,11 +164,33 @@ Signal track_angle(const Recording& r) {
   Signal sig = remove_mean(std::move(angle));
   // An angle about a centre off by the radius's error is off by that
   // fraction (300 simulated tracks: 0.7 % in R, 0.8 % in the amplitude).
-  sig.scale_uncertainty = std::isfinite(radius_variance) ? std::sqrt(std::max(radius_variance, 0.0)) / radius : 0.0;
+  sig.radius = radius;
+  sig.radius_sigma = std::isfinite(radius_variance) ? std::sqrt(std::max(radius_variance, 0.0)) : 0.0;
+  sig.scale_uncertainty = sig.radius_sigma / radius;
   return sig;
 }
 
-Signal make_signal(const Recording& r) {
+/// Relative standard uncertainty of a length taken as the distance from the
+/// pivot to the tracked point: the period's length is the equivalent simple
+/// pendulum's, d (1 + 2/5 (r/d)^2) for a sphere of radius r on a string d
+/// (1.6 % at r = d/5), and standard gravity is within 0.3 % of a local g.
+constexpr double kTrackLengthModel = 0.02;
+
+/// A video track's angle when its circle is not trusted: asin(u / length),
+/// u the displacement along the swing (the principal axis) from its mean,
+/// `length` in the track's unit.
+Signal displacement_angle(const Recording& r, double length) {
+  Signal sig = principal_axis(r);
+  for (double& u : sig.s) u = std::asin(std::clamp(u / length, -1.0, 1.0));
+  Signal out = remove_mean(std::move(sig.s));
+  out.axis = sig.axis;
+  out.scale_uncertainty = kTrackLengthModel;
+  return out;
+}
+
+/// `track_length` (the track's unit): a video track's angles from it
+/// instead of its circle (displacement_angle) where positive.
+Signal make_signal(const Recording& r, double track_length = 0.0) {
   switch (r.kind) {
     case SignalKind::angular_rate:
     case SignalKind::linear_acceleration: return principal_axis(r);
@@ -186,7 +211,7 @@ Signal make_signal(const Recording& r) {
       sig.has_amplitude = false;
       return sig;
     }
-    case SignalKind::position: return track_angle(r);
+    case SignalKind::position: return track_length > 0.0 ? displacement_angle(r, track_length) : track_angle(r);
     case SignalKind::gate_states:
     case SignalKind::blocking_times:
     case SignalKind::event_stamps: break;
@@ -1211,8 +1236,9 @@ void apply_bridges(const std::vector<Bridge>& bridges, std::vector<Crossing>& c,
   }
 }
 
-SwingAnalysis analyse_record(const Recording& r, const std::string& file, const SwingOptions& options,
-                             const std::vector<Bridge>& bridges = {}) {
+/// `track_length`: as make_signal's.
+SwingAnalysis analyse_once(const Recording& r, const std::string& file, const SwingOptions& options,
+                           const std::vector<Bridge>& bridges, double track_length) {
   // The clock's resolution (step 6): the reader's quantum where stamps
   // repeat; for events (stamps, gate changes), also the decimals the file
   // printed its times with. Not for samples: a regular clock printed to its
@@ -1232,7 +1258,7 @@ SwingAnalysis analyse_record(const Recording& r, const std::string& file, const 
     if (r.time.size() < 16) {
       throw InputError(file, std::to_string(r.time.size()) + " samples; expected a recording of several swings");
     }
-    sig = make_signal(r);
+    sig = make_signal(r, track_length);
     out.axis = sig.axis;
     out.crossings_per_period = sig.crossings_per_period;
     out.noise = noise_sigma(sig.s);
@@ -1603,6 +1629,79 @@ SwingAnalysis analyse_record(const Recording& r, const std::string& file, const 
     p.amplitude = count ? sum / count : kNaN;
     out.period_curve.push_back(p);
   }
+  return out;
+}
+
+/// A circle whose radius is known to worse than this fraction makes every
+/// angle that uncertain, five times the pendulum's length's own (kTrackLengthModel).
+constexpr double kLooseRadius = 0.1;
+
+/// Metres per unit of a video track's x and y: by the x column's unit (m,
+/// cm, mm); where none is stated, metres when the circle's `radius` read in
+/// metres is within sqrt(10) of `length` (m), halfway on a log scale to the
+/// next unit (Tracker exports metres). 0 for pixels, or where the numbers
+/// cannot tell.
+double metres_per_track_unit(const Recording& r, double radius, double length) {
+  for (const RecordingColumn& c : r.columns) {
+    if (c.role != "x") continue;
+    if (c.unit == "m") return 1.0;
+    if (c.unit == "cm") return 0.01;
+    if (c.unit == "mm") return 0.001;
+    if (!c.unit.empty()) return 0.0;
+  }
+  return std::fabs(std::log10(radius / length)) < 0.5 ? 1.0 : 0.0;
+}
+
+/// The length (m) of the simple pendulum of the small-amplitude period the
+/// swings give, with standard gravity.
+double period_length(const SwingAnalysis& a) {
+  double sum = 0.0;
+  int count = 0;
+  for (const RecordedSwing& w : a.swings) {
+    if (std::isfinite(w.amplitude) && w.amplitude > 0.0) sum += finite_amplitude_agm(w.amplitude), ++count;
+  }
+  const double t0 = a.period.value / (1.0 + (count ? sum / count : 0.0));
+  return kStandardGravity * t0 * t0 / (4.0 * kPi * kPi);
+}
+
+/// Steps 1 to 7 on all of `r`, a video track's angles checked: its circle
+/// gives them only where its radius is determined (kLooseRadius) and agrees
+/// with the pendulum's length (`--length-m`, else the period's) within 3
+/// sigmas of both; else they are asin(x / length), x the displacement along
+/// the swing, the period's length solved with them, and a note says why.
+SwingAnalysis analyse_record(const Recording& r, const std::string& file, const SwingOptions& options,
+                             const std::vector<Bridge>& bridges = {}) {
+  SwingAnalysis out = analyse_once(r, file, options, bridges, 0.0);
+  if (r.kind != SignalKind::position || !std::isfinite(out.start_amplitude)) return out;
+  const Signal circle = track_angle(r);
+  double length = options.length ? *options.length : period_length(out);
+  const double metres = metres_per_track_unit(r, circle.radius, length);
+  if (!(metres > 0.0)) return out;
+  const double radius = circle.radius * metres, sigma = circle.radius_sigma * metres;
+  const double apart = std::fabs(radius - length) / std::hypot(sigma, kTrackLengthModel * length);
+  const bool loose = sigma > kLooseRadius * radius;
+  if (!(apart > 3.0) && !loose) return out;
+  const double circle_start = out.start_amplitude;
+  double used = length;
+  for (int pass = 0; pass < 4; ++pass) {  // the period's length moves with the amplitudes it corrects for
+    used = length;
+    out = analyse_once(r, file, options, bridges, used / metres);
+    if (options.length) break;
+    length = period_length(out);
+    if (std::fabs(length - used) <= 1e-4 * used) break;
+  }
+  const std::string source = options.length ? "the stated length (--length-m)"
+                                            : "the length the small-amplitude period gives with standard gravity";
+  out.notes.push_back(
+      {0, "the track's circle has a radius of " + format_number(radius, 3) + " +- " + format_number(sigma, 2) + " m" +
+              (loose ? ", too uncertain to scale the angles"
+                     : ", " + format_number(apart, 2) + " sigmas from " + source + ", " + format_number(used, 4) +
+                           " m (the tracked point's distance from the pivot taken within " +
+                           format_number(100.0 * kTrackLengthModel, 2) + " %)") +
+              ": a camera not square to the swing or a poor track of the height bends it; the angles are asin(x / " +
+              format_number(used, 4) + " m), x the displacement along the swing from its mean, instead of the "
+              "circle's (start " + format_number(degrees(circle_start), 4) + " deg)" +
+              (options.length ? "" : "; --length-m gives the pivot to the tracked point")});
   return out;
 }
 

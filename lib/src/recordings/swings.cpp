@@ -627,6 +627,64 @@ double swing_level(const std::vector<double>& s, double rms) {
   return rms > 2.0 * median ? median : rms;
 }
 
+/// The swing's amplitude below which the threshold's floor of 5 noise
+/// sigmas nears its peaks (half of them and more) and noise crosses it:
+/// crossings come from local sine fits instead (sine_fit_crossings).
+constexpr double kNoisySwing = 10.0;
+
+/// Crossings of a swing under kNoisySwing noise sigmas: found on the signal
+/// averaged over the fewest samples that bring the noise to a tenth of the
+/// swing (`swing`, its amplitude), then each timed by the least-squares
+/// b sin(w u) + c cos(w u), u = t - t_c, through the raw samples within half
+/// an interval of that crossing t_c, w = pi / (the median interval): its
+/// zero, t_c - atan(c / b) / w. The fit's variance of that time, 2 sigma^2 /
+/// (N R^2 w^2) for N samples of a sine of amplitude R, is a line's sigma^2 /
+/// (slope^2 n) with the slope R w and n = N / 2. The average's own crossings
+/// lag a window's asymmetry and move with its noise; the fits do not.
+std::vector<Crossing> sine_fit_crossings(const std::vector<double>& t, const Signal& sig, double swing, double noise,
+                                         double fraction, std::vector<std::size_t>& at) {
+  const std::size_t n = sig.s.size();
+  const std::size_t m = static_cast<std::size_t>(std::ceil(std::pow(kNoisySwing * noise / swing, 2.0)));
+  std::vector<double> prefix(n + 1, 0.0);
+  for (std::size_t k = 0; k < n; ++k) prefix[k + 1] = prefix[k] + sig.s[k];
+  Signal averaged = sig;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t a = k >= m / 2 ? k - m / 2 : 0, b = std::min(n, k + (m - m / 2));
+    averaged.s[k] = (prefix[b] - prefix[a]) / static_cast<double>(b - a);
+  }
+  std::vector<std::size_t> rough_at;
+  const std::vector<Crossing> rough =
+      find_crossings(t, averaged, swing / std::sqrt(2.0), noise / std::sqrt(static_cast<double>(m)), fraction, rough_at);
+  if (rough.size() < 3) {
+    at = rough_at;
+    return rough;  // too few: the caller refuses the record
+  }
+  std::vector<double> intervals;
+  for (std::size_t i = 1; i < rough.size(); ++i) intervals.push_back(rough[i].time - rough[i - 1].time);
+  const double d = median_of(intervals), w = kPi / d;
+  std::vector<Crossing> out;
+  for (const Crossing& c : rough) {
+    const auto lo = std::lower_bound(t.begin(), t.end(), c.time - d / 2.0);
+    const auto hi = std::upper_bound(t.begin(), t.end(), c.time + d / 2.0);
+    double ss = 0.0, cc = 0.0, sc = 0.0, ys = 0.0, yc = 0.0;
+    for (auto it = lo; it != hi; ++it) {
+      const double u = w * (*it - c.time), sn = std::sin(u), cs = std::cos(u), y = sig.s[static_cast<std::size_t>(it - t.begin())];
+      ss += sn * sn, cc += cs * cs, sc += sn * cs, ys += y * sn, yc += y * cs;
+    }
+    const double det = ss * cc - sc * sc;
+    if (hi - lo < 4 || !(det > 0.0)) continue;
+    const double b = (cc * ys - sc * yc) / det, a = (ss * yc - sc * ys) / det;  // sine and cosine parts
+    if (b == 0.0) continue;
+    const double shift = -std::atan(a / b) / w;
+    const double time = c.time + shift;
+    if (!out.empty() && !(time > out.back().time)) continue;
+    const int samples = std::max(2, static_cast<int>((hi - lo) / 2));
+    out.push_back({time, w * (b * std::cos(w * shift) - a * std::sin(w * shift)), samples});
+    at.push_back(static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), time) - t.begin()) - 1);
+  }
+  return out;
+}
+
 /// Half swings whose peak is no swing's (a knock on the phone, a jump of a
 /// track): |log(peak / m)| beyond the larger of log 1.5 and 6 robust sigmas
 /// of that log over the record, and |peak - m| beyond 10 times the signal's
@@ -1263,11 +1321,26 @@ SwingAnalysis analyse_once(const Recording& r, const std::string& file, const Sw
     out.crossings_per_period = sig.crossings_per_period;
     out.noise = noise_sigma(sig.s);
     const Extent e = extent(sig.s);
-    if (!(e.peak > 10.0 * out.noise) || e.peak == 0.0) {
-      throw InputError(file, "no oscillation: the signal's largest excursion is " + std::to_string(e.peak) +
-                                 ", within 10 times its noise (" + std::to_string(out.noise) + ")");
+    // The swing's amplitude from the signal's level over its noise (a sine's
+    // rms is its amplitude over sqrt 2; the noise adds in quadrature): a
+    // swing under 3 noise sigmas is none, however far a spike reaches.
+    const double level = swing_level(sig.s, e.rms);
+    const double swing = std::sqrt(2.0 * std::max(level * level - out.noise * out.noise, 0.0));
+    if (!(swing > 3.0 * out.noise) || e.peak == 0.0) {
+      throw InputError(file, "no oscillation: the signal's rms (" + format_number(level, 3) + ") over its noise (" +
+                                 format_number(out.noise, 3) + ", from second differences) leaves a swing of amplitude " +
+                                 format_number(swing, 2) + ", under 3 times the noise; expected a swinging pendulum");
     }
-    out.crossings = find_crossings(r.time, sig, swing_level(sig.s, e.rms), out.noise, options.hysteresis_fraction, at);
+    // Not for |a| (4 crossings a period): its bottoms and dips differ in
+    // depth, and a sine through a crossing is no model of it.
+    if (swing < kNoisySwing * out.noise && sig.crossings_per_period == 2) {
+      out.notes.push_back({0, "the swing, " + format_number(swing, 3) + " (from the signal's rms), is " +
+                                  format_number(swing / out.noise, 2) + " times its noise: the crossings are timed by "
+                                  "sine fits over half a swing each, not by thresholds the noise crosses"});
+      out.crossings = sine_fit_crossings(r.time, sig, swing, out.noise, options.hysteresis_fraction, at);
+    } else {
+      out.crossings = find_crossings(r.time, sig, level, out.noise, options.hysteresis_fraction, at);
+    }
   }
   apply_bridges(bridges, out.crossings, at, durations, out.notes);
   const int cpp = out.crossings_per_period;

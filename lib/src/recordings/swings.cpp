@@ -1294,6 +1294,30 @@ void apply_bridges(const std::vector<Bridge>& bridges, std::vector<Crossing>& c,
   }
 }
 
+/// Where the smooth amplitude `curve` (one per swing, rad) misses the
+/// swings' own amplitudes `theta`: the mean of their residuals over the 2
+/// swings on either side, where beyond 3 sigmas of the swings' scatter about
+/// the curve (the mean of a few noisy swings is no misfit, and would hide a
+/// real release), else 0. A curve of order 8 in log theta does not follow a
+/// decay from 91 deg that ends in a bearing's dry friction (linear in theta).
+std::vector<double> local_misfits(const std::vector<double>& theta, const std::vector<double>& curve) {
+  std::vector<double> residuals, out(curve.size(), 0.0);
+  for (std::size_t k = 0; k < curve.size(); ++k) {
+    if (std::isfinite(theta[k]) && theta[k] > 0.0) residuals.push_back(std::fabs(theta[k] - curve[k]));
+  }
+  const double scatter = 1.4826 * median_of(residuals);  // of one swing's amplitude about the curve
+  for (std::size_t i = 0; i < curve.size(); ++i) {
+    double sum = 0.0;
+    int count = 0;
+    for (std::size_t k = i > 2 ? i - 2 : 0; k < std::min(theta.size(), i + 3); ++k) {
+      if (std::isfinite(theta[k]) && theta[k] > 0.0) sum += theta[k] - curve[k], ++count;
+    }
+    const double mean = count ? sum / count : 0.0;
+    if (count && std::fabs(mean) > 3.0 * scatter / std::sqrt(count)) out[i] = mean;
+  }
+  return out;
+}
+
 /// `track_length`: as make_signal's.
 SwingAnalysis analyse_once(const Recording& r, const std::string& file, const SwingOptions& options,
                            const std::vector<Bridge>& bridges, double track_length) {
@@ -1490,6 +1514,8 @@ SwingAnalysis analyse_once(const Recording& r, const std::string& file, const Sw
   }
   out.start_amplitude = out.end_amplitude = out.start_amplitude_uncertainty = kNaN;
   std::vector<double> index_amplitudes;  // the smooth amplitude the period's index took, one per swing
+  // The smooth curve at each swing, and where it misses them (local_misfits).
+  std::vector<double> curve(theta.size(), kNaN), misfits(theta.size(), 0.0);
   if (tk.size() >= 8 && tk.size() * 2 >= theta.size() / (cpp / 2)) {
     const double mid = (tk.front() + tk.back()) / 2.0, half = (tk.back() - tk.front()) / 2.0;
     const Eigen::Map<const Eigen::VectorXd> y(lk.data(), lk.size());
@@ -1565,10 +1591,15 @@ SwingAnalysis analyse_once(const Recording& r, const std::string& file, const Sw
     const Eigen::MatrixXd cov = inverse * (a.transpose() * r2.asDiagonal() * a) * inverse * averaged;
     auto smooth_at = [&](double t) { return smooth_with(c, t); };
     if (indexed) {
+      // The index takes the curve where it follows the swings and, where it
+      // misses them beyond their scatter, the swings' local mean: a curve 2 %
+      // low at 91 deg read the periods there 0.7 % long.
+      for (std::size_t i = 0; i < theta.size(); ++i) curve[i] = smooth_with(c, out.swings[i].peak_time);
+      misfits = local_misfits(theta, curve);
       auto period_with = [&](const Eigen::VectorXd& coef) {
         std::vector<double> smooth(theta.size());
         for (std::size_t i = 0; i < theta.size(); ++i) {
-          smooth[i] = smooth_with(coef, out.swings[i].peak_time);
+          smooth[i] = smooth_with(coef, out.swings[i].peak_time) + misfits[i];
           // The curve through the swings' log amplitudes can pass 180 deg
           // where the swings scatter wildly: no swinging pendulum there.
           if (!(smooth[i] < kPi)) {
@@ -1581,7 +1612,7 @@ SwingAnalysis analyse_once(const Recording& r, const std::string& file, const Sw
       };
       out.period = period_with(c);
       index_amplitudes.resize(theta.size());
-      for (std::size_t i = 0; i < theta.size(); ++i) index_amplitudes[i] = smooth_with(c, out.swings[i].peak_time);
+      for (std::size_t i = 0; i < theta.size(); ++i) index_amplitudes[i] = curve[i] + misfits[i];
       // The smooth amplitude's own uncertainty moves the index, hence the
       // period: g^T C g = sum_k (the period's change for a step of one
       // standard uncertainty along C's k-th principal axis)^2, the
@@ -1634,27 +1665,17 @@ SwingAnalysis analyse_once(const Recording& r, const std::string& file, const Sw
   // low at 91 deg read the periods there 0.7 % long, a drift that against
   // the crossings' noise alone was a release of 96 sigmas, cut pass after
   // pass (33 s of a 133 s record, the start amplitude 53 deg for 91).
-  std::vector<double> lengths, length_errors, residuals;
-  for (std::size_t k = 0; k < index_amplitudes.size(); ++k) {
-    if (std::isfinite(theta[k]) && theta[k] > 0.0) residuals.push_back(std::fabs(theta[k] - index_amplitudes[k]));
-  }
-  const double scatter = 1.4826 * median_of(residuals);  // of one swing's amplitude about the curve
+  // The misfit, which the index took up, stays in the lengths' errors: the
+  // swings' local mean is that uncertain.
+  std::vector<double> lengths, length_errors;
   for (std::size_t i = 0; i < index_amplitudes.size(); ++i) {
-    const double smooth = index_amplitudes[i];
-    lengths.push_back(1.0 + finite_amplitude_agm(smooth));
+    lengths.push_back(1.0 + finite_amplitude_agm(index_amplitudes[i]));
     if (!(out.noise > 0.0)) continue;
-    double sum = 0.0;
-    int count = 0;
-    for (std::size_t k = i > 2 ? i - 2 : 0; k < std::min(theta.size(), i + 3); ++k) {
-      if (std::isfinite(theta[k]) && theta[k] > 0.0) sum += theta[k] - index_amplitudes[k], ++count;
-    }
-    // Only a misfit beyond 3 sigmas of the swings' own scatter: the mean of
-    // a few noisy swings is no misfit, and would hide a real release.
-    const double mean = count ? sum / count : 0.0;
-    const double misfit = count && std::fabs(mean) > 3.0 * scatter / std::sqrt(count) ? mean : 0.0;
     // In the weights' unit: a crossing's time scatters by noise / sqrt(weight).
-    length_errors.push_back(std::fabs(finite_amplitude_agm(std::min(smooth + std::fabs(misfit), kPi * (1.0 - 1e-9))) -
-                                      finite_amplitude_agm(smooth)) / out.noise);
+    const double smooth = curve[i];
+    length_errors.push_back(
+        std::fabs(finite_amplitude_agm(std::min(smooth + std::fabs(misfits[i]), kPi * (1.0 - 1e-9))) -
+                  finite_amplitude_agm(smooth)) / out.noise);
   }
   out.outliers = outlier_stretches(out.crossings, index, cpp, weight, quantum, lengths, length_errors);
   out.glitches = join_glitches(out.outliers, out.crossings, out.period.value);

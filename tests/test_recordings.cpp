@@ -460,6 +460,24 @@ TEST_CASE("A swing 4.5 times its noise is timed by sine fits: the period's uncer
   CHECK(std::fabs(coverage - p) < tolerance);
 }
 
+TEST_CASE("A record mostly at rest is read by its largest excursion, not refused by its level", "[recordings]") {
+  // 10 s of a 0.2 rad swing (T = 1.8 s) and 100 s at rest, 100 Hz, 0.002 rad
+  // of Gaussian noise: the median |s| (the level past a knock) is the noise's,
+  // so the level leaves no swing; the peak, 100 noise sigmas, says there is one.
+  Recording r;
+  r.kind = SignalKind::angle;
+  NormalDeviates noise(7);
+  for (int k = 0; k < 11000; ++k) {
+    const double t = k / 100.0;
+    r.time.push_back(t);
+    r.channels.resize(1);
+    r.channels[0].push_back((t < 9.9 ? 0.2 * std::sin(2.0 * M_PI * t / 1.8) : 0.0) + 0.002 * noise.next());
+  }
+  SwingAnalysis a;
+  REQUIRE_NOTHROW(a = analyse_swings(r, "rest.csv"));
+  CHECK(a.period.value == Approx(1.8).margin(3.0 * a.period.uncertainty));
+}
+
 TEST_CASE("A decay from 94 deg that a bearing's dry friction ends: the index follows the swings where the smooth "
           "curve misses them", "[recordings]") {
   // l = 0.264 m (T0 1.03 s), released at rest from 94 deg (no hand: no

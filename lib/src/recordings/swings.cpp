@@ -1346,19 +1346,24 @@ SwingAnalysis analyse_once(const Recording& r, const std::string& file, const Sw
     out.noise = noise_sigma(sig.s);
     const Extent e = extent(sig.s);
     // The swing's amplitude from the signal's level over its noise (a sine's
-    // rms is its amplitude over sqrt 2; the noise adds in quadrature): a
-    // swing under 3 noise sigmas is none, however far a spike reaches.
+    // rms is its amplitude over sqrt 2; the noise adds in quadrature). A
+    // swing 3 noise sigmas high is one, even where no sample reaches 10; a
+    // record mostly at rest has its level near the noise, and passes by its
+    // largest excursion, as before.
     const double level = swing_level(sig.s, e.rms);
     const double swing = std::sqrt(2.0 * std::max(level * level - out.noise * out.noise, 0.0));
-    if (!(swing > 3.0 * out.noise) || e.peak == 0.0) {
-      throw InputError(file, "no oscillation: the signal's rms (" + format_number(level, 3) + ") over its noise (" +
-                                 format_number(out.noise, 3) + ", from second differences) leaves a swing of amplitude " +
-                                 format_number(swing, 2) + ", under 3 times the noise; expected a swinging pendulum");
+    const bool swinging = swing > 3.0 * out.noise;
+    if ((!swinging && !(e.peak > 10.0 * out.noise)) || e.peak == 0.0) {
+      throw InputError(file, "no oscillation: the signal's largest excursion (" + format_number(e.peak, 3) +
+                                 ") is within 10 times its noise (" + format_number(out.noise, 3) +
+                                 ", from second differences), and its level (" + format_number(level, 3) +
+                                 ", the rms or past a knock the median |s|) leaves a swing of amplitude " + format_number(swing, 2) +
+                                 ", under 3 times the noise; expected a swinging pendulum");
     }
     // Not for |a| (4 crossings a period): its bottoms and dips differ in
     // depth, and a sine through a crossing is no model of it.
-    if (swing < kNoisySwing * out.noise && sig.crossings_per_period == 2) {
-      out.notes.push_back({0, "the swing, " + format_number(swing, 3) + " (from the signal's rms), is " +
+    if (swinging && swing < kNoisySwing * out.noise && sig.crossings_per_period == 2) {
+      out.notes.push_back({0, "the swing, " + format_number(swing, 3) + " (from the signal's level over its noise), is " +
                                   format_number(swing / out.noise, 2) + " times its noise: the crossings are timed by "
                                   "sine fits over half a swing each, not by thresholds the noise crosses"});
       out.crossings = sine_fit_crossings(r.time, sig, swing, out.noise, options.hysteresis_fraction, at);

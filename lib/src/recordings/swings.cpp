@@ -676,7 +676,8 @@ std::vector<Crossing> sine_fit_crossings(const std::vector<double>& t, const Sig
     const auto hi = std::upper_bound(t.begin(), t.end(), c.time + d / 2.0);
     double ss = 0.0, cc = 0.0, sc = 0.0, ys = 0.0, yc = 0.0;
     for (auto it = lo; it != hi; ++it) {
-      const double u = w * (*it - c.time), sn = std::sin(u), cs = std::cos(u), y = sig.s[static_cast<std::size_t>(it - t.begin())];
+      const double u = w * (*it - c.time), sn = std::sin(u), cs = std::cos(u);
+      const double y = sig.s[static_cast<std::size_t>(it - t.begin())];
       ss += sn * sn, cc += cs * cs, sc += sn * cs, ys += y * sn, yc += y * cs;
     }
     const double det = ss * cc - sc * sc;
@@ -1365,15 +1366,15 @@ SwingAnalysis analyse_once(const Recording& r, const std::string& file, const Sw
       throw InputError(file, "no oscillation: the signal's largest excursion (" + format_number(e.peak, 3) +
                                  ") is within 10 times its noise (" + format_number(out.noise, 3) +
                                  ", from second differences), and its level (" + format_number(level, 3) +
-                                 ", the rms or past a knock the median |s|) leaves a swing of amplitude " + format_number(swing, 2) +
-                                 ", under 3 times the noise; expected a swinging pendulum");
+                                 ", the rms or past a knock the median |s|) leaves a swing of amplitude " +
+                                 format_number(swing, 2) + ", under 3 times the noise; expected a swinging pendulum");
     }
     // Not for |a| (4 crossings a period): its bottoms and dips differ in
     // depth, and a sine through a crossing is no model of it.
     if (swinging && swing < kNoisySwing * out.noise && sig.crossings_per_period == 2) {
-      out.notes.push_back({0, "the swing, " + format_number(swing, 3) + " (from the signal's level over its noise), is " +
-                                  format_number(swing / out.noise, 2) + " times its noise: the crossings are timed by "
-                                  "sine fits over half a swing each, not by thresholds the noise crosses"});
+      out.notes.push_back({0, "the swing, " + format_number(swing, 3) + " (from the signal's level over its noise), " +
+                                  "is " + format_number(swing / out.noise, 2) + " times its noise: the crossings are "
+                                  "timed by sine fits over half a swing each, not by thresholds the noise crosses"});
       out.crossings = sine_fit_crossings(r.time, sig, swing, out.noise, options.hysteresis_fraction, at);
     } else {
       out.crossings = find_crossings(r.time, sig, level, out.noise, options.hysteresis_fraction, at);

@@ -183,6 +183,9 @@ enum class PublishedLayout {
   slash_units,         ///< "Time/s,Angle/rad": the unit after a slash
   header_mismatch,     ///< "x y dx dy" over rows of two columns (time, angle in degrees): a header of other columns
   portuguese,          ///< "frame,tempo,x,y": a frame counter, the time in Portuguese, pixels
+  tilted_camera,       ///< "t x y" by tabs, no header, metres: Tracker's track from a camera pitched
+                       ///< 50 deg off square to the swing, whose heights show cos 50 deg of themselves
+                       ///< (the track's circle then has 1.56 times the pendulum's radius)
 };
 
 inline std::string published_csv(const SimulatedRecording& r, double length, PublishedLayout layout, double noise,
@@ -206,6 +209,7 @@ inline std::string published_csv(const SimulatedRecording& r, double length, Pub
     case PublishedLayout::header_mismatch: put("x y dx dy\n"); break;
     case PublishedLayout::portuguese: put("frame,tempo,x,y\n"); break;
     case PublishedLayout::headerless_txy:
+    case PublishedLayout::tilted_camera:
     case PublishedLayout::headerless_timer:
     case PublishedLayout::headerless_degrees:
     case PublishedLayout::headerless_radians:
@@ -234,6 +238,7 @@ inline std::string published_csv(const SimulatedRecording& r, double length, Pub
       case PublishedLayout::tracker_degrees: put("%.4f\t%.3f\n", t, (th + e1) * kDeg); break;
       case PublishedLayout::logger_pro_video: put("%.4f\t%.5f\t%.5f\n", t, x, y); break;
       case PublishedLayout::headerless_txy: put("%.4f\t%.5f\t%.5f\n", t, x, y); break;
+      case PublishedLayout::tilted_camera: put("%.4f\t%.5f\t%.5f\n", t, x, std::cos(50.0 / kDeg) * y); break;
       case PublishedLayout::spaces: put("%10.4f %14.6f\n", t, th + e1); break;
       case PublishedLayout::repeated_stamps: put("%.3f,%.6f\n", std::floor(t * 100.0) / 100.0, th + e1); break;
       case PublishedLayout::headerless_degrees: put("%.4f %.4f\n", t, (th + e1) * kDeg); break;

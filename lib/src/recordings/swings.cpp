@@ -37,6 +37,9 @@ struct Signal {
   /// Relative standard uncertainty of a scale common to every sample (a
   /// video track's circle radius); 0 where there is none.
   double scale_uncertainty = 0.0;
+  /// A video track's circle: its radius and that radius's standard
+  /// uncertainty (the track's unit); 0 where the angles are not its.
+  double radius = 0.0, radius_sigma = 0.0;
 };
 
 /// Projection on the principal axis of the mean-removed vectors: one pass
@@ -161,11 +164,33 @@ Signal track_angle(const Recording& r) {
   Signal sig = remove_mean(std::move(angle));
   // An angle about a centre off by the radius's error is off by that
   // fraction (300 simulated tracks: 0.7 % in R, 0.8 % in the amplitude).
-  sig.scale_uncertainty = std::isfinite(radius_variance) ? std::sqrt(std::max(radius_variance, 0.0)) / radius : 0.0;
+  sig.radius = radius;
+  sig.radius_sigma = std::isfinite(radius_variance) ? std::sqrt(std::max(radius_variance, 0.0)) : 0.0;
+  sig.scale_uncertainty = sig.radius_sigma / radius;
   return sig;
 }
 
-Signal make_signal(const Recording& r) {
+/// Relative standard uncertainty of a length taken as the distance from the
+/// pivot to the tracked point: the period's length is the equivalent simple
+/// pendulum's, d (1 + 2/5 (r/d)^2) for a sphere of radius r on a string d
+/// (1.6 % at r = d/5), and standard gravity is within 0.3 % of a local g.
+constexpr double kTrackLengthModel = 0.02;
+
+/// A video track's angle when its circle is not trusted: asin(u / length),
+/// u the displacement along the swing (the principal axis) from its mean,
+/// `length` in the track's unit.
+Signal displacement_angle(const Recording& r, double length) {
+  Signal sig = principal_axis(r);
+  for (double& u : sig.s) u = std::asin(std::clamp(u / length, -1.0, 1.0));
+  Signal out = remove_mean(std::move(sig.s));
+  out.axis = sig.axis;
+  out.scale_uncertainty = kTrackLengthModel;
+  return out;
+}
+
+/// `track_length` (the track's unit): a video track's angles from it
+/// instead of its circle (displacement_angle) where positive.
+Signal make_signal(const Recording& r, double track_length = 0.0) {
   switch (r.kind) {
     case SignalKind::angular_rate:
     case SignalKind::linear_acceleration: return principal_axis(r);
@@ -186,7 +211,7 @@ Signal make_signal(const Recording& r) {
       sig.has_amplitude = false;
       return sig;
     }
-    case SignalKind::position: return track_angle(r);
+    case SignalKind::position: return track_length > 0.0 ? displacement_angle(r, track_length) : track_angle(r);
     case SignalKind::gate_states:
     case SignalKind::blocking_times:
     case SignalKind::event_stamps: break;
@@ -600,6 +625,73 @@ double swing_level(const std::vector<double>& s, double rms) {
   for (std::size_t k = 0; k < s.size(); k += stride) a.push_back(std::fabs(s[k]));
   const double median = median_of(std::move(a));
   return rms > 2.0 * median ? median : rms;
+}
+
+/// The swing's amplitude below which the threshold's floor of 5 noise
+/// sigmas nears its peaks (half of them and more) and noise crosses it:
+/// crossings come from local sine fits instead (sine_fit_crossings).
+constexpr double kNoisySwing = 10.0;
+
+/// Crossings of a swing under kNoisySwing noise sigmas: found on the signal
+/// averaged over at most the fewest samples that bring the noise to a tenth
+/// of the swing (`swing`, its amplitude), then each timed by the least-squares
+/// b sin(w u) + c cos(w u), u = t - t_c, through the raw samples within half
+/// an interval of that crossing t_c, w = pi / (the median interval): its
+/// zero, t_c - atan(c / b) / w. The fit's variance of that time, 2 sigma^2 /
+/// (N R^2 w^2) for N samples of a sine of amplitude R, is a line's sigma^2 /
+/// (slope^2 n) with the slope R w and n = N / 2. The average's own crossings
+/// lag a window's asymmetry and move with its noise; the fits do not.
+std::vector<Crossing> sine_fit_crossings(const std::vector<double>& t, const Signal& sig, double swing, double noise,
+                                         double fraction, std::vector<std::size_t>& at) {
+  const std::size_t n = sig.s.size();
+  std::vector<double> prefix(n + 1, 0.0);
+  for (std::size_t k = 0; k < n; ++k) prefix[k + 1] = prefix[k] + sig.s[k];
+  // The average over m samples also shrinks the swing where m spans much of
+  // it (a sparse track, whose curvature swells the second differences'
+  // noise: 9 frames a period read 4.5 sigmas): halved down to 1, the m that
+  // finds the most crossings, each beyond 5 sigmas of the averaged noise.
+  std::vector<std::size_t> rough_at;
+  std::vector<Crossing> rough;
+  Signal averaged = sig;
+  for (auto m = static_cast<std::size_t>(std::ceil(std::pow(kNoisySwing * noise / swing, 2.0))); m >= 1; m /= 2) {
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t a = k >= m / 2 ? k - m / 2 : 0, b = std::min(n, k + (m - m / 2));
+      averaged.s[k] = (prefix[b] - prefix[a]) / static_cast<double>(b - a);
+    }
+    std::vector<std::size_t> at_m;
+    std::vector<Crossing> found =
+        find_crossings(t, averaged, swing / std::sqrt(2.0), noise / std::sqrt(static_cast<double>(m)), fraction, at_m);
+    if (found.size() > rough.size()) rough = std::move(found), rough_at = std::move(at_m);
+  }
+  if (rough.size() < 3) {
+    at = rough_at;
+    return rough;  // too few: the caller refuses the record
+  }
+  std::vector<double> intervals;
+  for (std::size_t i = 1; i < rough.size(); ++i) intervals.push_back(rough[i].time - rough[i - 1].time);
+  const double d = median_of(intervals), w = kPi / d;
+  std::vector<Crossing> out;
+  for (const Crossing& c : rough) {
+    const auto lo = std::lower_bound(t.begin(), t.end(), c.time - d / 2.0);
+    const auto hi = std::upper_bound(t.begin(), t.end(), c.time + d / 2.0);
+    double ss = 0.0, cc = 0.0, sc = 0.0, ys = 0.0, yc = 0.0;
+    for (auto it = lo; it != hi; ++it) {
+      const double u = w * (*it - c.time), sn = std::sin(u), cs = std::cos(u);
+      const double y = sig.s[static_cast<std::size_t>(it - t.begin())];
+      ss += sn * sn, cc += cs * cs, sc += sn * cs, ys += y * sn, yc += y * cs;
+    }
+    const double det = ss * cc - sc * sc;
+    if (hi - lo < 4 || !(det > 0.0)) continue;
+    const double b = (cc * ys - sc * yc) / det, a = (ss * yc - sc * ys) / det;  // sine and cosine parts
+    if (b == 0.0) continue;
+    const double shift = -std::atan(a / b) / w;
+    const double time = c.time + shift;
+    if (!out.empty() && !(time > out.back().time)) continue;
+    const int samples = std::max(2, static_cast<int>((hi - lo) / 2));
+    out.push_back({time, w * (b * std::cos(w * shift) - a * std::sin(w * shift)), samples});
+    at.push_back(static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), time) - t.begin()) - 1);
+  }
+  return out;
 }
 
 /// Half swings whose peak is no swing's (a knock on the phone, a jump of a
@@ -1211,8 +1303,33 @@ void apply_bridges(const std::vector<Bridge>& bridges, std::vector<Crossing>& c,
   }
 }
 
-SwingAnalysis analyse_record(const Recording& r, const std::string& file, const SwingOptions& options,
-                             const std::vector<Bridge>& bridges = {}) {
+/// Where the smooth amplitude `curve` (one per swing, rad) misses the
+/// swings' own amplitudes `theta`: the mean of their residuals over the 2
+/// swings on either side, where beyond 3 sigmas of the swings' scatter about
+/// the curve (the mean of a few noisy swings is no misfit, and would hide a
+/// real release), else 0. A curve of order 8 in log theta does not follow a
+/// decay from 91 deg that ends in a bearing's dry friction (linear in theta).
+std::vector<double> local_misfits(const std::vector<double>& theta, const std::vector<double>& curve) {
+  std::vector<double> residuals, out(curve.size(), 0.0);
+  for (std::size_t k = 0; k < curve.size(); ++k) {
+    if (std::isfinite(theta[k]) && theta[k] > 0.0) residuals.push_back(std::fabs(theta[k] - curve[k]));
+  }
+  const double scatter = 1.4826 * median_of(residuals);  // of one swing's amplitude about the curve
+  for (std::size_t i = 0; i < curve.size(); ++i) {
+    double sum = 0.0;
+    int count = 0;
+    for (std::size_t k = i > 2 ? i - 2 : 0; k < std::min(theta.size(), i + 3); ++k) {
+      if (std::isfinite(theta[k]) && theta[k] > 0.0) sum += theta[k] - curve[k], ++count;
+    }
+    const double mean = count ? sum / count : 0.0;
+    if (count && std::fabs(mean) > 3.0 * scatter / std::sqrt(count)) out[i] = mean;
+  }
+  return out;
+}
+
+/// `track_length`: as make_signal's.
+SwingAnalysis analyse_once(const Recording& r, const std::string& file, const SwingOptions& options,
+                           const std::vector<Bridge>& bridges, double track_length) {
   // The clock's resolution (step 6): the reader's quantum where stamps
   // repeat; for events (stamps, gate changes), also the decimals the file
   // printed its times with. Not for samples: a regular clock printed to its
@@ -1232,16 +1349,36 @@ SwingAnalysis analyse_record(const Recording& r, const std::string& file, const 
     if (r.time.size() < 16) {
       throw InputError(file, std::to_string(r.time.size()) + " samples; expected a recording of several swings");
     }
-    sig = make_signal(r);
+    sig = make_signal(r, track_length);
     out.axis = sig.axis;
     out.crossings_per_period = sig.crossings_per_period;
     out.noise = noise_sigma(sig.s);
     const Extent e = extent(sig.s);
-    if (!(e.peak > 10.0 * out.noise) || e.peak == 0.0) {
-      throw InputError(file, "no oscillation: the signal's largest excursion is " + std::to_string(e.peak) +
-                                 ", within 10 times its noise (" + std::to_string(out.noise) + ")");
+    // The swing's amplitude from the signal's level over its noise (a sine's
+    // rms is its amplitude over sqrt 2; the noise adds in quadrature). A
+    // swing 3 noise sigmas high is one, even where no sample reaches 10; a
+    // record mostly at rest has its level near the noise, and passes by its
+    // largest excursion, as before.
+    const double level = swing_level(sig.s, e.rms);
+    const double swing = std::sqrt(2.0 * std::max(level * level - out.noise * out.noise, 0.0));
+    const bool swinging = swing > 3.0 * out.noise;
+    if ((!swinging && !(e.peak > 10.0 * out.noise)) || e.peak == 0.0) {
+      throw InputError(file, "no oscillation: the signal's largest excursion (" + format_number(e.peak, 3) +
+                                 ") is within 10 times its noise (" + format_number(out.noise, 3) +
+                                 ", from second differences), and its level (" + format_number(level, 3) +
+                                 ", the rms or past a knock the median |s|) leaves a swing of amplitude " +
+                                 format_number(swing, 2) + ", under 3 times the noise; expected a swinging pendulum");
     }
-    out.crossings = find_crossings(r.time, sig, swing_level(sig.s, e.rms), out.noise, options.hysteresis_fraction, at);
+    // Not for |a| (4 crossings a period): its bottoms and dips differ in
+    // depth, and a sine through a crossing is no model of it.
+    if (swinging && swing < kNoisySwing * out.noise && sig.crossings_per_period == 2) {
+      out.notes.push_back({0, "the swing, " + format_number(swing, 3) + " (from the signal's level over its noise), " +
+                                  "is " + format_number(swing / out.noise, 2) + " times its noise: the crossings are "
+                                  "timed by sine fits over half a swing each, not by thresholds the noise crosses"});
+      out.crossings = sine_fit_crossings(r.time, sig, swing, out.noise, options.hysteresis_fraction, at);
+    } else {
+      out.crossings = find_crossings(r.time, sig, level, out.noise, options.hysteresis_fraction, at);
+    }
   }
   apply_bridges(bridges, out.crossings, at, durations, out.notes);
   const int cpp = out.crossings_per_period;
@@ -1391,6 +1528,8 @@ SwingAnalysis analyse_record(const Recording& r, const std::string& file, const 
   }
   out.start_amplitude = out.end_amplitude = out.start_amplitude_uncertainty = kNaN;
   std::vector<double> index_amplitudes;  // the smooth amplitude the period's index took, one per swing
+  // The smooth curve at each swing, and where it misses them (local_misfits).
+  std::vector<double> curve(theta.size(), kNaN), misfits(theta.size(), 0.0);
   if (tk.size() >= 8 && tk.size() * 2 >= theta.size() / (cpp / 2)) {
     const double mid = (tk.front() + tk.back()) / 2.0, half = (tk.back() - tk.front()) / 2.0;
     const Eigen::Map<const Eigen::VectorXd> y(lk.data(), lk.size());
@@ -1466,10 +1605,15 @@ SwingAnalysis analyse_record(const Recording& r, const std::string& file, const 
     const Eigen::MatrixXd cov = inverse * (a.transpose() * r2.asDiagonal() * a) * inverse * averaged;
     auto smooth_at = [&](double t) { return smooth_with(c, t); };
     if (indexed) {
+      // The index takes the curve where it follows the swings and, where it
+      // misses them beyond their scatter, the swings' local mean: a curve 2 %
+      // low at 91 deg read the periods there 0.7 % long.
+      for (std::size_t i = 0; i < theta.size(); ++i) curve[i] = smooth_with(c, out.swings[i].peak_time);
+      misfits = local_misfits(theta, curve);
       auto period_with = [&](const Eigen::VectorXd& coef) {
         std::vector<double> smooth(theta.size());
         for (std::size_t i = 0; i < theta.size(); ++i) {
-          smooth[i] = smooth_with(coef, out.swings[i].peak_time);
+          smooth[i] = smooth_with(coef, out.swings[i].peak_time) + misfits[i];
           // The curve through the swings' log amplitudes can pass 180 deg
           // where the swings scatter wildly: no swinging pendulum there.
           if (!(smooth[i] < kPi)) {
@@ -1482,7 +1626,7 @@ SwingAnalysis analyse_record(const Recording& r, const std::string& file, const 
       };
       out.period = period_with(c);
       index_amplitudes.resize(theta.size());
-      for (std::size_t i = 0; i < theta.size(); ++i) index_amplitudes[i] = smooth_with(c, out.swings[i].peak_time);
+      for (std::size_t i = 0; i < theta.size(); ++i) index_amplitudes[i] = curve[i] + misfits[i];
       // The smooth amplitude's own uncertainty moves the index, hence the
       // period: g^T C g = sum_k (the period's change for a step of one
       // standard uncertainty along C's k-th principal axis)^2, the
@@ -1535,27 +1679,17 @@ SwingAnalysis analyse_record(const Recording& r, const std::string& file, const 
   // low at 91 deg read the periods there 0.7 % long, a drift that against
   // the crossings' noise alone was a release of 96 sigmas, cut pass after
   // pass (33 s of a 133 s record, the start amplitude 53 deg for 91).
-  std::vector<double> lengths, length_errors, residuals;
-  for (std::size_t k = 0; k < index_amplitudes.size(); ++k) {
-    if (std::isfinite(theta[k]) && theta[k] > 0.0) residuals.push_back(std::fabs(theta[k] - index_amplitudes[k]));
-  }
-  const double scatter = 1.4826 * median_of(residuals);  // of one swing's amplitude about the curve
+  // The misfit, which the index took up, stays in the lengths' errors: the
+  // swings' local mean is that uncertain.
+  std::vector<double> lengths, length_errors;
   for (std::size_t i = 0; i < index_amplitudes.size(); ++i) {
-    const double smooth = index_amplitudes[i];
-    lengths.push_back(1.0 + finite_amplitude_agm(smooth));
+    lengths.push_back(1.0 + finite_amplitude_agm(index_amplitudes[i]));
     if (!(out.noise > 0.0)) continue;
-    double sum = 0.0;
-    int count = 0;
-    for (std::size_t k = i > 2 ? i - 2 : 0; k < std::min(theta.size(), i + 3); ++k) {
-      if (std::isfinite(theta[k]) && theta[k] > 0.0) sum += theta[k] - index_amplitudes[k], ++count;
-    }
-    // Only a misfit beyond 3 sigmas of the swings' own scatter: the mean of
-    // a few noisy swings is no misfit, and would hide a real release.
-    const double mean = count ? sum / count : 0.0;
-    const double misfit = count && std::fabs(mean) > 3.0 * scatter / std::sqrt(count) ? mean : 0.0;
     // In the weights' unit: a crossing's time scatters by noise / sqrt(weight).
-    length_errors.push_back(std::fabs(finite_amplitude_agm(std::min(smooth + std::fabs(misfit), kPi * (1.0 - 1e-9))) -
-                                      finite_amplitude_agm(smooth)) / out.noise);
+    const double smooth = curve[i];
+    length_errors.push_back(
+        std::fabs(finite_amplitude_agm(std::min(smooth + std::fabs(misfits[i]), kPi * (1.0 - 1e-9))) -
+                  finite_amplitude_agm(smooth)) / out.noise);
   }
   out.outliers = outlier_stretches(out.crossings, index, cpp, weight, quantum, lengths, length_errors);
   out.glitches = join_glitches(out.outliers, out.crossings, out.period.value);
@@ -1603,6 +1737,79 @@ SwingAnalysis analyse_record(const Recording& r, const std::string& file, const 
     p.amplitude = count ? sum / count : kNaN;
     out.period_curve.push_back(p);
   }
+  return out;
+}
+
+/// A circle whose radius is known to worse than this fraction makes every
+/// angle that uncertain, five times the pendulum's length's own (kTrackLengthModel).
+constexpr double kLooseRadius = 0.1;
+
+/// Metres per unit of a video track's x and y: by the x column's unit (m,
+/// cm, mm); where none is stated, metres when the circle's `radius` read in
+/// metres is within sqrt(10) of `length` (m), halfway on a log scale to the
+/// next unit (Tracker exports metres). 0 for pixels, or where the numbers
+/// cannot tell.
+double metres_per_track_unit(const Recording& r, double radius, double length) {
+  for (const RecordingColumn& c : r.columns) {
+    if (c.role != "x") continue;
+    if (c.unit == "m") return 1.0;
+    if (c.unit == "cm") return 0.01;
+    if (c.unit == "mm") return 0.001;
+    if (!c.unit.empty()) return 0.0;
+  }
+  return std::fabs(std::log10(radius / length)) < 0.5 ? 1.0 : 0.0;
+}
+
+/// The length (m) of the simple pendulum of the small-amplitude period the
+/// swings give, with standard gravity.
+double period_length(const SwingAnalysis& a) {
+  double sum = 0.0;
+  int count = 0;
+  for (const RecordedSwing& w : a.swings) {
+    if (std::isfinite(w.amplitude) && w.amplitude > 0.0) sum += finite_amplitude_agm(w.amplitude), ++count;
+  }
+  const double t0 = a.period.value / (1.0 + (count ? sum / count : 0.0));
+  return kStandardGravity * t0 * t0 / (4.0 * kPi * kPi);
+}
+
+/// Steps 1 to 7 on all of `r`, a video track's angles checked: its circle
+/// gives them only where its radius is determined (kLooseRadius) and agrees
+/// with the pendulum's length (`--length-m`, else the period's) within 3
+/// sigmas of both; else they are asin(x / length), x the displacement along
+/// the swing, the period's length solved with them, and a note says why.
+SwingAnalysis analyse_record(const Recording& r, const std::string& file, const SwingOptions& options,
+                             const std::vector<Bridge>& bridges = {}) {
+  SwingAnalysis out = analyse_once(r, file, options, bridges, 0.0);
+  if (r.kind != SignalKind::position || !std::isfinite(out.start_amplitude)) return out;
+  const Signal circle = track_angle(r);
+  double length = options.length ? *options.length : period_length(out);
+  const double metres = metres_per_track_unit(r, circle.radius, length);
+  if (!(metres > 0.0)) return out;
+  const double radius = circle.radius * metres, sigma = circle.radius_sigma * metres;
+  const double apart = std::fabs(radius - length) / std::hypot(sigma, kTrackLengthModel * length);
+  const bool loose = sigma > kLooseRadius * radius;
+  if (!(apart > 3.0) && !loose) return out;
+  const double circle_start = out.start_amplitude;
+  double used = length;
+  for (int pass = 0; pass < 4; ++pass) {  // the period's length moves with the amplitudes it corrects for
+    used = length;
+    out = analyse_once(r, file, options, bridges, used / metres);
+    if (options.length) break;
+    length = period_length(out);
+    if (std::fabs(length - used) <= 1e-4 * used) break;
+  }
+  const std::string source = options.length ? "the stated length (--length-m)"
+                                            : "the length the small-amplitude period gives with standard gravity";
+  out.notes.push_back(
+      {0, "the track's circle has a radius of " + format_number(radius, 3) + " +- " + format_number(sigma, 2) + " m" +
+              (loose ? ", too uncertain to scale the angles"
+                     : ", " + format_number(apart, 2) + " sigmas from " + source + ", " + format_number(used, 4) +
+                           " m (the tracked point's distance from the pivot taken within " +
+                           format_number(100.0 * kTrackLengthModel, 2) + " %)") +
+              ": a camera not square to the swing or a poor track of the height bends it; the angles are asin(x / " +
+              format_number(used, 4) + " m), x the displacement along the swing from its mean, instead of the "
+              "circle's (start " + format_number(degrees(circle_start), 4) + " deg)" +
+              (options.length ? "" : "; --length-m gives the pivot to the tracked point")});
   return out;
 }
 

@@ -130,7 +130,8 @@ void add_recording_options(CLI::App& cmd, SwingOptions& options, std::string& se
                  "Photogates: the bob's width across the beam (m), for the amplitudes")
       ->check(in_range(ranges::bob_width));
   cmd.add_option("--length-m", options.length,
-                 "Photogates: pivot to bob centre (m); without it the amplitudes take g as standard gravity")
+                 "Pivot to bob centre (m). Photogates: without it the amplitudes take g as standard gravity; "
+                 "a video track: its circle gives the angles only within 3 sigma of it (else of the period's length)")
       ->check(in_range(ranges::length));
   cmd.add_option_function<std::string>(
          "--range",

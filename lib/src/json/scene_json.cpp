@@ -159,8 +159,9 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
   } else {
     read_timing(o, prefix, v, u, source, out);
   }
-  // The setting is the one whose key the observation has (kSettingInfo), the length where none is there.
-  v.setting = Setting::length;
+  // The setting is the one whose key the observation has (kSettingInfo); where none is there, the
+  // kind's first: the ball's length, or the named or earlier observations' kind's (a pivot distance).
+  v.setting = visit_period_model(out.model, [](auto model) { return decltype(model)::kSettings.front(); });
   for (const SettingInfo& setting : kSettingInfo) {
     if (!o.has(setting.key) || setting.setting == v.setting) continue;
     PENDULUM_FAIL_IF(o.has(setting_key(v.setting)), prefix + setting.key,
@@ -597,6 +598,7 @@ ParsedScene parse_scene(const std::string& text, const SceneFiles& files) {
   Object top(doc, "", "a JSON object (the scene)");
   read_header(top, out);
   const std::optional<PeriodModelKind> named = top.has("kind") ? std::optional(kind_named(top)) : std::nullopt;
+  if (named) out.model = *named;
   (void)top.has("import");  // import's report of a table's columns (docs/series.md): free-form, not read
 
   if (top.has("observations")) {

@@ -281,6 +281,10 @@ TEST_CASE("Feinstein (2005) Table 1: every row and column", "[clock][feinstein]"
   };
   const double l_cm = 99.3961, g_cm = 981.0;
   CHECK_THAT(length_for_period(2.0, g_cm), WithinAbs(l_cm, 0.5e-4));  // Eq. (B-1)
+  // The same relation solved for g, and read off the textbook line's slope T^2/l: l's half unit
+  // in its last digit, 0.5e-4 cm, is 0.5e-3 cm/s^2 of g.
+  CHECK_THAT(gravity_for_period(l_cm, 2.0), WithinAbs(g_cm, 0.5e-3));
+  CHECK_THAT(gravity_for_slope(2.0 * 2.0 / l_cm), WithinAbs(g_cm, 0.5e-3));
   const double error_1 = circular_error(kArcminute), rate_1 = circular_error_rate(kArcminute);
   for (const Row& r : table) {
     const double theta0 = r.minutes * kArcminute;

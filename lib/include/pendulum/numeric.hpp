@@ -63,6 +63,14 @@ T gravity_for_period(const T& l, const T& period) {
   return 4.0 * kPi * kPi * l / (period * period);
 }
 
+/// g = 4 pi^2 / s (m/s^2) from the slope s (s^2/m) of T^2 against l, the
+/// textbook line T^2 = (4 pi^2/g) l (Eq. 3 squared); read backwards, the
+/// slope (s^2/m) for a g (m/s^2).
+template <class T>
+T gravity_for_slope(const T& slope) {
+  return 4.0 * kPi * kPi / slope;
+}
+
 /// l = p^2 g / (4 pi^2) (m): the length of the ideal pendulum of period p
 /// (s) in gravity g (m/s^2). Feinstein (2005) Eq. (B-1).
 template <class T>

@@ -81,7 +81,7 @@ std::array<double, 3> physical_start(const ParsedScene& scene, const std::array<
   }
   double ssr;
   const StraightLine line = line_through(center, ssr);
-  p[M::g] = 4.0 * kPi * kPi / line.slope;
+  p[M::g] = gravity_for_slope(line.slope);
   if (known_k) {
     p[M::radius_of_gyration] = *body->radius_of_gyration;  // held: what the model takes (PhysicalPendulum::gyration)
   } else if (line.intercept > 0.0) {
@@ -116,7 +116,7 @@ PivotScan::Textbook pivot_textbook(const ParsedScene& scene, const std::array<bo
   }
   double sxx = 0.0;
   for (double xi : x) sxx += (xi - mean) * (xi - mean);
-  const double a = 4.0 * kPi * kPi / t[M::g];
+  const double a = gravity_for_slope(t[M::g]);  // the slope of T^2 h against h^2 at g
   double variance = 0.0;
   for (std::size_t i = 0; i < obs.size(); ++i) {
     const double c = (x[i] - mean) / sxx, T = obs[i].period;

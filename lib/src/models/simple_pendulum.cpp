@@ -66,7 +66,7 @@ std::optional<TextbookFit> textbook_fit(const FitState<SimplePendulum::kParamete
     return std::nullopt;
   }
   const StraightLine line = textbook_line(fit.scene, fit.fitted);
-  const double g = 4.0 * kPi * kPi / line.slope, sigma = g * std::sqrt(line.var_slope) / line.slope;
+  const double g = gravity_for_slope(line.slope), sigma = g * std::sqrt(line.var_slope) / line.slope;
   if (!(g > 0.0 && std::isfinite(g) && std::isfinite(sigma))) return std::nullopt;
   TextbookFit t{{g, sigma}, {}};
   if (!fit.fitted[SimplePendulum::length_offset]) return t;
@@ -104,7 +104,7 @@ std::array<double, SimplePendulum::kParameters> SimplePendulum::start(const Pars
     x[k] = scene.observations[k].length;
     y[k] = scene.observations[k].period * scene.observations[k].period;
   }
-  p[g] = 4.0 * kPi * kPi / fit_straight_line(x, y, zero, zero, false).slope;
+  p[g] = gravity_for_slope(fit_straight_line(x, y, zero, zero, false).slope);
   return p;
 }
 

@@ -307,7 +307,7 @@ std::optional<Figure> series_figure(const SceneReport& r, const std::string& id)
   std::string textbook_words = "no textbook straight line (the lengths do not determine one)";
   if (s.textbook_g) {
     const double g = *s.textbook_g;
-    auto line = [&](double x) { return 4.0 * kPi * kPi * (x + s.textbook_length_offset) / g; };
+    auto line = [&](double x) { return gravity_for_slope(g) * (x + s.textbook_length_offset); };  // T^2 = (4 pi^2/g) L
     Curve textbook;
     textbook.name = "textbook T\u00B2 = 4\u03C0\u00B2(L + L\u2080)/g, g = " + format_fixed(g, 4) + " m/s\u00B2";
     textbook.x = {0.0, longest};

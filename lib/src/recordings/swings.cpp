@@ -1769,7 +1769,7 @@ double period_length(const SwingAnalysis& a) {
     if (std::isfinite(w.amplitude) && w.amplitude > 0.0) sum += finite_amplitude_agm(w.amplitude), ++count;
   }
   const double t0 = a.period.value / (1.0 + (count ? sum / count : 0.0));
-  return length_for_period(t0, kStandardGravity);
+  return kStandardGravity * t0 * t0 / (4.0 * kPi * kPi);  // length_for_period rounds otherwise: stored outputs keep these bits
 }
 
 /// Steps 1 to 7 on all of `r`, a video track's angles checked: its circle

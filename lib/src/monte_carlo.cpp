@@ -18,6 +18,7 @@
 #include "pendulum/analysis.hpp"
 #include "pendulum/models/registry.hpp"
 #include "pendulum/numeric.hpp"
+#include "pendulum/period_model.hpp"
 #include "pendulum/reduction.hpp"
 
 namespace pendulum {
@@ -162,7 +163,7 @@ class Refit {
       Matrix h = Matrix::Zero();
       Vector b = Vector::Zero();
       for (std::size_t k = 0; k < obs.size(); ++k) {
-        const Jet t = Model::predict(pj.data(), obs_jet[k], app_jet, amplitude[k]).period;
+        const Jet t = prediction_period<Model>(pj.data(), obs_jet[k], app_jet, amplitude[k]);
         const Vector j = t.v * weights_[k];
         h += j * j.transpose();
         b += j * ((t.a - obs[k].period) * weights_[k]);

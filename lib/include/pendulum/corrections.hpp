@@ -427,11 +427,11 @@ Composition<T> compose(const Terms<T>& terms) {
   return compose_rows<T>([&](int i) { return terms[i].ratio ? &*terms[i].ratio : nullptr; });
 }
 
-/// compose(correction_terms(app, s, amplitude)) bit for bit (the same sum
-/// in the table's order, not compose()'s in the visit's), without building
+/// compose(rows_of<T>(visit, ...)) bit for bit (the same sum in the
+/// table's order, not composition_of()'s in the visit's), without building
 /// the rows: their copies were most of a Monte Carlo draw's closed form.
-template <class T>
-Composition<T> compose_in_table_order(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
+template <class T, class Visit>
+Composition<T> composition_in_table_order_of(const Visit& visit) {
   struct Ratios {
     std::array<T, kCorrectionCount> value;
     std::array<bool, kCorrectionCount> applied{};
@@ -441,8 +441,14 @@ Composition<T> compose_in_table_order(const Apparatus<T>& app, const Swing<T>& s
     }
     void skip(std::initializer_list<CorrectionId>, const char*) {}
   } ratios;
-  visit_corrections(app, s, amplitude, ratios);
+  visit(ratios);
   return compose_rows<T>([&](int i) { return ratios.applied[i] ? &ratios.value[i] : nullptr; });
+}
+
+/// compose(correction_terms(app, s, amplitude)) bit for bit, without the rows.
+template <class T>
+Composition<T> compose_in_table_order(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
+  return composition_in_table_order_of<T>([&](auto& sink) { visit_corrections(app, s, amplitude, sink); });
 }
 
 }  // namespace pendulum

@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <random>
 #include <string_view>
+#include <utility>
 
 #include <Eigen/Dense>
 #include <ceres/jet.h>
@@ -16,6 +19,7 @@
 #include "pendulum/interrupt.hpp"
 #include "pendulum/models/registry.hpp"
 #include "pendulum/numeric.hpp"
+#include "pendulum/period_model.hpp"
 #include "pendulum/reduction.hpp"
 
 namespace pendulum {
@@ -49,8 +53,8 @@ struct Drawn {
   std::string path;
   double sigma;
   InputEvaluation evaluation;
-  /// (owner, ordinal): owner 0 the apparatus, k + 1 observation k.
-  std::vector<std::pair<std::size_t, int>> slots;
+  /// Its places among the scene's scalars (the apparatus's, then each observation's).
+  std::vector<int> slots;
   int partner = -1;  ///< a correlated input's index, drawn jointly
   double correlation = 0.0;
 };
@@ -98,6 +102,14 @@ class Deviates {
   bool has_spare_ = false;
 };
 
+/// The exact amplitude method at theta0 (rad), refused outside its domain
+/// as choose_amplitude_method refuses it; without its error bound, which
+/// g does not read and which costs a second AGM a draw.
+AmplitudeChoice exact_amplitude(double theta0) {
+  detail::require_amplitude(theta0, ranges::amplitude);
+  return {AmplitudeMethod::agm, ReductionOptions{}.series_terms, 0.0};
+}
+
 /// One draw's g, or why it gives none.
 struct Outcome {
   double g = 0.0;
@@ -126,10 +138,8 @@ class Refit {
   }
 
   Outcome g(const Apparatus<double>& app, const std::vector<Observation<double>>& obs) const {
-    ReductionOptions exact;
-    exact.amplitude_method = AmplitudeMethod::agm;
     if (closed_form_) {
-      const double g = Model::solve_g(Model::kDefaults.data(), obs[0], app, choose_amplitude_method(exact, obs[0].amplitude));
+      const double g = Model::solve_g(Model::kDefaults.data(), obs[0], app, exact_amplitude(obs[0].amplitude));
       if (!std::isfinite(g)) return {g, Rejection::outside_domain};
       return g > 0.0 ? Outcome{g, std::nullopt} : Outcome{g, Rejection::g_not_positive};
     }
@@ -138,7 +148,7 @@ class Refit {
     std::vector<AmplitudeChoice> amplitude;
     for (const auto& o : obs) {
       obs_jet.push_back(convert_observation<Jet>(o, [](const Field&, double x) { return Jet(x); }));
-      amplitude.push_back(choose_amplitude_method(exact, o.amplitude));
+      amplitude.push_back(exact_amplitude(o.amplitude));
     }
     std::array<double, P> p = start_;
     using Matrix = Eigen::Matrix<double, P, P>;
@@ -154,7 +164,7 @@ class Refit {
       Matrix h = Matrix::Zero();
       Vector b = Vector::Zero();
       for (std::size_t k = 0; k < obs.size(); ++k) {
-        const Jet t = Model::predict(pj.data(), obs_jet[k], app_jet, amplitude[k]).period;
+        const Jet t = prediction_period<Model>(pj.data(), obs_jet[k], app_jet, amplitude[k]);
         const Vector j = t.v * weights_[k];
         h += j * j.transpose();
         b += j * ((t.a - obs[k].period) * weights_[k]);
@@ -191,24 +201,36 @@ struct Draws {
   std::array<long, kRejectionKinds> rejected{};
 };
 
+/// A draw's scene: the scene's apparatus and observations, their drawn
+/// scalars written in place, in the sampler's order (the apparatus's, then
+/// each observation's).
+struct DrawnScene {
+  Apparatus<double> apparatus;
+  std::vector<Observation<double>> observations;
+};
+
 class Sampler {
  public:
   Sampler(const ParsedScene& scene, const Analysis& analysis) : scene_(scene), analysis_(analysis) {
-    int ordinal = 0;
-    zip_apparatus(scene.apparatus, scene.apparatus_uncertainty, [&](const Field& f, const double&, const double& u) {
-      add(field_path(f), u, {0, ordinal++});
+    int at = 0;  // a scalar's place in the order
+    zip_apparatus(scene.apparatus, scene.apparatus_uncertainty, [&](const Field& f, const double& x, const double& u) {
+      values_.push_back(x);
+      add(field_path(f), u, at++);
     });
-    shift_sizes_.push_back(ordinal);
+    // The shape before a body's parts give it anything (derive_from_parts): each draw derives it again.
+    zip_apparatus(scene.apparatus, shape_.apparatus, [](const Field&, const double& x, double& y) { y = x; });
     for (std::size_t k = 0; k < scene.observations.size(); ++k) {
       const ObservationSource& source = scene.sources[k];
-      ordinal = 0;
       zip_observation(scene.observations[k], scene.observation_uncertainties[k],
-                      [&](const Field& f, const double&, const double& u) {
-                        if (f.role == FieldRole::period) period_at_.push_back({ordinal, u > 0.0});
-                        if (f.role == FieldRole::length && analysis.fit.length_scatter) length_slots_.push_back({k + 1, ordinal});
-                        add(source.path_of(f.path), u, {k + 1, ordinal++});
+                      [&](const Field& f, const double& x, const double& u) {
+                        if (f.role == FieldRole::period) period_at_.push_back({at, u > 0.0});
+                        if (f.role == FieldRole::length && analysis.fit.length_scatter) length_slots_.push_back(at);
+                        if (std::string_view(f.path) == "amplitude") amplitudes_.push_back(at);
+                        values_.push_back(x);
+                        add(source.path_of(f.path), u, at++);
                       });
-      shift_sizes_.push_back(ordinal);
+      shape_.observations.push_back(
+          convert_observation<double>(scene.observations[k], [](const Field&, double x) { return x; }));
     }
     for (const auto& c : scene.input_covariances) {
       const int a = find(c.first), b = find(c.second);
@@ -237,14 +259,20 @@ class Sampler {
 
   /// `count` values of g, each input but those `held` drawn.
   Draws draw(long count, Deviates& deviates, const std::vector<std::string>& held = {}) const {
-    std::vector<std::vector<double>> shift;
-    for (int n : shift_sizes_) shift.emplace_back(n, 0.0);
+    std::vector<double> shift(values_.size(), 0.0);
     std::vector<double> z(inputs_.size());
-    std::vector<bool> is_held(inputs_.size());
+    std::vector<char> is_held(inputs_.size());
     for (std::size_t i = 0; i < inputs_.size(); ++i) {
       is_held[i] = std::find(held.begin(), held.end(), inputs_[i].path) != held.end();
     }
-    std::vector<Observation<double>> observations;  // each draw's, its storage kept
+    DrawnScene drawn = shape_;
+    std::vector<double*> scalars;  // drawn's, in the order of values_
+    zip_apparatus(scene_.apparatus, drawn.apparatus,
+                  [&](const Field&, const double&, double& y) { scalars.push_back(&y); });
+    for (std::size_t k = 0; k < scene_.observations.size(); ++k) {
+      zip_observation(scene_.observations[k], drawn.observations[k],
+                      [&](const Field&, const double&, double& y) { scalars.push_back(&y); });
+    }
     Draws out;
     out.g.reserve(count);
     visit_period_model(scene_.model, [&](auto model) {
@@ -266,11 +294,12 @@ class Sampler {
                                           : deviates.draw(in.evaluation);
           }
           const double value = is_held[i] ? 0.0 : in.sigma * z[i];
-          for (const auto& [owner, at] : in.slots) shift[owner][at] = value;
+          for (const int at : in.slots) shift[at] = value;
         }
         add_excess_scatter(deviates, shift);
         draw_length_scatter(shift, deviates);
-        const Outcome g = g_of(refit, shift, observations);
+        set_scalars(shift, scalars, drawn);
+        const Outcome g = g_of(refit, drawn);
         if (g.rejected) {
           ++out.rejected[static_cast<int>(*g.rejected)];
         } else {
@@ -286,28 +315,28 @@ class Sampler {
   /// was fitted instead of a Birge ratio: each length, stated without
   /// uncertainty, moved by tau times one normal deviate, tau itself t-scaled
   /// with the fit's dof.
-  void draw_length_scatter(std::vector<std::vector<double>>& shift, Deviates& deviates) const {
+  void draw_length_scatter(std::vector<double>& shift, Deviates& deviates) const {
     if (length_slots_.empty()) return;
     const double tau = *analysis_.fit.length_scatter * deviates.t_scale(analysis_.fit.dof);
-    for (const auto& [owner, at] : length_slots_) shift[owner][at] = tau * deviates.normal();
+    for (const int at : length_slots_) shift[at] = tau * deviates.normal();
   }
 
-  void add(std::string path, double sigma, std::pair<std::size_t, int> slot) {
+  void add(std::string path, double sigma, int at) {
     if (!(sigma > 0.0)) return;
     const int known = find(path);
-    if (known >= 0) return inputs_[known].slots.push_back(slot);
+    if (known >= 0) return inputs_[known].slots.push_back(at);
     InputEvaluation evaluation = evaluation_of(scene_.evaluations, path);
-    inputs_.push_back({std::move(path), sigma, std::move(evaluation), {slot}});
+    inputs_.push_back({std::move(path), sigma, std::move(evaluation), {at}});
   }
 
   /// The Birge ratio's excess added to each period's drawn shift: one
   /// chi-square draw for all of them (one variance, estimated once).
-  void add_excess_scatter(Deviates& deviates, std::vector<std::vector<double>>& shift) const {
+  void add_excess_scatter(Deviates& deviates, std::vector<double>& shift) const {
     if (excess_.empty()) return;
     const double scale = deviates.t_scale(excess_dof_);
     for (std::size_t k = 0; k < excess_.size(); ++k) {
       const auto [at, drawn] = period_at_[k];  // a period without an uncertainty is no input: its shift is this alone
-      shift[k + 1][at] = (drawn ? shift[k + 1][at] : 0.0) + excess_[k] * scale * deviates.normal();
+      shift[at] = (drawn ? shift[at] : 0.0) + excess_[k] * scale * deviates.normal();
     }
   }
   int find(const std::string& path) const {
@@ -317,30 +346,32 @@ class Sampler {
     return -1;
   }
 
-  /// g of the scene with its scalars shifted, through every correction with
-  /// the exact amplitude factor; a length to the bob's top or bottom moves
-  /// with the bob's drawn size, as the budget's does (analysis.cpp).
-  template <class Model>
-  Outcome g_of(const Refit<Model>& refit, const std::vector<std::vector<double>>& shift,
-              std::vector<Observation<double>>& obs) const {
-    int at = 0;
-    const Apparatus<double> app =
-        convert_apparatus<double>(scene_.apparatus, [&](const Field&, double x) { return x + shift[0][at++]; });
-    obs.clear();
-    for (std::size_t k = 0; k < scene_.observations.size(); ++k) {
-      at = 0;
-      // An amplitude drawn below zero is the same swing to the other side.
-      Observation<double> o = convert_observation<double>(scene_.observations[k], [&](const Field& f, double x) {
-        const double drawn = x + shift[k + 1][at++];
-        return std::string_view(f.path) == "amplitude" ? std::abs(drawn) : drawn;
-      });
+  /// The scene's scalars shifted, written into `drawn` through `scalars`; a
+  /// body's shape restored first, and what its drawn parts give derived
+  /// again; a length to the bob's top or bottom moves with the bob's drawn
+  /// size, as the budget's does (analysis.cpp).
+  void set_scalars(const std::vector<double>& shift, const std::vector<double*>& scalars, DrawnScene& drawn) const {
+    Apparatus<double>& app = drawn.apparatus;
+    if (app.body) *app.body = *shape_.apparatus.body;  // its parts' sizes unchanged: no scalar moves
+    for (std::size_t at = 0; at < values_.size(); ++at) *scalars[at] = values_[at] + shift[at];
+    // An amplitude drawn below zero is the same swing to the other side.
+    for (const int at : amplitudes_) *scalars[at] = std::abs(*scalars[at]);
+    if (app.body) derive_from_parts(*app.body);
+    for (std::size_t k = 0; k < drawn.observations.size(); ++k) {
       const double sign = scene_.sources[k].knot_to_center_sign;
-      if (sign != 0.0 && app.bob) o.length += sign * (app.bob->knot_to_center() - scene_.apparatus.bob->knot_to_center());
-      obs.push_back(std::move(o));
+      if (sign != 0.0 && app.bob) {
+        drawn.observations[k].length += sign * (app.bob->knot_to_center() - scene_.apparatus.bob->knot_to_center());
+      }
     }
+  }
+
+  /// g of the drawn scene, through every correction with the exact
+  /// amplitude factor.
+  template <class Model>
+  Outcome g_of(const Refit<Model>& refit, const DrawnScene& drawn) const {
     // A draw the model cannot reach (an angle past 180 deg) gives no g.
     try {
-      return refit.g(app, obs);
+      return refit.g(drawn.apparatus, drawn.observations);
     } catch (const std::domain_error&) {
       return {std::numeric_limits<double>::quiet_NaN(), Rejection::outside_domain};
     }
@@ -349,14 +380,16 @@ class Sampler {
   const ParsedScene& scene_;
   const Analysis& analysis_;
   std::vector<Drawn> inputs_;
-  std::vector<int> shift_sizes_;  ///< the apparatus's scalars, then each observation's
-  /// Each observation's period: its place among its scalars, and whether it is drawn as an input.
+  std::vector<double> values_;  ///< the scene's scalars: the apparatus's, then each observation's
+  std::vector<int> amplitudes_;  ///< the observations' amplitudes among them
+  DrawnScene shape_;  ///< the scene with no body's parts derived: where each draw's starts
+  /// Each observation's period: its place among the scalars, and whether it is drawn as an input.
   std::vector<std::pair<int, bool>> period_at_;
   /// Each period's excess scatter sqrt(S^2 - 1)/w_k (s), and its dof; none unscaled.
   std::vector<double> excess_;
   double excess_dof_ = 0.0;
   double pooled_dof_ = 0.0;  ///< of the pooled periods' one variance; 0 where none is pooled
-  std::vector<std::pair<std::size_t, int>> length_slots_;  ///< where the lengths' scatter was fitted
+  std::vector<int> length_slots_;  ///< where the lengths' scatter was fitted
 };
 
 /// delta of S1 7.9.2: u = c 10^l with c of two digits, delta = 10^l / 2.
@@ -366,8 +399,39 @@ struct Summary {
   double mean, deviation, low, high;
 };
 
+/// `values` ascending (-0 before +0, which std::sort leaves in either
+/// order): a radix sort of their bits, each double made an unsigned key in
+/// its order, in passes of 11 bits, a pass skipped where every key has the
+/// same digit (the draws' leading bits). 10^6 draws take a fraction of a
+/// comparison sort's time, and a run sorts each draw two or three times.
+void sort_draws(std::vector<double>& values) {
+  constexpr int kDigitBits = 11;
+  constexpr std::size_t kDigits = std::size_t{1} << kDigitBits;
+  const std::size_t n = values.size();
+  std::vector<std::uint64_t> keys(n), sorted(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &values[i], sizeof bits);
+    keys[i] = bits >> 63 ? ~bits : bits | (std::uint64_t{1} << 63);
+  }
+  std::vector<std::size_t> start(kDigits);
+  for (int shift = 0; shift < 64; shift += kDigitBits) {
+    std::fill(start.begin(), start.end(), 0);
+    for (const std::uint64_t k : keys) ++start[(k >> shift) & (kDigits - 1)];
+    if (start[(keys.empty() ? 0 : keys[0] >> shift) & (kDigits - 1)] == n) continue;
+    std::size_t sum = 0;
+    for (std::size_t& s : start) sum += std::exchange(s, sum);
+    for (const std::uint64_t k : keys) sorted[start[(k >> shift) & (kDigits - 1)]++] = k;
+    keys.swap(sorted);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint64_t bits = keys[i] >> 63 ? keys[i] & ~(std::uint64_t{1} << 63) : ~keys[i];
+    std::memcpy(&values[i], &bits, sizeof bits);
+  }
+}
+
 Summary summarise(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
+  sort_draws(values);
   double mean = 0.0, ss = 0.0;
   for (std::size_t i = 0; i < values.size(); ++i) {
     const double d = values[i] - mean;

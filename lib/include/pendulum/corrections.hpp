@@ -405,18 +405,50 @@ bool corrections_read_length(const Apparatus<T>& app, const Swing<T>& s, const A
   return reads_length_of<T>([&](auto& sink) { visit_corrections(app, s, amplitude, sink); });
 }
 
-template <class T>
-Composition<T> compose(const Terms<T>& terms) {
+/// The composition of the ratios in the table's order: ratio(i) is row i's
+/// ratio, or null where it was skipped.
+template <class T, class Ratio>
+Composition<T> compose_rows(const Ratio& ratio) {
   T amplitude(0.0), others(0.0);
   for (int i = 0; i < kCorrectionCount; ++i) {
-    if (!terms[i].ratio) continue;
+    const T* r = ratio(i);
+    if (!r) continue;
     if (i == static_cast<int>(CorrectionId::finite_amplitude)) {
-      amplitude = *terms[i].ratio;
+      amplitude = *r;
     } else {
-      others += *terms[i].ratio;
+      others += *r;
     }
   }
   return Composition<T>::of(amplitude, others);
+}
+
+template <class T>
+Composition<T> compose(const Terms<T>& terms) {
+  return compose_rows<T>([&](int i) { return terms[i].ratio ? &*terms[i].ratio : nullptr; });
+}
+
+/// compose(rows_of<T>(visit, ...)) bit for bit (the same sum in the
+/// table's order, not composition_of()'s in the visit's), without building
+/// the rows: their copies were most of a Monte Carlo draw's closed form.
+template <class T, class Visit>
+Composition<T> composition_in_table_order_of(const Visit& visit) {
+  struct Ratios {
+    std::array<T, kCorrectionCount> value;
+    std::array<bool, kCorrectionCount> applied{};
+    void set(CorrectionId id, const T& ratio, const char*) {
+      value[static_cast<int>(id)] = ratio;
+      applied[static_cast<int>(id)] = true;
+    }
+    void skip(std::initializer_list<CorrectionId>, const char*) {}
+  } ratios;
+  visit(ratios);
+  return compose_rows<T>([&](int i) { return ratios.applied[i] ? &ratios.value[i] : nullptr; });
+}
+
+/// compose(correction_terms(app, s, amplitude)) bit for bit, without the rows.
+template <class T>
+Composition<T> compose_in_table_order(const Apparatus<T>& app, const Swing<T>& s, const AmplitudeChoice& amplitude) {
+  return composition_in_table_order_of<T>([&](auto& sink) { visit_corrections(app, s, amplitude, sink); });
 }
 
 }  // namespace pendulum

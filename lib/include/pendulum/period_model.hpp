@@ -248,6 +248,16 @@ PeriodPrediction<T> prediction_of(const T* p, const Observation<T>& o, const App
   return out;
 }
 
+/// prediction_of()'s period bit for bit, without its rows: a Monte Carlo
+/// draw's refit evaluates it at every step.
+template <class Model, class T>
+T prediction_period(const T* p, const Observation<T>& o, const Apparatus<T>& app, const AmplitudeChoice& amplitude) {
+  const Swing<T> s = Model::swing_at(p, Model::swing(o), app);
+  const Composition<T> composition =
+      composition_in_table_order_of<T>([&](auto& sink) { visit_model_corrections<Model>(app, s, amplitude, sink); });
+  return ideal_period(s.length, p[0]) * (1.0 + composition.total);
+}
+
 namespace detail {
 
 /// A sink for the rows a model owns (own_corrections), to check it exists.

@@ -64,6 +64,15 @@ Reduction<T> reduce(const Apparatus<T>& app, const Observation<T>& obs, const Am
   return out;
 }
 
+/// reduce()'s g alone, bit for bit, without its rows (a Monte Carlo draw's).
+template <class T>
+T reduce_g(const Apparatus<T>& app, const Observation<T>& obs, const AmplitudeChoice& amplitude,
+           const T& length_offset) {
+  const Swing<T> swing = Swing<T>::of(obs, length_offset);
+  const T total_ratio = compose_in_table_order(app, swing, amplitude).total;
+  return gravity_for_period(swing.length, T(obs.period / (1.0 + total_ratio)));  // Eqs. (3), (6)-(7)
+}
+
 /// The same with the options' amplitude method and no length offset.
 template <class T>
 Reduction<T> reduce(const Apparatus<T>& app, const Observation<T>& obs, const ReductionOptions& options = {}) {

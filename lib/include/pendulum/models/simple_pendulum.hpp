@@ -127,7 +127,7 @@ struct SimplePendulum {
   template <class T>
   static T solve_g(const T* p, const Observation<T>& o, const Apparatus<T>& app,
                    const AmplitudeChoice& amplitude) {
-    return reduce(app, o, amplitude, p[length_offset]).g;
+    return reduce_g(app, o, amplitude, p[length_offset]);
   }
 };
 

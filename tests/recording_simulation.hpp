@@ -186,6 +186,9 @@ enum class PublishedLayout {
   tilted_camera,       ///< "t x y" by tabs, no header, metres: Tracker's track from a camera pitched
                        ///< 50 deg off square to the swing, whose heights show cos 50 deg of themselves
                        ///< (the track's circle then has 1.56 times the pendulum's radius)
+  held_frames,         ///< "t, theta" by ", ", no header, printf's %g: an OpenCV loop writing, at every
+                       ///< third sample, the angle in degrees of the camera's latest frame, one every
+                       ///< ninth sample (each frame's noise drawn once): a staircase of held frames
 };
 
 inline std::string published_csv(const SimulatedRecording& r, double length, PublishedLayout layout, double noise,
@@ -209,6 +212,7 @@ inline std::string published_csv(const SimulatedRecording& r, double length, Pub
     case PublishedLayout::header_mismatch: put("x y dx dy\n"); break;
     case PublishedLayout::portuguese: put("frame,tempo,x,y\n"); break;
     case PublishedLayout::headerless_txy:
+    case PublishedLayout::held_frames:
     case PublishedLayout::tilted_camera:
     case PublishedLayout::headerless_timer:
     case PublishedLayout::headerless_degrees:
@@ -224,6 +228,14 @@ inline std::string published_csv(const SimulatedRecording& r, double length, Pub
       if (k % 2 == 1) {
         layout == PublishedLayout::timer_ms ? put("%zu\t%.0f\n", n++, 1000.0 * t) : put("%zu\t%.4f\n", n++, t);
       }
+    }
+    return out;
+  }
+  if (layout == PublishedLayout::held_frames) {
+    double frame = 0.0;
+    for (std::size_t k = 0; k < r.t.size(); k += 3) {
+      if (k % 9 == 0) frame = (r.theta[k] + noise * normal.next()) * kDeg;
+      put("%g, %g\n", r.t[k], frame);
     }
     return out;
   }
@@ -251,6 +263,7 @@ inline std::string published_csv(const SimulatedRecording& r, double length, Pub
       case PublishedLayout::header_mismatch: put("%.6E %.6E\n", t, (th + e1) * kDeg); break;
       case PublishedLayout::portuguese: put("%zu,%.9f,%.0f,%.0f\n", k + 1, t, 640.0 + 1000.0 * x, 200.0 - 1000.0 * y); break;
       case PublishedLayout::headerless_timer:
+      case PublishedLayout::held_frames:
       case PublishedLayout::timer_ms: break;
     }
   }

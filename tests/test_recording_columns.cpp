@@ -215,6 +215,33 @@ TEST_CASE("Clean: repeated stamps kept with their quantum, glitches dropped with
 }
 
 
+TEST_CASE("Clean: held frames repeat in the swing's fast middle, a sensor's rounding only where it turns",
+          "[recordings][columns]") {
+  // 20 s of a 10 deg swing of period 1 s at 30 rows/s, and two ways to repeat:
+  // a camera's frame every 0.1 s held by the rows between (two rows in three
+  // repeat, everywhere), and an encoder's 1 deg steps (a row repeats only
+  // where the swing turns, slower than a step in 1/30 s: 1.5 deg a row at the
+  // middle). Held frames: the median frame step is the resolution; the
+  // encoder's rows are every one a sample.
+  std::vector<double> t, held, encoder;
+  for (int k = 0; k < 600; ++k) {
+    t.push_back(k / 30.0);
+    held.push_back(10.0 * std::sin(2.0 * M_PI * std::floor(t.back() * 10.0) / 10.0));
+    encoder.push_back(std::round(10.0 * std::sin(2.0 * M_PI * t.back())));
+  }
+  Cleaned c = held_frames(t, {held});
+  CHECK(c.quantum == Approx(0.1));
+  REQUIRE(c.notes.size() == 1);
+  CHECK_THAT(c.notes[0].text, Contains("held frames, a new one every 0.1 s"));
+  // A track's frame is held in both its columns; one column's repeats alone are a coincidence.
+  c = held_frames(t, {held, encoder});
+  CHECK(c.quantum == 0.0);
+  CHECK(c.notes.empty());
+  c = held_frames(t, {encoder});
+  CHECK(c.quantum == 0.0);
+  CHECK(c.notes.empty());
+}
+
 TEST_CASE("Skipped rows: an empty cell, a sample out of order and a repeated one, each counted and noted",
           "[recordings][columns]") {
   // 400 samples at 100 Hz of a 4 deg swing of period 2 s; then row 101's

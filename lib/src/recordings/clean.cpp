@@ -134,4 +134,44 @@ Cleaned clean_times(const std::vector<double>& time, const std::vector<std::size
   return out;
 }
 
+Cleaned held_frames(const std::vector<double>& time, const std::vector<std::vector<double>>& channels) {
+  Cleaned out;
+  const std::size_t n = time.size();
+  if (channels.empty() || n < 16) return out;
+  const auto median = [](std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  const std::vector<double>& s = channels.front();
+  const double centre = median(s);
+  std::vector<double> excursion(n);
+  for (std::size_t k = 0; k < n; ++k) excursion[k] = std::fabs(s[k] - centre);
+  // The extent: the 90th percentile of |s - median|, a knock's few samples aside.
+  std::vector<double> sorted = excursion;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(9 * n / 10), sorted.end());
+  const double extent = sorted[9 * n / 10];
+  const auto held = [&](std::size_t k) {
+    return std::all_of(channels.begin(), channels.end(), [&](const std::vector<double>& c) { return c[k] == c[k - 1]; });
+  };
+  std::size_t middle = 0, middle_held = 0;
+  for (std::size_t k = 1; k < n; ++k) {
+    if (!(excursion[k] < extent / 2.0)) continue;
+    ++middle;
+    middle_held += held(k);
+  }
+  if (!(extent > 0.0) || middle < 16 || 4 * middle_held < middle) return out;
+  std::vector<double> frames;
+  for (std::size_t k = 1, last = 0; k < n; ++k) {
+    if (!held(k)) frames.push_back(time[k] - time[last]), last = k;
+  }
+  if (frames.empty()) return out;
+  out.quantum = median(frames);
+  out.notes.push_back({0, std::to_string(n - 1 - frames.size()) + " of " + std::to_string(n) +
+                              " samples repeat the one before in every column, " + std::to_string(middle_held) + " of " +
+                              std::to_string(middle) + " in the swing's fast middle: held frames, a new one every " +
+                              seconds(out.quantum) + " (the median), so a sample's stamp tells its frame's time to " +
+                              "that, the crossings' time resolution"});
+  return out;
+}
+
 }  // namespace pendulum::recording_text

@@ -892,6 +892,11 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
     for (auto& c : rec.channels) keep(c);
     if (!rec.counts.empty()) keep(rec.counts);
   }
+  if (sampled) {
+    const Cleaned frames = held_frames(rec.time, rec.channels);
+    rec.notes.insert(rec.notes.end(), frames.notes.begin(), frames.notes.end());
+    rec.time_quantum = std::max(rec.time_quantum, frames.quantum);
+  }
   return rec;
 }
 

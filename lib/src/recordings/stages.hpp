@@ -9,7 +9,7 @@
 //   rows    the numbers, one vector per column;
 //   content what a column's numbers say (a counter, a constant, a clock);
 //   roles   which columns give the time and the signal (read.cpp);
-//   clean   repeated, out-of-order and missing samples (clean.cpp).
+//   clean   repeated, out-of-order and missing samples, held frames (clean.cpp).
 
 #include <cstddef>
 #include <optional>
@@ -283,5 +283,16 @@ struct Cleaned {
 /// refused ("time going backwards"), as is an infinite time.
 Cleaned clean_times(const std::vector<double>& time, const std::vector<std::size_t>& rows, const Table& table,
                     bool sampled, const std::string& file);
+
+/// Held frames: a tracker that polls a camera faster than its frames come
+/// writes each frame's values again with fresh stamps, a staircase whose
+/// steps move every crossing by up to a frame whatever the swing's size.
+/// They repeat in every channel (`channels`, sampled at `time`, s) in at
+/// least a quarter of the rows of the swing's fast middle (within half its
+/// extent of the median), where a sensor's own rounding repeats little;
+/// `quantum` is then the median time from one frame to the next (s), the
+/// stamps' resolution for a crossing, and the note says so. Nothing is
+/// dropped (`all`): a held sample is its frame, late.
+Cleaned held_frames(const std::vector<double>& time, const std::vector<std::vector<double>>& channels);
 
 }  // namespace pendulum::recording_text

@@ -299,8 +299,8 @@ TEST_CASE("import: catalogue of bad recordings (tests/bad_recordings/)", "[cli][
 
 TEST_CASE("import: a track with too few swings' peaks for a smooth curve shows their range, not NaN",
           "[cli][import]") {
-  // A Tracker track at 7.6 frames/s: a half swing of 0.9 s holds about 6.8
-  // samples, and a peak needs 7 strictly between its crossings (swings.cpp,
+  // A Tracker track at 6.5 frames/s: a half swing of 0.9 s holds about 5.8
+  // samples, and a peak needs 6 strictly between its crossings (swings.cpp,
   // sparse_peak). Fewer than half the swings get an amplitude (the null
   // start below says so): no smooth curve, hence no start or end of it. The
   // table printed "nan deg" for them.
@@ -308,7 +308,7 @@ TEST_CASE("import: a track with too few swings' peaks for a smooth curve shows t
   const std::string file = dir + "/sparse.txt";
   {
     std::ofstream o(file);
-    const double l = 0.8, w = std::sqrt(9.81 / l), fps = 7.6;
+    const double l = 0.8, w = std::sqrt(9.81 / l), fps = 6.5;
     o << "mass A\nt\tx\ty\n";
     for (int k = 0; k < 60 * fps; ++k) {
       const double t = k / fps, theta = 0.2 * std::exp(-0.003 * t) * std::cos(w * t);

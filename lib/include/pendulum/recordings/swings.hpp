@@ -143,6 +143,10 @@ struct Glitch {
   double start = 0.0;  ///< (s, the file's clock) the last good crossing before it
   double end = 0.0;    ///< (s) the first good crossing after it, or the last crossing
   double worst = 0.0;  ///< the largest |interval residual| in it, in robust sigmas
+  /// What it is where no interval's residual found it ("the swing grows: a
+  /// hand or a drive pumping it", `worst` then in sigmas of its peaks); null
+  /// for an outlier stretch.
+  const char* cause = nullptr;
 };
 
 /// A stretch cut from the record by default (step 8).

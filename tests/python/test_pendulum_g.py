@@ -614,6 +614,13 @@ def test_the_notebook_is_the_page_and_runs_to_its_outputs():
         assert printed == "".join(o["text"] for o in stored_cell.outputs), stored_cell.source
 
 
+def cpu_seconds(pid):
+    """User and system time (s) process `pid` has used so far (Linux's /proc/PID/stat, fields 14 and 15)."""
+    with open(f"/proc/{pid}/stat", encoding="ascii") as stat:
+        fields = stat.read().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
 def test_ctrl_c_stops_a_long_call(tmp_path):
     """Ctrl-C (SIGINT) during a long call raises KeyboardInterrupt within a
     fraction of a second, not after the whole call (issue 42): a table of
@@ -637,8 +644,14 @@ def test_ctrl_c_stops_a_long_call(tmp_path):
     assert child.stdout.readline() == "ready\n"
     time.sleep(0.5)  # well inside the call: it starts microseconds after "ready"
     sent = time.monotonic()
+    before = cpu_seconds(child.pid)
     child.send_signal(signal.SIGINT)
-    out, _ = child.communicate(timeout=300)
+    out = child.stdout.readline()
     stopped = time.monotonic() - sent
+    spent = cpu_seconds(child.pid) - before
+    child.communicate(timeout=300)
     assert out == "interrupted\n"
-    assert stopped < 1.0, f"{stopped:.2f} s from Ctrl-C to KeyboardInterrupt"
+    # The work the call did after Ctrl-C, in its own processor time: the
+    # wall clock stretches with the machine's load (2.2 s with two other
+    # processes per core, beside 12 s for the whole call).
+    assert spent < 1.0, f"{spent:.2f} s of processor time ({stopped:.2f} s) from Ctrl-C to KeyboardInterrupt"

@@ -15,6 +15,7 @@
 #include <optional>
 
 #include "pendulum/amplitude.hpp"
+#include "pendulum/dispersion.hpp"
 #include "pendulum/argument_ranges.hpp"
 #include "pendulum/files.hpp"
 #include "pendulum/straight_line.hpp"
@@ -141,8 +142,11 @@ bool is_trial_word(std::string_view word) {
 std::optional<Use> uncertainty_of(const Column& c) {
   static const char* const kPrefixes[] = {"sigma_", "sigma ", "sigma", "\xcf\x83_", "\xcf\x83 ", "\xcf\x83",
                                           "\xce\xb4", "\xce\x94", "u_", "u(", "err_", "err ", "error_", "error ",
-                                          "err", "uncertainty of ", "uncertainty_", "uncertainty ", "unc_", "unc ",
-                                          "unc", "delta_", "delta ", "delta", "fout in ", "fout ", "fehler ", "+-",
+                                          "err", "uncertainty of ", "uncertainty in ", "uncertainty on ",
+                                          "uncertainty_", "uncertainty ", "error of ", "error in ", "error on ",
+                                          "unc_", "unc ", "unc", "delta_", "delta ", "delta", "fout in ", "fout ",
+                                          "onzekerheid in ", "onzekerheid ", "fehler der ", "fehler des ", "fehler ",
+                                          "unsicherheit der ", "unsicherheit des ", "unsicherheit ", "+-",
                                           "\xc2\xb1", "d"};
   const std::string& w = c.word;
   static const char* const kAlone[] = {"sigma", "\xcf\x83", "error", "err", "uncertainty", "unc", "delta", "fout",
@@ -164,6 +168,7 @@ std::optional<Use> uncertainty_of(const Column& c) {
     if (!starts_with(w, prefix)) continue;
     std::string rest = w.substr(std::strlen(prefix));
     while (!rest.empty() && (rest.back() == ')' || rest.back() == ' ')) rest.pop_back();
+    if (starts_with(rest, "the ")) rest.erase(0, 4);  // "uncertainty in the period"
     if (auto q = axis_quantity(rest)) return q;
   }
   return std::nullopt;
@@ -672,6 +677,47 @@ std::vector<TableColumnChoice> parse_table_column_spec(const std::string& spec, 
     start = comma + 1;
   }
   return out;
+}
+
+/// Whether the rows at each length are readings of their own, not repeats
+/// of one: the rows (`period_s`, one oscillation's, s; its stated standard
+/// uncertainty `sigma_s`, s; `length_m`, m; in the observations' order, `obs`
+/// giving how many rows each holds) scattering about their length's mean
+/// beyond their stated uncertainty (chi2, probability below 1 %), and as a
+/// length's error would, (T/2L) tau, rather than as a stopwatch's, one s for
+/// every length: the rows' spread about their means at least 1 likelier in
+/// log (the two one-parameter models' maxima; Kass & Raftery 1995: positive
+/// evidence). A class's pooled table, each group's tape to its own point of
+/// the bob (issue 39's real table: rows at 30 cm from 0.96 to 1.11 s, at 4 m
+/// within 0.05 s). Then `tau` is that length's error (m).
+bool readings_of_their_own(const std::vector<TableObservation>& obs, const std::vector<double>& period_s,
+                           const std::vector<double>& sigma_s, const std::vector<double>& length_m, double& tau) {
+  double chi2 = 0.0, ss_total = 0.0, ss_scaled = 0.0, nu = 0.0;
+  std::vector<std::array<double, 3>> groups;  // n - 1, the spread's sum of squares (s^2), (T/2L)^2 (s^2/m^2)
+  for (std::size_t k = 0, row = 0; k < obs.size(); row += obs[k].times.size(), ++k) {
+    const std::size_t n = obs[k].times.size();
+    if (n < 2) continue;
+    double mean = 0.0, ss = 0.0;
+    for (std::size_t i = row; i < row + n; ++i) mean += period_s[i] / static_cast<double>(n);
+    for (std::size_t i = row; i < row + n; ++i) {
+      ss += (period_s[i] - mean) * (period_s[i] - mean);
+      chi2 += std::pow((period_s[i] - mean) / sigma_s[i], 2);
+    }
+    const double f = std::pow(mean / (2.0 * length_m[row]), 2);
+    groups.push_back({static_cast<double>(n - 1), ss, f});
+    nu += static_cast<double>(n - 1), ss_total += ss, ss_scaled += ss / f;
+  }
+  if (groups.size() < 2 || !(ss_total > 0.0)) return false;
+  const auto probability = dispersion(chi2, static_cast<int>(nu)).probability;
+  if (!probability || !(*probability < kOverDispersedProbability)) return false;
+  const double s2 = ss_total / nu, tau2 = ss_scaled / nu;
+  double constant = 0.0, length = 0.0;
+  for (const auto& [v, ss, f] : groups) {
+    constant -= 0.5 * (v * std::log(s2) + ss / s2);
+    length -= 0.5 * (v * std::log(f * tau2) + ss / (f * tau2));
+  }
+  tau = std::sqrt(tau2);
+  return length - constant >= 1.0;
 }
 
 SettingsTable parse_settings_table(std::string_view text, const std::string& file, const TableOptions& options) {
@@ -1231,6 +1277,33 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     }
   }
   if (out.pooled_dof > 0) out.pooled_sigma = std::sqrt(ss / static_cast<double>(out.pooled_dof));
+  // Rows at one length that are readings of their own, each its own observation.
+  if (time_u && !out.sweep && out.setting == Setting::length) {
+    std::vector<double> sigma_s(table.rows);
+    for (std::size_t i = 0; i < table.rows; ++i) sigma_s[i] = table.columns[*time_u][i] * time_u_factor * *time_factor / n_osc;
+    double tau = 0.0;
+    if (readings_of_their_own(out.observations, periods, sigma_s, meters, tau)) {
+      std::vector<TableObservation> rows;
+      for (std::size_t k = 0, i = 0; k < out.observations.size(); ++k) {
+        for (std::size_t r = 0; r < out.observations[k].times.size(); ++r, ++i) {
+          TableObservation o;
+          o.setting = out.observations[k].setting, o.setting_sigma = out.observations[k].setting_sigma;
+          o.times = {table.columns[*time_col][i]};
+          o.time_sigma = table.columns[*time_u][i] * time_u_factor;
+          if (amplitude_col) o.amplitude = std::fabs(table.columns[*amplitude_col][i]);
+          if (amplitude_u) o.amplitude_sigma = table.columns[*amplitude_u][i] * amplitude_u_factor;
+          o.first_line = o.last_line = line_of(i);
+          rows.push_back(o);
+        }
+      }
+      out.notes.push_back({0, "the rows at one length scatter beyond their stated uncertainty and as a length's error "
+                              "would, (T/2L) x " + format_number(1000.0 * tau, 3) + " mm, not as a stopwatch's: "
+                              "each row is a reading of its own (its length set and measured again: a class's "
+                              "groups?), its own observation (docs/series.md, Repeats)"});
+      out.observations = std::move(rows);
+      out.pooled_sigma.reset(), out.pooled_dof = 0;
+    }
+  }
   // A few repeats say little about their own scatter (it is uncertain by
   // 1/sqrt(2(n-1)) of itself: 71 % for 2, 50 % for 3, 41 % for 4): the pooled
   // scatter of every setting's repeats, one hand's, is the floor of each

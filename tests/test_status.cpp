@@ -101,6 +101,31 @@ TEST_CASE("Hand timing draws no outlier warning, a miscounted oscillation does",
   CHECK(miscounts_missed == 0);
 }
 
+TEST_CASE("A frequency typed is named only where it is far from the period it stands for", "[status][timing]") {
+  // One oscillation a trial at 25.9 cm (T 1.02 s at standard gravity) read
+  // 0.958 s, 6 % short: 1/1.044, and a class's table had it named a
+  // frequency typed, its status suspect. Where N T^2 lies within 10 % of
+  // 1 s^2 a frequency is no further off than a 10 % reading: only the plain
+  // warning. At 1 m (T 2.006 s) 0.4985 s is 1/2.006, a frequency.
+  auto named = [](double length, double trial) {
+    nlohmann::json doc = {{"length", {{"value", length}, {"unit", "m"}}},
+                          {"amplitude", {{"value", 5}, {"unit", "deg"}}},
+                          {"air", "vacuum"},
+                          {"timing", {{"oscillations_per_trial", 1}, {"unit", "s"}, {"resolution", 0.001}, {"trials", {trial}}}}};
+    try {
+      const ParsedScene s = parse_scene(doc.dump());
+      for (const auto& w : s.suspicions) {
+        if (w.find("a frequency (Hz) typed") != std::string::npos) return true;
+      }
+    } catch (const InputError& e) {
+      return std::string(e.what()).find("a frequency (Hz) typed") != std::string::npos;
+    }
+    return false;
+  };
+  CHECK_FALSE(named(0.259, 0.958));
+  CHECK(named(1.0, 0.4985));
+}
+
 TEST_CASE("Pasted trials: two thirds of six or more equal anywhere, rarely by chance", "[status][timing]") {
   auto pasted = [](const std::vector<double>& trials) {
     nlohmann::json doc = {

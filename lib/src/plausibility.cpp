@@ -87,9 +87,14 @@ void check_observation(ParsedScene& scene, std::size_t k, const std::optional<Ex
   // a wrong unit is named as such before it drives a correction out of its range.
   const double swing = expected_or_none->slip_check;
   // A frequency (1/s) typed where the trial times belong: its inverse is the
-  // pendulum's period, or the time of the oscillations per trial.
+  // pendulum's period. Not where the trial's time and that inverse lie
+  // within twice the warning's band of each other (N T^2 near 1 s^2, N
+  // oscillations a trial): a frequency typed is then no further off than a
+  // reading off by that band (a class's 0.958 s for 1.02 s at 25.9 cm was
+  // named a frequency).
   const double trial = o.period * o.oscillations_per_trial;  // (s) the mean trial, as typed
-  if (std::abs(1.0 / (trial * expected) - 1.0) <= kPeriodWarning && std::abs(ratio - 1.0) > kPeriodWarning) {
+  if (std::abs(1.0 / (trial * expected) - 1.0) <= kPeriodWarning && std::abs(ratio - 1.0) > kPeriodWarning &&
+      std::abs(o.oscillations_per_trial * expected * expected - 1.0) > 2.0 * kPeriodWarning) {
     const std::string why = "the mean trial " + format_number(trial, 4) + " s is 1/" +
                             format_number(1.0 / trial, 4) + ", and " + format_number(1.0 / trial, 4) +
                             " s is the period this pendulum has at " + standard +

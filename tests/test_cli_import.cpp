@@ -299,11 +299,13 @@ TEST_CASE("import: catalogue of bad recordings (tests/bad_recordings/)", "[cli][
 
 TEST_CASE("import: a track with too few swings' peaks for a smooth curve shows their range, not NaN",
           "[cli][import]") {
-  // A Tracker track at 6.5 frames/s: a half swing of 0.9 s holds about 5.8
-  // samples, and a peak needs 6 strictly between its crossings (swings.cpp,
-  // sparse_peak). Fewer than half the swings get an amplitude (the null
-  // start below says so): no smooth curve, hence no start or end of it. The
-  // table printed "nan deg" for them.
+  // A Tracker track at 6.5 frames/s: a half swing of 0.9 s holds 5 or 6
+  // samples (5.8 on average), a peak needs 6 strictly between its crossings
+  // (swings.cpp, sparse_peak), and a swing's amplitude the peaks of its
+  // neighbours too. Fewer than half the swings get one (the null start below
+  // says so; the 7.6 frames/s this test had, 6 or 7 samples, now gives most
+  // a peak): no smooth curve, hence no start or end of it. The table printed
+  // "nan deg" for them.
   const std::string dir = pendulum::test::new_temporary_directory("pendulum-g-sparse-track");
   const std::string file = dir + "/sparse.txt";
   {

@@ -220,7 +220,7 @@ TEST_CASE("Clean: held frames repeat in the swing's fast middle, a sensor's roun
   // 20 s of a 10 deg swing of period 1 s at 30 rows/s, and two ways to repeat:
   // a camera's frame every 0.1 s held by the rows between (two rows in three
   // repeat, everywhere), and an encoder's 1 deg steps (a row repeats only
-  // where the swing turns, slower than a step in 1/30 s: 1.5 deg a row at the
+  // where the swing turns, slower than a step in 1/30 s: 2.1 deg a row at the
   // middle). Held frames: the median frame step is the resolution; the
   // encoder's rows are every one a sample.
   std::vector<double> t, held, encoder;
@@ -240,6 +240,21 @@ TEST_CASE("Clean: held frames repeat in the swing's fast middle, a sensor's roun
   c = held_frames(t, {encoder});
   CHECK(c.quantum == 0.0);
   CHECK(c.notes.empty());
+  // A fine encoder sampled fast, whose steps repeat in the middle too: 0.25 deg
+  // steps at 200 Hz of a 5 deg swing of period 1.8 s (0.09 deg a row at the
+  // middle: runs of 3 there, and of tens where it turns); and the held frames
+  // and the encoder each with their first 5 s at rest (a run a rest).
+  std::vector<double> t_fast, fine;
+  for (int k = 0; k < 4000; ++k) {
+    t_fast.push_back(k / 200.0);
+    fine.push_back(0.25 * std::round(20.0 * std::sin(2.0 * M_PI * t_fast.back() / 1.8)));
+  }
+  c = held_frames(t_fast, {fine});
+  CHECK(c.quantum == 0.0);
+  std::vector<double> held_rest = held, encoder_rest = encoder;
+  for (int k = 0; k < 150; ++k) held_rest[k] = encoder_rest[k] = 0.0;
+  CHECK(held_frames(t, {held_rest}).quantum == Approx(0.1));
+  CHECK(held_frames(t, {encoder_rest}).quantum == 0.0);
 }
 
 TEST_CASE("Skipped rows: an empty cell, a sample out of order and a repeated one, each counted and noted",

@@ -10,6 +10,7 @@ import glob
 import json
 import math
 import os
+import select
 import signal
 import subprocess
 import sys
@@ -646,6 +647,7 @@ def test_ctrl_c_stops_a_long_call(tmp_path):
     sent = time.monotonic()
     before = cpu_seconds(child.pid)
     child.send_signal(signal.SIGINT)
+    assert select.select([child.stdout], [], [], 300)[0], "no line 300 s after Ctrl-C"
     out = child.stdout.readline()
     stopped = time.monotonic() - sent
     spent = cpu_seconds(child.pid) - before

@@ -153,24 +153,31 @@ Cleaned held_frames(const std::vector<double>& time, const std::vector<std::vect
   const auto held = [&](std::size_t k) {
     return std::all_of(channels.begin(), channels.end(), [&](const std::vector<double>& c) { return c[k] == c[k - 1]; });
   };
-  std::size_t middle = 0, middle_held = 0;
-  for (std::size_t k = 1; k < n; ++k) {
-    if (!(excursion[k] < extent / 2.0)) continue;
-    ++middle;
-    middle_held += held(k);
+  // Runs of rows holding one value, by where each starts: in the swing's
+  // fast middle (within half its extent of the median) or beyond.
+  std::vector<double> middle_runs, outer_runs, frames;
+  std::size_t repeats = 0;
+  for (std::size_t k = 1, start = 0; k <= n; ++k) {
+    if (k < n && held(k)) {
+      ++repeats;
+      continue;
+    }
+    (excursion[start] < extent / 2.0 ? middle_runs : outer_runs).push_back(static_cast<double>(k - start));
+    if (k < n) frames.push_back(time[k] - time[start]), start = k;
   }
-  if (!(extent > 0.0) || middle < 16 || 4 * middle_held < middle) return out;
-  std::vector<double> frames;
-  for (std::size_t k = 1, last = 0; k < n; ++k) {
-    if (!held(k)) frames.push_back(time[k] - time[last]), last = k;
-  }
-  if (frames.empty()) return out;
+  // Frames held by a poll are as long wherever the swing is; a sensor's
+  // rounding repeats where the swing is slow, its runs longest where it turns.
+  if (!(extent > 0.0) || middle_runs.size() < 8 || outer_runs.size() < 8 || frames.empty()) return out;
+  const double middle = median(middle_runs);
+  std::nth_element(outer_runs.begin(), outer_runs.begin() + static_cast<long>(9 * outer_runs.size() / 10), outer_runs.end());
+  const double outer = outer_runs[9 * outer_runs.size() / 10];  // the 90th percentile: the runs at the turns
+  if (!(middle >= 2.0) || !(outer <= 2.0 * middle)) return out;
   out.quantum = median(frames);
-  out.notes.push_back({0, std::to_string(n - 1 - frames.size()) + " of " + std::to_string(n) +
-                              " samples repeat the one before in every column, " + std::to_string(middle_held) + " of " +
-                              std::to_string(middle) + " in the swing's fast middle: held frames, a new one every " +
-                              seconds(out.quantum) + " (the median), so a sample's stamp tells its frame's time to " +
-                              "that, the crossings' time resolution"});
+  out.notes.push_back({0, std::to_string(repeats) + " of " + std::to_string(n) + " samples repeat the one before in "
+                          "every column, in runs of " + format_number(middle, 3) + " rows (the median) in the "
+                          "swing's fast middle and at most " + format_number(outer, 3) + " (9 in 10) where it turns: held frames, a "
+                          "new one every " + seconds(out.quantum) + " (the median), so a sample's stamp tells its "
+                          "frame's time to that, the crossings' time resolution"});
   return out;
 }
 

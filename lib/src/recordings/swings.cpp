@@ -1321,7 +1321,9 @@ void apply_bridges(const std::vector<Bridge>& bridges, std::vector<Crossing>& c,
 /// level, the stretch from the first crossing to the first half swing whose
 /// level comes within log(1/0.97) (or 2 sigmas) of that largest, provided it
 /// ends within the record's first half (later growth is a second push, not a
-/// release). `worst` is the growth in those sigmas. A remote lab's drive
+/// release), the level never falls below its start by that much before (a
+/// decay pushed again) and, 5 windows after its largest, is within twice that
+/// of it (a jump of a few half swings falls back). `worst` is the growth in those sigmas. A remote lab's drive
 /// pumped a 20 frames/s record from 44 to 66 deg over 8 s, the periods there
 /// 3 % short with the amplitude, and the mean period of the whole record 0.5 %
 /// below the swing's steady one.
@@ -1347,6 +1349,11 @@ std::optional<Glitch> growth_at_start(const std::vector<double>& peaks, const st
   const double growth = *top - level[2];
   if (!(growth > std::max(std::log(1.25), 6.0 * sigma))) return std::nullopt;
   const double near = std::max(-std::log(0.97), 2.0 * sigma);
+  // A rise from the start, and a swing that stays up: not a decay pushed
+  // again, nor a jump of a few half swings' peaks.
+  const std::size_t t = static_cast<std::size_t>(top - level.begin());
+  if (*std::min_element(level.begin() + 2, top + 1) < level[2] - near) return std::nullopt;
+  if (level[std::min(t + 5, n - 3)] < *top - 2.0 * near) return std::nullopt;
   std::size_t k = 2;
   while (level[k] < *top - near) ++k;
   const double end = c[at[k]].time;
@@ -1378,9 +1385,10 @@ std::vector<double> local_misfits(const std::vector<double>& theta, const std::v
   return out;
 }
 
-/// `track_length`: as make_signal's.
+/// `track_length`: as make_signal's; `circle`, where given, is a track's
+/// track_angle, which the caller fitted once for its radius too.
 SwingAnalysis analyse_once(const Recording& r, const std::string& file, const SwingOptions& options,
-                           const std::vector<Bridge>& bridges, double track_length) {
+                           const std::vector<Bridge>& bridges, double track_length, const Signal* circle = nullptr) {
   // The clock's resolution (step 6): the reader's quantum where stamps
   // repeat; for events (stamps, gate changes), also the decimals the file
   // printed its times with. Not for samples: a regular clock printed to its
@@ -1400,7 +1408,7 @@ SwingAnalysis analyse_once(const Recording& r, const std::string& file, const Sw
     if (r.time.size() < 16) {
       throw InputError(file, std::to_string(r.time.size()) + " samples; expected a recording of several swings");
     }
-    sig = make_signal(r, track_length);
+    sig = circle ? *circle : make_signal(r, track_length);
     out.axis = sig.axis;
     out.crossings_per_period = sig.crossings_per_period;
     out.noise = noise_sigma(sig.s);
@@ -1832,9 +1840,10 @@ double period_length(const SwingAnalysis& a) {
 /// the swing, the period's length solved with them, and a note says why.
 SwingAnalysis analyse_record(const Recording& r, const std::string& file, const SwingOptions& options,
                              const std::vector<Bridge>& bridges = {}) {
-  SwingAnalysis out = analyse_once(r, file, options, bridges, 0.0);
-  if (r.kind != SignalKind::position || !std::isfinite(out.start_amplitude)) return out;
-  const Signal circle = track_angle(r);
+  if (r.kind != SignalKind::position) return analyse_once(r, file, options, bridges, 0.0);
+  const Signal circle = track_angle(r);  // once: the angles and the radius they are checked by
+  SwingAnalysis out = analyse_once(r, file, options, bridges, 0.0, &circle);
+  if (!std::isfinite(out.start_amplitude)) return out;
   double length = options.length ? *options.length : period_length(out);
   const double metres = metres_per_track_unit(r, circle.radius, length);
   if (!(metres > 0.0)) return out;

@@ -682,40 +682,59 @@ std::vector<TableColumnChoice> parse_table_column_spec(const std::string& spec, 
 /// Whether the rows at each length are readings of their own, not repeats
 /// of one: the rows (`period_s`, one oscillation's, s; its stated standard
 /// uncertainty `sigma_s`, s; `length_m`, m; in the observations' order, `obs`
-/// giving how many rows each holds) scattering about their length's mean
-/// beyond their stated uncertainty (chi2, probability below 1 %), and as a
-/// length's error would, (T/2L) tau, rather than as a stopwatch's, one s for
-/// every length: the rows' spread about their means at least 1 likelier in
-/// log (the two one-parameter models' maxima; Kass & Raftery 1995: positive
-/// evidence). A class's pooled table, each group's tape to its own point of
-/// the bob (issue 39's real table: rows at 30 cm from 0.96 to 1.11 s, at 4 m
-/// within 0.05 s). Then `tau` is that length's error (m).
+/// giving how many rows each holds; three lengths or more with repeats)
+/// scattering about their length's mean beyond their stated uncertainty
+/// (chi2, probability below 1 %), and as a length's error would, sigma^2 +
+/// (T/2L)^2 tau^2, rather than as a stopwatch's, sigma^2 + s^2 with one s for
+/// every length: the rows' spread about their means at least e times as
+/// likely at the better tau as at the better s (one parameter each, so
+/// neither model is favoured by its size). A class's pooled table, each
+/// group's tape to its own point of the bob (issue 39's real table: rows at
+/// 30 cm from 0.96 to 1.11 s, at 4 m within 0.05 s). Then `tau` is that
+/// length's error (m).
 bool readings_of_their_own(const std::vector<TableObservation>& obs, const std::vector<double>& period_s,
                            const std::vector<double>& sigma_s, const std::vector<double>& length_m, double& tau) {
-  double chi2 = 0.0, ss_total = 0.0, ss_scaled = 0.0, nu = 0.0;
-  std::vector<std::array<double, 3>> groups;  // n - 1, the spread's sum of squares (s^2), (T/2L)^2 (s^2/m^2)
+  double chi2 = 0.0, nu = 0.0, largest = 0.0;
+  std::vector<std::array<double, 4>> groups;  // n - 1, spread's sum of squares (s^2), stated variance (s^2), (T/2L)^2
   for (std::size_t k = 0, row = 0; k < obs.size(); row += obs[k].times.size(), ++k) {
     const std::size_t n = obs[k].times.size();
     if (n < 2) continue;
-    double mean = 0.0, ss = 0.0;
+    double mean = 0.0, ss = 0.0, stated = 0.0;
     for (std::size_t i = row; i < row + n; ++i) mean += period_s[i] / static_cast<double>(n);
     for (std::size_t i = row; i < row + n; ++i) {
       ss += (period_s[i] - mean) * (period_s[i] - mean);
       chi2 += std::pow((period_s[i] - mean) / sigma_s[i], 2);
+      stated += sigma_s[i] * sigma_s[i] / static_cast<double>(n);
     }
     const double f = std::pow(mean / (2.0 * length_m[row]), 2);
-    groups.push_back({static_cast<double>(n - 1), ss, f});
-    nu += static_cast<double>(n - 1), ss_total += ss, ss_scaled += ss / f;
+    groups.push_back({static_cast<double>(n - 1), ss, stated, f});
+    nu += static_cast<double>(n - 1), largest = std::max(largest, ss / static_cast<double>(n - 1) / std::min(f, 1.0));
   }
-  if (groups.size() < 2 || !(ss_total > 0.0)) return false;
+  if (groups.size() < 3 || !(largest > 0.0)) return false;
   const auto probability = dispersion(chi2, static_cast<int>(nu)).probability;
   if (!probability || !(*probability < kOverDispersedProbability)) return false;
-  const double s2 = ss_total / nu, tau2 = ss_scaled / nu;
-  double constant = 0.0, length = 0.0;
-  for (const auto& [v, ss, f] : groups) {
-    constant -= 0.5 * (v * std::log(s2) + ss / s2);
-    length -= 0.5 * (v * std::log(f * tau2) + ss / (f * tau2));
-  }
+  // Each model's log-likelihood at its best excess variance x (golden
+  // section over [0, the largest group's variance per unit of its factor]).
+  auto best = [&](bool by_length, double& at) {
+    auto log_likelihood = [&](double x) {
+      double sum = 0.0;
+      for (const auto& [v, ss, stated, f] : groups) {
+        const double var = stated + x * (by_length ? f : 1.0);
+        sum -= 0.5 * (v * std::log(var) + ss / var);
+      }
+      return sum;
+    };
+    const double golden = (std::sqrt(5.0) - 1.0) / 2.0;
+    double a = 0.0, b = largest;
+    for (int i = 0; i < 100; ++i) {
+      const double c = b - golden * (b - a), d = a + golden * (b - a);
+      (log_likelihood(c) > log_likelihood(d) ? b : a) = log_likelihood(c) > log_likelihood(d) ? d : c;
+    }
+    at = (a + b) / 2.0;
+    return log_likelihood(at);
+  };
+  double s2 = 0.0, tau2 = 0.0;
+  const double constant = best(false, s2), length = best(true, tau2);
   tau = std::sqrt(tau2);
   return length - constant >= 1.0;
 }
@@ -1287,7 +1306,8 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
       for (std::size_t k = 0, i = 0; k < out.observations.size(); ++k) {
         for (std::size_t r = 0; r < out.observations[k].times.size(); ++r, ++i) {
           TableObservation o;
-          o.setting = out.observations[k].setting, o.setting_sigma = out.observations[k].setting_sigma;
+          o.setting = out.observations[k].setting;
+          if (setting_u) o.setting_sigma = table.columns[*setting_u][i] * setting_u_factor;
           o.times = {table.columns[*time_col][i]};
           o.time_sigma = table.columns[*time_u][i] * time_u_factor;
           if (amplitude_col) o.amplitude = std::fabs(table.columns[*amplitude_col][i]);

@@ -426,7 +426,7 @@ PYBIND11_MODULE(_core, m) {
         return py::vectorize([](double t0, double at, double quality) {
           // As a clock scene's semi_amplitude, impulse.location and Q are.
           check(pendulum::ranges::semi_amplitude, t0);
-          check({"", "location", 0.0, t0, "rad", "an angle from 0 to the semi-amplitude theta0"}, at);
+          check(pendulum::ranges::impulse_location(t0), at);
           check(pendulum::ranges::quality, quality);
           const std::string over_top = pendulum::impulse_over_top(t0, quality, pendulum::ClockPath::circular);
           if (!over_top.empty()) throw py::value_error("q: " + over_top);

@@ -527,6 +527,25 @@ TEST_CASE("Every method's error bound holds and is not loose", "[amplitude][quad
   }
 }
 
+TEST_CASE("Every method's error bound is finite and holds up to the last amplitude below 180 deg",
+          "[amplitude][quad]") {
+  // fuzz_arguments (docs/robustness.md): from 179.9999999 deg on sin^2(theta0/2) rounds to 1, and the
+  // bounds of the series and the small-angle form, over 1 - m, were infinite (`pendulum-g amplitude
+  // --theta0-deg 179.99999999 --method series` printed a bound of null).
+  for (double deg : {179.9999999, 179.99999999, std::nextafter(180.0, 0.0)}) {
+    const double theta0 = radians(deg);  // as the amplitude command takes it
+    const double reference = static_cast<double>(test::delta_ratio_quad_rad(theta0));
+    auto check = [&](AmplitudeMethod method, int terms) {
+      const double bound = amplitude_error_bound(method, theta0, terms);
+      INFO(deg << " deg, " << method_name(method) << ", " << terms << " terms: bound " << bound);
+      CHECK(std::isfinite(bound));
+      CHECK(std::fabs(finite_amplitude(method, theta0, terms) - reference) <= bound);
+    };
+    check(AmplitudeMethod::small_angle, 0);
+    for (int terms : {1, 4, 1000}) check(AmplitudeMethod::series, terms);
+  }
+}
+
 TEST_CASE("The automatic choice takes the cheapest method within the tolerance", "[amplitude]") {
   const double theta0 = 3.0 * test::kDegree;
   CHECK(cheapest_amplitude_method(theta0, 1e-6).method == AmplitudeMethod::small_angle);

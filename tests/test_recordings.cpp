@@ -261,6 +261,26 @@ TEST_CASE("Readers: delimiters, decimal commas, NaN cells, the header decides", 
                     Contains("e.csv:1:1") && Contains("does not fit a vernier export"));
 }
 
+TEST_CASE("A quoted header cell holding a line break is one cell, its words read across the break (RFC 4180)",
+          "[recordings]") {
+  // A spreadsheet's cell of two lines: the unit below the word.
+  const std::string body = "1.0,0.1\n2.0,0.2\n3.0,0.3\n";
+  for (const std::string line_break : {"\n", "\r\n"}) {
+    const Recording r = parse_recording(
+        "\"Time" + line_break + "(s)\",\"Gyroscope x" + line_break + "(rad/s)\"" + line_break + body, "a.csv");
+    CHECK(r.format == RecordingFormat::phyphox);
+    CHECK(r.kind == SignalKind::angular_rate);
+    CHECK(r.time == std::vector<double>{1.0, 2.0, 3.0});
+    CHECK(r.channels[0] == std::vector<double>{0.1, 0.2, 0.3});
+  }
+  // A row's line and column are the file's: the header fills lines 1 to 3, the fifth line goes back in time.
+  CHECK_THROWS_WITH(parse_recording("\"Time\n(s)\",\"Gyroscope x\n(rad/s)\"\n1,2\n0.5,3\n", "f"),
+                    Contains("f:5:1") && Contains("time going backwards"));
+  // A stray quote left open is no cell of several lines: the header ends at its own line, as before.
+  CHECK_THROWS_WITH(parse_recording("Time (s),\"Gyroscope x (rad/s)\n1,2\n2,3\nx,4\n", "f"),
+                    Contains("f:4:1"));
+}
+
 TEST_CASE("Readers name the file, line and column of a bad row", "[recordings]") {
   const std::string h = "\"Time (s)\",\"Gyroscope x (rad/s)\"\n";
   CHECK_THROWS_WITH(parse_recording(h + "1,2\n0.5,3\n", "f"), Contains("f:3:1") && Contains("time going backwards"));

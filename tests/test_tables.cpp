@@ -154,6 +154,23 @@ TEST_CASE("Tables: the layouts of one series read to one result", "[tables]") {
   CHECK(reduce_scene(parse_scene(table_scene(bare, "c"))).g.value == Approx(g).epsilon(1e-12));
 }
 
+TEST_CASE("Tables: a quoted header cell holding a line break is one cell (RFC 4180)", "[tables]") {
+  // quoted_header.csv with each header cell broken before its unit, as a spreadsheet writes a cell of two lines.
+  const std::string text = test::read_text(kTables + "/quoted_header.csv");
+  const std::string rows = text.substr(text.find('\n') + 1);
+  const double g = reduce_scene(parse_scene(table_scene(parse_settings_table(text, "a"), "a"))).g.value;
+  for (const std::string line_break : {"\n", "\r\n"}) {
+    const SettingsTable broken =
+        parse_settings_table("\"l" + line_break + "(m)\",\"t_{10}" + line_break + "(s)\"\n" + rows, "b");
+    CHECK(broken.setting_unit == "m");
+    CHECK(broken.oscillations == 10);
+    CHECK(reduce_scene(parse_scene(table_scene(broken, "b"))).g.value == g);
+  }
+  // A row's line and column are the file's: the header fills lines 1 to 3, the bad cell is on line 5.
+  CHECK_THROWS_WITH(parse_settings_table("\"l\n(m)\",\"t_{10}\n(s)\"\n0.550,14.90\n0.550,x\n", "c"),
+                    Catch::Matchers::Contains("c:5:7"));
+}
+
 TEST_CASE("Tables: a headerless h, sigma_h, T, sigma_T pivot scan", "[tables]") {
   const std::string text = test::read_text(kTables + "/headerless_pivot_scan.txt");
   CHECK(looks_like_settings_table(text));

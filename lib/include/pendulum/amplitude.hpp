@@ -292,16 +292,19 @@ inline double amplitude_error_bound(AmplitudeMethod method, double theta0, int t
   constexpr double kUnitRoundoff = 1.1102230246251565e-16;  // 2^-53
   const double k = std::sin(theta0 / 2.0);
   const double m = k * k;
+  // 1 - m as cos^2(theta0/2): from 179.9999999 deg on m rounds to 1, and 1 - m to 0 (an infinite bound).
+  const double kc = std::cos(theta0 / 2.0);
+  const double kc2 = kc * kc;
   switch (method) {
     case AmplitudeMethod::small_angle: {
       const double t4 = theta0 * theta0 * theta0 * theta0;
       const double omitted = detail::eq8_coefficient(2) * m * m +
-                             detail::eq8_coefficient(3) * m * m * m / (1.0 - m);
+                             detail::eq8_coefficient(3) * m * m * m / kc2;
       return std::fmax(omitted, t4 / 192.0) +
              4.0 * kUnitRoundoff * finite_amplitude_small_angle(theta0);
     }
     case AmplitudeMethod::series:
-      return detail::eq8_coefficient(terms + 1) * std::pow(m, terms + 1) / (1.0 - m) +
+      return detail::eq8_coefficient(terms + 1) * std::pow(m, terms + 1) / kc2 +
              (terms + 4.0) * kUnitRoundoff * finite_amplitude_series(theta0, terms);
     case AmplitudeMethod::agm:
     case AmplitudeMethod::automatic: break;

@@ -70,6 +70,18 @@ inline constexpr ArgumentRange amplitude_deg{
 inline constexpr ArgumentRange amplitude{
     "amplitude", "theta0", 0.0, 3.141592653589793, "rad",
     "an amplitude from 0 to below pi rad (at 180 deg and beyond the pendulum goes over the top)", true};
+/// A clock's impulse location, from 0 to the semi-amplitude `theta0` (rad):
+/// its top is the swing's, so it is made for each swing.
+constexpr ArgumentRange impulse_location(double theta0) {
+  return {"impulse.location", "location", 0.0, theta0, "rad", "an angle from 0 to the semi-amplitude theta0"};
+}
+
+/// Every range above, so that a check over them all (tests/fuzz/fuzz_arguments.cpp)
+/// takes a new one without an edit.
+inline constexpr const ArgumentRange* all[] = {
+    &negligible_fraction, &series_terms, &amplitude_terms, &length,         &length_uncertainty,
+    &timing_uncertainty,  &bob_width,    &stamps_per_period, &oscillations, &latitude,
+    &height,              &quality,      &semi_amplitude,  &amplitude_deg,  &amplitude};
 }  // namespace ranges
 
 /// Whether `value` lies in `range` (a NaN does not): inline, for loops over

@@ -624,7 +624,7 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
         });
         const bool unnamed = c.track == 0 && tracked(c.role);
         if (unnamed || (tracked(c.role) && c.track > 0 && twice != cols.begin() + j)) {
-          fail(file, header_line - 1, 1,
+          fail(file, lines.above_line, 1,
                "the track names are out of line with the columns: column " + std::to_string(j + 1) + " (\"" +
                    column_label(c.name, j + 1) + "\") " +
                    (unnamed ? std::string("comes before the first name")

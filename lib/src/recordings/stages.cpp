@@ -104,6 +104,44 @@ DataRows data_rows(std::string_view text, const HeaderLines& lines, const std::s
   return {begin, end, std::string_view(begin, static_cast<std::size_t>((nl ? static_cast<const char*>(nl) : end) - begin))};
 }
 
+namespace {
+
+/// The end of the line from `p`: its newline, or past a newline inside a
+/// quoted cell (RFC 4180: "time\n(s)" is one cell), which opens at a cell's
+/// start (after spaces) and closes at a lone quote ("" is one within it). A
+/// quote left open over kQuotedLines lines, or to the end, is a stray one:
+/// the line then ends at its own newline, as it did before.
+const char* line_end(const char* p, const char* end) {
+  constexpr int kQuotedLines = 8;
+  const void* first = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
+  const char* const own = first ? static_cast<const char*>(first) : end;
+  if (!std::memchr(p, '"', static_cast<std::size_t>(own - p))) return own;
+  bool cell_start = true, quoted = false;
+  int newlines = 0;
+  for (const char* q = p; q < end; ++q) {
+    const char c = *q;
+    if (quoted) {
+      if (c == '"' && q + 1 < end && q[1] == '"') {
+        ++q;
+      } else if (c == '"') {
+        quoted = false;
+      } else if (c == '\n' && ++newlines > kQuotedLines) {
+        return own;
+      }
+    } else if (c == '\n') {
+      return q;
+    } else if (c == ',' || c == ';' || c == '\t') {
+      cell_start = true;
+    } else if (c != ' ') {
+      quoted = c == '"' && cell_start;
+      cell_start = false;
+    }
+  }
+  return quoted ? own : end;
+}
+
+}  // namespace
+
 HeaderLines find_header(std::string_view text, const std::string& file) {
   const char* const begin = text.data();
   const char* const end = begin + text.size();
@@ -111,16 +149,17 @@ HeaderLines find_header(std::string_view text, const std::string& file) {
   const char* p = begin;
   std::size_t line_no = 0;
   while (p < end) {
-    const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
-    const char* e = nl ? static_cast<const char*>(nl) : end;
+    const char* e = line_end(p, end);
     ++line_no;
     if (!is_blank(p, e)) {
       if (is_data(p, e)) break;
-      if (h.header) h.preamble = true, h.above = h.header;
+      if (h.header) h.preamble = true, h.above = h.header, h.above_line = h.header_line;
       h.several_tracks |= starts_with(std::string_view(p, static_cast<std::size_t>(e - p)), "#multi");
       h.header = std::string_view(p, static_cast<std::size_t>(e - p));
       h.header_line = line_no;
     }
+    // The lines within a quoted cell count: a later message names the file's own line.
+    line_no += static_cast<std::size_t>(std::count(p, e, '\n'));
     p = e + (e < end);
     if (line_no > 100) fail(file, line_no, 1, "no numbers in the first 100 lines; expected a data export");
   }
@@ -402,6 +441,13 @@ Column classify(std::string_view raw) {
   Column c;
   c.name = to_utf8(trim_cell(raw));
   std::string s = lower_case(c.name);
+  // A line break within a quoted cell ("time\r\n(s)") is a space between its words.
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s[i] == '\r' && i + 1 < s.size() && s[i + 1] == '\n') continue;
+    s[kept++] = s[i] == '\r' || s[i] == '\n' ? ' ' : s[i];
+  }
+  s.resize(kept);
   // A header written as a comment ("# winkel in grad"): its words after the mark ("#" alone is a counter's).
   if (s.size() > 1 && s.front() == '#' && s.find_first_not_of("# ") != std::string::npos &&
       std::isalpha(static_cast<unsigned char>(s[s.find_first_not_of("# ")]))) {

@@ -51,6 +51,7 @@ struct HeaderLines {
   std::optional<std::string_view> header;  ///< the last non-data line before the data; none: headerless
   std::optional<std::string_view> above;   ///< the line above the header (a preamble)
   std::size_t header_line = 1;
+  std::size_t above_line = 1;   ///< where `above` starts (a quoted cell may hold line breaks)
   bool preamble = false;       ///< lines above the header (Tracker's track name, Logger Pro's data set)
   bool several_tracks = false;  ///< Tracker's "#multi:"
   std::size_t data_offset = 0;  ///< byte of the first data line in the text

@@ -600,7 +600,7 @@ std::vector<Column> header_columns(const HeaderLines& lines, const Dialect& dial
                                    const std::string& file) {
   auto columns_of = [&](std::string_view line) {
     std::vector<Column> cols;
-    const std::size_t line_no = line.data() == lines.header->data() ? lines.header_line : lines.header_line - 1;
+    const std::size_t line_no = line.data() == lines.header->data() ? lines.header_line : lines.above_line;
     for (std::string_view cell : split_cells_within(line, dialect, limits, file, line_no)) cols.push_back(classify(cell));
     while (cols.size() > 1 && cols.back().name.empty()) cols.pop_back();
     return cols;

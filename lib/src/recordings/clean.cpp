@@ -138,6 +138,15 @@ Cleaned held_frames(const std::vector<double>& time, const std::vector<std::vect
   Cleaned out;
   const std::size_t n = time.size();
   if (channels.empty() || n < 16) return out;
+  const auto held = [&](std::size_t k) {
+    return std::all_of(channels.begin(), channels.end(), [&](const std::vector<double>& c) { return c[k] == c[k - 1]; });
+  };
+  // Held frames repeat rows wherever the swing is: with fewer than a tenth
+  // of the rows repeating there are none (a pass without allocation, for
+  // every sampled recording).
+  std::size_t repeats = 0;
+  for (std::size_t k = 1; k < n; ++k) repeats += held(k);
+  if (10 * repeats < n) return out;
   const auto median = [](std::vector<double> v) {
     std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
     return v[v.size() / 2];
@@ -150,18 +159,11 @@ Cleaned held_frames(const std::vector<double>& time, const std::vector<std::vect
   std::vector<double> sorted = excursion;
   std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(9 * n / 10), sorted.end());
   const double extent = sorted[9 * n / 10];
-  const auto held = [&](std::size_t k) {
-    return std::all_of(channels.begin(), channels.end(), [&](const std::vector<double>& c) { return c[k] == c[k - 1]; });
-  };
   // Runs of rows holding one value, by where each starts: in the swing's
   // fast middle (within half its extent of the median) or beyond.
   std::vector<double> middle_runs, outer_runs, frames;
-  std::size_t repeats = 0;
   for (std::size_t k = 1, start = 0; k <= n; ++k) {
-    if (k < n && held(k)) {
-      ++repeats;
-      continue;
-    }
+    if (k < n && held(k)) continue;
     (excursion[start] < extent / 2.0 ? middle_runs : outer_runs).push_back(static_cast<double>(k - start));
     if (k < n) frames.push_back(time[k] - time[start]), start = k;
   }

@@ -293,7 +293,7 @@ Cleaned clean_times(const std::vector<double>& time, const std::vector<std::size
 /// (within half its extent of the median) and, 9 in 10 of them, no longer
 /// than twice that where the swing turns: a sensor's rounding (an encoder's steps) repeats
 /// where the swing is slow, its runs longest at the turns, and a record at
-/// rest adds few runs. `quantum` is then the median time from one frame to
+/// rest adds few runs. Fewer than a tenth of the rows repeating: none. `quantum` is then the median time from one frame to
 /// the next (s), the stamps' resolution for a crossing, and the note says
 /// so. Nothing is dropped (`all`): a held sample is its frame, late.
 Cleaned held_frames(const std::vector<double>& time, const std::vector<std::vector<double>>& channels);

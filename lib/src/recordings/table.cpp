@@ -715,7 +715,7 @@ bool readings_of_their_own(const std::vector<TableObservation>& obs, const std::
   if (!probability || !(*probability < kOverDispersedProbability)) return false;
   // Each model's log-likelihood at its best excess variance x (golden
   // section over [0, the largest group's variance per unit of its factor]).
-  auto best = [&](bool by_length, double& at) {
+  auto best = [&](bool by_length) {
     auto log_likelihood = [&](double x) {
       double sum = 0.0;
       for (const auto& [v, ss, stated, f] : groups) {
@@ -728,15 +728,14 @@ bool readings_of_their_own(const std::vector<TableObservation>& obs, const std::
     double a = 0.0, b = largest;
     for (int i = 0; i < 100; ++i) {
       const double c = b - golden * (b - a), d = a + golden * (b - a);
-      (log_likelihood(c) > log_likelihood(d) ? b : a) = log_likelihood(c) > log_likelihood(d) ? d : c;
+      const bool left = log_likelihood(c) > log_likelihood(d);
+      (left ? b : a) = left ? d : c;
     }
-    at = (a + b) / 2.0;
-    return log_likelihood(at);
+    return std::pair{log_likelihood((a + b) / 2.0), (a + b) / 2.0};
   };
-  double s2 = 0.0, tau2 = 0.0;
-  const double constant = best(false, s2), length = best(true, tau2);
+  const auto [length, tau2] = best(true);
   tau = std::sqrt(tau2);
-  return length - constant >= 1.0;
+  return length - best(false).first >= 1.0;
 }
 
 SettingsTable parse_settings_table(std::string_view text, const std::string& file, const TableOptions& options) {

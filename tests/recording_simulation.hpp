@@ -39,6 +39,7 @@ struct RecordingSimulation {
   double noise = 0.01;       // sensor noise sigma per axis (signal unit)
   std::array<double, 3> bias{0.003, -0.002, 0.001};  // per axis (signal unit)
   double jitter = 2e-4;      // s, sigma of the sample-time jitter
+  double phase = 0.0;        // the first sample's time after the release, in sample intervals [0, 1)
   double drop = 0.01;        // probability that a sample is missing
   std::array<double, 3> axis{0.28, 0.15, 0.948};    // swing axis in the phone (normalised below)
   std::uint64_t seed = 1;
@@ -71,7 +72,7 @@ inline SimulatedRecording simulate_recording(const RecordingSimulation& s) {
   const double dt = 1.0 / s.rate_hz;
   const std::size_t n = static_cast<std::size_t>(s.duration * s.rate_hz);
   for (std::size_t k = 0; k < n; ++k) {
-    const double target = std::max(now, k * dt + s.jitter * normal.next());
+    const double target = std::max(now, (k + s.phase) * dt + s.jitter * normal.next());
     while (now < target) {  // RK4 sub-steps up to the sample time
       const double h = std::min(1e-3, target - now);
       double a1, b1, a2, b2, a3, b3, a4, b4;
@@ -189,6 +190,12 @@ enum class PublishedLayout {
   held_frames,         ///< "t, theta" by ", ", no header, printf's %g: an OpenCV loop writing, at every
                        ///< third sample, the angle in degrees of the camera's latest frame, one every
                        ///< ninth sample (each frame's noise drawn once): a staircase of held frames
+  t_theta_extra,       ///< "t theta extra" by spaces, no header: the angle in degrees, then a third
+                       ///< signal at the swing's frequency, half the angle a fifth of a period
+                       ///< earlier (a second sensor's lagging reading): no track's y
+  generic_names,       ///< "X,Y,X',Y'": a fitting program's generic names over the time, the angle
+                       ///< in degrees, the time's uncertainty (half a frame) and the angle's
+                       ///< (0.5 deg and 2 % of it)
 };
 
 inline std::string published_csv(const SimulatedRecording& r, double length, PublishedLayout layout, double noise,
@@ -211,6 +218,7 @@ inline std::string published_csv(const SimulatedRecording& r, double length, Pub
     case PublishedLayout::slash_units: put("Time/s,Angle/rad\n"); break;
     case PublishedLayout::header_mismatch: put("x y dx dy\n"); break;
     case PublishedLayout::portuguese: put("frame,tempo,x,y\n"); break;
+    case PublishedLayout::generic_names: put("X,Y,X',Y'\n"); break;
     case PublishedLayout::headerless_txy:
     case PublishedLayout::held_frames:
     case PublishedLayout::tilted_camera:
@@ -219,6 +227,7 @@ inline std::string published_csv(const SimulatedRecording& r, double length, Pub
     case PublishedLayout::headerless_radians:
     case PublishedLayout::microbit_ms:
     case PublishedLayout::microbit_two_axes:
+    case PublishedLayout::t_theta_extra:
     case PublishedLayout::timer_ms: break;
   }
   if (layout == PublishedLayout::headerless_timer || layout == PublishedLayout::timer_ms) {
@@ -239,6 +248,10 @@ inline std::string published_csv(const SimulatedRecording& r, double length, Pub
     }
     return out;
   }
+  // The lag of t_theta_extra's third column: a fifth of the first period.
+  const std::size_t lag = r.zero_times.size() > 2
+                              ? static_cast<std::size_t>((r.zero_times[2] - r.zero_times[0]) / 5.0 / (r.t[1] - r.t[0]))
+                              : 0;
   for (std::size_t k = 0; k < r.t.size(); ++k) {
     const double t = r.t[k], th = r.theta[k];
     const double e1 = noise * normal.next(), e2 = noise * normal.next();
@@ -262,6 +275,12 @@ inline std::string published_csv(const SimulatedRecording& r, double length, Pub
       case PublishedLayout::slash_units: put("%.3f,%.6f\n", t, th + e1); break;
       case PublishedLayout::header_mismatch: put("%.6E %.6E\n", t, (th + e1) * kDeg); break;
       case PublishedLayout::portuguese: put("%zu,%.9f,%.0f,%.0f\n", k + 1, t, 640.0 + 1000.0 * x, 200.0 - 1000.0 * y); break;
+      case PublishedLayout::t_theta_extra:
+        put("%.4f %.4f %.4f\n", t, (th + e1) * kDeg, (0.5 * r.theta[k < lag ? 0 : k - lag] + e2) * kDeg);
+        break;
+      case PublishedLayout::generic_names:
+        put("%.5f,%.4f,%.5f,%.4f\n", t, (th + e1) * kDeg, 0.5 / 12.0, 0.5 + 0.02 * std::fabs(th * kDeg));
+        break;
       case PublishedLayout::headerless_timer:
       case PublishedLayout::held_frames:
       case PublishedLayout::timer_ms: break;

@@ -383,3 +383,41 @@ TEST_CASE("reduce RECORDING --length and --length-uncertainty check against the 
     CHECK_THAT(r.err, StartsWith(message));
   }
 }
+
+TEST_CASE("A swing pumped up at the start: the JSON's glitch and the reduction's warning name the growth",
+          "[cli][import]") {
+  // The ramp of test_recordings.cpp's pumped swing (T = 1 s, 20 to 60 deg
+  // over the first 8 s, steady to 40 s, 100 Hz; no noise: the growth alone
+  // marks it), kept whole by "range": "all": the growth stays a glitch of
+  // the record, and both outputs say what it is rather than "does not fit".
+  const std::string recording = temporary_file() + ".csv";
+  {
+    std::ofstream f(recording);
+    f << "t (s),theta (deg)\n";
+    for (int k = 0; k < 4000; ++k) {
+      const double t = k / 100.0;
+      f << t << ',' << (20.0 + 40.0 * std::min(t / 8.0, 1.0)) * std::sin(2.0 * M_PI * t) << '\n';
+    }
+  }
+  const Run whole = run("import --range all " + recording);
+  INFO(whole.err);
+  REQUIRE(whole.status == 0);
+  const json glitches = json::parse(whole.out).at("glitches");
+  REQUIRE(glitches.size() == 1);
+  CHECK_THAT(glitches[0].at("cause").get<std::string>(), StartsWith("the swing grows"));
+  const std::string scene = temporary_file();
+  std::ofstream(scene) << json{{"timing", {{"recording", recording}, {"range", "all"}}},
+                               {"length", {{"value", 0.2485}, {"uncertainty", 0.0005}, {"unit", "m"}}}}
+                              .dump();
+  const Run reduced = run("reduce --allow-outside " + scene);
+  std::remove(scene.c_str());
+  std::remove(recording.c_str());
+  INFO(reduced.err);
+  REQUIRE(reduced.status == 0);
+  const json warnings = json::parse(reduced.out).at("warnings");
+  CHECK(std::any_of(warnings.begin(), warnings.end(), [](const json& w) {
+    const std::string text = w.get<std::string>();
+    return text.find("s the swing grows: a hand or a drive pumping it") != std::string::npos &&
+           text.find("does not fit the swing") == std::string::npos;
+  }));
+}

@@ -123,6 +123,37 @@ TEST_CASE("Split: delimiters, runs of spaces, quotes, decimal commas", "[recordi
   CHECK(filled_cells(split_cells("x y dx dy\t\t\t", Dialect{'\t', false})) == 1);
 }
 
+TEST_CASE("Content: a bob's height is a function of its x; a column that follows x's rate is not",
+          "[recordings][columns]") {
+  // x = 0.2 sin(2 pi t / 1.8) at 30 Hz over 60 s; heights in step with it
+  // (an arc's, with a roll of 5 deg: part x), a tracker's drifting height
+  // (issue 38's real PHY180 track: y wanders over 0.30-0.35 m, uncorrelated
+  // with the swing) and pure noise are heights; a copy of x a fifth of a
+  // period late (90 % of its variance a quarter period out of step) and x's
+  // own rate are not.
+  std::vector<double> t, x, arc, drift, noise, late, rate;
+  NormalDeviates normal(5);
+  double walk = 0.33;
+  const double w = 2.0 * M_PI / 1.8;
+  for (int k = 0; k < 1800; ++k) {
+    const double time = k / 30.0, e = 0.001 * normal.next();
+    walk = std::clamp(walk + 0.002 * normal.next(), 0.30, 0.35);
+    t.push_back(time);
+    x.push_back(0.2 * std::sin(w * time));
+    const double height = 0.8 - std::sqrt(0.64 - x.back() * x.back());
+    arc.push_back(std::cos(0.087) * height + std::sin(0.087) * x.back() + e);
+    drift.push_back(walk + e);
+    noise.push_back(e);
+    late.push_back(0.1 * std::sin(w * (time - 0.36)) + e);
+    rate.push_back(0.2 * w * std::cos(w * time) + e);
+  }
+  CHECK(could_be_track_y(t, x, arc));
+  CHECK(could_be_track_y(t, x, drift));
+  CHECK(could_be_track_y(t, x, noise));
+  CHECK_FALSE(could_be_track_y(t, x, late));
+  CHECK_FALSE(could_be_track_y(t, x, rate));
+}
+
 TEST_CASE("Content: counters, constants, clocks and angle units from the numbers", "[recordings][columns]") {
   CHECK(examine({1, 2, 3, 4, 5}).counter);
   CHECK_FALSE(examine({0.0, 0.01, 0.02, 0.03}).counter);
@@ -451,19 +482,73 @@ TEST_CASE("Refusals: what cannot be read says the fix", "[recordings][columns]")
                     Contains("expected a role"));
 }
 
+namespace {
+
+/// A published layout at a frame rate and a release amplitude; a track or not.
+struct Family {
+  PublishedLayout layout;
+  double rate_hz;
+  double theta0_deg;
+  bool track;
+};
+
+/// Checks the roles read on seeds 1..200 of a family and returns how often
+/// the period lies within its standard uncertainty of the truth: 20 s, l =
+/// 0.80 m, alpha = 2e-3 1/s, beta = 4e-3 1/(s rad), jitter 0.2 ms, no
+/// samples dropped, the first sample a seeded fraction of an interval after
+/// the release (each seed its own sampling phase: with one phase for all,
+/// an error that depends on it is one draw, not 200); an angle with 1.5 mm
+/// / 0.8 m of noise (rad), a track with 1.5 mm on x and y. The truth: the
+/// exact zero crossings of theta nearest to the ones found (the
+/// simulation's, linear within 1 ms), their mean period, as
+/// tests/test_recordings.cpp.
+double period_coverage(const Family& f) {
+  constexpr int kRuns = 200;
+  int covered = 0;
+  for (int seed = 1; seed <= kRuns; ++seed) {
+    test::RecordingSimulation s;
+    s.duration = 20.0, s.drop = 0.0, s.noise = 0.0, s.rate_hz = f.rate_hz;
+    s.theta0 = f.theta0_deg * M_PI / 180.0, s.seed = static_cast<std::uint64_t>(seed);
+    s.phase = std::fmod(seed * 0.6180339887498949, 1.0);  // the golden ratio's steps spread the phases evenly
+    const auto sim = simulate_recording(s);
+    const double noise = f.track ? 0.0015 : 0.0015 / s.length;
+    const Recording r =
+        parse_recording(test::published_csv(sim, s.length, f.layout, noise, static_cast<std::uint64_t>(seed)), "sim");
+    const SignalKind kind = f.track ? SignalKind::position
+                            : f.layout == PublishedLayout::microbit_ms || f.layout == PublishedLayout::microbit_two_axes
+                                ? SignalKind::unknown
+                                : SignalKind::angle;
+    REQUIRE(r.kind == kind);
+    const SwingAnalysis a = analyse_swings(r, "sim");
+    // The angle's unit read right (the other is 57 times off): the
+    // amplitude at the first crossing, where there is one (a 2 deg swing
+    // under 2 mrad of noise may have none), within a factor 1.5 of the
+    // release's.
+    if (kind == SignalKind::angle) CHECK_FALSE((a.start_amplitude > 1.5 * s.theta0 || a.start_amplitude < s.theta0 / 1.5));
+    std::vector<double> exact;
+    for (const auto& c : a.crossings) {
+      const auto it = std::lower_bound(sim.zero_times.begin(), sim.zero_times.end(), c.time);
+      double best = it == sim.zero_times.end() ? sim.zero_times.back() : *it;
+      if (it != sim.zero_times.begin() && std::fabs(*(it - 1) - c.time) < std::fabs(best - c.time)) best = *(it - 1);
+      exact.push_back(best);
+    }
+    const double truth = 2.0 * (exact.back() - exact.front()) / (exact.size() - 1.0);
+    covered += std::fabs(a.period.value - truth) <= a.period.uncertainty;
+  }
+  const double coverage = static_cast<double>(covered) / kRuns;
+  WARN("layout " << static_cast<int>(f.layout) << " at " << f.rate_hz << " Hz, " << f.theta0_deg << " deg: coverage "
+                 << coverage);
+  return coverage;
+}
+
+// 1 sigma's normal coverage, and 3 binomial sigmas of it over 200 runs: 0.099.
+constexpr double kOneSigma = 0.6826894921370859;
+const double kCoverageTolerance = 3.0 * std::sqrt(kOneSigma * (1.0 - kOneSigma) / 200.0);
+
+}  // namespace
+
 TEST_CASE("Published layouts: the period within its uncertainty of the truth, 200 recordings each",
           "[recordings][columns][coverage]") {
-  // Seeds 1..200 per layout: 20 s, l = 0.80 m, alpha = 2e-3 1/s, beta = 4e-3
-  // 1/(s rad), jitter 0.2 ms, no samples dropped; an angle with 1.5 mm / 0.8 m
-  // of noise (rad), a track with 1.5 mm on x and y. The truth: the exact
-  // zero crossings of theta nearest to the ones found (the simulation's,
-  // linear within 1 ms), their mean period, as tests/test_recordings.cpp.
-  struct Family {
-    PublishedLayout layout;
-    double rate_hz;
-    double theta0_deg;
-    bool track;
-  };
   const Family families[] = {
       {PublishedLayout::rotary_degrees, 50.0, 4.0, false},  {PublishedLayout::opencv_angle, 30.0, 5.0, false},
       {PublishedLayout::opencv_angle, 30.0, 2.0, false},    {PublishedLayout::pixel_track, 60.0, 10.0, true},
@@ -474,39 +559,28 @@ TEST_CASE("Published layouts: the period within its uncertainty of the truth, 20
       // one; a micro:bit's whole milli-g on a millisecond clock, timed only.
       {PublishedLayout::headerless_degrees, 30.0, 5.0, false}, {PublishedLayout::headerless_radians, 30.0, 40.0, false},
       {PublishedLayout::microbit_ms, 50.0, 10.0, false}, {PublishedLayout::microbit_two_axes, 30.0, 20.0, false},
+      // The rest of issue 38's: degrees at 40 deg, radians at 2 deg; a third signal beside the
+      // angle that is no track's y; a fitting program's "X,Y,X',Y'" at 12 frames/s; a 12
+      // frames/s track.
+      {PublishedLayout::headerless_degrees, 30.0, 40.0, false}, {PublishedLayout::headerless_radians, 30.0, 2.0, false},
+      {PublishedLayout::t_theta_extra, 30.0, 40.0, false},      {PublishedLayout::generic_names, 12.0, 20.0, false},
+      {PublishedLayout::headerless_txy, 12.0, 10.0, true},
   };
-  for (const Family& f : families) {
-    constexpr int kRuns = 200;
-    int covered = 0;
-    for (int seed = 1; seed <= kRuns; ++seed) {
-      test::RecordingSimulation s;
-      s.duration = 20.0, s.drop = 0.0, s.noise = 0.0, s.rate_hz = f.rate_hz;
-      s.theta0 = f.theta0_deg * M_PI / 180.0, s.seed = static_cast<std::uint64_t>(seed);
-      const auto sim = simulate_recording(s);
-      const double noise = f.track ? 0.0015 : 0.0015 / s.length;
-      const Recording r =
-          parse_recording(test::published_csv(sim, s.length, f.layout, noise, static_cast<std::uint64_t>(seed)), "sim");
-      const SignalKind kind = f.track                                        ? SignalKind::position
-                              : f.layout == PublishedLayout::microbit_ms || f.layout == PublishedLayout::microbit_two_axes
-                                  ? SignalKind::unknown
-                                                                         : SignalKind::angle;
-      REQUIRE(r.kind == kind);
-      const SwingAnalysis a = analyse_swings(r, "sim");
-      std::vector<double> exact;
-      for (const auto& c : a.crossings) {
-        const auto it = std::lower_bound(sim.zero_times.begin(), sim.zero_times.end(), c.time);
-        double best = it == sim.zero_times.end() ? sim.zero_times.back() : *it;
-        if (it != sim.zero_times.begin() && std::fabs(*(it - 1) - c.time) < std::fabs(best - c.time)) best = *(it - 1);
-        exact.push_back(best);
-      }
-      const double truth = 2.0 * (exact.back() - exact.front()) / (exact.size() - 1.0);
-      covered += std::fabs(a.period.value - truth) <= a.period.uncertainty;
-    }
-    const double coverage = static_cast<double>(covered) / kRuns, p = 0.6826894921370859;
-    const double tolerance = 3.0 * std::sqrt(p * (1.0 - p) / kRuns);  // 3 binomial sigmas: 0.099
-    WARN("layout " << static_cast<int>(f.layout) << " at " << f.rate_hz << " Hz, " << f.theta0_deg
-                   << " deg: coverage " << coverage);
-    CHECK(std::fabs(coverage - p) < tolerance);
+  for (const Family& f : families) CHECK(std::fabs(period_coverage(f) - kOneSigma) < kCoverageTolerance);
+}
+
+TEST_CASE("Large swings: the period within its uncertainty of the truth at 60 and 83 deg (known to fail)",
+          "[recordings][columns][coverage][!mayfail]") {
+  // Issue 38's OpenCV track swung from 83 deg. Here the roles and the unit
+  // are read right, but the period is 3e-5 (60 deg) to 6e-5 (83 deg) of
+  // itself short, 1.5 to 3 of its sigmas, in nearly every seed: coverage
+  // 0.165 and 0 (session 28). The smooth amplitude curve of the index (a
+  // line in log theta over these 20 swings) starts 0.6 % high and ends
+  // 0.2 % low; its own uncertainty adds 5e-6 s to the period's, a tenth of
+  // the error. Kept running until the index is unbiased there.
+  for (const Family& f : {Family{PublishedLayout::headerless_degrees, 30.0, 60.0, false},
+                          Family{PublishedLayout::headerless_radians, 20.0, 83.0, false}}) {
+    CHECK(std::fabs(period_coverage(f) - kOneSigma) < kCoverageTolerance);
   }
 }
 

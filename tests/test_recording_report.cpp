@@ -314,3 +314,26 @@ TEST_CASE("A report says what the clean stretch cut and bridged, and shades it o
   const std::string svg = to_svg(*signal_figure(record, "s"), false);
   CHECK_THAT(svg, Contains("cut by default (the clean stretch), or bridged with its count carried"));
 }
+
+TEST_CASE("A page prints the period to the crossing fit's own clock floor, as the JSON does", "[report][recording]") {
+  // A 60 s gyroscope recording (the simulation's defaults, seed 7) whose
+  // stamps are printed to 10 ms: the crossing fit floors its uncertainty at
+  // the clock's (q^2/12 a crossing through the slope), which the JSON
+  // states. The page used sqrt(2) q / N instead (4e-4 s over 33 periods,
+  // many times the fit's), rounding the period coarser than the JSON says:
+  // a held-frames track read 0.8600 +- 0.0059 s on its page, +- 0.0011 s in
+  // its JSON.
+  test::SimulatedRecording sim;
+  test::RecordingSimulation s;
+  s.seed = 7;
+  Recording rec = gyroscope(s, sim);
+  for (double& t : rec.time) t = std::round(t / 0.01) * 0.01;
+  rec.time_quantum = 0.01;
+  const RecordingSummary summary{"stamps.csv", rec.format, rec.kind, rec.rows, 0, analyse_swings(rec, "stamps.csv")};
+  REQUIRE(summary.swings.period.resolution_floor > 0.0);
+  const RecordingRecord r = make_recording_record(summary, &rec);
+  CHECK(r.period_resolution == summary.swings.period.resolution_floor);
+  const std::string html = recording_report_html(r);
+  CHECK_THAT(html, Contains("T = " + value_with_uncertainty(r.period.value, r.period.uncertainty, false) + " s") &&
+                       !Contains("below the clock's resolution"));
+}

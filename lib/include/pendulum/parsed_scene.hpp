@@ -55,7 +55,7 @@ struct ObservationSource {
     double spread, floor;
     bool floor_is_resolution;  ///< the floor's distribution: rectangular, else normal
   };
-  std::optional<TrialScatter> trial_scatter;
+  std::optional<TrialScatter> trial_scatter = std::nullopt;
 };
 
 /// How a recording named by a scene's timing was reduced (docs/recordings.md,

@@ -74,7 +74,11 @@ nlohmann::ordered_json summary_json(const RecordingSummary& r) {
   // Stretches that do not fit the swing (swings.hpp, step 7).
   out["glitches"] = nlohmann::ordered_json::array();
   for (const Glitch& g : a.glitches) {
-    out["glitches"].push_back({{"from", g.start}, {"to", g.end}, {"unit", "s"}, {"worst_robust_sigmas", g.worst}});
+    out["glitches"].push_back({{"from", g.start},
+                               {"to", g.end},
+                               {"unit", "s"},
+                               {"worst_robust_sigmas", g.worst},
+                               {"cause", g.cause ? nlohmann::ordered_json(g.cause) : nlohmann::ordered_json(nullptr)}});
   }
   // The stretch analysed (a typed range, or the clean stretch by default;
   // null: the whole record), what the clean stretch cut, and the whole

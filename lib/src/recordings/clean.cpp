@@ -147,12 +147,8 @@ Cleaned held_frames(const std::vector<double>& time, const std::vector<std::vect
   std::size_t repeats = 0;
   for (std::size_t k = 1; k < n; ++k) repeats += held(k);
   if (10 * repeats < n) return out;
-  const auto median = [](std::vector<double> v) {
-    std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
-    return v[v.size() / 2];
-  };
   const std::vector<double>& s = channels.front();
-  const double centre = median(s);
+  const double centre = median_of(s);
   std::vector<double> excursion(n);
   for (std::size_t k = 0; k < n; ++k) excursion[k] = std::fabs(s[k] - centre);
   // The extent: the 90th percentile of |s - median|, a knock's few samples aside.
@@ -170,11 +166,11 @@ Cleaned held_frames(const std::vector<double>& time, const std::vector<std::vect
   // Frames held by a poll are as long wherever the swing is; a sensor's
   // rounding repeats where the swing is slow, its runs longest where it turns.
   if (!(extent > 0.0) || middle_runs.size() < 8 || outer_runs.size() < 8 || frames.empty()) return out;
-  const double middle = median(middle_runs);
+  const double middle = median_of(middle_runs);
   std::nth_element(outer_runs.begin(), outer_runs.begin() + static_cast<long>(9 * outer_runs.size() / 10), outer_runs.end());
   const double outer = outer_runs[9 * outer_runs.size() / 10];  // the 90th percentile: the runs at the turns
   if (!(middle >= 2.0) || !(outer <= 2.0 * middle)) return out;
-  out.quantum = median(frames);
+  out.quantum = median_of(frames);
   out.notes.push_back({0, std::to_string(repeats) + " of " + std::to_string(n) + " samples repeat the one before in "
                           "every column, in runs of " + format_number(middle, 3) + " rows (the median) in the "
                           "swing's fast middle and at most " + format_number(outer, 3) + " (9 in 10) where it turns: held frames, a "

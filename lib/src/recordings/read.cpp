@@ -452,6 +452,20 @@ Layout detect(RecordingFormat forced, const std::vector<Column>& cols, bool prea
            "with --format or the columns with --columns");
 }
 
+/// Whether a header holds only a fitting program's generic names (x and y,
+/// their primes or d's: "X,Y,X',Y'", "x y dx dy") and no time: names that
+/// say where a value goes in a fit, not what it is. Such a file's roles come
+/// from its numbers, as a headerless file's do (issue 38: "X" stepping by
+/// 1/12 s is the time).
+bool generic_names(const std::vector<Column>& cols) {
+  return std::all_of(cols.begin(), cols.end(), [](const Column& c) {
+    const bool letter = c.word == "x" || c.word == "y" || c.word == "x'" || c.word == "y'";
+    return !c.prefixed && c.unit.empty() &&
+           ((letter && (c.role == Role::x || c.role == Role::y || c.role == Role::derivative)) ||
+            ((c.word == "dx" || c.word == "dy") && c.role == Role::uncertainty));
+  });
+}
+
 /// Roles of a headerless file's columns from their numbers: a counter steps
 /// by one, or by one whole stride beside an increasing column of other
 /// numbers (the time: "1;3.05", "3;9.202", a count of periods against the
@@ -459,7 +473,9 @@ Layout detect(RecordingFormat forced, const std::vector<Column>& cols, bool prea
 /// constant is unused; of two that remain, one the rate of the other is an angle and its
 /// angular velocity; the first swinging at twice the second's frequency is
 /// no track's x (a bob's y swings at twice x's): the second is then the one
-/// signal; else they are a track's x and y. Returns a note on a column set aside.
+/// signal; a second that follows the first's rate (could_be_track_y: no
+/// bob's height on its arc does) is set aside beside that first, an angle;
+/// else they are a track's x and y. Returns a note on a column set aside.
 std::optional<std::string> roles_from_content(std::vector<Column>& cols, const Content& content) {
   std::optional<std::size_t> time;
   std::vector<std::size_t> signals;
@@ -473,6 +489,7 @@ std::optional<std::string> roles_from_content(std::vector<Column>& cols, const C
     Column& c = cols[j];
     c.decided = "content";
     c.known = true;
+    if (c.role == Role::uncertainty) continue;
     if (f.counter || (f.stride > 0.0 && other_increasing)) c.role = Role::counter;
     else if (f.constant) c.role = Role::other;
     else if (f.increasing && !time) c.role = Role::time, time = j;
@@ -498,8 +515,15 @@ std::optional<std::string> roles_from_content(std::vector<Column>& cols, const C
       note = "\"" + column_label(cols[signals[0]].name, signals[0] + 1) + "\" swings at " + format_number(pb / pa, 2) +
              " times the frequency of \"" + column_label(cols[signals[1]].name, signals[1] + 1) +
              "\": not a track's x beside its y (y swings at twice x's frequency), so set aside";
-    } else {
+    } else if (pb < 0.7 * pa || could_be_track_y(t, a, b)) {
       cols[signals[0]].role = Role::x, cols[signals[1]].role = Role::y;
+    } else {
+      // "t theta extra": a bob's height is a function of its x, in step with it.
+      cols[signals[0]].role = Role::angle;
+      note = "\"" + column_label(cols[signals[1]].name, signals[1] + 1) + "\" follows the rate of \"" +
+             column_label(cols[signals[0]].name, signals[0] + 1) +
+             "\" (a part a quarter period out of step), as no bob's height on its arc does: not a track's x and "
+             "y, so set aside";
     }
   }
   for (std::size_t j : signals) cols[j].known = true;
@@ -712,7 +736,8 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
                                      (runs.empty() ? std::string() : " (its runs: " + runs + ")"));
     }
   }
-  const bool headerless = !header && !declared;
+  const bool generic = header && !declared && generic_names(cols);
+  const bool headerless = (!header && !declared) || generic;
   // A header no layout fits is refused before its rows are read.
   if (!headerless) (void)detect(format, cols, preamble, false, file, header_line, run, track, nullptr);
 
@@ -725,6 +750,23 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
     }
   }
   const Content content{table};
+  if (generic) {
+    // A primed or d column never negative is an uncertainty: a swing's
+    // derivative changes sign. The rest are read as a headerless file's.
+    std::string set_aside;
+    for (std::size_t j = 0; j < cols.size(); ++j) {
+      const bool sigma = cols[j].role != Role::x && cols[j].role != Role::y && content.facts(j).ranged &&
+                         content.facts(j).lo >= 0.0;
+      cols[j].role = sigma ? Role::uncertainty : Role::other;
+      if (sigma) set_aside += (set_aside.empty() ? "\"" : ", \"") + names[j] + "\"";
+    }
+    header_notes.push_back({header_line, "the header's names (" + quoted_names(cols) +
+                                             ") are a fitting program's generic ones, not a time and a track: the "
+                                             "columns are read by their numbers" +
+                                             (set_aside.empty() ? std::string()
+                                                                : ", " + set_aside + " (never negative) as uncertainties"
+                                                                  " of the others")});
+  }
   if (headerless && cols.size() > 1 && format != RecordingFormat::plain) {
     if (auto note = roles_from_content(cols, content)) header_notes.push_back({0, std::move(*note)});
   }

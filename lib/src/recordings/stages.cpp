@@ -2,6 +2,8 @@
 // split, words, content.
 #include "stages.hpp"
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -21,6 +23,13 @@ void fail(const std::string& file, std::size_t line, std::size_t column, const s
 }
 
 bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
+
+double median_of(std::vector<double> v) {
+  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
 
 std::string_view trim_cell(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\r' || s.front() == '"')) s.remove_prefix(1);
@@ -733,6 +742,46 @@ bool is_rate_of(const std::vector<double>& t, const std::vector<double>& a, cons
   if (n < 8.0) return false;
   const double cuu = suu - su * su / n, cvv = svv - sv * sv / n, cuv = suv - su * sv / n;
   return cuu > 0.0 && cvv > 0.0 && std::fabs(cuv) / std::sqrt(cuu * cvv) > 0.9;
+}
+
+bool could_be_track_y(const std::vector<double>& t, const std::vector<double>& x, const std::vector<double>& y) {
+  const std::size_t n = std::min({t.size(), x.size(), y.size()});
+  if (n < 16) return true;
+  struct Sample {
+    double x, rate, y;
+  };
+  std::vector<Sample> at;
+  const std::size_t stride = std::max<std::size_t>(1, n / 65536);
+  for (std::size_t k = 1; k + 1 < n; k += stride) {
+    const Sample v{x[k], (x[k + 1] - x[k - 1]) / (t[k + 1] - t[k - 1]), y[k]};
+    if (std::isfinite(v.x) && std::isfinite(v.rate) && std::isfinite(v.y)) at.push_back(v);
+  }
+  if (at.size() < 16) return true;
+  double mean = 0.0, spread = 0.0, rate_spread = 0.0, y_mean = 0.0;
+  for (const Sample& v : at) mean += v.x / at.size(), y_mean += v.y / at.size();
+  for (const Sample& v : at) spread = std::max(spread, std::fabs(v.x - mean)), rate_spread = std::max(rate_spread, std::fabs(v.rate));
+  if (!(spread > 0.0) || !(rate_spread > 0.0)) return true;
+  // Scaled to [-1, 1], so that the normal equations stay well conditioned.
+  using Row = Eigen::Matrix<double, 6, 1>;
+  const auto row = [&](const Sample& v) {
+    const double u = (v.x - mean) / spread;
+    return Row(1.0, u, u * u, u * u * u, u * u * u * u, v.rate / rate_spread);
+  };
+  Eigen::Matrix<double, 6, 6> normal = Eigen::Matrix<double, 6, 6>::Zero();
+  Row right = Row::Zero();
+  double yy = 0.0;
+  for (const Sample& v : at) {
+    const Row r = row(v);
+    normal += r * r.transpose(), right += r * v.y, yy += (v.y - y_mean) * (v.y - y_mean);
+  }
+  // The sums of squares left by the polynomial alone and with the rate.
+  const auto ssr = [&](int terms) {
+    const Eigen::VectorXd c = normal.topLeftCorner(terms, terms).ldlt().solve(right.head(terms));
+    double s = 0.0;
+    for (const Sample& v : at) s += std::pow(v.y - row(v).head(terms).dot(c), 2);
+    return s;
+  };
+  return !(ssr(5) - ssr(6) > 0.25 * yy);
 }
 
 }  // namespace pendulum::recording_text

@@ -93,6 +93,10 @@ Dialect sniff(std::optional<std::string_view> header, std::string_view first_dat
 /// Whether `s` starts with `p`.
 bool starts_with(std::string_view s, std::string_view p);
 
+/// The median of `v` (of an even count, the upper of the middle two); NaN
+/// when `v` is empty.
+double median_of(std::vector<double> v);
+
 /// `s` without the spaces, CRs and quotes around it: a cell's text.
 std::string_view trim_cell(std::string_view s);
 
@@ -265,6 +269,16 @@ std::pair<std::string, std::string> unitless_time(double period);
 /// angular velocity, never the x and y of a track (y swings at twice x's
 /// frequency, so x's rate and y do not correlate).
 bool is_rate_of(const std::vector<double>& t, const std::vector<double>& a, const std::vector<double>& b);
+
+/// True if `y` can be the height of the bob whose horizontal position is `x`
+/// at times `t`: on the bob's arc (seen square, or rolled in its plane) y is
+/// a function of x, so none of y follows x's rate, the swing a quarter
+/// period on. False where that quarter-period part, beyond a polynomial of
+/// degree 4 in x, holds over a quarter of y's variance: a third column
+/// beside an angle (`t theta extra`: a lagging signal). A y of noise or a
+/// tracker's drift has none of it. At most 2^16 samples are used, evenly
+/// spread.
+bool could_be_track_y(const std::vector<double>& t, const std::vector<double>& x, const std::vector<double>& y);
 
 // --- clean ------------------------------------------------------------------
 

@@ -19,6 +19,8 @@
 namespace pendulum {
 namespace {
 
+using recording_text::median_of;
+
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// The smooth amplitude curve (a polynomial in time fitted to log theta): a
@@ -610,13 +612,6 @@ void require_below_top(double sine, const std::string& file) {
 
 /// "12.3456 s"
 std::string seconds(double t, int digits = 6) { return format_number(t, digits) + " s"; }
-
-double median_of(std::vector<double> v) {
-  if (v.empty()) return kNaN;
-  auto mid = v.begin() + v.size() / 2;
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
-}
 
 /// The signal's level that sets the first crossing's threshold: its rms or,
 /// where a knock many times the swing swells that beyond twice the median

@@ -201,12 +201,6 @@ Use from_header(const Column& c) {
   return u;
 }
 
-double median(std::vector<double> x) {
-  const auto mid = x.begin() + static_cast<std::ptrdiff_t>(x.size() / 2);
-  std::nth_element(x.begin(), mid, x.end());
-  return *mid;
-}
-
 /// The root mean square of `v`, scaled by the power of two nearest its
 /// largest size so that a stated 1e-200 s does not square to 0 (a timing
 /// then claimed exact); the scaling is exact, so other values' rms keeps
@@ -241,7 +235,7 @@ std::size_t cell_column(std::string_view text, std::size_t line_no, const Dialec
 bool reads_as_uncertainty(const std::vector<double>& u, const std::vector<double>& v) {
   std::vector<double> size;
   for (double x : v) size.push_back(std::fabs(x));
-  const double typical = median(size);
+  const double typical = median_of(size);
   const double top = *std::max_element(u.begin(), u.end());
   return std::all_of(u.begin(), u.end(), [](double x) { return x >= 0.0; }) && top > 0.0 && top < typical / 3.0;
 }
@@ -293,7 +287,7 @@ std::vector<double> row_k2(const std::vector<double>& h, const std::vector<doubl
 /// (a short row beside lengths taped to the top of the bob runs low).
 bool fits_length(const std::vector<double>& l, const std::vector<double>& t) {
   const std::vector<double> g = row_g(l, t);
-  const double m = median(g), length = median(l);
+  const double m = median_of(g), length = median_of(l);
   return length >= 0.1 && length <= 5.0 && m >= 4.0 && m <= 25.0 &&
          std::all_of(g.begin(), g.end(), [&](double x) { return x > m / 2.5 && x < 2.5 * m; });
 }
@@ -387,7 +381,7 @@ int swings_in(const std::vector<double>& l, const std::string& unit, const std::
     const std::vector<double> t = scaled(times, 1.0 / n);
     for (const Scale& s : kLengthUnits) {
       if (!unit_allowed(s, unit) || !fits_length(scaled(l, s.factor), t)) continue;
-      const double miss = std::fabs(std::log(median(row_g(scaled(l, s.factor), t)) / kStandardGravity));
+      const double miss = std::fabs(std::log(median_of(row_g(scaled(l, s.factor), t)) / kStandardGravity));
       if (miss < nearest) nearest = miss, best = n;
     }
   }
@@ -866,7 +860,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
       if (use[j].kind == Kind::time && !use[j].uncertainty) times.push_back(j);
     }
     std::optional<std::array<std::size_t, 3>> best;  // k = j - i
-    auto rank = [&](std::size_t k) { return std::pair{use[k].oscillations != 0 || use[k].trial, median(table.columns[k])}; };
+    auto rank = [&](std::size_t k) { return std::pair{use[k].oscillations != 0 || use[k].trial, median_of(table.columns[k])}; };
     for (std::size_t k : times.size() >= 3 && times.size() <= 8 ? times : std::vector<std::size_t>{}) {
       for (std::size_t i : times) {
         for (std::size_t j : times) {
@@ -1196,7 +1190,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
       small[i] /= 1.0 + finite_amplitude_agm(std::fabs(table.columns[*amplitude_col][i]) * amplitude_factor);
     }
     const std::vector<double> g = row_g(meters, small);
-    const double m = median(g);
+    const double m = median_of(g);
     for (std::size_t i = 0; i < g.size(); ++i) {
       if (g[i] > 3.0 * m || g[i] < m / 3.0) {
         fail(file, line_of(i), 1,

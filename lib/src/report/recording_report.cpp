@@ -141,9 +141,13 @@ RecordingRecord make_recording_record(const RecordingSummary& summary, const Rec
   r.analysed = a.analysed;
   r.cuts = a.cuts;
   r.whole_record_period = a.whole_record_period;
+  // A crossing fit floors its own uncertainty at the clock's (its
+  // resolution_floor, already in the uncertainty); else each end crossing is
+  // known no better than the clock's step.
   constexpr double kFinestStamp = 1e-6;  // (s)
   const double dt = samples && samples->time_quantum > 0.0 ? samples->time_quantum : kFinestStamp;
-  r.period_resolution = std::sqrt(2.0) * dt / std::max(1, a.period.periods);
+  r.period_resolution = a.period.resolution_floor > 0.0 ? a.period.resolution_floor
+                                                         : std::sqrt(2.0) * dt / std::max(1, a.period.periods);
   // The crossing fit's weights w_i = slope_i^2 samples_i / mean (1 for gate
   // events), and its residual variance s^2: sigma_i^2 = s^2 / w_i.
   double mean_weight = 0.0;

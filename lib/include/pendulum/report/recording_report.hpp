@@ -43,10 +43,12 @@ struct RecordingRecord {
   std::string signal;       ///< what the signal is, in words
   std::size_t rows = 0, dropped = 0;
   PeriodEstimate period;
-  /// The period is printed no finer than this (s): the clock's resolution
-  /// (Recording::time_quantum, 1 us where the reader sets none, the finest
-  /// stamp a lab logger writes) spread over the periods, sqrt(2) dt / N,
-  /// since each end crossing is known no better than dt.
+  /// The period is printed no finer than this (s): the crossing fit's own
+  /// floor where it has one (PeriodEstimate::resolution_floor: the clock's
+  /// q^2/12 a crossing through the fitted slope); else the clock's
+  /// resolution (Recording::time_quantum, 1 us where the reader sets none,
+  /// the finest stamp a lab logger writes) spread over the periods,
+  /// sqrt(2) dt / N, since each end crossing is known no better than dt.
   double period_resolution = 0.0;
   int crossings_per_period = 2;
   std::vector<double> crossings;  ///< (s), as recorded

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -211,10 +212,12 @@ Command add_import_command(CLI::App& app) {
   cmd->add_option("recording", o->file, "Recording file (CSV or tab-separated text, or phyphox's zip export)")
       ->required();
   std::vector<std::string> formats = recording_family_names();
-  formats.insert(formats.end(), {"json", "table"});
+  formats.insert(formats.end(), {"json", "table", "scene"});
   cmd->add_option("--format", o->formats,
                   "The recording's family (" + recording_family_words() + "; default: from the header) and/or the "
-                  "output (json, the default, or table); may be given twice")
+                  "output (json, the default; table; or scene: a whole scene timed by the recording, the length "
+                  "and the bob left for you to fill in, which reduce then reads; a table's JSON is a scene "
+                  "already); may be given twice")
       ->check(CLI::IsMember(formats))
       ->allow_extra_args(false)  // one value each time: the file after it is not a format
       ->take_all();
@@ -228,9 +231,9 @@ Command add_import_command(CLI::App& app) {
   add_limit_options(*cmd, o->limits);
 
   return {cmd, [o] {
-    bool table = false;
+    bool table = false, scene = false;
     for (const auto& f : o->formats) {
-      if (f == "table" || f == "json") table = f == "table";
+      if (f == "table" || f == "json" || f == "scene") table = f == "table", scene = f == "scene";
     }
     if (o->table || names_table_columns(o->columns) || file_holds_settings_table(o->file, o->set)) {
       TableOptions options;
@@ -249,6 +252,17 @@ Command add_import_command(CLI::App& app) {
     const RecordingSummary summary = analyse_recording(
         o->file, recording_family(o->formats).value_or(RecordingFormat::automatic), o->swing,
         {o->limits.applied_to(kRecordingInput), std::nullopt}, o->set, o->columns);
+    if (scene) {
+      const std::optional<RecordingFormat> family = recording_family(o->formats);
+      RecordingReference ref;
+      ref.recording = std::filesystem::path(o->file).filename().string();
+      ref.format = family ? recording_format_name(*family) : "";
+      ref.set = o->set, ref.columns = o->columns;
+      ref.range = o->swing.range, ref.whole_record = o->swing.whole_record;
+      ref.bob_width = o->swing.bob_width, ref.length = o->swing.length;
+      std::cout << recording_scene(summary, ref) << "\n";
+      return 0;
+    }
     std::cout << (table ? summary_table(summary) : recording_json(summary) + "\n");
     return 0;
   }};

@@ -421,3 +421,47 @@ TEST_CASE("A swing pumped up at the start: the JSON's glitch and the reduction's
            text.find("does not fit the swing") == std::string::npos;
   }));
 }
+
+TEST_CASE("import --format scene: a whole scene that reduce refuses until its placeholders are filled in",
+          "[cli][import][scene]") {
+  // The scene sits beside the recording, as its notes ask; what the file
+  // cannot tell (the length, its uncertainty, the bob) is a placeholder that
+  // reduce names. Filled in, it reduces with the period `import` gives.
+  namespace fs = std::filesystem;
+  const fs::path dir = temporary_file() + "_scene";
+  fs::create_directories(dir);
+  fs::copy_file(std::string(PENDULUM_DATA_DIR) + "/recordings/phyphox_gyroscope.csv", dir / "gyro.csv");
+  const Run imported = run("import --format scene " + (dir / "gyro.csv").string());
+  INFO(imported.err);
+  REQUIRE(imported.status == 0);
+  json scene = json::parse(imported.out);
+  CHECK(scene.at("timing") == json{{"recording", "gyro.csv"}});
+  CHECK(scene.at("decay").at("data") == json{{"recording", "gyro.csv"}});
+  CHECK_FALSE(scene.contains("amplitude"));  // the recording gives it
+  const fs::path file = dir / "scene.json";
+  std::ofstream(file) << scene.dump();
+  const Run unfilled = run("reduce " + file.string());
+  CHECK(unfilled.status == 1);
+  CHECK(unfilled.out.empty());
+  CHECK_THAT(unfilled.err, Contains("length.value: got \"fill in: pivot to the bob's centre\"; expected a number"));
+  scene["length"]["value"] = 0.8, scene["length"]["uncertainty"] = 0.0005;
+  scene.erase("bob");
+  std::ofstream(file) << scene.dump();
+  const Run filled = run("reduce " + file.string());
+  const Run summary = run("import " + (dir / "gyro.csv").string());
+  fs::remove_all(dir);
+  INFO(filled.err);
+  REQUIRE(filled.status == 0);
+  REQUIRE(summary.status == 0);
+  CHECK(json::parse(filled.out).at("period").at("measured").at("value") ==
+        json::parse(summary.out).at("period").at("value"));
+  // The options that changed the reading go into the scene's reference.
+  const std::string track = std::string(PENDULUM_DATA_DIR) + "/recordings/tracker_headerless_xy.txt";
+  const Run declared = run("import --format scene --columns t:s,x:m,y:m --range 1:20 --length-m 0.8 " + track);
+  REQUIRE(declared.status == 0);
+  const json d = json::parse(declared.out);
+  CHECK(d.at("timing") == json{{"recording", "tracker_headerless_xy.txt"},
+                               {"columns", "t:s,x:m,y:m"},
+                               {"range", {{"from", 1.0}, {"to", 20.0}, {"unit", "s"}}}});
+  CHECK(d.at("length").at("value") == 0.8);
+}

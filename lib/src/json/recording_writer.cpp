@@ -126,4 +126,38 @@ std::string recording_json(const RecordingSummary& r) {
   return summary_json(r).dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
+std::string recording_scene(const RecordingSummary& r, const RecordingReference& ref) {
+  nlohmann::ordered_json reference{{"recording", ref.recording}};
+  if (!ref.format.empty()) reference["format"] = ref.format;
+  if (!ref.set.empty()) reference["set"] = ref.set;
+  if (!ref.columns.empty()) reference["columns"] = ref.columns;
+  const RecordingReference& o = ref;
+  if (o.whole_record) reference["range"] = "all";
+  if (o.range) reference["range"] = {{"from", o.range->first}, {"to", o.range->second}, {"unit", "s"}};
+  if (o.bob_width) reference["bob_width"] = {{"value", *o.bob_width}, {"unit", "m"}};
+  const bool amplitudes = !r.swings.decay.amplitudes.empty();
+  constexpr const char* kFill = "fill in: ";
+  nlohmann::ordered_json scene;
+  scene["schema"] = "pendulum-g/scene/1";
+  scene["title"] = r.file + (r.set.empty() ? "" : "/" + r.set);
+  scene["notes"] = std::string("Written by pendulum-g import --format scene from ") + recording_format_name(r.format) +
+                   " recording " + r.file + ". Save it beside the recording; replace each \"" + kFill +
+                   "...\" with your measurement (reduce names the first left); delete bob for a bob small "
+                   "against the length.";
+  scene["timing"] = reference;
+  // Three swings' amplitudes are a decay record (json/recording_reader.cpp).
+  if (r.swings.decay.amplitudes.size() >= 3) scene["decay"] = {{"data", reference}};
+  scene["length"] = {{"value", o.length ? nlohmann::ordered_json(*o.length)
+                                        : nlohmann::ordered_json(std::string(kFill) + "pivot to the bob's centre")},
+                     {"uncertainty", std::string(kFill) + "its standard uncertainty"},
+                     {"unit", "m"},
+                     {"measured_to", "center"}};
+  if (!amplitudes) {
+    scene["amplitude"] = {{"value", std::string(kFill) + "the release angle (the recording gives none)"},
+                          {"unit", "deg"}};
+  }
+  scene["bob"] = {{"diameter", {{"value", std::string(kFill) + "the bob's diameter"}, {"unit", "mm"}}}};
+  return scene.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 }  // namespace pendulum

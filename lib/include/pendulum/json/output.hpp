@@ -53,6 +53,26 @@ std::string decay_fit_table(const ParsedScene& scene, const DecayFit& fit, const
 /// `decay` parts of a scene, the columns used, the glitches and the notes.
 std::string recording_json(const RecordingSummary& summary);
 
+/// How a scene names a recording as `import` read it: the options that
+/// changed the reading, written into the scene's reference so that `reduce`
+/// reads it the same way.
+struct RecordingReference {
+  std::string recording;  ///< the file's name as the scene writes it (beside the scene)
+  std::string format;     ///< the family forced with --format, empty for auto
+  std::string set;        ///< --set, empty for none
+  std::string columns;    ///< --columns, empty for none
+  std::optional<std::pair<double, double>> range;  ///< --range A:B (s, the file's clock)
+  bool whole_record = false;                        ///< --range all
+  std::optional<double> bob_width, length;         ///< --bob-width-m, --length-m (m)
+};
+
+/// `pendulum-g import RECORDING --format scene`: a whole scene timed by the
+/// recording (its `timing` and, where it gives swing amplitudes, `decay`),
+/// with what the file cannot tell (the length and its uncertainty, the bob,
+/// an amplitude where the recording gives none) as placeholder strings that
+/// `reduce` refuses, naming the key to fill. No newline.
+std::string recording_scene(const RecordingSummary& summary, const RecordingReference& reference);
+
 /// The forms of a batch summary's line (`pendulum-g batch --format`).
 enum class BatchFormat {
   jsonl,  ///< one JSON line, no newline

@@ -546,7 +546,8 @@ std::string unused_why(const Column& c, const std::vector<double>& numbers, cons
   }
   if (c.track > 0 && !l.channels.empty() && cols[l.channels[0]].track != c.track) return "another track's";
   if (c.run > 0 && cols[l.time].run != c.run) return "another run's";
-  return std::string("a ") + role_name(c.role) + " signal: the " + role_name(cols[l.channels.empty() ? l.time : l.channels[0]].role) +
+  const std::string role = role_name(c.role);
+  return std::string(role.find_first_of("aeiux") == 0 ? "an " : "a ") + role + " signal: the " + role_name(cols[l.channels.empty() ? l.time : l.channels[0]].role) +
          " is used";
 }
 

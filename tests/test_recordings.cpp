@@ -1161,3 +1161,69 @@ TEST_CASE("A clean release from 92 deg is cut by 10 periods at most: the index's
   CHECK(a.start_amplitude > sim.turning_amplitudes[20]);
   CHECK(a.start_amplitude < s.theta0);
 }
+
+TEST_CASE("A hand's release and catch are cut: 200 records, the period within its uncertainty of the truth",
+          "[recordings][coverage]") {
+  // 60 s of a rotary sensor's angle (0.8 m, 15 deg, the simulation's decay,
+  // 100 Hz, each seed its own sampling phase, 0.05 deg of noise). The hand
+  // lets go with a fast mode on the swing (a wobble at 3.7 times its
+  // frequency, a fifth of the amplitude, dying in 1.5 s: e^-t/1.5, a seeded
+  // phase) that moves the first crossings by up to 57 ms; it catches the bob
+  // at a seeded time 6 to 8 s before the end and holds it, the angle falling
+  // from where it was taken as e^-t/0.15 s under the hand's tremor (0.3 deg
+  // at 5.3 Hz, six times the noise: crossings ten times a second). The clean
+  // stretch must start after the wobble has fallen to 10 times the
+  // crossings' noise (the crossing shift wobble/slope against noise/slope,
+  // slope theta0 omega) and within 8 periods of where it falls to their
+  // noise; it must end within a quarter period after the catch and within
+  // 4 periods before it; and
+  // over the 200 records the period must cover the truth (the exact zeros
+  // of the swing without the wobble) as often as its uncertainty says.
+  constexpr int kRuns = 200;
+  constexpr double kNoise = 0.05 * M_PI / 180.0, kWobble = 0.2, kTau = 1.5, kTremor = 0.3 * M_PI / 180.0;
+  int covered = 0;
+  for (int seed = 1; seed <= kRuns; ++seed) {
+    RecordingSimulation s;
+    s.theta0 = 15.0 * M_PI / 180.0, s.duration = 60.0, s.drop = 0.0, s.seed = static_cast<std::uint64_t>(seed);
+    s.phase = std::fmod(seed * 0.6180339887498949, 1.0);
+    const test::SimulatedRecording sim = simulate_recording(s);
+    std::mt19937_64 random(static_cast<std::uint64_t>(seed));
+    const double phase = 2.0 * M_PI * std::uniform_real_distribution<double>(0.0, 1.0)(random);
+    const double caught = s.duration - std::uniform_real_distribution<double>(6.0, 8.0)(random);
+    const double period = 2.0 * M_PI / sim.omega0, w = 3.7 * sim.omega0;
+    Recording r;
+    r.kind = SignalKind::angle;
+    r.channels.resize(1);
+    NormalDeviates noise(static_cast<std::uint64_t>(seed) + 1000);
+    double held_at = 0.0;  // the angle where the hand takes the bob
+    for (std::size_t k = 0; k < sim.t.size(); ++k) {
+      const double t = sim.t[k];
+      const double wobble = kWobble * s.theta0 * std::exp(-t / kTau) * std::sin(w * t + phase);
+      const double at_catch = t < caught ? sim.theta[k] + wobble
+                                         : held_at * std::exp(-(t - caught) / 0.15) +
+                                               kTremor * std::sin(2.0 * M_PI * 5.3 * (t - caught));
+      if (t < caught) held_at = at_catch;
+      r.time.push_back(t);
+      r.channels[0].push_back(at_catch + kNoise * noise.next());
+    }
+    const SwingAnalysis a = analyse_swings(r, "hand.csv");
+    INFO("seed " << seed << ": analysed " << (a.analysed ? a.analysed->first : -1.0) << " to "
+                 << (a.analysed ? a.analysed->second : -1.0) << " s, caught at " << caught << " s");
+    REQUIRE(a.analysed);
+    // The wobble's shift of a crossing falls to n times the crossings' noise at
+    // t = tau ln(wobble theta0 / (n noise)).
+    const double loud = kTau * std::log(kWobble * s.theta0 / (10.0 * kNoise));
+    const double quiet = kTau * std::log(kWobble * s.theta0 / kNoise);
+    CHECK(a.analysed->first > loud);
+    CHECK(a.analysed->first < quiet + 8.0 * period);
+    // A crossing within a quarter period of the catch is as much the hand's
+    // as the swing's: where the bob was near the bottom when taken, it
+    // comes as the swing's next one would.
+    CHECK(a.analysed->second < caught + period / 4.0);
+    CHECK(a.analysed->second > caught - 4.0 * period);
+    covered += std::fabs(a.period.value - zeros_period(sim, a)) <= a.period.uncertainty;
+  }
+  const double p = 0.6826894921370859;
+  WARN("hand release and catch: coverage " << static_cast<double>(covered) / kRuns);
+  CHECK(std::fabs(static_cast<double>(covered) / kRuns - p) < 3.0 * std::sqrt(p * (1.0 - p) / kRuns));
+}

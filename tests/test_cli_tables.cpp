@@ -384,3 +384,22 @@ TEST_CASE("a spreadsheet's cells as other programs write them, and stamps told f
   CHECK_THAT(empty.err, Contains("an empty cell in column \"L (cm)\""));
   std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("Lego beams pivoted at an end, typed as a table of lengths, are named as such", "[cli][tables]") {
+  // Coramik & Inanc 2023 (Phys. Educ. 58 055014): a Lego beam at five total
+  // lengths, 48.00 to 67.20 cm in steps of 6 studs (4.80 cm), pivoted at its
+  // end, Tracker's periods 1.139 to 1.349 s. As a simple pendulum's lengths
+  // they give g x 1.5 (a rod swings as one of 2L/3): the reason names it.
+  const std::string table = temporary_file() + ".csv";
+  std::ofstream(table) << "L (cm),T (s)\n48.00,1.139\n52.80,1.199\n57.60,1.249\n62.40,1.300\n67.20,1.349\n";
+  const Run imported = succeeded("import " + table);
+  const std::string file = temporary_file();
+  std::ofstream(file) << imported.out;
+  const Run reduced = succeeded("reduce " + file);
+  std::remove(file.c_str());
+  std::remove(table.c_str());
+  const json result = json::parse(reduced.out);
+  CHECK(g_of(reduced) / 9.80665 == Approx(1.5).epsilon(0.02));
+  CHECK(result.at("status") == "suspect");
+  CHECK_THAT(result.at("status_reasons").dump(), Contains("a uniform rod or beam pivoted at its end"));
+}

@@ -47,6 +47,8 @@ TEST_CASE("Each slip is named from the ratio it makes in g", "[status]") {
       {textbook_g(l, 60.0 * t), "trials in s are written as min"},
       {textbook_g(l, t / 1000.0), "trials in s are written as ms"},
       {textbook_g(l, 1000.0 * t), "trials in ms are written as s"},
+      // A 1 m rod pivoted at its end swings as a simple pendulum of 2/3 m.
+      {textbook_g(l, 2.0 * kPi * std::sqrt(2.0 / 3.0 * l / g)), "a uniform rod or beam pivoted at its end"},
   };
   for (const Case& c : cases) {
     INFO(c.named);

@@ -37,6 +37,12 @@ constexpr Slip kSlips[] = {
     {1.0 / 3600.0, "the period is 60 times too long, as when trials in s are written as min: fix timing.unit"},
     {1e6, "the period is 1000 times too short, as when trials in s are written as ms: fix timing.unit"},
     {1e-6, "the period is 1000 times too long, as when trials in ms are written as s: fix timing.unit"},
+    // A uniform rod (or beam) of length L pivoted at its end: I = m L^2/3, its
+    // centre L/2 below, an equivalent length I/(m L/2) = 2L/3, so L for it
+    // gives g x 3/2 (Coramik & Inanc 2023's Lego beams came out at x 1.50).
+    {1.5, "the lengths are those of a uniform rod or beam pivoted at its end, which swings as a simple pendulum "
+          "two thirds as long (its centre L/2 below the pivot, k^2 = L^2/12): give the body and the pivot "
+          "(docs/physical.md) instead of a length"},
     // Inches: 1 m is 39.37 in.
     {1.0 / 0.0254, "the length is 39.37 times too long, as when a length in inches is written as m: fix length.unit "
                    "(\"in\")"},
@@ -44,7 +50,8 @@ constexpr Slip kSlips[] = {
                     "length.unit (\"in\")"},
 };
 /// A slip fits when g's ratio is within this factor of the slip's: hand
-/// timing and the corrections move g by a few percent, no slip by less than x4.
+/// timing and the corrections move g by a few percent, no slip by less than
+/// x1.5 (the rod's), which keeps 1.30 to 1.73 clear of 1.
 constexpr double kSlipTolerance = 1.15;
 
 /// Below this a bob is lighter than any solid ball a pendulum swings (a

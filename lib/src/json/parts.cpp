@@ -73,16 +73,18 @@ constexpr double kReactionTime = 0.1;
 /// resolution: a phone's or a stopwatch's 0.01 s. A finer one is a gate's.
 constexpr double kHandTimerResolution = 0.01;
 
-/// Warns about trials (in `unit`, of `seconds` s) that disagree more than
-/// they should: one far from the others (a miscounted oscillation, a typo),
-/// or a scatter far beyond the stated one-trial uncertainty. A scatter beyond
+/// Warns about trials (in `unit`, of `seconds` s, each of `oscillations`)
+/// that disagree more than they should: one far from the others (off by
+/// whole periods: a miscounted oscillation; by a fraction of one: a
+/// stopwatch started or stopped off; or a typo), or a scatter far beyond
+/// the stated one-trial uncertainty. A scatter beyond
 /// the resolution alone is normal: a hand on a stopwatch scatters more than
 /// its last digit, and with five trials the median deviation alone is no
 /// measure of it (issue 14: 33 of 300 clean hand-timed scenes drew this
 /// warning), so a hand-read timer's trials may stray by 5 reaction times.
-void warn_about_trials(const std::string& path, const std::vector<double>& times, double spread, std::optional<double> resolution,
-                       std::optional<double> trial_sigma, const std::string& unit, double seconds,
-                       std::vector<std::string>& warnings, std::vector<std::string>& suspicions) {
+void warn_about_trials(const std::string& path, const std::vector<double>& times, int oscillations, double spread,
+                       std::optional<double> resolution, std::optional<double> trial_sigma, const std::string& unit,
+                       double seconds, std::vector<std::string>& warnings, std::vector<std::string>& suspicions) {
   auto in_unit = [&](double x) { return format_number(x, 4) + " " + unit; };
   if (trial_sigma && spread > 3.0 * *trial_sigma) {
     warnings.push_back(path + ".uncertainty: the trials scatter by " + in_unit(spread) +
@@ -118,13 +120,23 @@ void warn_about_trials(const std::string& path, const std::vector<double>& times
     largest += (k == 0 ? "" : k + 1 == allowance.size() ? " and " : ", ") + allowance[k];
   }
   const auto i = static_cast<std::size_t>(worst - deviation.begin());
+  // Off by whole periods (within a tenth of one) is a count; by 0.1 to 0.9
+  // of a period, the hand on the stopwatch (the median trial's period).
+  const double periods = *worst / (centre / oscillations);
+  const bool counted = std::abs(periods - std::round(periods)) <= 0.1 && periods >= 0.9;
+  const std::string off = in_unit(*worst) + " (" + format_number(periods, 2) + " of a period)";
+  const std::string late = std::string(times[i] < centre ? "started late or stopped early" : "started early or stopped late");
   suspicions.push_back(path + ".trials[" + std::to_string(i) + "]: " + format_number(times[i]) + " " + unit +
-                       ", far from the other trials (warnings): a miscounted oscillation? Count again, or drop "
-                       "the trial");
+                       ", far from the other trials (warnings): " +
+                       (counted ? "a miscounted oscillation? Count again, or drop the trial"
+                                : "a stopwatch " + late + " by " + off + ", too little for a miscounted "
+                                  "oscillation? Time it again, or drop the trial"));
   warnings.push_back(path + ".trials[" + std::to_string(i) + "]: " + format_number(times[i]) + " " +
                      unit + " is " + in_unit(*worst) + " from the median trial " +
                      format_number(centre) + " " + unit + ", over 5 times " + largest +
-                     "; a miscounted oscillation or a typo?");
+                     (counted ? "; a miscounted oscillation or a typo?"
+                              : "; " + format_number(periods, 2) + " of a period: a stopwatch " + late +
+                                    ", or a typo?"));
 }
 
 /// Trials that are a stopwatch's lap totals, each the sum of the laps
@@ -287,8 +299,8 @@ void read_timing(Object& parent, const std::string& prefix, Observation<double>&
           t.path("trials") + ": all trials are equal and no resolution is given, so "
           "the period's uncertainty is 0; state timing.resolution");
     }
-    warn_about_trials(t.path(), times, spread, resolution, trial_sigma, unit_name, unit->factor, out.warnings,
-                      out.suspicions);
+    warn_about_trials(t.path(), times, n_osc, spread, resolution, trial_sigma, unit_name, unit->factor,
+                      out.warnings, out.suspicions);
     suspect_pasted_trials(t.path(), times, resolution, unit_name, unit->factor, out.suspicions);
   } else if (trial_sigma) {
     sigma_trial = *trial_sigma;

@@ -312,6 +312,52 @@ TEST_CASE("Tables: sigma columns by place and by matplotlib's names, the periods
   CHECK(swapped.sigma_from_scatter);
 }
 
+TEST_CASE("Tables: error columns by the spellings students use, each after its value", "[tables]") {
+  // Issue 39's list: dL/dT, u(L), sigma L, a bare +-, delta, unc, err, and
+  // Delta L; each the uncertainty of its value, by its own name or as the
+  // uncertainty of the column before it.
+  const std::string rows = "20,0.5,0.90,0.02\n40,0.5,1.27,0.02\n60,0.5,1.55,0.02\n80,0.5,1.80,0.02\n";
+  const std::vector<std::string> expected = {"length", "uncertainty of the length", "period", "uncertainty of the period"};
+  for (const std::string header :
+       {"L (cm),dL (cm),T (s),dT (s)", "L (cm),u(L) (cm),T (s),u(T) (s)", "L (cm),\xcf\x83L (cm),T (s),\xcf\x83T (s)",
+        "L (cm),\xc2\xb1 (cm),T (s),\xc2\xb1 (s)", "L (cm),delta L (cm),T (s),delta T (s)", "L (cm),unc (cm),T (s),unc (s)",
+        "L (cm),err (cm),T (s),err (s)", "L (cm),\xce\x94L (cm),T (s),\xce\x94T (s)"}) {
+    INFO(header);
+    const SettingsTable t = parse_settings_table(header + "\n" + rows, "t");
+    CHECK(roles(t) == expected);
+    REQUIRE(t.observations[0].time_sigma);
+    CHECK(*t.observations[0].time_sigma == 0.02);
+  }
+}
+
+TEST_CASE("Tables: a fitting program's generic header (x y dx dy) is read by place, as without a header",
+          "[tables]") {
+  // PHY180's fitting program names its columns x, y, dx, dy (or X', Y' for
+  // the uncertainties): where a value goes in the fit, not what it is. The
+  // rows of x_y_sx_sy.txt (exact for g = 9.81) under such headers read as
+  // that headerless file does: a table (not a recording of 6 samples), each
+  // value column with its uncertainty, in either order.
+  std::string rows = test::read_text(kTables + "/x_y_sx_sy.txt");
+  std::replace(rows.begin(), rows.end(), '\t', ' ');  // one delimiter, as the header's
+  const std::vector<std::string> x_y_sx_sy = {"length", "period", "uncertainty of the length", "uncertainty of the period"};
+  for (const std::string header : {"x y dx dy\n", "X Y X' Y'\n"}) {
+    INFO(header);
+    CHECK(looks_like_settings_table(header + rows));
+    const SettingsTable t = parse_settings_table(header + rows, "t");
+    CHECK(roles(t) == x_y_sx_sy);
+    check_g(t);
+  }
+  // Values and uncertainties alternating: each uncertainty after its value.
+  std::string alternating = "x,dx,y,dy\n";
+  for (const std::string& line : {std::string("0.35,0.002,1.181,0.01"), std::string("0.50,0.002,1.422,0.01"),
+                                  std::string("0.65,0.002,1.627,0.01"), std::string("0.80,0.002,1.795,0.01")}) {
+    alternating += line + "\n";
+  }
+  CHECK(looks_like_settings_table(alternating));
+  CHECK(roles(parse_settings_table(alternating, "t")) ==
+        std::vector<std::string>{"length", "uncertainty of the length", "period", "uncertainty of the period"});
+}
+
 TEST_CASE("Tables: an uncertainty named in a phrase, \"uncertainty in period\", \"error in the length\"", "[tables]") {
   // A class's published table (issue 39's real files): "length (cm),period
   // (seconds),uncertainty in period (seconds)"; its third column was unused,

@@ -452,20 +452,6 @@ Layout detect(RecordingFormat forced, const std::vector<Column>& cols, bool prea
            "with --format or the columns with --columns");
 }
 
-/// Whether a header holds only a fitting program's generic names (x and y,
-/// their primes or d's: "X,Y,X',Y'", "x y dx dy") and no time: names that
-/// say where a value goes in a fit, not what it is. Such a file's roles come
-/// from its numbers, as a headerless file's do (issue 38: "X" stepping by
-/// 1/12 s is the time).
-bool generic_names(const std::vector<Column>& cols) {
-  return std::all_of(cols.begin(), cols.end(), [](const Column& c) {
-    const bool letter = c.word == "x" || c.word == "y" || c.word == "x'" || c.word == "y'";
-    return !c.prefixed && c.unit.empty() &&
-           ((letter && (c.role == Role::x || c.role == Role::y || c.role == Role::derivative)) ||
-            ((c.word == "dx" || c.word == "dy") && c.role == Role::uncertainty));
-  });
-}
-
 /// Roles of a headerless file's columns from their numbers: a counter steps
 /// by one, or by one whole stride beside an increasing column of other
 /// numbers (the time: "1;3.05", "3;9.202", a count of periods against the

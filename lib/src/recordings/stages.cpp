@@ -24,6 +24,15 @@ void fail(const std::string& file, std::size_t line, std::size_t column, const s
 
 bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
 
+bool generic_names(const std::vector<Column>& cols) {
+  return !cols.empty() && std::all_of(cols.begin(), cols.end(), [](const Column& c) {
+    const bool letter = c.word == "x" || c.word == "y" || c.word == "x'" || c.word == "y'";
+    return !c.prefixed && c.unit.empty() &&
+           ((letter && (c.role == Role::x || c.role == Role::y || c.role == Role::derivative)) ||
+            ((c.word == "dx" || c.word == "dy") && c.role == Role::uncertainty));
+  });
+}
+
 double median_of(std::vector<double> v) {
   if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
   const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);

@@ -162,6 +162,14 @@ struct Column {
   double frame_rate = 0.0;
 };
 
+/// Whether a header holds only a fitting program's generic names (x and y,
+/// their primes or d's, no unit: "X,Y,X',Y'", "x y dx dy") and no time:
+/// names that say where a value goes in a fit, not what it is. A recording
+/// or a table with such a header is read by its numbers, as one without a
+/// header is (issue 38: "X" stepping by 1/12 s is the time; a table's
+/// "x y dx dy" is a length, a period and their uncertainties by place).
+bool generic_names(const std::vector<Column>& cols);
+
 /// A header cell's role and unit: case folded; the unit from the last
 /// "(...)" or "[...]" or after a comma; a "Word: " prefix, a "_{1}" or "_1"
 /// suffix, a PASCO " Run #n" and a trailing prime taken off; the word

@@ -807,7 +807,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
       }
       u.unit = c.unit;
     }
-  } else if (lines.header) {
+  } else if (lines.header && !generic_names(cols)) {
     const Use* last = nullptr;
     for (std::size_t j = 0; j < cols.size(); ++j) {
       Use& u = use[j] = from_header(cols[j]);
@@ -1374,6 +1374,11 @@ bool looks_like_settings_table(std::string_view text) {
       const DataRows data = data_rows(text, lines, "", "a table or a recording");
       const Dialect d = sniff(lines.header, data.first);
       const std::vector<Column> header = header_columns(lines, d, kTableInput, "");
+      if (generic_names(header)) {
+        // Read by place, as without a header: a table if it reads as one.
+        (void)parse_settings_table(text, "");
+        return true;
+      }
       std::optional<std::size_t> time;
       bool x = false, y = false, angle = false;
       for (std::size_t i = 0; i < header.size(); ++i) {

@@ -25,6 +25,8 @@ using nlohmann::json;
 namespace {
 
 const std::string kData = PENDULUM_DATA_DIR;
+using Catch::Matchers::Contains;
+
 const std::string kTables = PENDULUM_TABLES_DIR;
 
 /// The rows of a comma-separated file of two numeric columns after a header, read here by hand.
@@ -385,7 +387,24 @@ TEST_CASE("Tables: a time of N swings beside its period, and a per-row g, are no
   CHECK(t.oscillations == 1);
   REQUIRE(roles(t) == std::vector<std::string>{"length", "unused", "period", "unused"});
   CHECK(t.columns[1].why.find("the time of 10 oscillations beside the periods of column 3") != std::string::npos);
+  CHECK_THAT(t.columns[3].why, Contains("each row's g (a student's working): compared with 4 pi^2 L/T^2, not read "
+                                        "(within 0.01 % at every row)"));
+  for (const auto& w : t.warnings) CHECK_THAT(w.text, !Contains("a slip in the working"));
   check_g(t);
+  // T^2 and g beside L and T (issue 39): compared, never read; a g slipped
+  // in one row's working (9.52 where 0.60 m and 1.555 s give 9.796) is named
+  // at its line, and the fit is the same as without the two columns.
+  const std::string rows[] = {"0.40,1.270,1.6129,9.79\n", "0.60,1.555,2.4180,9.52\n", "0.80,1.795,3.2220,9.80\n",
+                              "1.00,2.007,4.0280,9.80\n"};
+  std::string derived = "L (m),T (s),T^2 (s^2),g (m/s^2)\n", plain = "L (m),T (s)\n";
+  for (const std::string& row : rows) derived += row, plain += row.substr(0, row.find(',', 5)) + "\n";
+  const SettingsTable d = parse_settings_table(derived, "t");
+  CHECK(roles(d) == std::vector<std::string>{"length", "period", "unused", "unused"});
+  CHECK_THAT(d.columns[2].why, Contains("the periods squared") && Contains("within 0.01 % at every row"));
+  REQUIRE(d.warnings.size() == 1);
+  CHECK(d.warnings[0].line == 3);
+  CHECK_THAT(d.warnings[0].text, Contains("9.52 m/s^2 where this row's 4 pi^2 L/T^2 is 9.79603 m/s^2 (2.8 % off"));
+  CHECK(reduced(d).g.value == reduced(parse_settings_table(plain, "t")).g.value);
 }
 
 TEST_CASE("Tables: single timings take their uncertainty from the scatter about the fit", "[tables]") {

@@ -35,6 +35,10 @@ constexpr double kStandardGravity = 9.80665;  // m/s^2, the scale of a T^2-again
 
 enum class Kind { unused, setting, time, amplitude };
 
+/// A column a student derived from the others (their working, not a
+/// measurement): compared with what the row's own numbers give, not read.
+enum class Derived { none, period_squared, g };
+
 /// How one column is read.
 struct Use {
   Kind kind = Kind::unused;
@@ -43,6 +47,7 @@ struct Use {
   std::string unit;  ///< normal form; empty until given or decided
   int oscillations = 0;
   bool trial = false;  ///< one of several trials' columns: a row's trials are its repeats
+  Derived derived = Derived::none;
   std::string decided = "header";
   std::string why;
 };
@@ -177,6 +182,18 @@ std::optional<Use> uncertainty_of(const Column& c) {
 /// A column's role from its header cell.
 Use from_header(const Column& c) {
   Use u;
+  for (const char* word : {"t^2", "t\xc2\xb2", "period^2", "period\xc2\xb2", "t squared", "period squared"}) {
+    if (c.word == word) {
+      u.derived = Derived::period_squared, u.unit = c.unit;
+      u.why = "the periods squared (a student's working): compared with T^2, not read";
+      return u;
+    }
+  }
+  if (c.word == "g" || c.word == "gravity") {
+    u.derived = Derived::g, u.unit = c.unit;
+    u.why = "each row's g (a student's working): compared with 4 pi^2 L/T^2, not read";
+    return u;
+  }
   if (const int n = oscillations_in(c.word)) {
     u.kind = Kind::time, u.oscillations = n, u.unit = c.unit;
     u.why = "the time of " + std::to_string(n) + " oscillations by the header";
@@ -732,6 +749,42 @@ bool readings_of_their_own(const std::vector<TableObservation>& obs, const std::
   return length - best(false).first >= 1.0;
 }
 
+/// Compares each derived column (Derived) with what its row's length and
+/// period give, T^2 or 4 pi^2 L/T^2 (`g`, m/s^2; no amplitude taken off:
+/// the textbook's): within 2 % at every row (a rounded working) its why says
+/// so; else a warning names the row furthest off and both values. A unit
+/// other than s^2, m/s^2 or none is not compared.
+template <class LineOf>
+void compare_derived(std::vector<Use>& use, const std::vector<std::string>& names, const Table& table,
+                     const std::vector<double>& g, const std::vector<double>& periods, const LineOf& line_of,
+                     std::vector<RecordingNote>& warnings) {
+  for (std::size_t j = 0; j < use.size(); ++j) {
+    Use& u = use[j];
+    if (u.derived == Derived::none) continue;
+    const bool squared = u.derived == Derived::period_squared;
+    const std::string unit = squared ? "s^2" : "m/s^2";
+    if (!u.unit.empty() && u.unit != unit && !(squared && u.unit == "s\xc2\xb2")) continue;
+    std::optional<std::size_t> worst;
+    double off = 0.0, ours_at = 0.0;
+    for (std::size_t i = 0; i < periods.size(); ++i) {
+      const double theirs = table.columns[j][i], ours = squared ? periods[i] * periods[i] : g[i];
+      if (!std::isfinite(theirs) || !(ours > 0.0)) continue;
+      if (const double d = std::fabs(theirs / ours - 1.0); !worst || d > off) worst = i, off = d, ours_at = ours;
+    }
+    if (!worst) continue;
+    if (off <= 0.02) {
+      u.why += " (within " + format_number(std::max(off * 100.0, 0.01), 2) + " % at every row)";
+      continue;
+    }
+    const std::string what = squared ? "T^2" : "4 pi^2 L/T^2";
+    warnings.push_back({line_of(*worst), "\"" + names[j] + "\": " + format_number(table.columns[j][*worst], 6) + " " +
+                                             unit + " where this row's " + what + " is " + format_number(ours_at, 6) +
+                                             " " + unit + " (" + format_number(off * 100.0, 2) + " % off, the most "
+                                             "of its rows): a slip in the working, or another formula? Not read"});
+    u.why += " (" + format_number(off * 100.0, 2) + " % off at line " + std::to_string(line_of(*worst)) + ")";
+  }
+}
+
 SettingsTable parse_settings_table(std::string_view text, const std::string& file, const TableOptions& options) {
   text = strip_bom(text);
   std::string spaced;  // a copy whose tabs are spaces, where both separate cells
@@ -1205,6 +1258,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
       refuse("the lengths in " + su.unit + " and the periods in " + tu.unit + " give 4 pi^2 L/T^2 = " +
              format_number(m, 3) + " m/s^2; expected about 9.8: a unit in the header wrong?");
     }
+    compare_derived(use, names, table, row_g(meters, periods), periods, line_of, out.warnings);
   } else if (out.setting == Setting::pivot_distance) {
     const std::vector<double> k2 = row_k2(meters, periods);
     for (std::size_t i = 0; i < k2.size(); ++i) {

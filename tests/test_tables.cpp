@@ -314,6 +314,36 @@ TEST_CASE("Tables: sigma columns by place and by matplotlib's names, the periods
   CHECK(swapped.sigma_from_scatter);
 }
 
+TEST_CASE("Tables: two period columns named by their timing method are compared, the first read", "[tables]") {
+  // Issue 39: Tracker's and phyphox's periods side by side gave "no period
+  // column". Four lengths, the second column within 2 ms of the first (1.4
+  // standard errors: they agree), or 2.3 % longer (11: they do not, which a
+  // warning says); either way the first is read and g is the same.
+  const std::string lengths[] = {"0.40", "0.60", "0.80", "1.00"};
+  const std::string tracker[] = {"1.270", "1.555", "1.795", "2.007"}, near[] = {"1.272", "1.556", "1.797", "2.006"},
+                    far[] = {"1.302", "1.596", "1.840", "2.057"};
+  std::string agree = "L (m),T Tracker (s),T_phyphox (s)\n", disagree = "L (m),period (tracker) (s),phyphox T (s)\n",
+              alone = "L (m),T (s)\n";
+  for (int i = 0; i < 4; ++i) {
+    agree += lengths[i] + "," + tracker[i] + "," + near[i] + "\n";
+    disagree += lengths[i] + "," + tracker[i] + "," + far[i] + "\n";
+    alone += lengths[i] + "," + tracker[i] + "\n";
+  }
+  const SettingsTable a = parse_settings_table(agree, "t"), d = parse_settings_table(disagree, "t");
+  for (const SettingsTable* t : {&a, &d}) CHECK(roles(*t) == std::vector<std::string>{"length", "period", "unused"});
+  CHECK_THAT(a.columns[2].why, Contains("its periods agree with it: they differ by 0.001 s on average (1.41 standard errors)"));
+  for (const auto& w : a.warnings) CHECK_THAT(w.text, !Contains("two timings that disagree"));
+  REQUIRE(d.warnings.size() == 1);
+  CHECK_THAT(d.warnings[0].text, Contains("\"phyphox T (s)\" times the same rows 2.34 % longer than \"period (tracker) (s)\"") &&
+                                     Contains("11 standard errors"));
+  const double g = reduced(parse_settings_table(alone, "t")).g.value;
+  CHECK(reduced(a).g.value == g);
+  CHECK(reduced(d).g.value == g);
+  // A timing method alone, or beside another word, names no period.
+  CHECK_THROWS_WITH(parse_settings_table("L (m),tracker (s)\n0.4,1.27\n0.6,1.555\n", "t"), Contains("no period column"));
+  CHECK_THROWS_WITH(parse_settings_table("L (m),T initial (s)\n0.4,1.27\n0.6,1.555\n", "t"), Contains("no period column"));
+}
+
 TEST_CASE("Tables: error columns by the spellings students use, each after its value", "[tables]") {
   // Issue 39's list: dL/dT, u(L), sigma L, a bare +-, delta, unc, err, and
   // Delta L; each the uncertainty of its value, by its own name or as the

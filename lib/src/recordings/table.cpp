@@ -117,6 +117,41 @@ std::optional<Use> quantity_of(std::string_view word) {
 
 bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
 
+/// Words that say how a period was timed: "T tracker", "period (phyphox)",
+/// "T_stopwatch" are period columns, told apart by the method (issue 39:
+/// Tracker's and phyphox's periods side by side).
+constexpr const char* kTimingMethods[] = {"tracker", "phyphox", "stopwatch", "photogate", "gate",  "video",
+                                          "phone",   "sensor",  "manual",    "hand",      "timer", "camera",
+                                          "app",     "logger",  "pasco",     "vernier",   "arduino"};
+
+bool is_timing_method(std::string_view word) {
+  return std::any_of(std::begin(kTimingMethods), std::end(kTimingMethods), [&](const char* m) { return word == m; });
+}
+
+/// A period's word and a timing method's (kTimingMethods), in either order,
+/// underscores and brackets as spaces ("t tracker", "phyphox period");
+/// `unit` joins them where it is a method, not a unit ("T (video)").
+bool method_qualified_period(std::string word, const std::string& unit) {
+  if (is_timing_method(unit)) word += " " + unit;
+  for (char& ch : word) {
+    if (ch == '_' || ch == '(' || ch == ')' || ch == '[' || ch == ']') ch = ' ';
+  }
+  int periods = 0, methods = 0, others = 0;
+  for (std::size_t at = 0; at < word.size();) {
+    const std::size_t end = std::min(word.find(' ', at), word.size());
+    const std::string token = word.substr(at, end - at);
+    at = end + 1;
+    if (token.empty()) continue;
+    const Role role = classify(token).role;
+    if (role == Role::period || role == Role::time) ++periods;
+    else if (is_timing_method(token)) ++methods;
+    else ++others;
+  }
+  return periods == 1 && methods >= 1 && others == 0;
+}
+
+
+
 /// A quantity named in an uncertainty's word, a plot's axes too: "x" the
 /// setting, "y" the period (matplotlib's xerr, yerr; dx, dy).
 std::optional<Use> axis_quantity(const std::string& word) {
@@ -213,6 +248,12 @@ Use from_header(const Column& c) {
   if (auto q = quantity_of(c.word)) {
     q->unit = c.unit;
     return *q;
+  }
+  if (method_qualified_period(c.word, c.unit)) {
+    u.kind = Kind::time;
+    u.unit = is_timing_method(c.unit) ? std::string() : c.unit;
+    u.why = "a period by the header, its timing method named";
+    return u;
   }
   u.why = c.role == Role::counter ? "a counter or index" : c.name.empty() ? "not needed" : "a word the reader does not know";
   return u;
@@ -749,6 +790,37 @@ bool readings_of_their_own(const std::vector<TableObservation>& obs, const std::
   return length - best(false).first >= 1.0;
 }
 
+/// Compares a second period column's periods (s) with the ones read, row
+/// by row: their mean difference against its standard error (the
+/// differences' scatter over sqrt n). Within 3 of them, or 10^-4 of the
+/// period, `second`'s why says they agree; else a warning gives both and
+/// the difference: two timings of the same swings that disagree, one of
+/// which --columns picks.
+void compare_periods(Use& second, const std::string& name, const std::string& used_name,
+                     const std::vector<double>& theirs, const std::vector<double>& periods,
+                     std::vector<RecordingNote>& warnings) {
+  std::vector<double> d;
+  for (std::size_t i = 0; i < periods.size(); ++i) {
+    if (std::isfinite(theirs[i]) && std::isfinite(periods[i])) d.push_back(theirs[i] - periods[i]);
+  }
+  if (d.size() < 2) return;
+  double mean = 0.0, var = 0.0;
+  for (double x : d) mean += x / d.size();
+  for (double x : d) var += (x - mean) * (x - mean) / (d.size() - 1.0);
+  const double error = std::sqrt(var / d.size()), typical = median_of(periods);
+  const std::string by = format_number(mean, 3) + " s on average (" +
+                         (error > 0.0 ? format_number(std::fabs(mean) / error, 3) + " standard errors" : "exactly") + ")";
+  if (std::fabs(mean) <= std::max(3.0 * error, 1e-4 * typical)) {
+    second.why += "; its periods agree with it: they differ by " + by;
+    return;
+  }
+  warnings.push_back({0, "\"" + name + "\" times the same rows " + format_number(mean / typical * 100.0, 3) +
+                             " % " + (mean > 0.0 ? "longer" : "shorter") + " than \"" + used_name +
+                             "\", which is read: they differ by " + by + "; two timings that disagree (--columns "
+                             "reads the other)"});
+  second.why += "; its periods differ from it by " + by;
+}
+
 /// Compares each derived column (Derived) with what its row's length and
 /// period give, T^2 or 4 pi^2 L/T^2 (`g`, m/s^2; no amplitude taken off:
 /// the textbook's): within 2 % at every row (a rounded working) its why says
@@ -933,7 +1005,9 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     }
   }
   // One column of each role: the first, but of a time of N swings beside
-  // its period ("L, t, T": t/N = T), the period.
+  // its period ("L, t, T": t/N = T), the period. A second period column
+  // (Tracker's beside phyphox's) is compared once the periods are read.
+  std::vector<std::pair<std::size_t, Use>> second_times;
   for (std::size_t j = 0; j < use.size(); ++j) {
     for (std::size_t i = 0; i < j && use[j].kind != Kind::unused; ++i) {
       if (same(use[i], use[j]) && use[i].kind == Kind::time && !use[i].uncertainty && !use[i].trial) {
@@ -948,6 +1022,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
         }
       }
       if (same(use[i], use[j])) {
+        if (use[j].kind == Kind::time && !use[j].uncertainty && !use[j].trial) second_times.emplace_back(j, use[j]);
         use[j].why = "a second " + quantity_name(use[j]) + " column: column " + std::to_string(i + 1) + " is used";
         use[j].kind = Kind::unused, use[j].uncertainty = false;
       }
@@ -1090,6 +1165,10 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     }
   }
   const std::vector<double> periods = scaled(table.columns[*time_col], *time_factor / n_osc);
+  for (const auto& [j, second] : second_times) {
+    const auto factor = factor_of(kTimeUnits, second.unit.empty() ? tu.unit : second.unit);
+    if (factor) compare_periods(use[j], names[j], names[*time_col], scaled(table.columns[j], *factor / std::max(second.oscillations, 1)), periods, out.warnings);
+  }
 
   // The setting's unit: the header's, else the one the periods agree with.
   // A sweep's rows are grouped by their amplitude instead.

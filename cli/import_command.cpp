@@ -252,6 +252,11 @@ Command add_import_command(CLI::App& app) {
     const RecordingSummary summary = analyse_recording(
         o->file, recording_family(o->formats).value_or(RecordingFormat::automatic), o->swing,
         {o->limits.applied_to(kRecordingInput), std::nullopt}, o->set, o->columns);
+    if (scene && o->swing.stamps_per_period) {
+      // A scene's reference has no key for it: reduce would read the stamps its own way.
+      throw UsageError("--stamps-per-period with --format scene: a scene cannot say it, and reduce would count "
+                       "the stamps by their intervals; give the scene's timing as import's JSON pastes it instead");
+    }
     if (scene) {
       const std::optional<RecordingFormat> family = recording_family(o->formats);
       RecordingReference ref;

@@ -56,6 +56,18 @@ struct SimulatedRecording {
   double omega0 = 0.0;                      // sqrt(g/l)
 };
 
+/// A seed's sampling phase in [0, 1): the golden ratio's steps spread
+/// seeds 1, 2, ... evenly, so that an error that depends on the phase is
+/// drawn anew for each record, not once for all.
+inline double seeded_phase(std::uint64_t seed) { return std::fmod(seed * 0.6180339887498949, 1.0); }
+
+/// The share of normal errors within one standard deviation, and three
+/// binomial sigmas of it over `runs` records: a coverage test's tolerance.
+constexpr double kOneSigmaCoverage = 0.6826894921370859;
+inline double coverage_tolerance(int runs) {
+  return 3.0 * std::sqrt(kOneSigmaCoverage * (1.0 - kOneSigmaCoverage) / runs);
+}
+
 inline SimulatedRecording simulate_recording(const RecordingSimulation& s) {
   SimulatedRecording out;
   const double w0 = std::sqrt(s.g / s.length);

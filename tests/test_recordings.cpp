@@ -1185,7 +1185,7 @@ TEST_CASE("A hand's release and catch are cut: 200 records, the period within it
   for (int seed = 1; seed <= kRuns; ++seed) {
     RecordingSimulation s;
     s.theta0 = 15.0 * M_PI / 180.0, s.duration = 60.0, s.drop = 0.0, s.seed = static_cast<std::uint64_t>(seed);
-    s.phase = std::fmod(seed * 0.6180339887498949, 1.0);
+    s.phase = test::seeded_phase(static_cast<std::uint64_t>(seed));
     const test::SimulatedRecording sim = simulate_recording(s);
     std::mt19937_64 random(static_cast<std::uint64_t>(seed));
     const double phase = 2.0 * M_PI * std::uniform_real_distribution<double>(0.0, 1.0)(random);
@@ -1223,7 +1223,6 @@ TEST_CASE("A hand's release and catch are cut: 200 records, the period within it
     CHECK(a.analysed->second > caught - 4.0 * period);
     covered += std::fabs(a.period.value - zeros_period(sim, a)) <= a.period.uncertainty;
   }
-  const double p = 0.6826894921370859;
   WARN("hand release and catch: coverage " << static_cast<double>(covered) / kRuns);
-  CHECK(std::fabs(static_cast<double>(covered) / kRuns - p) < 3.0 * std::sqrt(p * (1.0 - p) / kRuns));
+  CHECK(std::fabs(static_cast<double>(covered) / kRuns - test::kOneSigmaCoverage) < test::coverage_tolerance(kRuns));
 }

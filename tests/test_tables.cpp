@@ -417,8 +417,8 @@ TEST_CASE("Tables: a time of N swings beside its period, and a per-row g, are no
   CHECK(t.oscillations == 1);
   REQUIRE(roles(t) == std::vector<std::string>{"length", "unused", "period", "unused"});
   CHECK(t.columns[1].why.find("the time of 10 oscillations beside the periods of column 3") != std::string::npos);
-  CHECK_THAT(t.columns[3].why, Contains("each row's g (a student's working): compared with 4 pi^2 L/T^2, not read "
-                                        "(within 0.01 % at every row)"));
+  CHECK_THAT(t.columns[3].why, Contains("each row's g (a student's working): not read; compared with each row's "
+                                        "4 pi^2 L/T^2: within 0.01 % at every row"));
   for (const auto& w : t.warnings) CHECK_THAT(w.text, !Contains("a slip in the working"));
   check_g(t);
   // T^2 and g beside L and T (issue 39): compared, never read; a g slipped
@@ -430,11 +430,27 @@ TEST_CASE("Tables: a time of N swings beside its period, and a per-row g, are no
   for (const std::string& row : rows) derived += row, plain += row.substr(0, row.find(',', 5)) + "\n";
   const SettingsTable d = parse_settings_table(derived, "t");
   CHECK(roles(d) == std::vector<std::string>{"length", "period", "unused", "unused"});
-  CHECK_THAT(d.columns[2].why, Contains("the periods squared") && Contains("within 0.01 % at every row"));
+  CHECK_THAT(d.columns[2].why, Contains("the periods squared (a student's working): not read; compared with each "
+                                        "row's T^2: within 0.01 % at every row"));
   REQUIRE(d.warnings.size() == 1);
   CHECK(d.warnings[0].line == 3);
-  CHECK_THAT(d.warnings[0].text, Contains("9.52 m/s^2 where this row's 4 pi^2 L/T^2 is 9.79603 m/s^2 (2.8 % off"));
+  CHECK_THAT(d.warnings[0].text, Contains("\"g (m/s^2)\" at line 3: 9.52 m/s^2 where its row's 4 pi^2 L/T^2 is "
+                                          "9.79603 m/s^2 (2.8 % off"));
   CHECK(reduced(d).g.value == reduced(parse_settings_table(plain, "t")).g.value);
+  // A row of trials is compared by their mean, as its working took them:
+  // trials 3 % either side of 1.270 s give the row's g exactly, no warning.
+  const SettingsTable trials = parse_settings_table(
+      "L (m),trial 1 (s),trial 2 (s),trial 3 (s),g (m/s^2)\n0.40,1.2319,1.270,1.3081,9.790\n"
+      "0.60,1.508,1.555,1.602,9.796\n0.80,1.741,1.795,1.849,9.802\n", "t");
+  for (const auto& w : trials.warnings) CHECK_THAT(w.text, !Contains("a slip in the working"));
+  // An uncertainty after a working is the working's: not the period's.
+  const SettingsTable sigma = parse_settings_table(
+      "L (m),T (s),g (m/s^2),\xc2\xb1 (m/s^2)\n0.40,1.270,9.79,0.2\n0.60,1.555,9.80,0.2\n0.80,1.795,9.80,0.2\n", "t");
+  CHECK(roles(sigma) == std::vector<std::string>{"length", "period", "unused", "unused"});
+  CHECK_THAT(sigma.columns[3].why, Contains("the uncertainty of a student's working before it: not read"));
+  // In other units a working is not compared, and says so.
+  CHECK_THAT(parse_settings_table("L (m),T (s),g (cm/s^2)\n0.40,1.270,979\n0.60,1.555,980\n", "t").columns[2].why,
+             Contains("not compared (its unit cm/s^2)"));
 }
 
 TEST_CASE("Tables: single timings take their uncertainty from the scatter about the fit", "[tables]") {

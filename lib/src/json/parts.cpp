@@ -120,23 +120,29 @@ void warn_about_trials(const std::string& path, const std::vector<double>& times
     largest += (k == 0 ? "" : k + 1 == allowance.size() ? " and " : ", ") + allowance[k];
   }
   const auto i = static_cast<std::size_t>(worst - deviation.begin());
-  // Off by whole periods (within a tenth of one) is a count; by 0.1 to 0.9
-  // of a period, the hand on the stopwatch (the median trial's period).
+  // In periods of the median trial: whole ones (within a tenth) are a
+  // count; under 0.9 of one, the hand on the stopwatch (and about half of
+  // one, a pass counted as a swing); more and not whole, neither.
   const double periods = *worst / (centre / oscillations);
   const bool counted = std::abs(periods - std::round(periods)) <= 0.1 && periods >= 0.9;
-  const std::string off = in_unit(*worst) + " (" + format_number(periods, 2) + " of a period)";
-  const std::string late = std::string(times[i] < centre ? "started late or stopped early" : "started early or stopped late");
-  suspicions.push_back(path + ".trials[" + std::to_string(i) + "]: " + format_number(times[i]) + " " + unit +
-                       ", far from the other trials (warnings): " +
-                       (counted ? "a miscounted oscillation? Count again, or drop the trial"
-                                : "a stopwatch " + late + " by " + off + ", too little for a miscounted "
-                                  "oscillation? Time it again, or drop the trial"));
-  warnings.push_back(path + ".trials[" + std::to_string(i) + "]: " + format_number(times[i]) + " " +
-                     unit + " is " + in_unit(*worst) + " from the median trial " +
-                     format_number(centre) + " " + unit + ", over 5 times " + largest +
-                     (counted ? "; a miscounted oscillation or a typo?"
-                              : "; " + format_number(periods, 2) + " of a period: a stopwatch " + late +
-                                    ", or a typo?"));
+  const bool hand = periods < 0.9;
+  const std::string late = times[i] < centre ? "started late or stopped early" : "started early or stopped late";
+  const bool half = std::abs(periods - 0.5) <= 0.1;
+  const std::string trial = path + ".trials[" + std::to_string(i) + "]: " + format_number(times[i]) + " " + unit;
+  suspicions.push_back(trial + ", far from the other trials (warnings): " +
+                       (counted ? std::string("a miscounted oscillation? Count again, or drop the trial")
+                        : hand  ? "a stopwatch " + late + " by " + in_unit(*worst) + " (" + format_number(periods, 2) +
+                                     " of a period)" +
+                                     (half ? ", or a pass counted as a swing" : ", too little for a miscounted oscillation") +
+                                     "? Time it again, or drop the trial"
+                                : "a typo (" + format_number(periods, 2) + " periods off: neither whole periods nor "
+                                  "a stopwatch's fraction of one)? Check it, or drop the trial"));
+  warnings.push_back(trial + " is " + in_unit(*worst) + " from the median trial " + format_number(centre) + " " + unit +
+                     ", over 5 times " + largest +
+                     (counted ? std::string("; a miscounted oscillation or a typo?")
+                      : hand  ? "; " + format_number(periods, 2) + " of a period: a stopwatch " + late +
+                                   (half ? ", a pass counted as a swing" : "") + ", or a typo?"
+                              : "; " + format_number(periods, 2) + " periods: a typo?"));
 }
 
 /// Trials that are a stopwatch's lap totals, each the sum of the laps

@@ -161,9 +161,11 @@ void read_recorded_timing(Object& parent, const std::string& prefix, Observation
   for (const Glitch& g : r.swings.glitches) {
     out.warnings.push_back(t.path("recording") + ": " + r.file + ": from " + format_number(g.start, 6) + " s to " +
                            format_number(g.end, 6) + " s " +
-                           (g.cause ? std::string(g.cause) : std::string("the recording does not fit the swing")) +
-                           " (" + format_number(g.worst, 3) +
-                           " robust sigmas): its period's uncertainty allows for it; a \"range\" cuts it");
+                           (g.cause ? std::string(g.cause) + " (its half swings' peaks rise " + format_number(g.worst, 3) +
+                                          " robust sigmas)"
+                                    : "the recording does not fit the swing (" + format_number(g.worst, 3) +
+                                          " robust sigmas)") +
+                           ": its period's uncertainty allows for it; a \"range\" cuts it");
   }
 }
 

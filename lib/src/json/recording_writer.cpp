@@ -139,9 +139,9 @@ std::string recording_scene(const RecordingSummary& r, const RecordingReference&
   constexpr const char* kFill = "fill in: ";
   nlohmann::ordered_json scene;
   scene["schema"] = "pendulum-g/scene/1";
-  scene["title"] = r.file + (r.set.empty() ? "" : "/" + r.set);
+  scene["title"] = ref.recording + (r.set.empty() ? "" : "/" + r.set);
   scene["notes"] = std::string("Written by pendulum-g import --format scene from ") + recording_format_name(r.format) +
-                   " recording " + r.file + ". Save it beside the recording; replace each \"" + kFill +
+                   " recording " + ref.recording + ". Save it beside the recording; replace each \"" + kFill +
                    "...\" with your measurement (reduce names the first left); delete bob for a bob small "
                    "against the length.";
   scene["timing"] = reference;

@@ -440,9 +440,13 @@ Layout detect(RecordingFormat forced, const std::vector<Column>& cols, bool prea
     }
   }
   if (headerless) {
-    // Reached with content only: the numbers did not say enough.
+    // Reached with content only: the numbers did not say enough. Named
+    // columns here are a header of generic names (generic_names).
+    const bool named = std::any_of(cols.begin(), cols.end(), [](const Column& c) { return !c.name.empty(); });
     fail(file, header_line, 1,
-         "a headerless file of " + std::to_string(cols.size()) + " columns whose roles its numbers do not tell (" +
+         (named ? "a file of " + std::to_string(cols.size()) + " columns under a fitting program's generic names, "
+                  "read by its numbers, whose roles they do not tell ("
+                : "a headerless file of " + std::to_string(cols.size()) + " columns whose roles its numbers do not tell (") +
              quoted_names(cols) + "); name them with --columns (a scene's \"columns\"), e.g. \"t:s,theta:deg\"");
   }
   fail(file, header_line, 1,
@@ -501,7 +505,8 @@ std::optional<std::string> roles_from_content(std::vector<Column>& cols, const C
       note = "\"" + column_label(cols[signals[0]].name, signals[0] + 1) + "\" swings at " + format_number(pb / pa, 2) +
              " times the frequency of \"" + column_label(cols[signals[1]].name, signals[1] + 1) +
              "\": not a track's x beside its y (y swings at twice x's frequency), so set aside";
-    } else if (pb < 0.7 * pa || could_be_track_y(t, a, b)) {
+    } else if (pb < 0.7 * pa || t.back() - t.front() < 3.0 * pa || could_be_track_y(t, a, b)) {
+      // Under three periods a drift follows the rate as well as a lag does.
       cols[signals[0]].role = Role::x, cols[signals[1]].role = Role::y;
     } else {
       // "t theta extra": a bob's height is a function of its x, in step with it.
@@ -742,8 +747,9 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
     // derivative changes sign. The rest are read as a headerless file's.
     std::string set_aside;
     for (std::size_t j = 0; j < cols.size(); ++j) {
-      const bool sigma = cols[j].role != Role::x && cols[j].role != Role::y && content.facts(j).ranged &&
-                         content.facts(j).lo >= 0.0;
+      const auto& v = table.columns[j];
+      const bool sigma = cols[j].role != Role::x && cols[j].role != Role::y &&
+                         std::none_of(v.begin(), v.end(), [](double x) { return x < 0.0; });
       cols[j].role = sigma ? Role::uncertainty : Role::other;
       if (sigma) set_aside += (set_aside.empty() ? "\"" : ", \"") + names[j] + "\"";
     }

@@ -26,7 +26,13 @@ bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.
 
 bool generic_names(const std::vector<Column>& cols) {
   return !cols.empty() && std::all_of(cols.begin(), cols.end(), [](const Column& c) {
-    const bool letter = c.word == "x" || c.word == "y" || c.word == "x'" || c.word == "y'";
+    std::string word = c.word;
+    for (std::string_view mark : {std::string_view("'"), std::string_view("\xe2\x80\xb2")}) {  // ', ′
+      if (word.size() > mark.size() && std::string_view(word).substr(word.size() - mark.size()) == mark) {
+        word.resize(word.size() - mark.size());
+      }
+    }
+    const bool letter = word == "x" || word == "y";
     return !c.prefixed && c.unit.empty() &&
            ((letter && (c.role == Role::x || c.role == Role::y || c.role == Role::derivative)) ||
             ((c.word == "dx" || c.word == "dy") && c.role == Role::uncertainty));
@@ -766,8 +772,8 @@ bool could_be_track_y(const std::vector<double>& t, const std::vector<double>& x
     if (std::isfinite(v.x) && std::isfinite(v.rate) && std::isfinite(v.y)) at.push_back(v);
   }
   if (at.size() < 16) return true;
-  double mean = 0.0, spread = 0.0, rate_spread = 0.0, y_mean = 0.0;
-  for (const Sample& v : at) mean += v.x / at.size(), y_mean += v.y / at.size();
+  double mean = 0.0, spread = 0.0, rate_spread = 0.0, y_mean = 0.0, lo = HUGE_VAL, hi = -HUGE_VAL;
+  for (const Sample& v : at) mean += v.x / at.size(), y_mean += v.y / at.size(), lo = std::min(lo, v.y), hi = std::max(hi, v.y);
   for (const Sample& v : at) spread = std::max(spread, std::fabs(v.x - mean)), rate_spread = std::max(rate_spread, std::fabs(v.rate));
   if (!(spread > 0.0) || !(rate_spread > 0.0)) return true;
   // Scaled to [-1, 1], so that the normal equations stay well conditioned.
@@ -790,7 +796,13 @@ bool could_be_track_y(const std::vector<double>& t, const std::vector<double>& x
     for (const Sample& v : at) s += std::pow(v.y - row(v).head(terms).dot(c), 2);
     return s;
   };
-  return !(ssr(5) - ssr(6) > 0.25 * yy);
+  // The quarter-period part: its share of y's variance, and its amplitude
+  // against x's (a track's x and y share a unit; an elliptical swing seen
+  // from above puts a few per cent of x's amplitude into y's quadrature,
+  // itself most of a small y's variance).
+  const double quadrature = ssr(5) - ssr(6);
+  const double amplitude = std::sqrt(2.0 * quadrature / at.size()), y_half = 0.5 * (hi - lo);
+  return !(quadrature > 0.25 * yy && (amplitude > 0.25 * spread || y_half > spread));
 }
 
 }  // namespace pendulum::recording_text

@@ -283,7 +283,10 @@ bool is_rate_of(const std::vector<double>& t, const std::vector<double>& a, cons
 /// a function of x, so none of y follows x's rate, the swing a quarter
 /// period on. False where that quarter-period part, beyond a polynomial of
 /// degree 4 in x, holds over a quarter of y's variance: a third column
-/// beside an angle (`t theta extra`: a lagging signal). A y of noise or a
+/// beside an angle (`t theta extra`: a lagging signal), where that part's
+/// amplitude is also over a quarter of x's half range or y swings wider than
+/// x (a track's x and y share a unit, and an elliptical swing seen from
+/// above puts a few per cent of x into y's quadrature). A y of noise or a
 /// tracker's drift has none of it. At most 2^16 samples are used, evenly
 /// spread.
 bool could_be_track_y(const std::vector<double>& t, const std::vector<double>& x, const std::vector<double>& y);

@@ -220,13 +220,13 @@ Use from_header(const Column& c) {
   for (const char* word : {"t^2", "t\xc2\xb2", "period^2", "period\xc2\xb2", "t squared", "period squared"}) {
     if (c.word == word) {
       u.derived = Derived::period_squared, u.unit = c.unit;
-      u.why = "the periods squared (a student's working): compared with T^2, not read";
+      u.why = "the periods squared (a student's working): not read";
       return u;
     }
   }
   if (c.word == "g" || c.word == "gravity") {
     u.derived = Derived::g, u.unit = c.unit;
-    u.why = "each row's g (a student's working): compared with 4 pi^2 L/T^2, not read";
+    u.why = "each row's g (a student's working): not read";
     return u;
   }
   if (const int n = oscillations_in(c.word)) {
@@ -823,37 +823,58 @@ void compare_periods(Use& second, const std::string& name, const std::string& us
 
 /// Compares each derived column (Derived) with what its row's length and
 /// period give, T^2 or 4 pi^2 L/T^2 (`g`, m/s^2; no amplitude taken off:
-/// the textbook's): within 2 % at every row (a rounded working) its why says
-/// so; else a warning names the row furthest off and both values. A unit
-/// other than s^2, m/s^2 or none is not compared.
+/// the textbook's), a row of several trials by their mean period, as its
+/// working took them. Within 2 % at every row its why says so: a working
+/// rounded to three figures is within 0.5 %, a slip in one (a digit, a
+/// length in other units, another formula) is off by more. Beyond, a
+/// warning names the line furthest off and both values. A unit other than
+/// s^2 or m/s^2 (or none) is not compared, and the why says so.
 template <class LineOf>
 void compare_derived(std::vector<Use>& use, const std::vector<std::string>& names, const Table& table,
-                     const std::vector<double>& g, const std::vector<double>& periods, const LineOf& line_of,
+                     const std::vector<double>& meters, const std::vector<double>& periods, const LineOf& line_of,
                      std::vector<RecordingNote>& warnings) {
+  // One entry per line of the file: its length, its trials' summed periods and count, its first row.
+  struct Row {
+    std::size_t line, first;
+    double length, periods = 0.0;
+    int trials = 0;
+  };
+  std::vector<Row> rows;
+  for (std::size_t i = 0; i < periods.size(); ++i) {
+    if (rows.empty() || rows.back().line != line_of(i)) rows.push_back({line_of(i), i, meters[i]});
+    if (std::isfinite(periods[i])) rows.back().periods += periods[i], ++rows.back().trials;
+  }
   for (std::size_t j = 0; j < use.size(); ++j) {
     Use& u = use[j];
     if (u.derived == Derived::none) continue;
     const bool squared = u.derived == Derived::period_squared;
     const std::string unit = squared ? "s^2" : "m/s^2";
-    if (!u.unit.empty() && u.unit != unit && !(squared && u.unit == "s\xc2\xb2")) continue;
-    std::optional<std::size_t> worst;
-    double off = 0.0, ours_at = 0.0;
-    for (std::size_t i = 0; i < periods.size(); ++i) {
-      const double theirs = table.columns[j][i], ours = squared ? periods[i] * periods[i] : g[i];
-      if (!std::isfinite(theirs) || !(ours > 0.0)) continue;
-      if (const double d = std::fabs(theirs / ours - 1.0); !worst || d > off) worst = i, off = d, ours_at = ours;
-    }
-    if (!worst) continue;
-    if (off <= 0.02) {
-      u.why += " (within " + format_number(std::max(off * 100.0, 0.01), 2) + " % at every row)";
+    if (!u.unit.empty() && u.unit != unit && !(squared && u.unit == "s\xc2\xb2")) {
+      u.why += "; not compared (its unit " + u.unit + ")";
       continue;
     }
+    const Row* worst = nullptr;
+    double off = 0.0, ours_at = 0.0;
+    for (const Row& r : rows) {
+      const double t = r.periods / r.trials, theirs = table.columns[j][r.first];
+      const double ours = squared ? t * t : 4.0 * kPi * kPi * r.length / (t * t);
+      if (r.trials == 0 || !std::isfinite(theirs) || !(ours > 0.0)) continue;
+      if (const double d = std::fabs(theirs / ours - 1.0); !worst || d > off) worst = &r, off = d, ours_at = ours;
+    }
+    if (!worst) continue;
     const std::string what = squared ? "T^2" : "4 pi^2 L/T^2";
-    warnings.push_back({line_of(*worst), "\"" + names[j] + "\": " + format_number(table.columns[j][*worst], 6) + " " +
-                                             unit + " where this row's " + what + " is " + format_number(ours_at, 6) +
-                                             " " + unit + " (" + format_number(off * 100.0, 2) + " % off, the most "
-                                             "of its rows): a slip in the working, or another formula? Not read"});
-    u.why += " (" + format_number(off * 100.0, 2) + " % off at line " + std::to_string(line_of(*worst)) + ")";
+    if (off <= 0.02) {
+      u.why += "; compared with each row's " + what + ": within " + format_number(std::max(off * 100.0, 0.01), 2) +
+               " % at every row";
+      continue;
+    }
+    const std::string line = "line " + std::to_string(worst->line);
+    warnings.push_back({worst->line, "\"" + names[j] + "\" at " + line + ": " +
+                                         format_number(table.columns[j][worst->first], 6) + " " + unit +
+                                         " where its row's " + what + " is " + format_number(ours_at, 6) + " " + unit +
+                                         " (" + format_number(off * 100.0, 2) + " % off, the most of its rows): a slip "
+                                         "in the working, or another formula? Not read"});
+    u.why += "; compared with each row's " + what + ": " + format_number(off * 100.0, 2) + " % off at " + line;
   }
 }
 
@@ -938,14 +959,16 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
       Use& u = use[j] = from_header(cols[j]);
       if (u.uncertainty && u.kind == Kind::unused) {
         // "σ" alone: the uncertainty of the column before it.
-        if (last && !last->uncertainty) {
+        if (last && last->derived != Derived::none) {
+          u.uncertainty = false, u.why = "the uncertainty of a student's working before it: not read";
+        } else if (last && !last->uncertainty) {
           u.kind = last->kind, u.setting = last->setting, u.oscillations = last->oscillations;
           u.why = "the uncertainty of the column before it";
         } else {
           u.uncertainty = false, u.why = "an uncertainty of no column before it";
         }
       }
-      if (u.kind != Kind::unused) last = &u;
+      if (u.kind != Kind::unused || u.derived != Derived::none) last = &u;
     }
   } else {
     // Headerless: a setting first, then each column the uncertainty of the
@@ -1052,6 +1075,10 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
 
   SettingsTable out;
   out.rows = table.rows;
+  if (lines.header && options.columns.empty() && generic_names(cols)) {
+    out.warnings.push_back({header_line, "the header's names (" + listed() + ") are a fitting program's generic ones: "
+                                         "the columns are read by place and their numbers, as without a header"});
+  }
   // No setting beside amplitudes: one pendulum at several amplitudes.
   out.sweep = !setting_col;
   Use no_setting;
@@ -1337,7 +1364,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
       refuse("the lengths in " + su.unit + " and the periods in " + tu.unit + " give 4 pi^2 L/T^2 = " +
              format_number(m, 3) + " m/s^2; expected about 9.8: a unit in the header wrong?");
     }
-    compare_derived(use, names, table, row_g(meters, periods), periods, line_of, out.warnings);
+    compare_derived(use, names, table, meters, periods, line_of, out.warnings);
   } else if (out.setting == Setting::pivot_distance) {
     const std::vector<double> k2 = row_k2(meters, periods);
     for (std::size_t i = 0; i < k2.size(); ++i) {

@@ -519,7 +519,7 @@ void read_decay(Object& top, ParsedScene& out, RecordingReader& recordings) {
       // Whose angle the amplitudes are, as an amplitude's "of" (docs/phone.md).
       const std::string of = d.text("of");
       PENDULUM_FAIL_IF(of != "pendulum" && of != "body", d.path("of"),
-                       "got \"" + of + "\"; expected \"pendulum\" (the default) or \"body\" (a sensor in the bob)");
+                       "got \"" + one_line(of, 60, true) + "\"; expected \"pendulum\" (the default) or \"body\" (a sensor in the bob)");
       data.angle_of = of == "body" ? AngleOf::body : AngleOf::pendulum;
     }
     if (d.has("source")) d.text("source");
@@ -550,7 +550,7 @@ void read_site(Object& top, ParsedScene& out) {
     const std::string reference = o.text("height_reference");
     if (reference != "ellipsoid" && reference != "sea_level") {
       throw InputError(o.path("height_reference"),
-                       "got \"" + reference + "\"; expected \"ellipsoid\" or \"sea_level\"");
+                       "got \"" + one_line(reference, 60, true) + "\"; expected \"ellipsoid\" or \"sea_level\"");
     }
     site.height_above_ellipsoid = reference == "ellipsoid";
   }

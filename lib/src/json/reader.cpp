@@ -375,7 +375,7 @@ Unit unit_at(Object& o, const std::string& key, Dimension dim) {
   const std::string name = o.text(key);
   const auto unit = find_unit(name, dim);
   if (!unit) {
-    throw InputError(o.path(key), "got \"" + name + "\"; expected a unit of " + dimension_name(dim) +
+    throw InputError(o.path(key), "got \"" + one_line(name, 60, true) + "\"; expected a unit of " + dimension_name(dim) +
                                       ": " + unit_names(dim));
   }
   return *unit;

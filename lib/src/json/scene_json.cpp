@@ -252,7 +252,7 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
     v.amplitude = m.value;
     u.amplitude = m.sigma;
     PENDULUM_FAIL_IF(of != "pendulum" && of != "body", source.path_of("amplitude") + ".of",
-                     "got \"" + of + "\"; expected \"pendulum\" (the line from the pivot to the bob's centre, "
+                     "got \"" + one_line(of, 60, true) + "\"; expected \"pendulum\" (the line from the pivot to the bob's centre, "
                      "the default) or \"body\" (the bob's own tilt, what a sensor in it measures)");
     if (of == "body") v.amplitude_of = u.amplitude_of = AngleOf::body;
     const json& amplitude = amplitude_owner.at("amplitude");
@@ -430,7 +430,7 @@ void refer_lengths_to_centre(ParsedScene& out) {
     const std::string path = out.sources[k].path_of("length.measured_to");
     const double sign = to == "top_of_bob" ? 1.0 : to == "bottom_of_bob" ? -1.0 : 0.0;
     PENDULUM_FAIL_IF(sign == 0.0 && to != "center" && to != "centre", path,
-                     "got \"" + to + "\"; expected \"center\", \"top_of_bob\" or \"bottom_of_bob\"");
+                     "got \"" + one_line(to, 60, true) + "\"; expected \"center\", \"top_of_bob\" or \"bottom_of_bob\"");
     if (sign == 0.0) continue;
     const auto& bob = out.apparatus.bob;
     PENDULUM_FAIL_IF(!bob, path,

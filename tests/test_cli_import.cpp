@@ -464,4 +464,10 @@ TEST_CASE("import --format scene: a whole scene that reduce refuses until its pl
                                {"columns", "t:s,x:m,y:m"},
                                {"range", {{"from", 1.0}, {"to", 20.0}, {"unit", "s"}}}});
   CHECK(d.at("length").at("value") == 0.8);
+  // An option a scene cannot say is bad usage, not a scene that reads otherwise.
+  const Run stamps = run("import --format scene --stamps-per-period 1 " + std::string(PENDULUM_DATA_DIR) +
+                         "/recordings/vernier_photogate.csv");
+  CHECK(stamps.status == 2);
+  CHECK(stamps.out.empty());
+  CHECK_THAT(stamps.err, Contains("--stamps-per-period with --format scene: a scene cannot say it"));
 }

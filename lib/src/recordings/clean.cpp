@@ -122,8 +122,10 @@ Cleaned clean_times(const std::vector<double>& time, const std::vector<std::size
     ++gaps;
     longest = std::max(longest, d);
     if (gaps <= 10) {
+      // In doubles: a gap of 1e300 steps is no integer's (lround's was then
+      // LLONG_MIN, and one less an overflow: fuzz_recording, session 28).
       out.notes.push_back({line(pos(j)), "a gap of " + seconds(d) + " before this sample (about " +
-                                             std::to_string(static_cast<long long>(std::lround(d / median)) - 1) +
+                                             format_number(std::round(d / median) - 1.0, 6) +
                                              " missing at the median step of " + seconds(median) + ")"});
     }
   }

@@ -1958,14 +1958,15 @@ std::optional<Bridge> bridge_of(const SwingAnalysis& from, const Glitch& g) {
 
 /// An analysis's small-amplitude period T0 (s): the one its amplitudes were
 /// solved with, or, where too few swings had one for that, the period over
-/// 1 + the mean DeltaT/T0 of the swings that have one (Eq. 8, exact); NaN
-/// without amplitudes.
+/// 1 + the mean DeltaT/T0 of the swings that have one below 180 deg (Eq. 8,
+/// exact; a cut stretch analysed alone may hold a knock's "amplitude" of 18
+/// rad: fuzz_recording, session 28); NaN without amplitudes.
 double small_amplitude_period_of(const SwingAnalysis& a) {
   if (std::isfinite(a.small_amplitude_period)) return a.small_amplitude_period;
   double sum = 0.0;
   int count = 0;
   for (const RecordedSwing& w : a.swings) {
-    if (std::isfinite(w.amplitude) && w.amplitude > 0.0) sum += finite_amplitude_agm(w.amplitude), ++count;
+    if (w.amplitude > 0.0 && w.amplitude < kPi) sum += finite_amplitude_agm(w.amplitude), ++count;
   }
   return count ? a.period.value / (1.0 + sum / count) : kNaN;
 }

@@ -124,8 +124,10 @@ Cleaned clean_times(const std::vector<double>& time, const std::vector<std::size
     if (gaps <= 10) {
       // In doubles: a gap of 1e300 steps is no integer's (lround's was then
       // LLONG_MIN, and one less an overflow: fuzz_recording, session 28).
-      out.notes.push_back({line(pos(j)), "a gap of " + seconds(d) + " before this sample (about " +
-                                             format_number(std::round(d / median) - 1.0, 6) +
+      const double missing = std::round(d / median) - 1.0;
+      out.notes.push_back({line(pos(j)), "a gap of " + seconds(d) + " before this sample (" +
+                                             (std::isfinite(missing) ? "about " + format_number(missing, 6)
+                                                                     : std::string("too many to count")) +
                                              " missing at the median step of " + seconds(median) + ")"});
     }
   }

@@ -856,9 +856,10 @@ void compare_derived(std::vector<Use>& use, const std::vector<std::string>& name
     const Row* worst = nullptr;
     double off = 0.0, ours_at = 0.0;
     for (const Row& r : rows) {
+      if (r.trials == 0) continue;
       const double t = r.periods / r.trials, theirs = table.columns[j][r.first];
-      const double ours = squared ? t * t : 4.0 * kPi * kPi * r.length / (t * t);
-      if (r.trials == 0 || !std::isfinite(theirs) || !(ours > 0.0)) continue;
+      const double ours = squared ? t * t : gravity_for_period(r.length, t);
+      if (!std::isfinite(theirs) || !(ours > 0.0)) continue;
       if (const double d = std::fabs(theirs / ours - 1.0); !worst || d > off) worst = &r, off = d, ours_at = ours;
     }
     if (!worst) continue;

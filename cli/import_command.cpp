@@ -184,7 +184,7 @@ bool names_table_columns(const std::string& spec) {
     bool x = false, other_setting = false;
     for (const auto& c : columns) {
       x |= c.role == "pivot_position";
-      other_setting |= c.role == "length" || c.role == "pivot_distance" || c.role == "time" ||
+      other_setting |= c.role == "length" || c.role == "pivot_distance" || c.role == "rod_length" || c.role == "time" ||
                        c.role.find("_uncertainty") != std::string::npos;
     }
     return other_setting || (x && spec.find('y') == std::string::npos);

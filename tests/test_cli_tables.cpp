@@ -14,6 +14,7 @@
 #include "cli_run.hpp"
 
 using Catch::Matchers::Contains;
+using Catch::Matchers::WithinRel;
 using nlohmann::json;
 
 namespace {
@@ -93,8 +94,8 @@ TEST_CASE("import of a unitless pivot-position column that fits two units names 
 // import --help and the message for a column it cannot read list the same roles
 // (table_column_roles), the settings' letters among them.
 TEST_CASE("import --help names a table's column roles, as the message for a wrong one does", "[cli][tables]") {
-  const std::string roles = "l (length), h (pivot distance), x (pivot position), T (period), tN (time of N "
-                            "oscillations: t10), theta (amplitude), u (the uncertainty of the column before)";
+  const std::string roles = "l (length), h (pivot distance), x (pivot position), r (rod length), T (period), tN "
+                            "(time of N oscillations: t10), theta (amplitude), u (the uncertainty of the column before)";
   CHECK_THAT(run("import --help").out, Contains(roles));
   const Run wrong = run("import --columns l,T,q " + kData + "/pendulum_lengths_table.csv");
   CHECK(wrong.status == 1);
@@ -385,21 +386,54 @@ TEST_CASE("a spreadsheet's cells as other programs write them, and stamps told f
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("Lego beams pivoted at an end, typed as a table of lengths, are named as such", "[cli][tables]") {
-  // Coramik & Inanc 2023 (Phys. Educ. 58 055014): a Lego beam at five total
-  // lengths, 48.00 to 67.20 cm in steps of 6 studs (4.80 cm), pivoted at its
-  // end, Tracker's periods 1.139 to 1.349 s. As a simple pendulum's lengths
-  // they give g x 1.5 (a rod swings as one of 2L/3): the reason names it.
-  const std::string table = temporary_file() + ".csv";
-  std::ofstream(table) << "L (cm),T (s)\n48.00,1.139\n52.80,1.199\n57.60,1.249\n62.40,1.300\n67.20,1.349\n";
-  const Run imported = succeeded("import " + table);
-  const std::string file = temporary_file();
-  std::ofstream(file) << imported.out;
-  const Run reduced = succeeded("reduce " + file);
+namespace {
+
+// Coramik & Inanc 2023 (Phys. Educ. 58 055014): a Lego beam at five total
+// lengths, 48.00 to 67.20 cm in steps of 6 studs (4.80 cm), pivoted at its
+// end, Tracker's periods 1.139 to 1.349 s.
+const std::string kLegoRows = "48.00,1.139\n52.80,1.199\n57.60,1.249\n62.40,1.300\n67.20,1.349\n";
+
+/// `table` imported (with `options`) and the scene reduced, as a user runs them.
+Run imported_and_reduced(const std::string& table, const std::string& options) {
+  const std::string file = temporary_file() + ".csv", scene = temporary_file();
+  std::ofstream(file) << table;
+  std::ofstream(scene) << succeeded("import " + file + options).out;
+  const Run reduced = succeeded("reduce " + scene);
+  std::remove(scene.c_str());
   std::remove(file.c_str());
-  std::remove(table.c_str());
+  return reduced;
+}
+
+}  // namespace
+
+TEST_CASE("Lego beams pivoted at an end, typed as a table of lengths, are named as such", "[cli][tables]") {
+  // As a simple pendulum's lengths the beams give g x 1.5 (a rod swings as
+  // one of 2L/3): the reason names it.
+  const Run reduced = imported_and_reduced("L (cm),T (s)\n" + kLegoRows, "");
   const json result = json::parse(reduced.out);
   CHECK(g_of(reduced) / 9.80665 == Approx(1.5).epsilon(0.02));
   CHECK(result.at("status") == "suspect");
   CHECK_THAT(result.at("status_reasons").dump(), Contains("a uniform rod or beam pivoted at its end"));
+  CHECK_THAT(result.at("status_reasons").dump(), Contains("rod_length"));
+}
+
+TEST_CASE("Lego beams typed as rods pivoted at an end give g within 1% of 9.80 (issue 39)", "[cli][tables]") {
+  // The rows above under a rod's header, and headerless with the column
+  // declared: each beam swings as a simple pendulum of 2L/3 (Kelley Eq. 45).
+  for (const auto& [header, columns] : {std::pair<std::string, std::string>{"rod length (cm),T (s)\n", ""},
+                                        {"beam (cm),T (s)\n", ""},
+                                        {"", " --columns \"r,T\""}}) {
+    INFO(header << columns);
+    const Run reduced = imported_and_reduced(header + kLegoRows, columns);
+    const json result = json::parse(reduced.out);
+    CHECK(result.at("fit").at("model") == "physical_pendulum");
+    CHECK(std::abs(g_of(reduced) / 9.80 - 1.0) < 0.01);
+    CHECK(result.at("status") == "ok");
+    const json& scan = result.at("fit").at("pivot_scan");
+    CHECK(scan.at("minimum").is_null());
+    CHECK(scan.at("textbook").at("radius_of_gyration_m").is_null());
+    CHECK_THAT(result.at("fit").at("observations")[0].at("conjugate_pivot").at("equivalent_length").at("value")
+                   .get<double>(),
+               WithinRel(2 * 0.48 / 3, 1e-12));
+  }
 }

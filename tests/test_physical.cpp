@@ -3,7 +3,9 @@
 // scenes drawn from the model (pivot_scan_simulation.hpp).
 
 #include <cmath>
+#include <cstdio>
 #include <string>
+#include <vector>
 
 #include "pendulum/reduce_scene.hpp"
 #include "pendulum/period_fit.hpp"
@@ -69,7 +71,8 @@ TEST_CASE("Pivot scan: a noiseless metre stick gives back g, k and the centre", 
   // The curve's minimum is 2 pi sqrt(2k/g) at h = k (d/dh (k^2 + h^2)/h = 0).
   REQUIRE(a.fit.results_of<PhysicalPendulum>());
   const PivotScan& scan = *a.fit.results_of<PhysicalPendulum>();
-  CHECK_THAT(scan.minimum_period.value,
+  REQUIRE(scan.minimum_period);
+  CHECK_THAT(scan.minimum_period->value,
              WithinRel(2 * kPi * std::sqrt(2 * sim.radius_of_gyration / sim.g), 1e-12));
   REQUIRE(scan.minimum_pivot_positions.size() == 2);
   CHECK_THAT(scan.minimum_pivot_positions[1].value,
@@ -351,4 +354,72 @@ TEST_CASE("Pivot scans: every fit ends by its own stopping rule in a few steps, 
   // 3 at most were measured over these seeds with non-monotonic steps; 5
   // leaves two for another platform's rounding, half a stall's 10.
   CHECK(longest <= 5);
+}
+
+namespace {
+
+/// Rods of lengths `lengths` (m), each pivoted at its end and timed once at
+/// 4 deg, in gravity g, with their ideal periods from the closed form
+/// T = 2 pi sqrt(2L/(3g)) 2K(sin(A/2))/pi (Kelley Eqs. 45, 56), K from
+/// std::comp_ellint_1, independent of the library's AGM.
+std::string rod_series(const std::vector<double>& lengths, double g) {
+  auto digits = [](double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", x);
+    return std::string(text);
+  };
+  const double A = 4 * test::kDegree, factor = 2 * std::comp_ellint_1(std::sin(A / 2)) / kPi;
+  std::string observations;
+  for (double L : lengths) {
+    const double T = 2 * kPi * std::sqrt(2 * L / (3 * g)) * factor;
+    observations += std::string(observations.empty() ? "" : ",") + R"({"rod_length": {"value": )" +
+                    digits(L) + R"(, "uncertainty": 0.0005, "unit": "m"}, "timing": {"unit": "s",
+                    "oscillations_per_trial": 1, "resolution": 1e-9, "trials": [)" + digits(T) + "]}}";
+  }
+  return R"({"amplitude": {"value": 4, "uncertainty": 0.5, "unit": "deg"}, "observations": [)" + observations + "]}";
+}
+
+}  // namespace
+
+TEST_CASE("A series of rods pivoted at an end: each its own body, l = 2L/3 (Kelley Eq. 45)", "[physical][rods]") {
+  const std::vector<double> lengths = {0.3, 0.5, 0.7, 0.9};
+  const ParsedScene scene = parse_scene(rod_series(lengths, 9.81));
+  CHECK(scene.model == kind_of<PhysicalPendulum>());
+  const Analysis a = reduce_scene(scene, exact());
+  INFO(a.fit.termination);
+  CHECK(a.fit.converged);
+  for (const ParameterResult& p : a.fit.parameters) CHECK(p.fitted == (std::string(p.name) == "g"));
+  CHECK_THAT(a.g.value, WithinRel(9.81, 1e-10));
+  REQUIRE(a.fit.results_of<PhysicalPendulum>());
+  const PivotScan& scan = *a.fit.results_of<PhysicalPendulum>();
+  // One body's minimum and k mean nothing for several rods.
+  CHECK_FALSE(scan.minimum_period);
+  REQUIRE(scan.textbook);
+  CHECK_FALSE(scan.textbook->radius_of_gyration);
+  // Without the finite-amplitude factor the textbook line's g is low by factor^2.
+  const double factor = 2 * std::comp_ellint_1(std::sin(4 * test::kDegree / 2)) / kPi;
+  CHECK_THAT(scan.textbook->g.value, WithinRel(9.81 / (factor * factor), 1e-12));
+  REQUIRE(scan.conjugates.size() == lengths.size());
+  for (std::size_t i = 0; i < lengths.size(); ++i) {
+    CHECK_THAT(scan.conjugates[i].equivalent_length.value, WithinRel(2 * lengths[i] / 3, 1e-14));
+    CHECK_THAT(scan.conjugates[i].pivot_distance.value, WithinRel(lengths[i] / 6, 1e-14));
+  }
+  // The rods' lengths' uncertainty is in g's budget (g grows with each L).
+  bool found = false;
+  for (const auto& e : a.budget) found |= e.input.find("rod_length") != std::string::npos && e.sensitivity > 0.0;
+  CHECK(found);
+}
+
+TEST_CASE("A rod pivoted at its end is the thin rod of its parts hung at its end", "[physical][rods]") {
+  // The same rod both ways: rod_length, and a body of one thin_rod part with
+  // a pivot_position at its end (bodies.hpp, derive_from_parts).
+  const std::string timing = R"("amplitude": {"value": 6, "unit": "deg"},
+      "timing": {"oscillations_per_trial": 1, "unit": "s", "resolution": 0.001, "trials": [1.3412, 1.3405, 1.3409]})";
+  const Analysis rod = reduce_scene(parse_scene(R"({"rod_length": {"value": 0.66, "unit": "m"}, )" + timing + "}"), exact());
+  const Analysis parts = reduce_scene(parse_scene(
+      R"({"pivot_position": {"value": 0, "unit": "m"}, "body": {"parts": [{"shape": "thin_rod",
+          "length": {"value": 0.66, "unit": "m"}, "mass": {"value": 0.2, "unit": "kg"},
+          "position": {"value": 0.33, "unit": "m"}}]}, )" + timing + "}"), exact());
+  CHECK(rod.fit.method == "closed_form");
+  CHECK_THAT(rod.g.value, WithinRel(parts.g.value, 1e-14));
 }

@@ -41,8 +41,8 @@ constexpr Slip kSlips[] = {
     // centre L/2 below, an equivalent length I/(m L/2) = 2L/3, so L for it
     // gives g x 3/2 (Coramik & Inanc 2023's Lego beams came out at x 1.50).
     {1.5, "the lengths are those of a uniform rod or beam pivoted at its end, which swings as a simple pendulum "
-          "two thirds as long (its centre L/2 below the pivot, k^2 = L^2/12): give the body and the pivot "
-          "(docs/physical.md) instead of a length"},
+          "two thirds as long (its centre L/2 below the pivot, k^2 = L^2/12): give each as rod_length "
+          "(a table's column \"rod length\", or --columns \"r:cm,T\"; docs/physical.md) instead of a length"},
     // Inches: 1 m is 39.37 in.
     {1.0 / 0.0254, "the length is 39.37 times too long, as when a length in inches is written as m: fix length.unit "
                    "(\"in\")"},

@@ -20,6 +20,7 @@ enum class Setting {
   length,          ///< pivot to the bob's centre, or to the mark of length_offset
   pivot_distance,  ///< pivot to the body's centre of mass
   pivot_position,  ///< the pivot's place along the body, from a mark on it
+  rod_length,      ///< a uniform rod's (or beam's) length, pivoted at its end: each observation its own body
 };
 
 /// What the reader and the output say of a setting.
@@ -38,6 +39,7 @@ inline constexpr SettingInfo kSettingInfo[] = {
     {Setting::length, "length", "L", "l", "length", "a length series", false},
     {Setting::pivot_distance, "pivot_distance", "h", "h", "pivot distance", "a pivot scan", false},
     {Setting::pivot_position, "pivot_position", "x", "x", "pivot position", "a pivot scan", true},
+    {Setting::rod_length, "rod_length", "L_rod", "r", "rod length", "a series of rods pivoted at an end", false},
 };
 
 namespace detail {

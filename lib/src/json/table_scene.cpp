@@ -36,7 +36,8 @@ TableOptions table_options(Object& t) {
   if (!t.has("columns")) return options;
   const json& columns = t.at("columns");
   Object all(columns, t.path("columns"), "an object: each role's column, e.g. {\"length\": 1, \"period\": 2}");
-  static const char* const kRoles[] = {"length", "pivot_distance", "pivot_position", "period", "time", "amplitude"};
+  static const char* const kRoles[] = {"length", "pivot_distance", "pivot_position", "rod_length", "period", "time",
+                                       "amplitude"};
   for (const char* role : kRoles) {
     for (const std::string& key : {std::string(role), std::string(role) + "_uncertainty"}) {
       if (!all.has(key)) continue;

@@ -22,19 +22,29 @@ namespace pendulum {
 
 static_assert(PhysicalPendulum::kParameters == 3, "physical_start (analysis.hpp) takes three parameters");
 
+namespace {
+
+/// Whether each observation hangs its own rod (Setting::rod_length), whose
+/// k is known, rather than one body at its pivots.
+bool rods(const ParsedScene& scene) {
+  return !scene.observations.empty() && scene.observations.front().setting == Setting::rod_length;
+}
+
+}  // namespace
+
 std::array<double, 3> physical_start(const ParsedScene& scene, const std::array<bool, 3>& fitted) {
   using M = PhysicalPendulum;
   std::array<double, M::kParameters> p = M::kDefaults;
   const auto& obs = scene.observations;
   const auto& body = scene.apparatus.body;
-  // A k the body gives is held: the line is then T^2 h = (4 pi^2/g)(k^2 + h^2), through the origin.
-  const bool known_k = body && body->radius_of_gyration;
-  const double known_k2 = known_k ? *body->radius_of_gyration * *body->radius_of_gyration : 0.0;
+  // A k the body (or each rod) gives is held: the line is then T^2 h = (4 pi^2/g)(k^2 + h^2), through the origin.
+  const bool known_k = (body && body->radius_of_gyration) || rods(scene);
   auto line_through = [&](double center, double& ssr) {
     std::vector<double> x, y, zero(obs.size(), 0.0);
+    const double at[M::kParameters] = {p[M::g], p[M::radius_of_gyration], center};
     for (const auto& o : obs) {
-      const double h = o.setting == Setting::pivot_position ? std::abs(o.length - center) : o.length;
-      x.push_back(h * h + known_k2);
+      const double h = M::pivot_distance(at, o, scene.apparatus), k = M::gyration_at(at, o, scene.apparatus);
+      x.push_back(h * h + (known_k ? k * k : 0.0));
       y.push_back(o.period * o.period * h);
     }
     const StraightLine line =
@@ -82,9 +92,9 @@ std::array<double, 3> physical_start(const ParsedScene& scene, const std::array<
   double ssr;
   const StraightLine line = line_through(center, ssr);
   p[M::g] = gravity_for_slope(line.slope);
-  if (known_k) {
+  if (known_k && !rods(scene)) {
     p[M::radius_of_gyration] = *body->radius_of_gyration;  // held: what the model takes (PhysicalPendulum::gyration)
-  } else if (line.intercept > 0.0) {
+  } else if (!known_k && line.intercept > 0.0) {
     p[M::radius_of_gyration] = std::sqrt(line.intercept / line.slope);
   }
   p[M::center_of_mass_position] = center;
@@ -100,34 +110,42 @@ PivotScan::Textbook pivot_textbook(const ParsedScene& scene, const std::array<bo
   const std::array<double, 3> t = physical_start(scene, fitted);
   const auto& obs = scene.observations;
   const auto& body = scene.apparatus.body;
-  const bool known_k = body && body->radius_of_gyration;
+  const bool known_k = (body && body->radius_of_gyration) || rods(scene);
   const bool positions = std::any_of(obs.begin(), obs.end(), [](const auto& o) { return o.setting == Setting::pivot_position; });
-  const double center = t[M::center_of_mass_position], k2 = known_k ? t[M::radius_of_gyration] * t[M::radius_of_gyration] : 0.0;
   const bool intercept = !known_k && obs.size() > 1 && fitted[M::radius_of_gyration];
   // physical_start's unweighted line T^2 h = a (h^2 + k^2) + b: its slope is
   // sum c_i y_i, c_i = (x_i - mean x)/Sxx (x_i/sum x^2 through the origin),
-  // and y_i - a x_i moves by 2 T h dT + (T^2 - 2 a h) dh.
+  // and y_i - a x_i moves by 2 T h dT + (T^2 dh/ds - a dx/ds) ds, s the
+  // setting (a Jet: a rod's h = L/2 and k^2 = L^2/12 both move with L).
   std::vector<double> h(obs.size()), x(obs.size());
   double mean = 0.0;
   for (std::size_t i = 0; i < obs.size(); ++i) {
-    h[i] = obs[i].setting == Setting::pivot_position ? std::abs(obs[i].length - center) : obs[i].length;
-    x[i] = h[i] * h[i] + k2;
+    h[i] = M::pivot_distance(t.data(), obs[i], scene.apparatus);
+    const double k = M::gyration_at(t.data(), obs[i], scene.apparatus);
+    x[i] = h[i] * h[i] + (known_k ? k * k : 0.0);
     if (intercept) mean += x[i] / obs.size();
   }
   double sxx = 0.0;
   for (double xi : x) sxx += (xi - mean) * (xi - mean);
   const double a = gravity_for_slope(t[M::g]);  // the slope of T^2 h against h^2 at g
+  using J = ceres::Jet<double, 1>;
+  const J at[M::kParameters] = {J(t[M::g]), J(t[M::radius_of_gyration]), J(t[M::center_of_mass_position])};
+  const Apparatus<J> app = convert_apparatus<J>(scene.apparatus, [](const Field&, double v) { return J(v); });
   double variance = 0.0;
   for (std::size_t i = 0; i < obs.size(); ++i) {
     const double c = (x[i] - mean) / sxx, T = obs[i].period;
     const auto& u = scene.observation_uncertainties[i];
-    const double dt = 2.0 * T * h[i] * u.period, dh = (T * T - 2.0 * a * h[i]) * u.length;
-    variance += c * c * (dt * dt + dh * dh);
+    Observation<J> o = convert_observation<J>(obs[i], [](const Field&, double v) { return J(v); });
+    o.length.v[0] = 1.0;
+    const J hj = M::pivot_distance(at, o, app), kj = M::gyration_at(at, o, app);
+    const J xj = hj * hj + (known_k ? kj * kj : J(0.0));
+    const double dt = 2.0 * T * h[i] * u.period, ds = (T * T * hj.v[0] - a * xj.v[0]) * u.length;
+    variance += c * c * (dt * dt + ds * ds);
   }
   const double sigma = t[M::g] * std::sqrt(variance) / a;
   return {{t[M::g], std::isfinite(sigma) ? std::optional<double>(sigma) : std::nullopt},
-          t[M::radius_of_gyration],
-          positions ? std::optional<double>(center) : std::nullopt};
+          rods(scene) ? std::nullopt : std::optional<double>(t[M::radius_of_gyration]),
+          positions ? std::optional<double>(t[M::center_of_mass_position]) : std::nullopt};
 }
 
 /// Air given but not the body's mass and volume: buoyancy is skipped; say
@@ -223,8 +241,10 @@ void PhysicalPendulum::report(const FitState<kParameters>& fit, Analysis& out) {
     using std::abs;
     return M::thermal_scale(app) * abs(M::gyration(p, app));
   };
-  scan.minimum_period = fit.derived_estimate([&](const JetP* p) { return minimum_period(p[M::g], k_of(p)); });
-  scan.minimum_pivot_distance = fit.derived_estimate(k_of);
+  if (!rods(fit.scene)) {
+    scan.minimum_period = fit.derived_estimate([&](const JetP* p) { return minimum_period(p[M::g], k_of(p)); });
+    scan.minimum_pivot_distance = fit.derived_estimate(k_of);
+  }
   const auto& body = fit.scene.apparatus.body;
   const bool held_center = body && body->center_of_mass_position;
   const bool positions = std::any_of(fit.scene.observations.begin(), fit.scene.observations.end(),
@@ -247,12 +267,12 @@ void PhysicalPendulum::report(const FitState<kParameters>& fit, Analysis& out) {
     PivotScan::Conjugate c;
     c.equivalent_length = fit.derived_estimate([&](const JetP* p) { return M::equivalent(p, o, app); });
     c.pivot_distance = fit.derived_estimate([&](const JetP* p) {
-      return conjugate_pivot_distance(M::gyration(p, app), M::pivot_distance(p, o, app));
+      return conjugate_pivot_distance(M::gyration_at(p, o, app), M::pivot_distance(p, o, app));
     });
     if (o.setting == Setting::pivot_position) {
       c.pivot_position = fit.derived_estimate([&](const JetP* p) {
         const JetP center = center_of(p);
-        const JetP h = conjugate_pivot_distance(M::gyration(p, app), M::pivot_distance(p, o, app));
+        const JetP h = conjugate_pivot_distance(M::gyration_at(p, o, app), M::pivot_distance(p, o, app));
         return o.length < center ? center + h : center - h;
       });
     }
@@ -273,7 +293,8 @@ std::optional<Expectation> PhysicalPendulum::expectation(const ParsedScene& scen
     if (!body.radius_of_gyration) body.radius_of_gyration = scene.body_from_parts->radius_of_gyration;
     if (!body.center_of_mass_position) body.center_of_mass_position = scene.body_from_parts->center_of_mass_position;
   }
-  if (!body.radius_of_gyration || (o.setting == Setting::pivot_position && !body.center_of_mass_position)) {
+  if (o.setting != Setting::rod_length &&
+      (!body.radius_of_gyration || (o.setting == Setting::pivot_position && !body.center_of_mass_position))) {
     return std::nullopt;
   }
   const double p[kParameters] = {kStandardGravity, 0.0, 0.0};  // k and the centre: the body's
@@ -294,13 +315,17 @@ const PivotScan& require_scan(const PivotScan* scan) {
 nlohmann::ordered_json pivot_textbook_json(const PivotScan& scan) {
   if (!scan.textbook) return nullptr;
   const PivotScan::Textbook& t = *scan.textbook;
-  return {{"equation", scan.bessel_g ? "T^2 h = (4 pi^2 / g)(k^2 + h^2) through the two pivots: Bessel's formula "
-                                       "8 pi^2/g = (T1^2 + T2^2)/(h1 + h2) + (T1^2 - T2^2)/(h1 - h2) on the measured "
-                                       "periods, no corrections"
-                                     : "T = 2 pi sqrt((k^2 + h^2)/(g h)): the straight line T^2 h = (4 pi^2 / g)(k^2 + "
-                                       "h^2) on the measured periods, no corrections"},
+  const char* equation =
+      scan.bessel_g ? "T^2 h = (4 pi^2 / g)(k^2 + h^2) through the two pivots: Bessel's formula 8 pi^2/g = (T1^2 + "
+                      "T2^2)/(h1 + h2) + (T1^2 - T2^2)/(h1 - h2) on the measured periods, no corrections"
+      : !t.radius_of_gyration ? "T = 2 pi sqrt(2L/(3g)) of each rod pivoted at its end (h = L/2, k^2 = L^2/12): the "
+                                "straight line T^2 h = (4 pi^2 / g)(k^2 + h^2) through the origin on the measured "
+                                "periods, no corrections"
+                              : "T = 2 pi sqrt((k^2 + h^2)/(g h)): the straight line T^2 h = (4 pi^2 / g)(k^2 + h^2) "
+                                "on the measured periods, no corrections";
+  return {{"equation", equation},
           {"g", writer::measured(t.g, "m/s^2")},
-          {"radius_of_gyration_m", t.radius_of_gyration},
+          {"radius_of_gyration_m", writer::optional_number(t.radius_of_gyration)},
           {"center_of_mass_position_m", writer::optional_number(t.center_of_mass_position)}};
 }
 
@@ -321,9 +346,10 @@ void PhysicalPendulum::put_fit_results(const Results* results, JsonOut& fit) {
   for (const auto& x : scan.minimum_pivot_positions) positions.push_back(measured(x, "m"));
   fit.json["pivot_scan"] = {
       {"equation", "T0 = 2 pi sqrt((k^2 + h^2)/(g h)), Kelley (1993) Eqs. (55)-(56)"},
-      {"minimum", {{"period", measured(scan.minimum_period, "s")},
-                   {"pivot_distance", measured(scan.minimum_pivot_distance, "m")},
-                   {"pivot_positions", positions}}},
+      {"minimum", scan.minimum_period ? nlohmann::ordered_json{{"period", measured(*scan.minimum_period, "s")},
+                                                               {"pivot_distance", measured(*scan.minimum_pivot_distance, "m")},
+                                                               {"pivot_positions", positions}}
+                                      : nlohmann::ordered_json(nullptr)},
       {"bessel_g_m_s2", optional_number(scan.bessel_g)},
       {"textbook", pivot_textbook_json(scan)},
       {"from_parts", {{"radius_of_gyration_m", optional_number(scan.parts_radius_of_gyration)},
@@ -333,19 +359,23 @@ void PhysicalPendulum::put_fit_results(const Results* results, JsonOut& fit) {
 void PhysicalPendulum::fit_results_lines(const Results* results, std::ostream& os) {
   const PivotScan& scan = require_scan(results);
   char line[160];
-  std::snprintf(line, sizeof line, "Minimum period T0   = %.6f %s s at h = k = %.5f m\n", scan.minimum_period.value,
-                writer::plus_minus(scan.minimum_period.uncertainty, "%.6f").c_str(),
-                scan.minimum_pivot_distance.value);
-  os << line;
+  if (scan.minimum_period) {
+    std::snprintf(line, sizeof line, "Minimum period T0   = %.6f %s s at h = k = %.5f m\n", scan.minimum_period->value,
+                  writer::plus_minus(scan.minimum_period->uncertainty, "%.6f").c_str(),
+                  scan.minimum_pivot_distance->value);
+    os << line;
+  }
   if (scan.bessel_g) {
     std::snprintf(line, sizeof line, "Bessel's formula    : g = %.8f m/s^2\n", *scan.bessel_g);
     os << line;
   }
   if (const auto& t = scan.textbook) {
-    os << (scan.bessel_g ? "Textbook: Bessel's formula on the measured periods, no corrections: g = "
-                         : "Textbook curve T = 2 pi sqrt((k^2 + h^2)/(g h)), no corrections: g = ")
+    os << (scan.bessel_g                ? "Textbook: Bessel's formula on the measured periods, no corrections: g = "
+           : !t->radius_of_gyration ? "Textbook curve T = 2 pi sqrt(2L/(3g)) of each rod, no corrections: g = "
+                                    : "Textbook curve T = 2 pi sqrt((k^2 + h^2)/(g h)), no corrections: g = ")
        << writer::rounded(t->g.value, t->g.uncertainty)
-       << " m/s^2, k = " << writer::format_fixed(t->radius_of_gyration, 5) << " m";
+       << " m/s^2";
+    if (t->radius_of_gyration) os << ", k = " << writer::format_fixed(*t->radius_of_gyration, 5) << " m";
     if (t->center_of_mass_position) os << ", centre at " << writer::format_fixed(*t->center_of_mass_position, 5) << " m";
     os << "\n";
   }

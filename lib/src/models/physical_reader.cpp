@@ -214,8 +214,36 @@ void read_temperature(Object& top, RigidBody<double>& v, RigidBody<double>& u, P
 
 namespace pendulum {
 
+namespace json_reader {
+namespace {
+
+/// A series of rods (Setting::rod_length): every observation one, and none
+/// of the keys of one body hung at its pivots, which each rod's length replaces.
+void check_rods(Object& top, const ParsedScene& out) {
+  for (std::size_t k = 0; k < out.observations.size(); ++k) {
+    const Setting s = out.observations[k].setting;
+    PENDULUM_FAIL_IF(s != Setting::rod_length, out.sources[k].path + setting_key(s),
+                     std::string("got ") + setting_key(s) + " beside rod_length; expected every observation a rod "
+                     "pivoted at its end (rod_length), or one body at its pivots (pivot_distance or pivot_position)");
+  }
+  for (const char* key : {"body", "center_of_mass_position"}) {
+    PENDULUM_FAIL_IF(top.has(key), key,
+                     std::string("given with rod_length; expected none: each rod is its own uniform body, its "
+                                 "radius of gyration and centre following from its length"));
+  }
+  PENDULUM_FAIL_IF(!out.fit.empty(), "fit",
+                   "got " + out.fit.front() + " with rod_length; expected no unknowns besides g: each rod's radius "
+                   "of gyration and centre follow from its length");
+}
+
+}  // namespace
+}  // namespace json_reader
+
 void PhysicalPendulum::read_keys(json_reader::Object& top, ParsedScene& out) {
   using namespace json_reader;
+  const bool rods = std::any_of(out.observations.begin(), out.observations.end(),
+                                [](const auto& o) { return o.setting == Setting::rod_length; });
+  if (rods) check_rods(top, out);
   RigidBody<double> v, u;
   if (top.has("body")) read_body(top, v, u);
   const bool fit_k = std::find(out.fit.begin(), out.fit.end(), "radius_of_gyration") != out.fit.end();
@@ -239,7 +267,7 @@ void PhysicalPendulum::read_keys(json_reader::Object& top, ParsedScene& out) {
     u.center_of_mass_position = c.sigma;
   }
   if (top.has("temperature")) read_temperature(top, v, u, out);
-  if (!fit_k && !v.radius_of_gyration) {
+  if (!rods && !fit_k && !v.radius_of_gyration) {
     throw InputError("fit", "the radius of gyration is neither fitted nor given; expected \"radius_of_gyration\" in "
                             "fit, or the body in parts (body.parts)");
   }
@@ -252,10 +280,9 @@ void PhysicalPendulum::read_keys(json_reader::Object& top, ParsedScene& out) {
   for (std::size_t k = 0; k < out.observations.size(); ++k) {
     const auto& o = out.observations[k];
     const std::string at = out.sources[k].path + setting_key(o.setting) + ".value";
-    const double h = o.setting == Setting::pivot_position && v.center_of_mass_position
-                         ? std::abs(o.length - *v.center_of_mass_position)
-                         : o.length;
     if (o.setting == Setting::pivot_position && !v.center_of_mass_position) continue;
+    const double p[kParameters] = {kStandardGravity, 0.0, v.center_of_mass_position.value_or(0.0)};
+    const double h = pivot_distance(p, o, out.apparatus);
     PENDULUM_FAIL_IF(!(h > 1e-9 * std::max(1.0, std::abs(o.length))), at,
                      "got a pivot " + format_number(h) + " m from the centre of mass; expected a pivot away from "
                      "it (at the centre the body has no restoring torque and its period is infinite)");

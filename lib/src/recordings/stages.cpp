@@ -304,6 +304,7 @@ const char* role_name(Role role) {
     case Role::length: return "length";
     case Role::pivot_distance: return "pivot distance";
     case Role::pivot_position: return "pivot position";
+    case Role::rod_length: return "rod length";
     case Role::amplitude: return "amplitude";
     case Role::other: return "unknown";
   }
@@ -405,6 +406,11 @@ const Spelling kSpellings[] = {
     {"pivot", Role::pivot_position},
     {"position", Role::pivot_position},
     {"hole", Role::pivot_position},
+    {"rod length", Role::rod_length},
+    {"rod", Role::rod_length},
+    {"beam length", Role::rod_length},
+    {"beam", Role::rod_length},
+    {"rod_length", Role::rod_length},
     {"amplitude", Role::amplitude},
     {"theta0", Role::amplitude},
     {"\xce\xb8" "0", Role::amplitude},  // θ0

@@ -138,13 +138,14 @@ enum class Role {
   length,               ///< a pendulum's length (l, L, Length)
   pivot_distance,       ///< pivot to a rigid body's centre of mass (h)
   pivot_position,       ///< the pivot's place along the body
+  rod_length,           ///< a uniform rod's length, pivoted at its end
   amplitude,            ///< the amplitude a timing started at
   other,                ///< a word not in the table
 };
 /// True for the words only a table of settings uses: a recording reads them as unknown.
 constexpr bool table_only(Role role) {
   return role == Role::length || role == Role::pivot_distance || role == Role::pivot_position ||
-         role == Role::amplitude;
+         role == Role::rod_length || role == Role::amplitude;
 }
 const char* role_name(Role role);
 

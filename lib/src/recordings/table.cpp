@@ -101,6 +101,7 @@ std::optional<Use> quantity_of(std::string_view word) {
     case Role::pivot_distance: u.kind = Kind::setting, u.setting = Setting::pivot_distance; break;
     case Role::pivot_position:
     case Role::x: u.kind = Kind::setting, u.setting = Setting::pivot_position; break;
+    case Role::rod_length: u.kind = Kind::setting, u.setting = Setting::rod_length; break;
     case Role::time:
     case Role::period: u.kind = Kind::time; break;
     case Role::angle:
@@ -350,6 +351,14 @@ bool fits_length(const std::vector<double>& l, const std::vector<double>& t) {
          std::all_of(g.begin(), g.end(), [&](double x) { return x > m / 2.5 && x < 2.5 * m; });
 }
 
+/// Whether the settings (m) and periods (s) read as rods pivoted at an end:
+/// as lengths, 2/3 of them (the rod's equivalent length, Kelley Eq. 45).
+bool fits_rod_length(const std::vector<double>& l, const std::vector<double>& t) {
+  std::vector<double> equivalent(l);
+  for (double& x : equivalent) x *= 2.0 / 3.0;
+  return fits_length(equivalent, t);
+}
+
 /// Whether the settings (m) and periods (s) read as pivot distances: every
 /// k^2 positive, the largest less than twice the smallest.
 bool fits_pivot_distance(const std::vector<double>& h, const std::vector<double>& t) {
@@ -378,6 +387,7 @@ constexpr UnitCheck kUnitChecks[] = {
     {Setting::length, fits_length, "in that unit alone 4 pi^2 L/T^2 is a g near the Earth's"},
     {Setting::pivot_distance, fits_pivot_distance, "in that unit alone the pivots give one radius of gyration"},
     {Setting::pivot_position, fits_pivot_position, "in that unit alone the positions span a body of these periods"},
+    {Setting::rod_length, fits_rod_length, "in that unit alone 4 pi^2 (2L/3)/T^2 is a g near the Earth's"},
 };
 constexpr bool unit_checks_follow_settings() {
   if (std::size(kUnitChecks) != std::size(kSettingInfo)) return false;
@@ -1544,10 +1554,7 @@ bool looks_like_settings_table(std::string_view text) {
       bool x = false, y = false, angle = false;
       for (std::size_t i = 0; i < header.size(); ++i) {
         const Column& c = header[i];
-        if (c.role == Role::length || c.role == Role::pivot_distance || c.role == Role::pivot_position ||
-            oscillations_in(c.word) > 0) {
-          return true;
-        }
+        if ((table_only(c.role) && c.role != Role::amplitude) || oscillations_in(c.word) > 0) return true;
         x |= c.role == Role::x, y |= c.role == Role::y, angle |= c.role == Role::angle || c.role == Role::amplitude;
         if ((c.role == Role::time || c.role == Role::period) && !time) time = i;
       }

@@ -67,9 +67,9 @@ AmplitudeChoice amplitude_choice(const ObservationResult& o) {
 }  // namespace
 
 std::optional<PivotScanRecord> pivot_scan_record(const ParsedScene& given, const Analysis& a) {
-  // Only the rigid body's model reports a pivot scan (PhysicalPendulum::report).
+  // Only the rigid body's model reports a pivot scan (PhysicalPendulum::report), one body's (not a series of rods').
   const PivotScan* pivot_scan = a.fit.results_of<PhysicalPendulum>();
-  if (!pivot_scan || !pivot_scan->textbook || a.observations.empty()) return std::nullopt;
+  if (!pivot_scan || !pivot_scan->textbook || !pivot_scan->minimum_period || a.observations.empty()) return std::nullopt;
   // The apparatus the analysis fitted with: alpha and beta from the decay record's fit.
   const std::optional<ParsedScene> fitted_decay = scene_with_fitted_decay(given, a.decay_fit);
   const ParsedScene& scene = fitted_decay ? *fitted_decay : given;
@@ -109,9 +109,9 @@ std::optional<PivotScanRecord> pivot_scan_record(const ParsedScene& given, const
     return predicted_period<M>(p.data(), M::swing(o), app, r.amplitude_method);
   };
 
-  r.minimum_period = scan.minimum_period;
-  r.minimum_pivot_distance = scan.minimum_pivot_distance;
-  r.minimum_x = positions ? scan.minimum_pivot_positions : std::vector<Estimate>{scan.minimum_pivot_distance};
+  r.minimum_period = *scan.minimum_period;
+  r.minimum_pivot_distance = *scan.minimum_pivot_distance;
+  r.minimum_x = positions ? scan.minimum_pivot_positions : std::vector<Estimate>{r.minimum_pivot_distance};
   r.minimum_model_period = model_at(r.minimum_x.front().value);
   const PivotScan::Conjugate& first = scan.conjugates.front();
   r.conjugate_x = positions ? first.pivot_position : std::optional<Estimate>(first.pivot_distance);
@@ -146,7 +146,7 @@ std::optional<PivotScanRecord> pivot_scan_record(const ParsedScene& given, const
   const PivotScan::Textbook& t = *scan.textbook;
   r.textbook_g = t.g.value;
   r.textbook_g_uncertainty = t.g.uncertainty;
-  r.textbook_k = t.radius_of_gyration;
+  r.textbook_k = t.radius_of_gyration.value_or(r.radius_of_gyration);
   r.textbook_center = t.center_of_mass_position.value_or(0.0);
   auto textbook_at = [&](double h) {
     return ideal_period(equivalent_length(r.textbook_k, h), r.textbook_g);  // Kelley Eqs. (55)-(56), no K

@@ -1,7 +1,8 @@
 #pragma once
 /// \file models/physical_pendulum.hpp
 /// \brief The period model of a rigid body swinging about pivots along its
-/// axis (a metre stick, a bar with holes, Kater's reversible pendulum):
+/// axis (a metre stick, a bar with holes, Kater's reversible pendulum), or
+/// a series of uniform rods each pivoted at its end (a body per observation):
 /// T0 = 2 pi sqrt((k^2 + h^2)/(g h)) (Kelley 1993, Eqs. 55-56), times the
 /// finite-amplitude factor, the air's buoyancy and the damping rows, with
 /// g, the radius of gyration k and the centre of mass's position as its
@@ -58,8 +59,9 @@ T bessel_g(const T& t1, const T& t2, const T& h1, const T& h2) {
 /// fitted parameters' covariance; a k or a centre taken from the body's
 /// parts counts as exact.
 struct PivotScan {
-  Estimate minimum_period;          ///< 2 pi sqrt(2k/g) (s), the ideal period at h = k
-  Estimate minimum_pivot_distance;  ///< h = k (m)
+  /// 2 pi sqrt(2k/g) (s), the ideal period at h = k, and that h = k (m):
+  /// one body's, so none for a series of rods.
+  std::optional<Estimate> minimum_period, minimum_pivot_distance;
   /// x_c - k and x_c + k (m), in the frame of pivot_position, when the centre is known.
   std::vector<Estimate> minimum_pivot_positions;
   struct Conjugate {
@@ -80,8 +82,9 @@ struct PivotScan {
   /// formula on the measured periods. g's uncertainty from the periods' and
   /// pivots' with k and the centre held at the line's.
   struct Textbook {
-    Estimate g;                 ///< (m/s^2)
-    double radius_of_gyration;  ///< k (m), the body's where it gives one
+    Estimate g;  ///< (m/s^2)
+    /// k (m), the body's where it gives one; none for rods, each its own.
+    std::optional<double> radius_of_gyration;
     /// x_c (m), in the frame of pivot_position; empty for pivot distances.
     std::optional<double> center_of_mass_position;
   };
@@ -90,7 +93,8 @@ struct PivotScan {
 
 struct PhysicalPendulum {
   static constexpr const char* kName = "physical_pendulum";
-  static constexpr std::array<Setting, 2> kSettings{{Setting::pivot_distance, Setting::pivot_position}};
+  static constexpr std::array<Setting, 3> kSettings{
+      {Setting::pivot_distance, Setting::pivot_position, Setting::rod_length}};
   /// The finite amplitude and the damping rows hold for any body; buoyancy is
   /// the body's own (own_corrections); the ball pendulum's parts and its
   /// sphere's added mass do not describe a rigid body, whose moment of inertia
@@ -148,9 +152,10 @@ struct PhysicalPendulum {
   static void read_keys(json_reader::Object& top, ParsedScene& out);
   /// The unknowns besides g a scene of observations alone (a table's: no
   /// parts, no measured centre) fits: k, and the centre from pivot positions
-  /// (read_keys refuses the scene otherwise).
+  /// (read_keys refuses the scene otherwise); none for rods, each of which
+  /// gives its own.
   static constexpr std::array<bool, kParameters> unknowns_of_observations_alone(Setting s) {
-    return {false, true, s == Setting::pivot_position};
+    return {false, s != Setting::rod_length, s == Setting::pivot_position};
   }
   /// Its parts are checked as read_keys reads them.
   static void check_scene(const ParsedScene&) {}
@@ -177,12 +182,22 @@ struct PhysicalPendulum {
     return app.body && app.body->radius_of_gyration ? *app.body->radius_of_gyration : p[radius_of_gyration];
   }
 
+  /// k (m) of the body an observation hangs: a rod of length L its own,
+  /// sqrt(L^2/12) (thin_rod, Kelley 1993 Fig. 9), else gyration(p, app).
+  template <class T, class Set>
+  static T gyration_at(const T* p, const Set& o, const Apparatus<T>& app) {
+    using std::sqrt;
+    return o.setting == Setting::rod_length ? T(sqrt(thin_rod(o.length).gyration_squared)) : gyration(p, app);
+  }
+
   /// h (m), the pivot to the centre of mass: the observation's pivot
-  /// distance, or its pivot position's distance from the centre (the
-  /// measured one when the scene gives it, else the parameter).
+  /// distance, a rod's half length (its end), or its pivot position's
+  /// distance from the centre (the measured one when the scene gives it,
+  /// else the parameter).
   template <class T, class Set>
   static T pivot_distance(const T* p, const Set& o, const Apparatus<T>& app) {
     using std::abs;
+    if (o.setting == Setting::rod_length) return thin_rod(o.length).half_length;
     if (o.setting != Setting::pivot_position) return o.length;
     const T& center = app.body && app.body->center_of_mass_position ? *app.body->center_of_mass_position
                                                                      : p[center_of_mass_position];
@@ -202,10 +217,11 @@ struct PhysicalPendulum {
   }
 
   /// l = (k^2 + h^2)/h (Kelley Eq. 55) at the body's temperature (m), for
-  /// an observation or its swing (whatever has `length` and `setting`).
+  /// an observation or its swing (whatever has `length` and `setting`); a
+  /// rod pivoted at its end gives 2L/3 (Kelley Eq. 45).
   template <class T, class Set>
   static T equivalent(const T* p, const Set& o, const Apparatus<T>& app) {
-    return thermal_scale(app) * equivalent_length(gyration(p, app), pivot_distance(p, o, app));  // Eq. (55)
+    return thermal_scale(app) * equivalent_length(gyration_at(p, o, app), pivot_distance(p, o, app));  // Eq. (55)
   }
 
   /// The period at parameters p = (g (m/s^2), k (m), x_c (m)):

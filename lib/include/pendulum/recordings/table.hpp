@@ -112,7 +112,7 @@ inline constexpr std::size_t kMaxSpreadsheetPeek = std::size_t{1} << 24;
 bool file_holds_settings_table(const std::string& path, const std::string& sheet = {});
 
 /// `--columns "l:cm,u,t10:s,u"`: one entry per column in file order: l
-/// (length), h (pivot distance), x (pivot position), T (period), tN (time of
+/// (length), h (pivot distance), x (pivot position), r (rod length), T (period), tN (time of
 /// N oscillations), theta (amplitude), u (the uncertainty of the entry before
 /// it), - (not used); each with an optional ":unit". InputError at `where`.
 std::vector<TableColumnChoice> parse_table_column_spec(const std::string& spec, const std::string& where);

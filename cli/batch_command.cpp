@@ -20,6 +20,7 @@
 #include "pendulum/json/output.hpp"
 #include "pendulum/report/html_report.hpp"
 #include "pendulum/json/scene_json.hpp"
+#include "pendulum/printable.hpp"
 
 namespace pendulum::cli {
 namespace {
@@ -109,6 +110,30 @@ std::vector<Job> gather(const std::vector<std::string>& paths, const std::string
   return jobs;
 }
 
+/// --site "52.37,5": the class's lab, its latitude (deg, north positive) and
+/// height above sea level (m), each checked as a scene's site.latitude and
+/// site.height are (argument_ranges.hpp); why not, or empty.
+std::string site_problem(const std::string& text, std::optional<Site>* site = nullptr) {
+  const auto comma = text.find(',');
+  const std::string expected = "; expected LATITUDE_DEG,HEIGHT_M (the lab's latitude, north positive, and height "
+                               "above sea level), e.g. 52.37,5";
+  const bool one_comma = comma != std::string::npos && text.find(',', comma + 1) == std::string::npos;
+  const std::optional<double> latitude = one_comma ? decimal_number(text.substr(0, comma)) : std::nullopt,
+                              height = one_comma ? decimal_number(text.substr(comma + 1)) : std::nullopt;
+  if (!latitude || !height) return "got \"" + one_line(text, kShownValueBytes, true) + "\"" + expected;
+  for (const auto& [range, value] : {std::pair{ranges::latitude, *latitude}, std::pair{ranges::height, *height}}) {
+    const std::string why = out_of_range(range, value);
+    if (!why.empty()) return why;
+  }
+  if (site) {
+    *site = Site{};
+    (*site)->latitude_deg = *latitude;
+    (*site)->height = *height;
+    (*site)->height_above_ellipsoid = false;
+  }
+  return "";
+}
+
 }  // namespace
 
 Command add_batch_command(CLI::App& app) {
@@ -118,6 +143,7 @@ Command add_batch_command(CLI::App& app) {
     std::string format = "jsonl";
     std::string report;
     unsigned jobs = std::max(1u, std::thread::hardware_concurrency());
+    std::string site;
     SceneFiles given;  // --allow-outside, --max-bytes, ...
   };
   auto o = std::make_shared<Options>();
@@ -144,6 +170,10 @@ Command add_batch_command(CLI::App& app) {
   cmd->add_option("--report", o->report,
                   "Also write an HTML class report to this file: every g against the expected g, the failures, "
                   "each scene's section");
+  cmd->add_option("--site", o->site,
+                  "The class's lab as LATITUDE_DEG,HEIGHT_M (north positive; height above sea level), e.g. 52.37,5: "
+                  "each scene that names no site is compared with WGS84 normal gravity there")
+      ->check(CLI::Validator([](std::string& text) { return site_problem(text); }, "LATITUDE_DEG,HEIGHT_M"));
   cmd->add_option("--jobs", o->jobs, "Scenes reduced at once (default: the number of cores)")
       ->check(whole_number())
       ->check(CLI::Range(1u, 256u));
@@ -170,6 +200,8 @@ Command add_batch_command(CLI::App& app) {
     }
     refuse_output_over_inputs(o->report, inputs);
     const AnalysisOptions options;
+    std::optional<Site> site;
+    if (!o->site.empty()) site_problem(o->site, &site);
     const BatchFormat format = o->format == "csv"     ? BatchFormat::csv
                                : o->format == "table" ? BatchFormat::table
                                                       : BatchFormat::jsonl;
@@ -180,7 +212,7 @@ Command add_batch_command(CLI::App& app) {
     std::atomic<std::size_t> next{0};
     auto work = [&] {
       for (std::size_t i = next++; i < jobs.size(); i = next++) {
-        auto outcome = reduce_batch_scene(jobs[i], options, format, !o->report.empty(), o->given);
+        auto outcome = reduce_batch_scene(jobs[i], options, format, !o->report.empty(), o->given, site);
         std::lock_guard<std::mutex> lock(mutex);
         results[i] = std::move(outcome);
         ready.notify_one();

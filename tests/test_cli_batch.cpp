@@ -213,3 +213,49 @@ TEST_CASE("batch --report: the class, sorted, failures, a section per scene", "[
   CHECK(page == pendulum::test::read_text(dir + "/again.html"));
   std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("batch --site: the class's lab for the scenes that name none, each scene's own site kept", "[cli][batch]") {
+  char dir_template[] = "/tmp/pendulum-g-batch-XXXXXX";
+  REQUIRE(mkdtemp(dir_template));
+  const std::string dir = dir_template;
+  const json own = json::parse(pendulum::test::read_text(kNelsonOlsson));
+  json none = own, typed = own;
+  none.erase("site");
+  // The same lab typed into the scene: --site must give it exactly.
+  typed["site"] = {{"latitude", {{"value", 52.37}, {"unit", "deg"}}},
+                   {"height", {{"value", 5}, {"unit", "m"}}},
+                   {"height_reference", "sea_level"}};
+  std::ofstream(dir + "/a_own.json") << own.dump();
+  std::ofstream(dir + "/b_none.json") << none.dump();
+  std::ofstream(dir + "/c_typed.json") << typed.dump();
+  auto lines_of = [](const Run& r) {
+    std::istringstream in(r.out);
+    std::vector<json> out;
+    for (std::string line; std::getline(in, line);) out.push_back(json::parse(line));
+    return out;
+  };
+  const std::vector<json> without = lines_of(run("batch --jobs 1 " + dir));
+  const Run r = run("batch --jobs 1 --site 52.37,5 " + dir);
+  CHECK(r.status == 0);
+  const std::vector<json> with = lines_of(r);
+  REQUIRE(with.size() == 4);
+  REQUIRE(without.size() == 4);
+  CHECK(with[0].at("expected_g_m_s2") == without[0].at("expected_g_m_s2"));  // the scene's own site
+  CHECK(without[1].at("expected_g_m_s2").is_null());
+  CHECK(with[1].at("expected_g_m_s2") == with[2].at("expected_g_m_s2"));
+  CHECK(with[1].at("z") == with[2].at("z"));
+  // A slip in the option is a usage error (exit 2) naming what it takes.
+  for (const auto& [value, message] :
+       {std::pair<std::string, std::string>{"52.37", "expected LATITUDE_DEG,HEIGHT_M"},
+        {"52.37,5,1", "expected LATITUDE_DEG,HEIGHT_M"},
+        {"0x10,5", "expected LATITUDE_DEG,HEIGHT_M"},
+        {"95,5", "got 95 deg; expected a latitude from -90 to 90 deg"},
+        {"52,5e9", "expected a height on Earth"}}) {
+    INFO(value);
+    const Run bad = run("batch --site " + value + " " + dir);
+    CHECK(bad.status == 2);
+    CHECK(bad.out.empty());
+    CHECK_THAT(bad.err, Contains("--site: ") && Contains(message));
+  }
+  std::filesystem::remove_all(dir);
+}

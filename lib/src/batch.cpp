@@ -11,6 +11,7 @@
 #include "pendulum/input_error.hpp"
 #include "pendulum/reduce_scene.hpp"
 #include "pendulum/json/scene_json.hpp"
+#include "text.hpp"
 
 namespace pendulum {
 namespace {
@@ -62,12 +63,18 @@ SceneFiles BatchScene::files(const SceneFiles& given) const {
 }
 
 BatchOutcome reduce_batch_scene(const BatchScene& job, const AnalysisOptions& options, BatchFormat format,
-                                bool with_report, const SceneFiles& given) {
+                                bool with_report, const SceneFiles& given, const std::optional<Site>& site) {
   const std::string name = job.shown();
   try {
-    const ParsedScene scene =
+    ParsedScene scene =
         parse_scene(job.text ? *job.text : read_text(job.name, given.limits.applied_to(kSceneInput), "a scene file"),
                     job.files(given));
+    if (site && !scene.site) {
+      scene.site = site;
+      scene.assumptions.push_back("site: not given; the class's (batch --site): latitude " +
+                                  format_number(*site->latitude_deg) + " deg, " + format_number(*site->height) +
+                                  " m above sea level");
+    }
     const Analysis analysis = reduce_scene(scene, options);
     BatchOutcome out{batch_line(name, scene, analysis, format), {name, std::nullopt, ""}};
     if (with_report) out.entry.report = report::make_scene_report(name, scene, analysis);

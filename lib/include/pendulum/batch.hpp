@@ -11,6 +11,7 @@
 #include "pendulum/analysis.hpp"
 #include "pendulum/json/output.hpp"
 #include "pendulum/report/html_report.hpp"
+#include "pendulum/site.hpp"
 #include "pendulum/json/scene_json.hpp"
 
 namespace pendulum {
@@ -42,12 +43,13 @@ std::vector<std::string> folder_scenes(const std::string& folder, std::vector<Sk
 /// an error (InputError, or any other as "internal error: ...") becomes the
 /// failure's line. Never throws. A scene of standard input looks for its
 /// recordings in the current folder. `given`: allow_outside and the limits
-/// (its directory is each scene's own).
+/// (its directory is each scene's own). `site`: where a scene that names
+/// none was measured (batch --site, a class's lab); a scene's own wins.
 struct BatchOutcome {
   BatchLine line;
   report::ClassEntry entry;
 };
 BatchOutcome reduce_batch_scene(const BatchScene& scene, const AnalysisOptions& options, BatchFormat format,
-                                bool with_report, const SceneFiles& given);
+                                bool with_report, const SceneFiles& given, const std::optional<Site>& site = std::nullopt);
 
 }  // namespace pendulum

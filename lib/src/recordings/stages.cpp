@@ -24,14 +24,28 @@ void fail(const std::string& file, std::size_t line, std::size_t column, const s
 
 bool starts_with(std::string_view s, std::string_view p) { return s.substr(0, p.size()) == p; }
 
+namespace {
+
+bool ends_with(std::string_view s, std::string_view p) {
+  return s.size() >= p.size() && s.substr(s.size() - p.size()) == p;
+}
+
+/// Takes the primes (' or ′, a tracker's derivative: X', Y') off the end of
+/// `w`, leaving a word; whether there were any.
+bool strip_primes(std::string_view& w) {
+  bool prime = false;
+  for (std::string_view mark : {std::string_view("'"), std::string_view("\xe2\x80\xb2")}) {  // ', ′
+    if (ends_with(w, mark) && w.size() > mark.size()) w.remove_suffix(mark.size()), prime = true;
+  }
+  return prime;
+}
+
+}  // namespace
+
 bool generic_names(const std::vector<Column>& cols) {
   return !cols.empty() && std::all_of(cols.begin(), cols.end(), [](const Column& c) {
-    std::string word = c.word;
-    for (std::string_view mark : {std::string_view("'"), std::string_view("\xe2\x80\xb2")}) {  // ', ′
-      if (word.size() > mark.size() && std::string_view(word).substr(word.size() - mark.size()) == mark) {
-        word.resize(word.size() - mark.size());
-      }
-    }
+    std::string_view word = c.word;
+    strip_primes(word);
     const bool letter = word == "x" || word == "y";
     return !c.prefixed && c.unit.empty() &&
            ((letter && (c.role == Role::x || c.role == Role::y || c.role == Role::derivative)) ||
@@ -53,10 +67,6 @@ std::string_view trim_cell(std::string_view s) {
 }
 
 namespace {
-
-bool ends_with(std::string_view s, std::string_view p) {
-  return s.size() >= p.size() && s.substr(s.size() - p.size()) == p;
-}
 
 std::string_view trim_spaces(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\r' || s.front() == '\t')) s.remove_prefix(1);
@@ -528,11 +538,7 @@ Column classify(std::string_view raw) {
       w = trim_spaces(w.substr(0, u));
     }
   }
-  // A prime is a derivative (Tracker's generic X', Y').
-  bool prime = false;
-  for (std::string_view mark : {std::string_view("'"), std::string_view("\xe2\x80\xb2")}) {  // ', ′
-    if (ends_with(w, mark) && w.size() > mark.size()) w.remove_suffix(mark.size()), prime = true;
-  }
+  const bool prime = strip_primes(w);
   for (const Spelling& sp : kSpellings) {
     const std::size_t n = std::strlen(sp.word);
     const bool match = sp.axis ? w.size() == n + 2 && starts_with(w, sp.word) && w[n] == ' ' &&

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -86,4 +87,34 @@ TEST_CASE("fit-decay on the bundled record", "[cli][decay_fit]") {
   CHECK(parts.status == 1);
   CHECK_THAT(parts.err, Contains("bob: unknown key; this object takes: amplitude, decay, length, notes"));
   std::remove(only.c_str());
+}
+
+TEST_CASE("Shares over 100 % from a correlated alpha and beta are explained beside the cross term's", "[cli][decay_fit]") {
+  // A phone's decay fit: alpha and beta correlated near -1, each alone
+  // thousands of % of u(g)^2. The shares of every input and the cross term
+  // add to 100 % (u(g)^2 = sum c_i^2 + 2 c_a c_b r), which the table says.
+  const std::string scene = std::string(PENDULUM_DATA_DIR) + "/recordings/phyphox_pendulum_raw_scene.json";
+  auto succeeded = [](const std::string& command) {
+    const Run r = run(command);
+    INFO(command << "\n" << r.err);
+    REQUIRE(r.status == 0);
+    return r;
+  };
+  const json result = json::parse(succeeded("reduce " + scene).out);
+  double shares = 0.0, largest = 0.0;
+  for (const json& b : result.at("g").at("budget")) {
+    shares += b.at("variance_share_percent").get<double>();
+    largest = std::max(largest, b.at("variance_share_percent").get<double>());
+  }
+  REQUIRE(largest > 100.0);
+  const double u = result.at("g").at("uncertainty").get<double>();
+  const double cross = 100.0 * result.at("g").at("budget_correlation").at("variance_m2_s4").get<double>() / (u * u);
+  CHECK_THAT(shares + cross, WithinAbs(100.0, 1e-6));
+  const std::string table = succeeded("reduce --format table " + scene).out;
+  char expected[64];
+  std::snprintf(expected, sizeof expected, "the cross term's, %.1f %%, takes back", cross);
+  CHECK_THAT(table, Contains("their shares above count each alone") && Contains(expected));
+  // Nelson & Olsson's own decay fit stays below 100 % everywhere: no such line.
+  CHECK_THAT(succeeded("reduce --format table " + std::string(PENDULUM_DATA_DIR) + "/nelson_olsson_1986_decay.json").out,
+             !Contains("count each alone"));
 }

@@ -857,6 +857,15 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
       std::snprintf(line, sizeof line, "  %s and %s are correlated (%.6f): together %.6f m/s^2\n", c->first.c_str(),
                     c->second.c_str(), c->correlation, std::sqrt(std::max(together, 0.0)));
       os << line;
+      // Shares over 100 % are each input's alone: the cross term takes the excess back.
+      const double u2 = a.g.uncertainty ? *a.g.uncertainty * *a.g.uncertainty : 0.0;
+      if (u2 > 0.0 && std::any_of(a.budget.begin(), a.budget.end(), [](const auto& b) { return b.variance_share > 1.0; })) {
+        std::snprintf(line, sizeof line,
+                      "  (their shares above count each alone; the cross term's, %.1f %%, takes back what they "
+                      "add beyond u(g)^2)\n",
+                      100.0 * c->variance / u2);
+        os << line;
+      }
     }
   }
   if (!a.inputs_without_uncertainty.empty()) {

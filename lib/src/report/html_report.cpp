@@ -206,8 +206,12 @@ std::string budget_table(const SceneReport& r) {
          "largest one's value and uncertainty (JSON: every row in g.budget).</p>\n";
   }
   if (r.budget_correlation_variance) {
+    const bool over = std::any_of(r.budget.begin(), r.budget.end(), [](const auto& b) { return b.variance_share > 1.0; });
     s += "<p>The fitted \u03B1 and \u03B2 are correlated; their cross term adds " +
-         format_significant(*r.budget_correlation_variance * 1e6, 3) + " (mm/s\u00B2)\u00B2 to u(g)\u00B2.</p>\n";
+         format_significant(*r.budget_correlation_variance * 1e6, 3) + " (mm/s\u00B2)\u00B2 to u(g)\u00B2" +
+         (over ? ": the shares above count each input alone, and this term takes back what they add beyond 100 %."
+               : ".") +
+         "</p>\n";
   }
   if (!r.inputs_without_uncertainty.empty()) {
     std::string list;

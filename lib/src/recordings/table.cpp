@@ -806,9 +806,37 @@ bool readings_of_their_own(const std::vector<TableObservation>& obs, const std::
 /// period, `second`'s why says they agree; else a warning gives both and
 /// the difference: two timings of the same swings that disagree, one of
 /// which --columns picks.
+/// g from `theirs` over g from `periods` (s), each from the line T^2 against
+/// the lengths (m) weighted as equal errors in T (sigma of T^2 = 2T sigma,
+/// the least squares in T that reduce fits, to first order), with an
+/// intercept where three or more lengths differ, as a length series fits
+/// its offset; empty at fewer than two lengths.
+std::optional<double> textbook_g_ratio(const std::vector<double>& lengths, const std::vector<double>& theirs,
+                                       const std::vector<double>& periods) {
+  std::vector<double> x, ours2, theirs2, ours_sigma, their_sigma;
+  for (std::size_t i = 0; i < periods.size(); ++i) {
+    if (!std::isfinite(theirs[i]) || !std::isfinite(periods[i])) continue;
+    x.push_back(lengths[i]);
+    ours2.push_back(periods[i] * periods[i]);
+    theirs2.push_back(theirs[i] * theirs[i]);
+    ours_sigma.push_back(2.0 * periods[i]);
+    their_sigma.push_back(2.0 * theirs[i]);
+  }
+  std::vector<double> distinct(x);
+  std::sort(distinct.begin(), distinct.end());
+  const std::size_t n = std::unique(distinct.begin(), distinct.end()) - distinct.begin();
+  if (n < 2) return std::nullopt;
+  const std::vector<double> zero(x.size(), 0.0);
+  const double ours_slope = fit_straight_line(x, ours2, zero, ours_sigma, n >= 3).slope,
+               their_slope = fit_straight_line(x, theirs2, zero, their_sigma, n >= 3).slope;
+  return std::isfinite(ours_slope / their_slope) ? std::optional<double>(ours_slope / their_slope) : std::nullopt;
+}
+
+/// A second period column against the one read, row by row; `lengths` (m)
+/// for a length series, whose g each gives is then compared too.
 void compare_periods(Use& second, const std::string& name, const std::string& used_name,
                      const std::vector<double>& theirs, const std::vector<double>& periods,
-                     std::vector<RecordingNote>& warnings) {
+                     const std::vector<double>* lengths, std::vector<RecordingNote>& warnings) {
   std::vector<double> d;
   for (std::size_t i = 0; i < periods.size(); ++i) {
     if (std::isfinite(theirs[i]) && std::isfinite(periods[i])) d.push_back(theirs[i] - periods[i]);
@@ -818,8 +846,13 @@ void compare_periods(Use& second, const std::string& name, const std::string& us
   for (double x : d) mean += x / d.size();
   for (double x : d) var += (x - mean) * (x - mean) / (d.size() - 1.0);
   const double error = std::sqrt(var / d.size()), typical = median_of(periods);
-  const std::string by = format_number(mean, 3) + " s on average (" +
-                         (error > 0.0 ? format_number(std::fabs(mean) / error, 3) + " standard errors" : "exactly") + ")";
+  std::string by = format_number(mean, 3) + " s on average (" +
+                   (error > 0.0 ? format_number(std::fabs(mean) / error, 3) + " standard errors" : "exactly");
+  if (const auto ratio = lengths ? textbook_g_ratio(*lengths, theirs, periods) : std::nullopt) {
+    by += "; read instead, g from the fit of T against L is " + format_number(std::fabs(*ratio - 1.0) * 100.0, 2) + " % " +
+          (*ratio > 1.0 ? "higher" : "lower");
+  }
+  by += ")";
   if (std::fabs(mean) <= std::max(3.0 * error, 1e-4 * typical)) {
     second.why += "; its periods agree with it: they differ by " + by;
     return;
@@ -1203,10 +1236,6 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
     }
   }
   const std::vector<double> periods = scaled(table.columns[*time_col], *time_factor / n_osc);
-  for (const auto& [j, second] : second_times) {
-    const auto factor = factor_of(kTimeUnits, second.unit.empty() ? tu.unit : second.unit);
-    if (factor) compare_periods(use[j], names[j], names[*time_col], scaled(table.columns[j], *factor / std::max(second.oscillations, 1)), periods, out.warnings);
-  }
 
   // The setting's unit: the header's, else the one the periods agree with.
   // A sweep's rows are grouped by their amplitude instead.
@@ -1258,6 +1287,12 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   }
   out.setting_unit = su.unit;
   const std::vector<double> meters = scaled(settings, *setting_factor);
+  for (const auto& [j, second] : second_times) {
+    const auto factor = factor_of(kTimeUnits, second.unit.empty() ? tu.unit : second.unit);
+    if (!factor) continue;
+    compare_periods(use[j], names[j], names[*time_col], scaled(table.columns[j], *factor / std::max(second.oscillations, 1)),
+                    periods, out.setting == Setting::length && !out.sweep ? &meters : nullptr, out.warnings);
+  }
   // The other columns' units.
   auto unit_of = [&](std::optional<std::size_t> col, const Use& of, auto& units) -> double {
     if (!col) return 1.0;

@@ -584,6 +584,236 @@ Recording parse_recording(std::string_view text, const std::string& file, Record
 
 namespace {
 
+/// Tracker's export of several tracks ("#multi:"): each track's name stands
+/// above its first column; numbers each column's track and returns the names.
+std::vector<std::string> name_tracks(std::vector<Column>& cols, const HeaderLines& lines, const Dialect& dialect,
+                                     const std::string& file) {
+  std::vector<std::string> tracks;
+  const std::size_t header_line = lines.header_line;
+  const std::optional<std::string_view>& above_header = lines.above;
+  if (!above_header || starts_with(*above_header, "#multi")) {
+    fail(file, header_line, 1, "a Tracker export of several tracks (#multi:) without their names; expected "
+                               "each track's name on the line above the header, over its first column");
+  }
+  const std::vector<std::string_view> names = split_cells(*above_header, dialect);
+  for (std::size_t j = 0; j < cols.size(); ++j) {
+    if (j < names.size() && !names[j].empty()) tracks.emplace_back(names[j]);
+    cols[j].track = static_cast<int>(tracks.size());
+  }
+  // Names out of line with the columns would mix two tracks' x and y.
+  for (std::size_t j = 0; j < cols.size(); ++j) {
+    const Column& c = cols[j];
+    const auto twice = std::find_if(cols.begin(), cols.begin() + j, [&](const Column& b) {
+      return b.track == c.track && b.role == c.role;
+    });
+    const bool unnamed = c.track == 0 && tracked(c.role);
+    if (unnamed || (tracked(c.role) && c.track > 0 && twice != cols.begin() + j)) {
+      fail(file, lines.above_line, 1,
+           "the track names are out of line with the columns: column " + std::to_string(j + 1) + " (\"" +
+               column_label(c.name, j + 1) + "\") " +
+               (unnamed ? std::string("comes before the first name")
+                        : "is track \"" + column_label(tracks[c.track - 1], c.track) + "\"'s second \"" +
+                              column_label(c.name, j + 1) + "\"") +
+               "; expected each track's name above its first column (Tracker's #multi: export)");
+    }
+  }
+  return tracks;
+}
+
+/// The option's declared columns (--columns, a scene's "columns") in place
+/// of the header's, column by column; a column it leaves out is unused.
+void declare_columns(std::vector<Column>& cols, const std::string& column_spec, const std::string& file) {
+  const auto spec = parse_column_spec(column_spec, file);
+  if (spec.size() > cols.size()) {
+    throw InputError(file, "got " + std::to_string(spec.size()) + " columns in \"" + one_line(column_spec, 80) +
+                               "\"; expected at most the file's " + std::to_string(cols.size()));
+  }
+  for (std::size_t j = 0; j < cols.size(); ++j) {
+    const std::string name = cols[j].name;
+    const int track = cols[j].track, run = cols[j].run;
+    if (j < spec.size() && spec[j]) {
+      cols[j] = *spec[j];
+    } else {
+      cols[j] = Column{};
+      cols[j].decided = "option";
+    }
+    cols[j].name = name, cols[j].track = track, cols[j].run = run;
+  }
+}
+
+/// Which of several Tracker tracks is the pendulum's (1 on), by its name
+/// (`set`); refuses a choice that names none, or several, or a track with no
+/// swing's columns.
+int chosen_track(const std::vector<std::string>& tracks, const std::vector<Column>& cols, const std::string& set,
+                 const std::string& file, std::size_t header_line) {
+  std::string listed;
+  for (const auto& t : tracks) listed += (listed.empty() ? "\"" : ", \"") + one_line(t, 40, true) + "\"";
+  if (set.empty() && tracks.size() > 1) {
+    fail(file, header_line, 1, "a Tracker export of " + std::to_string(tracks.size()) + " tracks (" + listed +
+                                   "); expected the pendulum's chosen by its name (import --set, a scene's set)");
+  }
+  const auto is_set = [&](const std::string& t) { return lower_case(t) == lower_case(set); };
+  const auto named = std::find_if(tracks.begin(), tracks.end(), is_set);
+  if (!set.empty() && named == tracks.end()) {
+    fail(file, header_line, 1, "got the set \"" + one_line(set, 40, true) + "\"; expected one of this Tracker export's tracks: " + listed);
+  }
+  if (!set.empty() && std::count_if(tracks.begin(), tracks.end(), is_set) > 1) {
+    fail(file, header_line, 1, "got the set \"" + one_line(set, 40, true) + "\", the name of more than one track (" + listed +
+                                   "); expected a name of one track (rename the others in Tracker)");
+  }
+  const int track = set.empty() ? 1 : static_cast<int>(named - tracks.begin()) + 1;
+  const bool positions = find(cols, Role::x, -1, track) && find(cols, Role::y, -1, track);
+  if (!find(cols, Role::angle, -1, track) && !find(cols, Role::omega, -1, track) && !positions) {
+    std::string own;
+    for (std::size_t j = 0; j < cols.size(); ++j) {
+      if (cols[j].track == track) own += (own.empty() ? "\"" : ", \"") + column_label(cols[j].name, j + 1) + "\"";
+    }
+    fail(file, header_line, 1, "the track \"" + one_line(tracks[track - 1], 40, true) + "\" has the columns " + own +
+                                   "; expected its angle (θ), angular velocity (ω) or x and y");
+  }
+  return track;
+}
+
+/// A PASCO run other than the first, by its number in `set` ("Run #2",
+/// "run 2" or "2"). Refuses a set that names no run here.
+int chosen_run(const std::vector<Column>& cols, const std::string& set, const std::string& file,
+               std::size_t header_line) {
+  const std::string name = lower_case(set);
+  const std::size_t digits = name.find_first_of("0123456789");
+  const bool number = digits != std::string::npos && name.find_first_not_of("0123456789", digits) == std::string::npos &&
+                      digits < 8 && name.size() - digits < 6;
+  const std::string prefix = number ? std::string(trim_cell(name.substr(0, digits))) : std::string();
+  if (!number || !(prefix.empty() || prefix == "run #" || prefix == "run")) {
+    fail(file, header_line, 1, "got the set \"" + one_line(set, 40, true) + "\"; expected a PASCO run (\"Run #2\") or the name of a track in a Tracker "
+                                   "export of several (\"#multi:\")");
+  }
+  const int run = std::atoi(name.c_str() + digits);
+  std::string runs;
+  for (const auto& c : cols) {
+    if (c.run > 0 && c.role == Role::time) runs += (runs.empty() ? "" : ", ") + std::to_string(c.run);
+  }
+  if (std::none_of(cols.begin(), cols.end(), [&](const Column& c) { return c.run == run; })) {
+    fail(file, header_line, 1, "no column of run " + std::to_string(run) + " in the header; expected a PASCO " +
+                                   "export with \"Run #" + std::to_string(run) + "\"" +
+                                   (runs.empty() ? std::string() : " (its runs: " + runs + ")"));
+  }
+  return run;
+}
+
+/// The columns' report (role, unit and why, in words the file's reader can
+/// check), before the numbers move into the recording.
+std::vector<RecordingColumn> column_report(const std::vector<Column>& cols, const Layout& layout, const Table& table) {
+  std::vector<RecordingColumn> out;
+  for (std::size_t j = 0; j < cols.size(); ++j) {
+    RecordingColumn c;
+    c.index = j + 1;
+    c.name = cols[j].name;
+    c.decided_by = cols[j].decided;
+    const auto used = std::find(layout.channels.begin(), layout.channels.end(), j);
+    // Why, in words the file's reader can check; "by the header" needs none.
+    std::vector<std::string> why;
+    if (j == layout.time) {
+      c.role = layout.kind == SignalKind::blocking_times ? "blocking time"
+               : layout.kind == SignalKind::event_stamps ? "event stamp"
+                                                         : "time";
+      c.unit = cols[j].unit.empty() ? "s" : cols[j].unit;
+      if (c.decided_by == "content") why.emplace_back("increasing, not a counter");
+      if (!layout.time_why.empty()) why.push_back(layout.time_why);
+    } else if (used != layout.channels.end()) {
+      c.role = signal_role(layout.kind, cols[j].role);
+      c.unit = layout.kind == SignalKind::gate_states ? "" : layout.channel_unit;
+      if (!layout.unit_why.empty() && layout.kind == SignalKind::angle) {
+        c.decided_by = "content";
+        why.push_back("the role by the " + cols[j].decided + "; " + layout.unit_why);
+      }
+      if (layout.kind == SignalKind::unknown) why.push_back(layout.unit_why);
+      if (layout.kind == SignalKind::position && cols[j].decided == "content") {
+        why.emplace_back("two varying columns beside the time, neither the rate of the other");
+      }
+      if (layout.kind == SignalKind::angle && cols[j].decided == "content") {
+        const bool rate = std::any_of(cols.begin(), cols.end(), [](const Column& o) { return o.role == Role::omega; });
+        why.emplace_back(rate ? "the other varying column is its rate of change" : "the one varying column beside the time");
+      }
+    } else if (layout.counter && j == *layout.counter) {
+      c.role = "counter";
+      if (c.decided_by == "content") {
+        const double stride = examine(table.columns[j], false).stride;
+        why.emplace_back(stride > 1.0 ? "whole numbers stepping by " + format_number(stride) +
+                                            " beside an increasing time: a count (of periods, say) at each time"
+                                      : "whole numbers stepping by one");
+      }
+    } else if (layout.period && j == *layout.period) {
+      c.role = "period";
+      c.unit = "s";
+    } else {
+      c.role = "unused";
+      why.push_back(unused_why(cols[j], table.columns[j], layout, cols));
+    }
+    if (cols[j].frame_rate > 0.0) why.push_back("frame numbers at " + format_number(cols[j].frame_rate, 6) + " frames/s");
+    for (const auto& w : why) c.why += (c.why.empty() ? "" : "; ") + w;
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+/// The samples a swing needs into `rec` (scaled; a row without its time, a
+/// channel or its count dropped), cleaned of repeated and out-of-order times
+/// and, for a sampled signal, of held frames, each in a note.
+void take_samples(Recording& rec, Table& table, const Layout& layout, bool sampled, const std::string& file) {
+  // The columns a row needs: without its time, a channel or its count it is dropped.
+  std::vector<std::size_t> needed{layout.time};
+  needed.insert(needed.end(), layout.channels.begin(), layout.channels.end());
+  if (layout.counter) needed.push_back(*layout.counter);
+  std::vector<std::size_t> rows;  // the rows kept when some are dropped; empty: all
+  const bool complete = !table.any_nan || std::all_of(needed.begin(), needed.end(), [&](std::size_t j) {
+    return std::none_of(table.columns[j].begin(), table.columns[j].end(), [](double v) { return std::isnan(v); });
+  });
+  auto take = [&](std::size_t j, double scale) {
+    std::vector<double> out;
+    if (complete) {
+      out = std::move(table.columns[j]);
+    } else {
+      out.reserve(rows.size());
+      for (std::size_t i : rows) out.push_back(table.columns[j][i]);
+    }
+    if (scale != 1.0) {
+      for (double& v : out) v *= scale;
+    }
+    return out;
+  };
+  if (!complete) {
+    for (std::size_t i = 0; i < table.rows; ++i) {
+      if (std::none_of(needed.begin(), needed.end(), [&](std::size_t j) { return std::isnan(table.columns[j][i]); })) {
+        rows.push_back(i);
+      }
+    }
+    rec.dropped = table.rows - rows.size();
+  }
+  rec.time = take(layout.time, layout.time_scale);
+  for (std::size_t j : layout.channels) rec.channels.push_back(take(j, layout.channel_scale));
+  if (layout.counter) rec.counts = take(*layout.counter, 1.0);
+
+  // Time order: repeated and out-of-order samples, gaps.
+  Cleaned cleaned = clean_times(rec.time, rows, table, sampled, file);
+  rec.time_quantum = cleaned.quantum;
+  rec.notes.insert(rec.notes.end(), cleaned.notes.begin(), cleaned.notes.end());
+  if (!cleaned.all) {
+    rec.dropped += rec.time.size() - cleaned.keep.size();  // out of time order or repeated, each in a note
+    auto keep = [&](std::vector<double>& v) {
+      for (std::size_t k = 0; k < cleaned.keep.size(); ++k) v[k] = v[cleaned.keep[k]];
+      v.resize(cleaned.keep.size());
+    };
+    keep(rec.time);
+    for (auto& c : rec.channels) keep(c);
+    if (!rec.counts.empty()) keep(rec.counts);
+  }
+  if (sampled) {
+    const Cleaned frames = held_frames(rec.time, rec.channels);
+    rec.notes.insert(rec.notes.end(), frames.notes.begin(), frames.notes.end());
+    rec.time_quantum = std::max(rec.time_quantum, frames.quantum);
+  }
+}
+
 Recording parse_text(std::string_view text, const std::string& file, RecordingFormat format, const std::string& set,
                      const std::string& column_spec, const InputLimits& limits) {
   const std::string_view original = text;
@@ -608,48 +838,18 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
       dialect = sniff(header, data.first);
     }
   }
-  const auto cells = [&](std::string_view line) { return split_cells(line, dialect); };
-  const std::optional<std::string_view> above_header = lines.above;
-  const bool several_tracks = lines.several_tracks;
 
   std::vector<Column> cols;
   // Tracker's export of several tracks: "#multi:", then each track's name
   // above its first column, then the header (one time column for all).
   std::vector<std::string> tracks;
   if (header) {
-    for (std::string_view cell : cells(*header)) {
+    for (std::string_view cell : split_cells(*header, dialect)) {
       cols.push_back(classify(cell));
       if (table_only(cols.back().role)) cols.back().role = Role::other, cols.back().known = false;
     }
     while (cols.size() > 1 && cols.back().name.empty()) cols.pop_back();  // a trailing delimiter
-    if (several_tracks) {
-      if (!above_header || starts_with(*above_header, "#multi")) {
-        fail(file, header_line, 1, "a Tracker export of several tracks (#multi:) without their names; expected "
-                                   "each track's name on the line above the header, over its first column");
-      }
-      const std::vector<std::string_view> names = cells(*above_header);
-      for (std::size_t j = 0; j < cols.size(); ++j) {
-        if (j < names.size() && !names[j].empty()) tracks.emplace_back(names[j]);
-        cols[j].track = static_cast<int>(tracks.size());
-      }
-      // Names out of line with the columns would mix two tracks' x and y.
-      for (std::size_t j = 0; j < cols.size(); ++j) {
-        const Column& c = cols[j];
-        const auto twice = std::find_if(cols.begin(), cols.begin() + j, [&](const Column& b) {
-          return b.track == c.track && b.role == c.role;
-        });
-        const bool unnamed = c.track == 0 && tracked(c.role);
-        if (unnamed || (tracked(c.role) && c.track > 0 && twice != cols.begin() + j)) {
-          fail(file, lines.above_line, 1,
-               "the track names are out of line with the columns: column " + std::to_string(j + 1) + " (\"" +
-                   column_label(c.name, j + 1) + "\") " +
-                   (unnamed ? std::string("comes before the first name")
-                            : "is track \"" + column_label(tracks[c.track - 1], c.track) + "\"'s second \"" +
-                                  column_label(c.name, j + 1) + "\"") +
-                   "; expected each track's name above its first column (Tracker's #multi: export)");
-        }
-      }
-    }
+    if (lines.several_tracks) tracks = name_tracks(cols, lines, dialect, file);
   } else {
     cols.resize(split_cells_within(data.first, dialect, limits, file, lines.data_line).size());
     for (std::size_t j = 0; j < cols.size(); ++j) cols[j].decided = "content";
@@ -658,76 +858,10 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
   for (std::size_t j = 0; j < cols.size(); ++j) names[j] = column_label(cols[j].name, j + 1);
   // What the option declares replaces what the header says, column by column.
   const bool declared = !column_spec.empty();
-  if (declared) {
-    const auto spec = parse_column_spec(column_spec, file);
-    if (spec.size() > cols.size()) {
-      throw InputError(file, "got " + std::to_string(spec.size()) + " columns in \"" + one_line(column_spec, 80) +
-                                 "\"; expected at most the file's " + std::to_string(cols.size()));
-    }
-    for (std::size_t j = 0; j < cols.size(); ++j) {
-      const std::string name = cols[j].name;
-      const int track = cols[j].track, run = cols[j].run;
-      if (j < spec.size() && spec[j]) {
-        cols[j] = *spec[j];
-      } else {
-        cols[j] = Column{};
-        cols[j].decided = "option";
-      }
-      cols[j].name = name, cols[j].track = track, cols[j].run = run;
-    }
-  }
-  // Which of several Tracker tracks, by its name.
-  int track = -1;
-  if (!tracks.empty()) {
-    std::string listed;
-    for (const auto& t : tracks) listed += (listed.empty() ? "\"" : ", \"") + one_line(t, 40, true) + "\"";
-    if (set.empty() && tracks.size() > 1) {
-      fail(file, header_line, 1, "a Tracker export of " + std::to_string(tracks.size()) + " tracks (" + listed +
-                                     "); expected the pendulum's chosen by its name (import --set, a scene's set)");
-    }
-    const auto is_set = [&](const std::string& t) { return lower_case(t) == lower_case(set); };
-    const auto named = std::find_if(tracks.begin(), tracks.end(), is_set);
-    if (!set.empty() && named == tracks.end()) {
-      fail(file, header_line, 1, "got the set \"" + one_line(set, 40, true) + "\"; expected one of this Tracker export's tracks: " + listed);
-    }
-    if (!set.empty() && std::count_if(tracks.begin(), tracks.end(), is_set) > 1) {
-      fail(file, header_line, 1, "got the set \"" + one_line(set, 40, true) + "\", the name of more than one track (" + listed +
-                                     "); expected a name of one track (rename the others in Tracker)");
-    }
-    track = set.empty() ? 1 : static_cast<int>(named - tracks.begin()) + 1;
-    const bool positions = find(cols, Role::x, -1, track) && find(cols, Role::y, -1, track);
-    if (!find(cols, Role::angle, -1, track) && !find(cols, Role::omega, -1, track) && !positions) {
-      std::string own;
-      for (std::size_t j = 0; j < cols.size(); ++j) {
-        if (cols[j].track == track) own += (own.empty() ? "\"" : ", \"") + column_label(cols[j].name, j + 1) + "\"";
-      }
-      fail(file, header_line, 1, "the track \"" + one_line(tracks[track - 1], 40, true) + "\" has the columns " + own +
-                                     "; expected its angle (θ), angular velocity (ω) or x and y");
-    }
-  }
-  // A PASCO run other than the first, by its number ("Run #2", "run 2" or "2").
-  int run = 1;
-  if (!set.empty() && tracks.empty()) {
-    const std::string name = lower_case(set);
-    const std::size_t digits = name.find_first_of("0123456789");
-    const bool number = digits != std::string::npos && name.find_first_not_of("0123456789", digits) == std::string::npos &&
-                        digits < 8 && name.size() - digits < 6;
-    const std::string prefix = number ? std::string(trim_cell(name.substr(0, digits))) : std::string();
-    if (!number || !(prefix.empty() || prefix == "run #" || prefix == "run")) {
-      fail(file, header_line, 1, "got the set \"" + one_line(set, 40, true) + "\"; expected a PASCO run (\"Run #2\") or the name of a track in a Tracker "
-                                     "export of several (\"#multi:\")");
-    }
-    run = std::atoi(name.c_str() + digits);
-    std::string runs;
-    for (const auto& c : cols) {
-      if (c.run > 0 && c.role == Role::time) runs += (runs.empty() ? "" : ", ") + std::to_string(c.run);
-    }
-    if (std::none_of(cols.begin(), cols.end(), [&](const Column& c) { return c.run == run; })) {
-      fail(file, header_line, 1, "no column of run " + std::to_string(run) + " in the header; expected a PASCO " +
-                                     "export with \"Run #" + std::to_string(run) + "\"" +
-                                     (runs.empty() ? std::string() : " (its runs: " + runs + ")"));
-    }
-  }
+  if (declared) declare_columns(cols, column_spec, file);
+  // Which of several Tracker tracks, or a PASCO run other than the first.
+  const int track = tracks.empty() ? -1 : chosen_track(tracks, cols, set, file, header_line);
+  const int run = !set.empty() && tracks.empty() ? chosen_run(cols, set, file, header_line) : 1;
   const bool generic = header && !declared && generic_names(cols);
   const bool headerless = (!header && !declared) || generic;
   // A header no layout fits is refused before its rows are read.
@@ -816,55 +950,7 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
   rec.format = layout.format;
   rec.kind = layout.kind;
   rec.rows = table.rows;
-  for (std::size_t j = 0; j < cols.size(); ++j) {
-    RecordingColumn c;
-    c.index = j + 1;
-    c.name = cols[j].name;
-    c.decided_by = cols[j].decided;
-    const auto used = std::find(layout.channels.begin(), layout.channels.end(), j);
-    // Why, in words the file's reader can check; "by the header" needs none.
-    std::vector<std::string> why;
-    if (j == layout.time) {
-      c.role = layout.kind == SignalKind::blocking_times ? "blocking time"
-               : layout.kind == SignalKind::event_stamps ? "event stamp"
-                                                         : "time";
-      c.unit = cols[j].unit.empty() ? "s" : cols[j].unit;
-      if (c.decided_by == "content") why.emplace_back("increasing, not a counter");
-      if (!layout.time_why.empty()) why.push_back(layout.time_why);
-    } else if (used != layout.channels.end()) {
-      c.role = signal_role(layout.kind, cols[j].role);
-      c.unit = layout.kind == SignalKind::gate_states ? "" : layout.channel_unit;
-      if (!layout.unit_why.empty() && layout.kind == SignalKind::angle) {
-        c.decided_by = "content";
-        why.push_back("the role by the " + cols[j].decided + "; " + layout.unit_why);
-      }
-      if (layout.kind == SignalKind::unknown) why.push_back(layout.unit_why);
-      if (layout.kind == SignalKind::position && cols[j].decided == "content") {
-        why.emplace_back("two varying columns beside the time, neither the rate of the other");
-      }
-      if (layout.kind == SignalKind::angle && cols[j].decided == "content") {
-        const bool rate = std::any_of(cols.begin(), cols.end(), [](const Column& o) { return o.role == Role::omega; });
-        why.emplace_back(rate ? "the other varying column is its rate of change" : "the one varying column beside the time");
-      }
-    } else if (layout.counter && j == *layout.counter) {
-      c.role = "counter";
-      if (c.decided_by == "content") {
-        const double stride = examine(table.columns[j], false).stride;
-        why.emplace_back(stride > 1.0 ? "whole numbers stepping by " + format_number(stride) +
-                                            " beside an increasing time: a count (of periods, say) at each time"
-                                      : "whole numbers stepping by one");
-      }
-    } else if (layout.period && j == *layout.period) {
-      c.role = "period";
-      c.unit = "s";
-    } else {
-      c.role = "unused";
-      why.push_back(unused_why(cols[j], table.columns[j], layout, cols));
-    }
-    if (cols[j].frame_rate > 0.0) why.push_back("frame numbers at " + format_number(cols[j].frame_rate, 6) + " frames/s");
-    for (const auto& w : why) c.why += (c.why.empty() ? "" : "; ") + w;
-    rec.columns.push_back(std::move(c));
-  }
+  rec.columns = column_report(cols, layout, table);
   rec.notes = std::move(header_notes);
   if (!layout.unit_why.empty()) rec.notes.push_back({0, "\"" + names[layout.channels[0]] + "\": " + layout.unit_why});
   if (layout.time_scale != 1.0 && !layout.time_why.empty()) rec.notes.push_back({0, "\"" + names[layout.time] + "\": " + layout.time_why});
@@ -880,58 +966,7 @@ Recording parse_text(std::string_view text, const std::string& file, RecordingFo
       if (!std::isnan(v)) rec.periods.push_back(v * layout.time_scale);
     }
   }
-  // The columns a row needs: without its time, a channel or its count it is dropped.
-  std::vector<std::size_t> needed{layout.time};
-  needed.insert(needed.end(), layout.channels.begin(), layout.channels.end());
-  if (layout.counter) needed.push_back(*layout.counter);
-  std::vector<std::size_t> rows;  // the rows kept when some are dropped; empty: all
-  const bool complete = !table.any_nan || std::all_of(needed.begin(), needed.end(), [&](std::size_t j) {
-    return std::none_of(table.columns[j].begin(), table.columns[j].end(), [](double v) { return std::isnan(v); });
-  });
-  auto take = [&](std::size_t j, double scale) {
-    std::vector<double> out;
-    if (complete) {
-      out = std::move(table.columns[j]);
-    } else {
-      out.reserve(rows.size());
-      for (std::size_t i : rows) out.push_back(table.columns[j][i]);
-    }
-    if (scale != 1.0) {
-      for (double& v : out) v *= scale;
-    }
-    return out;
-  };
-  if (!complete) {
-    for (std::size_t i = 0; i < table.rows; ++i) {
-      if (std::none_of(needed.begin(), needed.end(), [&](std::size_t j) { return std::isnan(table.columns[j][i]); })) {
-        rows.push_back(i);
-      }
-    }
-    rec.dropped = table.rows - rows.size();
-  }
-  rec.time = take(layout.time, layout.time_scale);
-  for (std::size_t j : layout.channels) rec.channels.push_back(take(j, layout.channel_scale));
-  if (layout.counter) rec.counts = take(*layout.counter, 1.0);
-
-  // Time order: repeated and out-of-order samples, gaps.
-  Cleaned cleaned = clean_times(rec.time, rows, table, sampled, file);
-  rec.time_quantum = cleaned.quantum;
-  rec.notes.insert(rec.notes.end(), cleaned.notes.begin(), cleaned.notes.end());
-  if (!cleaned.all) {
-    rec.dropped += rec.time.size() - cleaned.keep.size();  // out of time order or repeated, each in a note
-    auto keep = [&](std::vector<double>& v) {
-      for (std::size_t k = 0; k < cleaned.keep.size(); ++k) v[k] = v[cleaned.keep[k]];
-      v.resize(cleaned.keep.size());
-    };
-    keep(rec.time);
-    for (auto& c : rec.channels) keep(c);
-    if (!rec.counts.empty()) keep(rec.counts);
-  }
-  if (sampled) {
-    const Cleaned frames = held_frames(rec.time, rec.channels);
-    rec.notes.insert(rec.notes.end(), frames.notes.begin(), frames.notes.end());
-    rec.time_quantum = std::max(rec.time_quantum, frames.quantum);
-  }
+  take_samples(rec, table, layout, sampled, file);
   return rec;
 }
 

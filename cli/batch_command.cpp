@@ -118,8 +118,13 @@ std::string site_problem(const std::string& text, std::optional<Site>* site = nu
   const std::string expected = "; expected LATITUDE_DEG,HEIGHT_M (the lab's latitude, north positive, and height "
                                "above sea level), e.g. 52.37,5";
   const bool one_comma = comma != std::string::npos && text.find(',', comma + 1) == std::string::npos;
-  const std::optional<double> latitude = one_comma ? decimal_number(text.substr(0, comma)) : std::nullopt,
-                              height = one_comma ? decimal_number(text.substr(comma + 1)) : std::nullopt;
+  auto number = [](std::string part) {  // "52.37, 5" as typed after a comma
+    part.erase(0, part.find_first_not_of(' '));
+    part.erase(part.find_last_not_of(' ') + 1);
+    return decimal_number(part);
+  };
+  const std::optional<double> latitude = one_comma ? number(text.substr(0, comma)) : std::nullopt,
+                              height = one_comma ? number(text.substr(comma + 1)) : std::nullopt;
   if (!latitude || !height) return "got \"" + one_line(text, kShownValueBytes, true) + "\"" + expected;
   for (const auto& [range, value] : {std::pair{ranges::latitude, *latitude}, std::pair{ranges::height, *height}}) {
     const std::string why = out_of_range(range, value);
@@ -127,8 +132,8 @@ std::string site_problem(const std::string& text, std::optional<Site>* site = nu
   }
   if (site) {
     *site = Site{};
-    (*site)->latitude_deg = *latitude;
-    (*site)->height = *height;
+    (*site)->latitude_deg = *latitude + 0.0;  // -0 is 0
+    (*site)->height = *height + 0.0;
     (*site)->height_above_ellipsoid = false;
   }
   return "";

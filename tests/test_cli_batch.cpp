@@ -244,6 +244,10 @@ TEST_CASE("batch --site: the class's lab for the scenes that name none, each sce
   CHECK(without[1].at("expected_g_m_s2").is_null());
   CHECK(with[1].at("expected_g_m_s2") == with[2].at("expected_g_m_s2"));
   CHECK(with[1].at("z") == with[2].at("z"));
+  // A space after the comma, as people type it, reads the same.
+  const std::vector<json> spaced = lines_of(run("batch --jobs 1 --site '52.37, 5' " + dir));
+  REQUIRE(spaced.size() == 4);
+  CHECK(spaced[1].at("expected_g_m_s2") == with[1].at("expected_g_m_s2"));
   // A slip in the option is a usage error (exit 2) naming what it takes.
   for (const auto& [value, message] :
        {std::pair<std::string, std::string>{"52.37", "expected LATITUDE_DEG,HEIGHT_M"},

@@ -393,12 +393,13 @@ namespace {
 // end, Tracker's periods 1.139 to 1.349 s.
 const std::string kLegoRows = "48.00,1.139\n52.80,1.199\n57.60,1.249\n62.40,1.300\n67.20,1.349\n";
 
-/// `table` imported (with `options`) and the scene reduced, as a user runs them.
-Run imported_and_reduced(const std::string& table, const std::string& options) {
+/// `table` imported (with `options`) and the scene given to `command`
+/// (reduce, report), as a user runs them.
+Run imported_and_reduced(const std::string& table, const std::string& options, const std::string& command = "reduce") {
   const std::string file = temporary_file() + ".csv", scene = temporary_file();
   std::ofstream(file) << table;
   std::ofstream(scene) << succeeded("import " + file + options).out;
-  const Run reduced = succeeded("reduce " + scene);
+  const Run reduced = succeeded(command + " " + scene);
   std::remove(scene.c_str());
   std::remove(file.c_str());
   return reduced;
@@ -421,7 +422,7 @@ TEST_CASE("Lego beams typed as rods pivoted at an end give g within 1% of 9.80 (
   // The rows above under a rod's header, and headerless with the column
   // declared: each beam swings as a simple pendulum of 2L/3 (Kelley Eq. 45).
   for (const auto& [header, columns] : {std::pair<std::string, std::string>{"rod length (cm),T (s)\n", ""},
-                                        {"beam (cm),T (s)\n", ""},
+                                        {"beam length (cm),T (s)\n", ""},
                                         {"", " --columns \"r,T\""}}) {
     INFO(header << columns);
     const Run reduced = imported_and_reduced(header + kLegoRows, columns);
@@ -436,4 +437,14 @@ TEST_CASE("Lego beams typed as rods pivoted at an end give g within 1% of 9.80 (
                    .get<double>(),
                WithinRel(2 * 0.48 / 3, 1e-12));
   }
+  // The page gives the rods' textbook g as the JSON does, and plots T^2
+  // against each rod's 2L/3.
+  const json result = json::parse(imported_and_reduced("rod length (cm),T (s)\n" + kLegoRows, "").out);
+  const double textbook = result.at("fit").at("pivot_scan").at("textbook").at("g").at("value");
+  const std::string page = imported_and_reduced("rod length (cm),T (s)\n" + kLegoRows, "", "report").out;
+  CHECK_THAT(page, Contains("g of the textbook line (no corrections)") && !Contains("undefined: the lengths"));
+  char shown[16];
+  std::snprintf(shown, sizeof shown, "%.3f", textbook);
+  CHECK_THAT(page, Contains(shown));
+  CHECK_THAT(page, Contains("equivalent length 2L/3 of each rod (m)"));
 }

@@ -398,7 +398,20 @@ TEST_CASE("A series of rods pivoted at an end: each its own body, l = 2L/3 (Kell
   CHECK_FALSE(scan.textbook->radius_of_gyration);
   // Without the finite-amplitude factor the textbook line's g is low by factor^2.
   const double factor = 2 * std::comp_ellint_1(std::sin(4 * test::kDegree / 2)) / kPi;
-  CHECK_THAT(scan.textbook->g.value, WithinRel(9.81 / (factor * factor), 1e-12));
+  const double gt = 9.81 / (factor * factor);
+  CHECK_THAT(scan.textbook->g.value, WithinRel(gt, 1e-12));
+  // Its uncertainty, the line T^2 h = a (h^2 + k^2) through the origin with
+  // h = L/2, k^2 = L^2/12 (x = L^2/3, y = T^2 L/2, a = 4 pi^2/g): slope
+  // sum c y, c = x/sum x^2, and y - a x moves by 2 T h dT + (T^2/2 - 2aL/3) dL.
+  const double a_slope = 4 * kPi * kPi / gt, sigma_t = 1e-9 / std::sqrt(12.0), sigma_l = 0.0005;
+  double sxx = 0.0, variance = 0.0;
+  for (double L : lengths) sxx += std::pow(L * L / 3, 2);
+  for (std::size_t i = 0; i < lengths.size(); ++i) {
+    const double L = lengths[i], T = scene.observations[i].period, c = L * L / 3 / sxx;
+    variance += c * c * (std::pow(2 * T * (L / 2) * sigma_t, 2) + std::pow((T * T / 2 - 2 * a_slope * L / 3) * sigma_l, 2));
+  }
+  REQUIRE(scan.textbook->g.uncertainty);
+  CHECK_THAT(*scan.textbook->g.uncertainty, WithinRel(gt * std::sqrt(variance) / a_slope, 1e-9));
   REQUIRE(scan.conjugates.size() == lengths.size());
   for (std::size_t i = 0; i < lengths.size(); ++i) {
     CHECK_THAT(scan.conjugates[i].equivalent_length.value, WithinRel(2 * lengths[i] / 3, 1e-14));

@@ -857,8 +857,9 @@ std::string result_table(const ParsedScene& scene, const Analysis& a) {
       std::snprintf(line, sizeof line, "  %s and %s are correlated (%.6f): together %.6f m/s^2\n", c->first.c_str(),
                     c->second.c_str(), c->correlation, std::sqrt(std::max(together, 0.0)));
       os << line;
-      // Shares over 100 % are each input's alone: the cross term takes the excess back.
-      const double u2 = a.g.uncertainty ? *a.g.uncertainty * *a.g.uncertainty : 0.0;
+      // Shares over 100 % are each input's alone: the cross term takes the excess back
+      // (shares of u(g)^2 before any Birge scaling, as variance_share is).
+      const double u2 = a.g_uncertainty_unscaled ? *a.g_uncertainty_unscaled * *a.g_uncertainty_unscaled : 0.0;
       if (u2 > 0.0 && std::any_of(a.budget.begin(), a.budget.end(), [](const auto& b) { return b.variance_share > 1.0; })) {
         std::snprintf(line, sizeof line,
                       "  (their shares above count each alone; the cross term's, %.1f %%, takes back what they "

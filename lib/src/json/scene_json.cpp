@@ -183,8 +183,11 @@ void read_observation(Object& o, const std::string& prefix, ParsedScene& out, Re
                        "; expected every observation set as one kind of pendulum: " + settings_of_kinds());
   out.model = kind;
   if (physical) {
-    put(o, key, Dimension::length, setting_info(v.setting).signed_distance ? Range::any : Range::non_negative, v.length,
-        u.length);
+    put(o, key, Dimension::length,
+        setting_info(v.setting).signed_distance ? Range::any
+        : v.setting == Setting::rod_length      ? Range::positive
+                                                : Range::non_negative,
+        v.length, u.length);
     within(std::abs(v.length), 0.0, 1e3, prefix + key + ".value", "m", "a laboratory body's pivot, within 1 km");
   } else if (length_owner.at("length").is_string() && &length_owner != &o) {
     // An amplitude sweep whose length nobody measured gives T0, not g (docs/series.md, "Amplitude sweeps").
@@ -339,7 +342,11 @@ void pool_trial_scatter(ParsedScene& out) {
 void read_series(Object& top, ParsedScene& out, RecordingReader& recordings) {
   // A length or amplitude measured once is given once (shared); what
   // changes from one observation to the next is each observation's own.
-  for (const char* key : {"pivot_distance", "pivot_position", "timing"}) {
+  std::vector<const char*> own{"timing"};
+  for (const SettingInfo& s : kSettingInfo) {
+    if (s.setting != Setting::length) own.push_back(s.key);
+  }
+  for (const char* key : own) {
     PENDULUM_FAIL_IF(top.has(key), key,
                      "got both observations and a top-level " + std::string(key) +
                          "; expected each observation to hold its own " + key +

@@ -417,10 +417,9 @@ const Spelling kSpellings[] = {
     {"position", Role::pivot_position},
     {"hole", Role::pivot_position},
     {"rod length", Role::rod_length},
-    {"rod", Role::rod_length},
     {"beam length", Role::rod_length},
-    {"beam", Role::rod_length},
     {"rod_length", Role::rod_length},
+    {"l_rod", Role::rod_length},  // the output's heading, L_rod (m)
     {"amplitude", Role::amplitude},
     {"theta0", Role::amplitude},
     {"\xce\xb8" "0", Role::amplitude},  // θ0

@@ -800,12 +800,6 @@ bool readings_of_their_own(const std::vector<TableObservation>& obs, const std::
   return length - best(false).first >= 1.0;
 }
 
-/// Compares a second period column's periods (s) with the ones read, row
-/// by row: their mean difference against its standard error (the
-/// differences' scatter over sqrt n). Within 3 of them, or 10^-4 of the
-/// period, `second`'s why says they agree; else a warning gives both and
-/// the difference: two timings of the same swings that disagree, one of
-/// which --columns picks.
 /// g from `theirs` over g from `periods` (s), each from the line T^2 against
 /// the lengths (m) weighted as equal errors in T (sigma of T^2 = 2T sigma,
 /// the least squares in T that reduce fits, to first order), with an
@@ -832,8 +826,13 @@ std::optional<double> textbook_g_ratio(const std::vector<double>& lengths, const
   return std::isfinite(ours_slope / their_slope) ? std::optional<double>(ours_slope / their_slope) : std::nullopt;
 }
 
-/// A second period column against the one read, row by row; `lengths` (m)
-/// for a length series, whose g each gives is then compared too.
+/// Compares a second period column's periods (s) with the ones read, row
+/// by row: their mean difference against its standard error (the
+/// differences' scatter over sqrt n). Within 3 of them, or 10^-4 of the
+/// period, `second`'s why says they agree; else a warning gives both and
+/// the difference: two timings of the same swings that disagree, one of
+/// which --columns picks. `lengths` (m), for a length series: the g each
+/// column gives is compared too (textbook_g_ratio).
 void compare_periods(Use& second, const std::string& name, const std::string& used_name,
                      const std::vector<double>& theirs, const std::vector<double>& periods,
                      const std::vector<double>* lengths, std::vector<RecordingNote>& warnings) {
@@ -1176,7 +1175,8 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
       const bool signed_amplitudes =
           out.sweep || std::all_of(table.columns[*setting_col].begin(), table.columns[*setting_col].end(),
                                    [&](double x) { return x == table.columns[*setting_col].front(); });
-      const bool non_negative = (use[j].uncertainty && !positive) || (use[j].kind == Kind::setting && use[j].setting == Setting::length) ||
+      const bool a_length = use[j].setting == Setting::length || use[j].setting == Setting::rod_length;
+      const bool non_negative = (use[j].uncertainty && !positive) || (use[j].kind == Kind::setting && a_length) ||
                                 (use[j].kind == Kind::amplitude && !signed_amplitudes);
       if ((positive && !(v[i] > 0.0)) || (non_negative && !(v[i] >= 0.0)) || !std::isfinite(v[i])) {
         fail(file, table.line(i), 1,
@@ -1371,7 +1371,7 @@ SettingsTable parse_settings_table(std::string_view text, const std::string& fil
   // refused here at its cell: import's scene would fail at a path the user
   // never wrote.
   for (std::size_t i = 0; i < table.rows; ++i) {
-    if (!out.sweep && out.setting == Setting::length) {
+    if (!out.sweep && (out.setting == Setting::length || out.setting == Setting::rod_length)) {
       const std::string why = out_of_range(ranges::length, meters[i]);
       if (!why.empty()) refuse_cell(i, *setting_col, why);
       // As uncertain as itself, a length might be 0.

@@ -146,7 +146,7 @@ std::optional<PivotScanRecord> pivot_scan_record(const ParsedScene& given, const
   const PivotScan::Textbook& t = *scan.textbook;
   r.textbook_g = t.g.value;
   r.textbook_g_uncertainty = t.g.uncertainty;
-  r.textbook_k = t.radius_of_gyration.value_or(r.radius_of_gyration);
+  r.textbook_k = *t.radius_of_gyration;  // one body's: a series of rods has no pivot scan record
   r.textbook_center = t.center_of_mass_position.value_or(0.0);
   auto textbook_at = [&](double h) {
     return ideal_period(equivalent_length(r.textbook_k, h), r.textbook_g);  // Kelley Eqs. (55)-(56), no K

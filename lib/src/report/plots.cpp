@@ -283,7 +283,7 @@ std::optional<Figure> series_figure(const SceneReport& r, const std::string& id)
   FitPlotData p;
   p.id = id;
   p.title = "Series: T\u00B2 against length, the fit and the textbook line";
-  p.x = {"length L (m)", Scale::linear, true};
+  p.x = {s.length_words + " (m)", Scale::linear, true};
   p.y = {"T\u00B2 (s\u00B2)", Scale::linear, true};
   p.residual_label = "T\u00B2 \u2212 model (s\u00B2)";
   p.observations.name = "measured T\u00B2 \u00B1 2T u(T)";

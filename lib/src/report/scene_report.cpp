@@ -45,6 +45,10 @@ SceneReport make_scene_report(const std::string& input, const ParsedScene& scene
   r.g = a.g;
   const TextbookFit* textbook = a.fit.results_of<SimplePendulum>();
   if (textbook) r.g_uncorrected = textbook->g;
+  // A series of rods: each its own body, the textbook line in their equivalent lengths.
+  const PivotScan* rods = a.fit.results_of<PhysicalPendulum>();
+  if (rods && rods->minimum_period) rods = nullptr;  // one body's pivot scan, which has its own record
+  if (rods && rods->textbook) r.g_uncorrected = rods->textbook->g;
   if (a.fit.scaled) r.birge_ratio = a.fit.birge_ratio, r.g_uncertainty_unscaled = a.g_uncertainty_unscaled;
   r.period_measured = {first.period_measured.value, first.period_measured.uncertainty};
   r.period_ideal = first.period_ideal;
@@ -71,8 +75,10 @@ SceneReport make_scene_report(const std::string& input, const ParsedScene& scene
     SeriesRecord s;
     for (std::size_t k = 0; k < a.observations.size(); ++k) {
       const ObservationResult& o = a.observations[k];
-      s.lengths.push_back(o.length);
-      s.length_uncertainties.push_back(scene.observation_uncertainties[k].length);
+      // A rod's equivalent length is 2L/3 of its length and moves with it.
+      const double equivalent = rods ? rods->conjugates[k].equivalent_length.value / o.length : 1.0;
+      s.lengths.push_back(equivalent * o.length);
+      s.length_uncertainties.push_back(equivalent * scene.observation_uncertainties[k].length);
       s.periods.push_back(o.period_measured.value);
       s.period_uncertainties.push_back(o.period_measured.uncertainty);
       s.effective_uncertainties.push_back(o.effective_uncertainty > 0.0 ? o.effective_uncertainty
@@ -86,6 +92,7 @@ SceneReport make_scene_report(const std::string& input, const ParsedScene& scene
     s.dof = a.fit.dof;
     s.probability = a.fit.probability;
     if (r.g_uncorrected) s.textbook_g = r.g_uncorrected->value;
+    if (rods) s.length_words = "equivalent length 2L/3 of each rod";
     if (textbook && textbook->length_offset) s.textbook_length_offset = textbook->length_offset->value;
     r.series = s;
   }

@@ -46,6 +46,9 @@ struct BudgetShare {
 /// the period model to them, with the textbook line T^2 = (4 pi^2/g)(L + L0).
 struct SeriesRecord {
   std::vector<double> lengths, length_uncertainties;  ///< (m)
+  /// What `lengths` are, for the plot's axis: a series of rods plots each
+  /// rod's equivalent length 2L/3, against which T^2 is the textbook line.
+  std::string length_words = "length L";
   std::vector<double> periods;              ///< measured (s)
   std::vector<double> period_uncertainties; ///< of the measured periods (s)
   /// The fit's effective uncertainty of each period (s): its own, its

@@ -417,6 +417,14 @@ TEST_CASE("A series of rods pivoted at an end: each its own body, l = 2L/3 (Kell
     CHECK_THAT(scan.conjugates[i].equivalent_length.value, WithinRel(2 * lengths[i] / 3, 1e-14));
     CHECK_THAT(scan.conjugates[i].pivot_distance.value, WithinRel(lengths[i] / 6, 1e-14));
   }
+  // In air, the rods' buoyancy is skipped with a reason that fits rods (no parts to give).
+  const ParsedScene aired = parse_scene(R"({"air": {"pressure": {"value": 100.44, "unit": "kPa"}, "temperature":
+      {"value": 25.5, "unit": "degC"}, "molar_mass": {"value": 0.02896, "unit": "kg/mol"}, "viscosity": {"value":
+      1.853e-05, "unit": "Pa s"}}, )" + rod_series(lengths, 9.81).substr(1));
+  const Analysis in_air = reduce_scene(aired, exact());
+  bool warned = false;
+  for (const auto& w : in_air.warnings) warned |= w.find("the rods' densities are not known") != std::string::npos;
+  CHECK(warned);
   // The rods' lengths' uncertainty is in g's budget (g grows with each L).
   bool found = false;
   for (const auto& e : a.budget) found |= e.input.find("rod_length") != std::string::npos && e.sensitivity > 0.0;

@@ -156,9 +156,12 @@ void warn_about_buoyancy(const FitState<PhysicalPendulum::kParameters>& fit, Ana
   constexpr double kSteel = 7850.0;  // kg/m^3, a carbon steel
   const double shift = fit.p[0] * air_density(app.air->pressure, app.air->temperature, app.air->molar_mass) / kSteel;
   if (out.g.uncertainty && shift < fit.options.negligible_fraction * *out.g.uncertainty) return;
-  out.warnings.push_back("air: the body's mass and volume are not known (give the body in parts with their "
-                          "densities), so buoyancy is skipped; a steel body's would raise g by " +
-                          format_number(shift, 3) + " m/s^2");
+  out.warnings.push_back(rods(fit.scene) ? "air: the rods' densities are not known (a rod of rod_length has none), so "
+                                           "buoyancy is skipped; steel rods' would raise g by " +
+                                               format_number(shift, 3) + " m/s^2"
+                                         : "air: the body's mass and volume are not known (give the body in parts with "
+                                           "their densities), so buoyancy is skipped; a steel body's would raise g by " +
+                                               format_number(shift, 3) + " m/s^2");
 }
 
 /// A fitted k or centre against what the body's parts give.

@@ -139,7 +139,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const pendulum::Analysis analysis = pendulum::reduce_scene(scene, options);
       const auto result = nlohmann::json::parse(pendulum::result_json(scene, analysis, options, "fuzz"));
       require_finite(result, "");
-      require(analysis.g.value > 0.0, "g not positive", result.dump());
+      // The detail only on failure: a scene of many observations dumps 200 kB.
+      if (!(analysis.g.value > 0.0)) require(false, "g not positive", result.dump());
       (void)pendulum::result_table(scene, analysis);
     }
   } catch (const pendulum::InputError& e) {

@@ -44,6 +44,18 @@ struct Signal {
   double radius = 0.0, radius_sigma = 0.0;
 };
 
+/// A sampled signal's swings need samples: fewer than 16 (none, where every
+/// row lacked a cell it needs) are refused before anything reads them.
+void require_several_swings(const Recording& r, const std::string& file) {
+  if (r.time.size() < 16) {
+    const std::string dropped = r.dropped == 0 ? ""
+                                : " (" + std::to_string(r.dropped) + " row" + (r.dropped == 1 ? "" : "s") +
+                                      " without a time or a signal's value set aside)";
+    throw InputError(file, std::to_string(r.time.size()) + " samples" + dropped +
+                               "; expected a recording of several swings");
+  }
+}
+
 /// Projection on the principal axis of the mean-removed vectors: one pass
 /// for the sums (shifted by the first sample, against cancellation), one for
 /// the projection. M, the number of axes, is fixed at compile time so that
@@ -1400,9 +1412,7 @@ SwingAnalysis analyse_once(const Recording& r, const std::string& file, const Sw
   if (events) {
     out.crossings = gate_passages(r, durations);
   } else {
-    if (r.time.size() < 16) {
-      throw InputError(file, std::to_string(r.time.size()) + " samples; expected a recording of several swings");
-    }
+    require_several_swings(r, file);
     sig = circle ? *circle : make_signal(r, track_length);
     out.axis = sig.axis;
     out.crossings_per_period = sig.crossings_per_period;
@@ -1836,6 +1846,7 @@ double period_length(const SwingAnalysis& a) {
 SwingAnalysis analyse_record(const Recording& r, const std::string& file, const SwingOptions& options,
                              const std::vector<Bridge>& bridges = {}) {
   if (r.kind != SignalKind::position) return analyse_once(r, file, options, bridges, 0.0);
+  require_several_swings(r, file);  // before the circle, which reads the first sample
   const Signal circle = track_angle(r);  // once: the angles and the radius they are checked by
   SwingAnalysis out = analyse_once(r, file, options, bridges, 0.0, &circle);
   if (!std::isfinite(out.start_amplitude)) return out;

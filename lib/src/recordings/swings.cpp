@@ -44,6 +44,12 @@ struct Signal {
   double radius = 0.0, radius_sigma = 0.0;
 };
 
+/// DeltaT/T0 (Eq. 8, exact) of a swing whose amplitude theta (rad) a
+/// reader estimated: of its size, capped just below pi. A corrupt record's
+/// estimate can be negative by rounding or over the top; the analysis
+/// refuses such swings where it reports them, not inside its sums.
+double estimated_excess(double theta) { return finite_amplitude_agm(std::min(std::fabs(theta), kPi * (1.0 - 1e-9))); }
+
 /// A sampled signal's swings need samples: fewer than 16 (none, where every
 /// row lacked a cell it needs) are refused before anything reads them.
 void require_several_swings(const Recording& r, const std::string& file) {
@@ -546,7 +552,7 @@ PeriodEstimate fit_crossing_times(const std::vector<Crossing>& c, int per_period
   for (std::size_t i = 1; i < n; ++i) {
     count[i] = count[i - 1] + c[i].steps;
     const double steps = static_cast<double>(c[i].steps);  // added in this order, one step is as before to the bit
-    u[i] = u[i - 1] + steps + steps * (weighted_index ? finite_amplitude_agm(amplitudes[i - 1]) : 0.0);
+    u[i] = u[i - 1] + steps + steps * (weighted_index ? estimated_excess(amplitudes[i - 1]) : 0.0);
   }
   const double centre = (u[0] + u[n - 1]) / 2.0;  // mid-range: the quadratic term then drops out of the mean
   // Without the amplitude-weighted index, a cubic term too: the finite-amplitude
@@ -1496,7 +1502,7 @@ SwingAnalysis analyse_once(const Recording& r, const std::string& file, const Sw
       int count = 0;
       for (std::size_t i = 0; i < theta.size(); ++i) {
         theta[i] = amplitude_of(i, t0);
-        if (std::isfinite(theta[i])) mean_correction += finite_amplitude_agm(theta[i]), ++count;
+        if (std::isfinite(theta[i])) mean_correction += estimated_excess(theta[i]), ++count;
       }
       t0 = T / (1.0 + (count ? mean_correction / count : 0.0));
     }
@@ -1748,13 +1754,12 @@ SwingAnalysis analyse_once(const Recording& r, const std::string& file, const Sw
   // swings' local mean is that uncertain.
   std::vector<double> lengths, length_errors;
   for (std::size_t i = 0; i < index_amplitudes.size(); ++i) {
-    lengths.push_back(1.0 + finite_amplitude_agm(index_amplitudes[i]));
+    lengths.push_back(1.0 + estimated_excess(index_amplitudes[i]));
     if (!(out.noise > 0.0)) continue;
     // In the weights' unit: a crossing's time scatters by noise / sqrt(weight).
     const double smooth = curve[i];
     length_errors.push_back(
-        std::fabs(finite_amplitude_agm(std::min(smooth + std::fabs(misfits[i]), kPi * (1.0 - 1e-9))) -
-                  finite_amplitude_agm(smooth)) / out.noise);
+        std::fabs(estimated_excess(smooth + std::fabs(misfits[i])) - estimated_excess(smooth)) / out.noise);
   }
   out.outliers = outlier_stretches(out.crossings, index, cpp, weight, quantum, lengths, length_errors);
   if (growth) out.outliers.insert(out.outliers.begin(), *growth);

@@ -46,8 +46,8 @@ SceneReport make_scene_report(const std::string& input, const ParsedScene& scene
   const TextbookFit* textbook = a.fit.results_of<SimplePendulum>();
   if (textbook) r.g_uncorrected = textbook->g;
   // A series of rods: each its own body, the textbook line in their equivalent lengths.
-  const PivotScan* rods = a.fit.results_of<PhysicalPendulum>();
-  if (rods && rods->minimum_period) rods = nullptr;  // one body's pivot scan, which has its own record
+  const bool rod_series = !scene.observations.empty() && scene.observations.front().setting == Setting::rod_length;
+  const PivotScan* rods = rod_series ? a.fit.results_of<PhysicalPendulum>() : nullptr;
   if (rods && rods->textbook) r.g_uncorrected = rods->textbook->g;
   if (a.fit.scaled) r.birge_ratio = a.fit.birge_ratio, r.g_uncertainty_unscaled = a.g_uncertainty_unscaled;
   r.period_measured = {first.period_measured.value, first.period_measured.uncertainty};
